@@ -1,0 +1,31 @@
+#pragma once
+
+#include <chrono>
+#include <ostream>
+#include <string>
+
+namespace grainload::app {
+
+/// One progress line at most once a second, on stderr and in the run's log.txt:
+/// simulated time / end time, step, dt, ETA and particle-steps per second.
+class ProgressReporter {
+  public:
+    ProgressReporter(std::ostream& log, double end_time, long long points);
+
+    void update(double t, long long step, double dt, bool force = false);
+    /// A message for both stderr and the log.
+    void message(const std::string& text);
+    double elapsed_seconds() const;
+
+  private:
+    using Clock = std::chrono::steady_clock;
+    std::ostream& log_;
+    double end_time_;
+    long long points_;
+    Clock::time_point start_;
+    Clock::time_point last_print_;
+    double start_time_ = -1.0;
+    long long start_step_ = 0;
+};
+
+}  // namespace grainload::app

@@ -1,0 +1,31 @@
+#pragma once
+
+#include "io/case_table.hpp"
+#include "io/stepper.hpp"
+#include "materials/material_library.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace grainload::app {
+
+/// A case file turned into models: the [case] settings, the materials, and one stepper per
+/// physics module present ([sph], [fem]). Loading validates everything, unknown keys included,
+/// so `grainload check` and `grainload run` refuse exactly the same files.
+struct Scene {
+    std::unique_ptr<io::CaseDocument> document;
+    std::string case_name;
+    int dimension = 3;
+    double end_time = 0.0;
+    double output_interval = 0.0;
+    materials::MaterialLibrary materials;
+    std::vector<std::unique_ptr<io::Stepper>> steppers;
+
+    /// Throws io::CaseError on any bad input.
+    static std::unique_ptr<Scene> load(const std::string& file,
+                                       const std::vector<std::string>& overrides);
+    Index point_count() const;
+};
+
+}  // namespace grainload::app

@@ -1,0 +1,170 @@
+#include "io/case_table.hpp"
+
+#include <toml++/toml.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unordered_set>
+
+namespace grainload::io {
+
+struct CaseDocument::Impl {
+    toml::table root;
+    std::unordered_set<const toml::node*> used;
+};
+
+CaseDocument::CaseDocument() : impl_(std::make_unique<Impl>()) {}
+CaseDocument::~CaseDocument() = default;
+
+namespace {
+
+std::string location(const toml::source_region& region, const std::string& fallback_file) {
+    std::ostringstream out;
+    out << (region.path && !region.path->empty() ? *region.path : fallback_file) << ':'
+        << region.begin.line << ':' << region.begin.column;
+    return out.str();
+}
+
+toml::table parse_or_throw(std::string_view text, const std::string& source_name) {
+    try {
+        return toml::parse(text, source_name);
+    } catch (const toml::parse_error& error) {
+        throw CaseError(location(error.source(), source_name) +
+                        ": TOML syntax error: " + std::string(error.description()));
+    }
+}
+
+// "sph.body[0].spacing" -> {"sph", "body", "[0]", "spacing"}.
+std::vector<std::string> split_key_path(std::string_view key) {
+    std::vector<std::string> parts;
+    std::string current;
+    for (char c : key) {
+        if (c == '.' || c == '[') {
+            if (!current.empty()) {
+                parts.push_back(current);
+            }
+            current.clear();
+            if (c == '[') {
+                current.push_back('[');
+            }
+        } else if (c == ']') {
+            parts.push_back(current + "]");
+            current.clear();
+        } else {
+            current += c;
+        }
+    }
+    if (!current.empty()) {
+        parts.push_back(current);
+    }
+    return parts;
+}
+
+}  // namespace
+
+std::unique_ptr<CaseDocument> CaseDocument::from_string(std::string_view text,
+                                                        const std::string& source_name) {
+    std::unique_ptr<CaseDocument> document(new CaseDocument());
+    document->file_ = source_name;
+    document->impl_->root = parse_or_throw(text, source_name);
+    return document;
+}
+
+std::unique_ptr<CaseDocument> CaseDocument::from_file(const std::string& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) {
+        throw CaseError(file + ": cannot open the case file");
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    return from_string(text.str(), file);
+}
+
+std::string CaseDocument::directory() const {
+    const auto parent = std::filesystem::path(file_).parent_path();
+    return parent.empty() ? std::string(".") : parent.string();
+}
+
+CaseTable CaseDocument::root() { return CaseTable(this, &impl_->root, ""); }
+
+void CaseDocument::mark_used(const toml::node* node) { impl_->used.insert(node); }
+
+void CaseDocument::set(std::string_view assignment) {
+    const std::string origin = "--set " + std::string(assignment);
+    const auto equals = assignment.find('=');
+    if (equals == std::string_view::npos || equals == 0) {
+        throw CaseError(origin + ": expected key=value, e.g. --set case.end_time=\"0.5 s\"");
+    }
+    const auto parts = split_key_path(assignment.substr(0, equals));
+    const std::string value(assignment.substr(equals + 1));
+    toml::table parsed;
+    try {
+        parsed = toml::parse("value = " + value, origin);
+    } catch (const toml::parse_error&) {
+        // Not TOML: a plain string, so that --set case.end_time="0.5 s" needs no inner quotes.
+        std::string escaped;
+        for (char c : value) {
+            if (c == '"' || c == '\\') {
+                escaped += '\\';
+            }
+            escaped += c;
+        }
+        parsed = parse_or_throw("value = \"" + escaped + "\"", origin);
+    }
+    toml::node* cursor = &impl_->root;
+    for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+        const auto& part = parts[i];
+        if (part.front() == '[') {
+            auto* array = cursor->as_array();
+            const auto index = std::stoul(part.substr(1, part.size() - 2));
+            if (array == nullptr || index >= array->size()) {
+                throw CaseError(origin + ": '" + part + "' does not name an existing element");
+            }
+            cursor = array->get(index);
+            continue;
+        }
+        auto* table = cursor->as_table();
+        if (table == nullptr) {
+            throw CaseError(origin + ": '" + part + "' is not inside a table");
+        }
+        if (!table->contains(part)) {
+            table->insert(part, toml::table{});
+        }
+        cursor = table->get(part);
+    }
+    auto* table = cursor->as_table();
+    if (table == nullptr || parts.empty() || parts.back().front() == '[') {
+        throw CaseError(origin + ": the key must end in a table entry");
+    }
+    table->insert_or_assign(parts.back(), std::move(*parsed.get("value")));
+}
+
+namespace {
+
+void reject_unused(const toml::table& table, const std::string& path,
+                   const std::unordered_set<const toml::node*>& used, const std::string& file) {
+    for (const auto& [key, node] : table) {
+        const std::string full = path.empty() ? std::string(key.str()) : path + "." + std::string(key.str());
+        if (!used.contains(&node)) {
+            throw CaseError(location(node.source(), file) + ": unknown key '" + full +
+                            "' (check its spelling and its table; see docs/user-guide.md)");
+        }
+        if (const auto* child = node.as_table()) {
+            reject_unused(*child, full, used, file);
+        } else if (const auto* array = node.as_array(); array && array->is_array_of_tables()) {
+            for (std::size_t i = 0; i < array->size(); ++i) {
+                reject_unused(*array->get(i)->as_table(), full + "[" + std::to_string(i) + "]",
+                              used, file);
+            }
+        }
+    }
+}
+
+}  // namespace
+
+void CaseDocument::reject_unknown_keys() const {
+    reject_unused(impl_->root, "", impl_->used, file_);
+}
+
+}  // namespace grainload::io

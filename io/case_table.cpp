@@ -1,0 +1,264 @@
+#include "io/case_table.hpp"
+
+#include "io/units.hpp"
+
+#include <toml++/toml.h>
+
+#include <sstream>
+
+namespace grainload::io {
+
+CaseTable::CaseTable(CaseDocument* document, const toml::table* table, std::string path)
+    : document_(document), table_(table), path_(std::move(path)) {}
+
+bool CaseTable::has(std::string_view key) const { return table_->contains(key); }
+
+std::string CaseTable::key_path(std::string_view key) const {
+    if (path_.empty()) {
+        return std::string(key);
+    }
+    return key.empty() ? path_ : path_ + "." + std::string(key);
+}
+
+int CaseTable::spatial_dimension() const { return document_->spatial_dimension; }
+
+const toml::node* CaseTable::lookup(std::string_view key) const {
+    const toml::node* node = table_->get(key);
+    if (node != nullptr) {
+        document_->mark_used(node);
+    }
+    return node;
+}
+
+const toml::node& CaseTable::require(std::string_view key) const {
+    const toml::node* node = lookup(key);
+    if (node == nullptr) {
+        fail_at(table_, key, "missing required key");
+    }
+    return *node;
+}
+
+void CaseTable::fail(std::string_view key, std::string_view message) const {
+    const toml::node* node = key.empty() ? nullptr : table_->get(key);
+    fail_at(node != nullptr ? node : table_, key, message);
+}
+
+void CaseTable::fail_at(const toml::node* node, std::string_view key,
+                        std::string_view message) const {
+    const auto& region = node->source();
+    std::ostringstream out;
+    out << (region.path && !region.path->empty() ? *region.path : document_->file()) << ':'
+        << region.begin.line << ':' << region.begin.column << ": ";
+    const std::string full = key_path(key);
+    out << (full.empty() ? std::string("case file") : "key '" + full + "'") << ": " << message;
+    throw CaseError(out.str());
+}
+
+namespace {
+
+std::string shown(const toml::node& node) {
+    std::ostringstream out;
+    node.visit([&out](const auto& value) { out << value; });
+    return out.str();
+}
+
+}  // namespace
+
+double CaseTable::quantity(std::string_view key, Dimension expected) const {
+    const toml::node& node = require(key);
+    const std::string wanted = "expected " + describe(expected);
+    if (node.is_number()) {
+        if (expected != dimension::kNone) {
+            fail_at(&node, key, wanted + "; a bare number has no unit, got " + shown(node));
+        }
+        return node.value<double>().value();
+    }
+    if (!node.is_string()) {
+        fail_at(&node, key, wanted + ", got " + shown(node));
+    }
+    const std::string text = node.value<std::string>().value();
+    std::string error;
+    const auto parsed = parse_quantity(text, &error);
+    if (!parsed) {
+        fail_at(&node, key, wanted + ": " + error);
+    }
+    if (parsed->dimension != expected) {
+        fail_at(&node, key,
+                wanted + ", got \"" + text + "\" which is " + describe(parsed->dimension));
+    }
+    return parsed->value;
+}
+
+double CaseTable::quantity_or(std::string_view key, Dimension expected, double fallback) const {
+    return has(key) ? quantity(key, expected) : fallback;
+}
+
+double CaseTable::positive_quantity(std::string_view key, Dimension expected,
+                                    bool allow_zero) const {
+    const double value = quantity(key, expected);
+    if (value < 0.0 || (value == 0.0 && !allow_zero)) {
+        fail(key, std::string("expected a ") + (allow_zero ? "non-negative " : "positive ") +
+                      "value, " + describe(expected));
+    }
+    return value;
+}
+
+double CaseTable::positive_quantity_or(std::string_view key, Dimension expected, double fallback,
+                                       bool allow_zero) const {
+    return has(key) ? positive_quantity(key, expected, allow_zero) : fallback;
+}
+
+std::vector<double> CaseTable::quantity_list(std::string_view key, Dimension expected) const {
+    const toml::node& node = require(key);
+    const std::string wanted = "expected a list of " + describe(expected);
+    std::vector<double> values;
+    auto check = [&](const Quantity& q, const std::string& text) {
+        if (q.dimension != expected) {
+            fail_at(&node, key, wanted + ", got \"" + text + "\" which is " + describe(q.dimension));
+        }
+        values.push_back(q.value);
+    };
+    std::string error;
+    if (const auto* text = node.as_string()) {
+        const auto list = parse_quantity_list(text->get(), &error);
+        if (!list) {
+            fail_at(&node, key, wanted + ": " + error);
+        }
+        for (const auto& q : *list) {
+            check(q, text->get());
+        }
+        return values;
+    }
+    const auto* array = node.as_array();
+    if (array == nullptr) {
+        fail_at(&node, key, wanted + ", got " + shown(node));
+    }
+    for (const auto& element : *array) {
+        if (element.is_number() && expected == dimension::kNone) {
+            values.push_back(element.value<double>().value());
+            continue;
+        }
+        const auto text = element.value<std::string>();
+        const auto q = text ? parse_quantity(*text, &error) : std::nullopt;
+        if (!q) {
+            fail_at(&element, key, wanted + (text ? ": " + error : ", got " + shown(element)));
+        }
+        check(*q, *text);
+    }
+    return values;
+}
+
+Vec3 CaseTable::vector(std::string_view key, Dimension expected) const {
+    const auto values = quantity_list(key, expected);
+    const int dim = spatial_dimension();
+    const bool size_ok = values.size() == 3 || (dim == 2 && values.size() == 2);
+    if (!size_ok) {
+        fail(key, "expected " + std::string(dim == 2 ? "2 or 3" : "3") + " components of " +
+                      describe(expected) + ", got " + std::to_string(values.size()));
+    }
+    Vec3 v = Vec3::Zero();
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        v[static_cast<Eigen::Index>(i)] = values[i];
+    }
+    return v;
+}
+
+Vec3 CaseTable::vector_or(std::string_view key, Dimension expected, const Vec3& fallback) const {
+    return has(key) ? vector(key, expected) : fallback;
+}
+
+double CaseTable::number(std::string_view key) const { return quantity(key, dimension::kNone); }
+
+double CaseTable::number_or(std::string_view key, double fallback) const {
+    return has(key) ? number(key) : fallback;
+}
+
+std::int64_t CaseTable::integer(std::string_view key) const {
+    const toml::node& node = require(key);
+    if (!node.is_integer()) {
+        fail_at(&node, key, "expected an integer, got " + shown(node));
+    }
+    return node.value<std::int64_t>().value();
+}
+
+std::int64_t CaseTable::integer_or(std::string_view key, std::int64_t fallback) const {
+    return has(key) ? integer(key) : fallback;
+}
+
+bool CaseTable::boolean_or(std::string_view key, bool fallback) const {
+    if (!has(key)) {
+        return fallback;
+    }
+    const toml::node& node = require(key);
+    if (!node.is_boolean()) {
+        fail_at(&node, key, "expected true or false, got " + shown(node));
+    }
+    return node.value<bool>().value();
+}
+
+std::string CaseTable::string(std::string_view key) const {
+    const toml::node& node = require(key);
+    if (!node.is_string()) {
+        fail_at(&node, key, "expected a string in quotes, got " + shown(node));
+    }
+    return node.value<std::string>().value();
+}
+
+std::string CaseTable::string_or(std::string_view key, std::string fallback) const {
+    return has(key) ? string(key) : fallback;
+}
+
+std::string CaseTable::choice(std::string_view key,
+                              std::initializer_list<std::string_view> allowed) const {
+    const std::string value = string(key);
+    std::string options;
+    for (auto option : allowed) {
+        if (option == value) {
+            return value;
+        }
+        options += (options.empty() ? "\"" : ", \"") + std::string(option) + "\"";
+    }
+    fail(key, "expected one of " + options + ", got \"" + value + "\"");
+}
+
+std::string CaseTable::choice_or(std::string_view key,
+                                 std::initializer_list<std::string_view> allowed,
+                                 std::string fallback) const {
+    return has(key) ? choice(key, allowed) : fallback;
+}
+
+CaseTable CaseTable::table(std::string_view key) const {
+    const toml::node& node = require(key);
+    if (!node.is_table()) {
+        fail_at(&node, key, "expected a table [" + key_path(key) + "], got " + shown(node));
+    }
+    return CaseTable(document_, node.as_table(), key_path(key));
+}
+
+std::optional<CaseTable> CaseTable::optional_table(std::string_view key) const {
+    if (!has(key)) {
+        return std::nullopt;
+    }
+    return table(key);
+}
+
+std::vector<CaseTable> CaseTable::array_of_tables(std::string_view key) const {
+    std::vector<CaseTable> tables;
+    if (!has(key)) {
+        return tables;
+    }
+    const toml::node& node = require(key);
+    const auto* array = node.as_array();
+    if (array == nullptr || !array->is_array_of_tables()) {
+        fail_at(&node, key, "expected an array of tables [[" + key_path(key) + "]]");
+    }
+    for (std::size_t i = 0; i < array->size(); ++i) {
+        const toml::node* element = array->get(i);
+        document_->mark_used(element);
+        tables.emplace_back(document_, element->as_table(),
+                            key_path(key) + "[" + std::to_string(i) + "]");
+    }
+    return tables;
+}
+
+}  // namespace grainload::io

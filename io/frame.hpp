@@ -1,0 +1,48 @@
+#pragma once
+
+#include "io/types.hpp"
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace grainload::io {
+
+/// One named array on points or cells. components: 1 (scalar), 3 (vector) or 6 (symmetric
+/// tensor in the Voigt order of io/types.hpp, written to VTK as a 3x3 tensor).
+struct FieldArray {
+    std::string name;
+    int components = 1;
+    std::vector<double> values;  ///< size = components * count
+};
+
+/// One block of an output frame: an SPH body (points only) or a shell mesh (quads/triangles).
+/// The writers know nothing of sph/ or fem/: each module fills blocks of its own.
+struct Block {
+    enum class Kind { particles, shell };
+    std::string name;
+    Kind kind = Kind::particles;
+    std::vector<Vec3> points;
+    /// Shell cells; a triangle repeats no node and has cell[3] == -1.
+    std::vector<std::array<Index, 4>> cells;
+    std::vector<FieldArray> point_arrays;
+    std::vector<FieldArray> cell_arrays;
+};
+
+/// Everything written at one output instant.
+struct Frame {
+    double time = 0.0;
+    std::vector<Block> blocks;
+};
+
+/// A figure a case reports in summary.json, optionally beside an independent reference.
+struct ResultFigure {
+    std::string name;
+    double value = 0.0;
+    std::string unit;
+    std::optional<double> reference;
+    std::string source;  ///< paper or formula of the reference
+};
+
+}  // namespace grainload::io

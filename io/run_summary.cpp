@@ -1,0 +1,98 @@
+#include "io/run_summary.hpp"
+
+#include "io/atomic_file.hpp"
+#include "io/version.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+
+namespace grainload::io {
+
+double RunSummary::point_steps_per_second() const {
+    return wall_time > 0.0 ? static_cast<double>(points) * static_cast<double>(steps) / wall_time
+                           : 0.0;
+}
+
+namespace {
+
+std::string quoted(const std::string& text) {
+    std::ostringstream out;
+    out << '"';
+    for (char c : text) {
+        switch (c) {
+        case '"': out << "\\\""; break;
+        case '\\': out << "\\\\"; break;
+        case '\n': out << "\\n"; break;
+        case '\t': out << "\\t"; break;
+        default:
+            if (static_cast<unsigned char>(c) < 0x20) {
+                out << "\\u" << std::hex << std::setw(4) << std::setfill('0') << int(c)
+                    << std::dec;
+            } else {
+                out << c;
+            }
+        }
+    }
+    out << '"';
+    return out.str();
+}
+
+// JSON has no NaN or infinity; a diverged figure is written as null.
+std::string number(double value) {
+    if (!std::isfinite(value)) {
+        return "null";
+    }
+    std::ostringstream out;
+    out << std::setprecision(12) << value;
+    return out.str();
+}
+
+void write_result(std::ostream& out, const ResultFigure& figure) {
+    out << "    " << quoted(figure.name) << ": {\"value\": " << number(figure.value)
+        << ", \"unit\": " << quoted(figure.unit);
+    if (figure.reference) {
+        const double reference = *figure.reference;
+        out << ", \"reference\": " << number(reference) << ", \"source\": "
+            << quoted(figure.source);
+        if (reference != 0.0) {
+            out << ", \"relative_error\": "
+                << number(std::abs(figure.value - reference) / std::abs(reference));
+        } else {
+            out << ", \"absolute_error\": " << number(std::abs(figure.value));
+        }
+    }
+    out << '}';
+}
+
+}  // namespace
+
+void write_run_summary(const RunSummary& summary, const std::string& path) {
+    write_file_atomically(path, [&](std::ostream& out) {
+        out << "{\n"
+            << "  \"case\": " << quoted(summary.case_name) << ",\n"
+            << "  \"case_file\": " << quoted(summary.case_file) << ",\n"
+            << "  \"version\": " << quoted(kVersion) << ",\n"
+            << "  \"git_hash\": " << quoted(kGitHash) << ",\n"
+            << "  \"status\": " << quoted(summary.status) << ",\n";
+        if (!summary.diagnosis.empty()) {
+            out << "  \"diagnosis\": " << quoted(summary.diagnosis) << ",\n";
+        }
+        out << "  \"threads\": " << summary.threads << ",\n"
+            << "  \"wall_time_s\": " << number(summary.wall_time) << ",\n"
+            << "  \"simulated_time_s\": " << number(summary.simulated_time) << ",\n"
+            << "  \"steps\": " << summary.steps << ",\n"
+            << "  \"particles\": " << summary.points << ",\n"
+            << "  \"particle_steps_per_second\": " << number(summary.point_steps_per_second())
+            << ",\n"
+            << "  \"results\": {";
+        for (std::size_t i = 0; i < summary.results.size(); ++i) {
+            out << (i == 0 ? "\n" : ",\n");
+            write_result(out, summary.results[i]);
+        }
+        out << (summary.results.empty() ? "}\n" : "\n  }\n") << "}\n";
+    });
+}
+
+}  // namespace grainload::io

@@ -1,0 +1,30 @@
+#pragma once
+
+#include "io/frame.hpp"
+
+#include <string>
+#include <vector>
+
+namespace grainload::io {
+
+/// What summary.json holds at the end of a run (or when it stops on an instability).
+struct RunSummary {
+    std::string case_name;
+    std::string case_file;
+    int threads = 1;
+    double wall_time = 0.0;  ///< s
+    double simulated_time = 0.0;
+    Index steps = 0;
+    Index points = 0;  ///< particles + shell nodes
+    std::string status = "completed";  ///< "completed" or "unstable"
+    std::string diagnosis;
+    std::vector<ResultFigure> results;
+
+    double point_steps_per_second() const;
+};
+
+/// Write `summary` as JSON to `path` atomically. Each result becomes
+/// {"value", "unit"[, "reference", "source", "relative_error"]}.
+void write_run_summary(const RunSummary& summary, const std::string& path);
+
+}  // namespace grainload::io

@@ -1,0 +1,37 @@
+#pragma once
+
+#include "io/frame.hpp"
+
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace grainload::io {
+
+/// One physics module as the time loop sees it (SPH, shell FEM, a coupled pair). The driver in
+/// app/ owns the only time loop: it asks for the stable step, advances, checks health, and
+/// collects frames, results and checkpoints at the same instants for every module.
+class Stepper {
+  public:
+    virtual ~Stepper() = default;
+    virtual std::string_view name() const = 0;
+    /// Largest stable step (CFL for explicit SPH; +infinity for an implicit solver).
+    virtual double stable_time_step() const = 0;
+    /// Advance from t to t + dt.
+    virtual void advance(double t, double dt) = 0;
+    /// Number of computational points (particles, nodes) for particle-steps per second.
+    virtual Index point_count() const = 0;
+    /// std::nullopt when every field is finite and bounded; otherwise a diagnosis naming the
+    /// particle/element and quantity ("particle 812 (body sand): velocity is NaN").
+    virtual std::optional<std::string> diagnose() const = 0;
+    virtual void append_blocks(Frame& frame) const = 0;
+    /// The case's own figures at time t, for summary.json.
+    virtual void append_results(double t, std::vector<ResultFigure>& results) const = 0;
+    /// Binary restart state; read_checkpoint must restore exactly what write_checkpoint saved.
+    virtual void write_checkpoint(std::ostream& out) const = 0;
+    virtual void read_checkpoint(std::istream& in) = 0;
+};
+
+}  // namespace grainload::io

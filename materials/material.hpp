@@ -1,0 +1,54 @@
+#pragma once
+
+#include "materials/elastic_constants.hpp"
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace grainload::materials {
+
+/// Which part of the yield surface the last update ended on; written per point for output.
+enum class PlasticRegion : int {
+    elastic = 0,
+    failure_surface = 1,  ///< von Mises / Drucker-Prager cone / cap-model failure envelope
+    cap = 2,
+    corner = 3,  ///< failure surface meets cap
+    apex = 4,    ///< cone apex or tension cutoff
+};
+
+/// A constitutive model shared by SPH and FEM. Parameters live in the object; the per-point
+/// state lives in plain arrays owned by the caller (state_size() doubles per point).
+///
+/// The one entry point is a strain-driven update: given the stress at the start of the step
+/// (already rotated by the caller's objective rate), a strain increment (engineering shear)
+/// and the point's state, return the new stress, update the state and, on request, give the
+/// consistent (algorithmic) tangent d(stress_new)/d(strain_increment).
+class Material {
+  public:
+    explicit Material(ElasticConstants elastic) : elastic_(elastic) {}
+    virtual ~Material() = default;
+
+    virtual std::string_view model() const = 0;
+
+    virtual int state_size() const { return 0; }
+    /// Names of the state entries, for output and the material-point driver.
+    virtual std::vector<std::string> state_names() const { return {}; }
+    /// Initial state of one point (e.g. the cap position X0); default all zeros.
+    virtual void initialise_state(std::span<double> state) const;
+
+    virtual PlasticRegion update(const Voigt6& strain_increment, Voigt6& stress,
+                                 std::span<double> state, Matrix6* tangent) const = 0;
+
+    /// Equivalent plastic strain carried in `state`, for output.
+    virtual double equivalent_plastic_strain(std::span<const double> state) const;
+
+    const ElasticConstants& elastic() const { return elastic_; }
+    double density() const { return elastic_.density; }
+
+  protected:
+    ElasticConstants elastic_;
+};
+
+}  // namespace grainload::materials

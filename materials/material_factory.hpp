@@ -1,0 +1,12 @@
+#pragma once
+
+#include "materials/material.hpp"
+
+#include <memory>
+
+namespace grainload::materials {
+
+/// Build the material described by one [[material]] table; its `model` key picks the class.
+std::unique_ptr<Material> make_material(const io::CaseTable& table);
+
+}  // namespace grainload::materials

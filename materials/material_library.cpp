@@ -1,0 +1,37 @@
+#include "materials/material_library.hpp"
+
+#include "io/case_table.hpp"
+#include "materials/material_factory.hpp"
+
+#include <algorithm>
+
+namespace grainload::materials {
+
+MaterialLibrary MaterialLibrary::from_case(const io::CaseTable& root) {
+    MaterialLibrary library;
+    for (const auto& table : root.array_of_tables("material")) {
+        std::string name = table.string("name");
+        if (std::find(library.names_.begin(), library.names_.end(), name) != library.names_.end()) {
+            table.fail("name", "a material called \"" + name + "\" is already defined");
+        }
+        library.materials_.push_back(make_material(table));
+        library.names_.push_back(std::move(name));
+    }
+    return library;
+}
+
+int MaterialLibrary::index_of(const io::CaseTable& table, std::string_view key) const {
+    const std::string name = table.string(key);
+    const auto found = std::find(names_.begin(), names_.end(), name);
+    if (found == names_.end()) {
+        std::string known;
+        for (const auto& n : names_) {
+            known += (known.empty() ? "\"" : ", \"") + n + "\"";
+        }
+        table.fail(key, "no [[material]] is called \"" + name + "\" (defined: " +
+                            (known.empty() ? std::string("none") : known) + ")");
+    }
+    return static_cast<int>(found - names_.begin());
+}
+
+}  // namespace grainload::materials

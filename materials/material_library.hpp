@@ -1,0 +1,31 @@
+#pragma once
+
+#include "materials/material.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace grainload::io {
+class CaseTable;
+}
+
+namespace grainload::materials {
+
+/// The [[material]] tables of a case, each built once and referred to by name.
+class MaterialLibrary {
+  public:
+    static MaterialLibrary from_case(const io::CaseTable& root);
+
+    /// Index of the material called table[key]; a CaseError names the key if there is none.
+    int index_of(const io::CaseTable& table, std::string_view key) const;
+    const Material& operator[](int index) const { return *materials_[static_cast<std::size_t>(index)]; }
+    const std::string& name(int index) const { return names_[static_cast<std::size_t>(index)]; }
+    int size() const { return static_cast<int>(materials_.size()); }
+
+  private:
+    std::vector<std::string> names_;
+    std::vector<std::unique_ptr<Material>> materials_;
+};
+
+}  // namespace grainload::materials

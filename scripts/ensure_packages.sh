@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages grainload needs to build and test, only those missing.
+# Sourced by scripts/run.sh and scripts/test.sh; safe to run on its own.
+set -euo pipefail
+
+GRAINLOAD_PACKAGES=(
+  build-essential cmake pkg-config git
+  libeigen3-dev libsuitesparse-dev libmetis-dev libopenblas-dev
+  libvtk9-dev libgtest-dev libtomlplusplus-dev
+)
+
+missing=()
+for package in "${GRAINLOAD_PACKAGES[@]}"; do
+  if ! dpkg -s "$package" >/dev/null 2>&1; then
+    missing+=("$package")
+  fi
+done
+
+if ((${#missing[@]} > 0)); then
+  echo "grainload: installing missing Debian packages: ${missing[*]}" >&2
+  sudo_cmd=()
+  if [[ $(id -u) -ne 0 ]]; then
+    sudo_cmd=(sudo)
+  fi
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
