@@ -43,7 +43,7 @@ CommandLine::Command command_of(std::string_view word) {
                         "', expected run, check, matpoint or --version\n" + usage());
 }
 
-}  // namespace
+} // namespace
 
 CommandLine parse_command_line(int argc, const char* const* argv) {
     CommandLine line;
@@ -94,4 +94,4 @@ CommandLine parse_command_line(int argc, const char* const* argv) {
     return line;
 }
 
-}  // namespace grainload::app
+} // namespace grainload::app

@@ -11,15 +11,19 @@ int main(int argc, char** argv) {
     try {
         const app::CommandLine line = app::parse_command_line(argc, argv);
         switch (line.command) {
-        case app::CommandLine::Command::run: return app::run_case(line);
-        case app::CommandLine::Command::check: return app::check_case(line);
+        case app::CommandLine::Command::run:
+            return app::run_case(line);
+        case app::CommandLine::Command::check:
+            return app::check_case(line);
         case app::CommandLine::Command::matpoint:
             std::cerr << "grainload: matpoint is not in this build yet\n";
             return app::kExitBadInput;
         case app::CommandLine::Command::version:
             std::cout << "grainload " << kVersion << " (" << kGitHash << ")\n";
             return app::kExitOk;
-        case app::CommandLine::Command::help: std::cout << app::usage(); return app::kExitOk;
+        case app::CommandLine::Command::help:
+            std::cout << app::usage();
+            return app::kExitOk;
         }
     } catch (const io::CaseError& error) {
         std::cerr << "grainload: error: " << error.what() << '\n';

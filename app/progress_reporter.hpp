@@ -28,4 +28,4 @@ class ProgressReporter {
     long long start_step_ = 0;
 };
 
-}  // namespace grainload::app
+} // namespace grainload::app

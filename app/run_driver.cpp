@@ -8,19 +8,18 @@
 #include "io/version.hpp"
 #include "io/vtk_frame_writer.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <omp.h>
 
 namespace grainload::app {
 
 namespace {
 
-constexpr std::uint64_t kCheckpointMagic = 0x474c434b50543031;  // "GLCKPT01"
+constexpr std::uint64_t kCheckpointMagic = 0x474c434b50543031; // "GLCKPT01"
 
 /// The mutable part of a run that a checkpoint must carry besides the models.
 struct RunClock {
@@ -101,7 +100,7 @@ io::RunSummary make_summary(const Scene& scene, const CommandLine& line, const R
     return summary;
 }
 
-}  // namespace
+} // namespace
 
 int check_case(const CommandLine& line) {
     const auto scene = Scene::load(line.input, line.overrides);
@@ -127,9 +126,8 @@ int run_case(const CommandLine& line) {
     }
     ProgressReporter progress(log, scene->end_time, scene->point_count());
     progress.message("grainload " + std::string(kVersion) + " (" + kGitHash + "): case " +
-                     scene->case_name + ", " + std::to_string(scene->point_count()) +
-                     " points, " + std::to_string(omp_get_max_threads()) + " threads, output " +
-                     out);
+                     scene->case_name + ", " + std::to_string(scene->point_count()) + " points, " +
+                     std::to_string(omp_get_max_threads()) + " threads, output " + out);
     const std::string checkpoint = out + "/checkpoint.bin";
     auto write_output = [&] {
         const std::string frame = writer.write(collect_frame(*scene, clock.t));
@@ -138,12 +136,17 @@ int run_case(const CommandLine& line) {
         return frame;
     };
     std::string last_frame = clock.frame_times.empty() ? write_output() : "";
-    double next_output =
-        scene->output_interval * static_cast<double>(std::max<std::size_t>(clock.frame_times.size(), 1));
+    // Output instants are k * interval, computed afresh rather than accumulated, so that a
+    // restarted run steps through exactly the same instants (and time steps) as a whole run.
+    auto next_output_time = [&] {
+        return std::min(scene->end_time,
+                        scene->output_interval * static_cast<double>(clock.frame_times.size()));
+    };
     const double end_tolerance = 1e-12 * scene->end_time;
     double dt = 0.0;
     while (clock.t < scene->end_time - end_tolerance) {
-        dt = std::min(stable_step(*scene), std::min(next_output, scene->end_time) - clock.t);
+        const double next_output = next_output_time();
+        dt = std::min(stable_step(*scene), next_output - clock.t);
         for (const auto& stepper : scene->steppers) {
             stepper->advance(clock.t, dt);
         }
@@ -154,16 +157,15 @@ int run_case(const CommandLine& line) {
             summary.status = "unstable";
             summary.diagnosis = *problem;
             io::write_run_summary(summary, out + "/summary.json");
-            progress.message("grainload: the run became unstable at t = " +
-                             std::to_string(clock.t) + " s (step " + std::to_string(clock.step) +
-                             "): " + *problem + "\nlast good frame: " + last_frame +
-                             "\ncheckpoint of that frame: " + checkpoint);
+            progress.message(
+                "grainload: the run became unstable at t = " + std::to_string(clock.t) +
+                " s (step " + std::to_string(clock.step) + "): " + *problem +
+                "\nlast good frame: " + last_frame + "\ncheckpoint of that frame: " + checkpoint);
             return kExitUnstable;
         }
-        if (clock.t >= std::min(next_output, scene->end_time) - end_tolerance) {
-            clock.t = std::min(next_output, scene->end_time);
+        if (clock.t >= next_output - end_tolerance) {
+            clock.t = next_output;
             last_frame = write_output();
-            next_output += scene->output_interval;
         }
         progress.update(clock.t, clock.step, dt);
     }
@@ -176,4 +178,4 @@ int run_case(const CommandLine& line) {
     return kExitOk;
 }
 
-}  // namespace grainload::app
+} // namespace grainload::app

@@ -17,4 +17,4 @@ int run_case(const CommandLine& line);
 /// `grainload check`: load and validate only; prints what the case contains.
 int check_case(const CommandLine& line);
 
-}  // namespace grainload::app
+} // namespace grainload::app

@@ -17,8 +17,7 @@ std::unique_ptr<Scene> Scene::load(const std::string& file,
     }
     const io::CaseTable root = scene->document->root();
     const io::CaseTable settings = root.table("case");
-    scene->case_name =
-        settings.string_or("name", std::filesystem::path(file).stem().string());
+    scene->case_name = settings.string_or("name", std::filesystem::path(file).stem().string());
     const auto dimension = settings.integer_or("dimension", 3);
     if (dimension != 2 && dimension != 3) {
         settings.fail("dimension", "expected 2 (plane strain) or 3");
@@ -47,4 +46,4 @@ Index Scene::point_count() const {
     return count;
 }
 
-}  // namespace grainload::app
+} // namespace grainload::app

@@ -28,4 +28,4 @@ struct Scene {
     Index point_count() const;
 };
 
-}  // namespace grainload::app
+} // namespace grainload::app

@@ -15,8 +15,8 @@ void commit_file(const std::string& temporary, const std::string& path) {
     }
 }
 
-void write_file_atomically(const std::string& path,
-                           const std::function<void(std::ostream&)>& write, bool binary) {
+void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write,
+                           bool binary) {
     const std::string temporary = path + ".tmp";
     {
         std::ofstream out(temporary, binary ? std::ios::binary : std::ios::out);
@@ -32,4 +32,4 @@ void write_file_atomically(const std::string& path,
     commit_file(temporary, path);
 }
 
-}  // namespace grainload::io
+} // namespace grainload::io

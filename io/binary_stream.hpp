@@ -13,10 +13,10 @@ namespace grainload::io {
 // same machine. Eigen's fixed-size vectors are not trivially copyable by the standard's rules
 // (they declare copy constructors) but are standard-layout arrays of doubles, which suffices.
 template <class T>
-inline constexpr bool kRawDumpable = std::is_trivially_copyable_v<T> || std::is_standard_layout_v<T>;
+inline constexpr bool kRawDumpable =
+    std::is_trivially_copyable_v<T> || std::is_standard_layout_v<T>;
 
-template <class T>
-void write_array(std::ostream& out, const std::vector<T>& values) {
+template <class T> void write_array(std::ostream& out, const std::vector<T>& values) {
     static_assert(kRawDumpable<T>);
     const auto count = static_cast<std::uint64_t>(values.size());
     out.write(reinterpret_cast<const char*>(&count), sizeof count);
@@ -24,8 +24,7 @@ void write_array(std::ostream& out, const std::vector<T>& values) {
               static_cast<std::streamsize>(count * sizeof(T)));
 }
 
-template <class T>
-void read_array(std::istream& in, std::vector<T>& values) {
+template <class T> void read_array(std::istream& in, std::vector<T>& values) {
     static_assert(kRawDumpable<T>);
     std::uint64_t count = 0;
     in.read(reinterpret_cast<char*>(&count), sizeof count);
@@ -40,14 +39,12 @@ void read_array(std::istream& in, std::vector<T>& values) {
     }
 }
 
-template <class T>
-void write_value(std::ostream& out, const T& value) {
+template <class T> void write_value(std::ostream& out, const T& value) {
     static_assert(kRawDumpable<T>);
     out.write(reinterpret_cast<const char*>(&value), sizeof value);
 }
 
-template <class T>
-T read_value(std::istream& in) {
+template <class T> T read_value(std::istream& in) {
     T value{};
     in.read(reinterpret_cast<char*>(&value), sizeof value);
     if (!in) {
@@ -56,4 +53,4 @@ T read_value(std::istream& in) {
     return value;
 }
 
-}  // namespace grainload::io
+} // namespace grainload::io

@@ -1,10 +1,9 @@
 #include "io/case_table.hpp"
 
-#include <toml++/toml.h>
-
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <toml++/toml.h>
 #include <unordered_set>
 
 namespace grainload::io {
@@ -61,7 +60,7 @@ std::vector<std::string> split_key_path(std::string_view key) {
     return parts;
 }
 
-}  // namespace
+} // namespace
 
 std::unique_ptr<CaseDocument> CaseDocument::from_string(std::string_view text,
                                                         const std::string& source_name) {
@@ -86,9 +85,13 @@ std::string CaseDocument::directory() const {
     return parent.empty() ? std::string(".") : parent.string();
 }
 
-CaseTable CaseDocument::root() { return CaseTable(this, &impl_->root, ""); }
+CaseTable CaseDocument::root() {
+    return CaseTable(this, &impl_->root, "");
+}
 
-void CaseDocument::mark_used(const toml::node* node) { impl_->used.insert(node); }
+void CaseDocument::mark_used(const toml::node* node) {
+    impl_->used.insert(node);
+}
 
 void CaseDocument::set(std::string_view assignment) {
     const std::string origin = "--set " + std::string(assignment);
@@ -145,7 +148,8 @@ namespace {
 void reject_unused(const toml::table& table, const std::string& path,
                    const std::unordered_set<const toml::node*>& used, const std::string& file) {
     for (const auto& [key, node] : table) {
-        const std::string full = path.empty() ? std::string(key.str()) : path + "." + std::string(key.str());
+        const std::string full =
+            path.empty() ? std::string(key.str()) : path + "." + std::string(key.str());
         if (!used.contains(&node)) {
             throw CaseError(location(node.source(), file) + ": unknown key '" + full +
                             "' (check its spelling and its table; see docs/user-guide.md)");
@@ -161,10 +165,10 @@ void reject_unused(const toml::table& table, const std::string& path,
     }
 }
 
-}  // namespace
+} // namespace
 
 void CaseDocument::reject_unknown_keys() const {
     reject_unused(impl_->root, "", impl_->used, file_);
 }
 
-}  // namespace grainload::io
+} // namespace grainload::io

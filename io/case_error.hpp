@@ -12,4 +12,4 @@ class CaseError : public std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-}  // namespace grainload::io
+} // namespace grainload::io

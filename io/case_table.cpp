@@ -2,16 +2,17 @@
 
 #include "io/units.hpp"
 
-#include <toml++/toml.h>
-
 #include <sstream>
+#include <toml++/toml.h>
 
 namespace grainload::io {
 
 CaseTable::CaseTable(CaseDocument* document, const toml::table* table, std::string path)
     : document_(document), table_(table), path_(std::move(path)) {}
 
-bool CaseTable::has(std::string_view key) const { return table_->contains(key); }
+bool CaseTable::has(std::string_view key) const {
+    return table_->contains(key);
+}
 
 std::string CaseTable::key_path(std::string_view key) const {
     if (path_.empty()) {
@@ -20,7 +21,9 @@ std::string CaseTable::key_path(std::string_view key) const {
     return key.empty() ? path_ : path_ + "." + std::string(key);
 }
 
-int CaseTable::spatial_dimension() const { return document_->spatial_dimension; }
+int CaseTable::spatial_dimension() const {
+    return document_->spatial_dimension;
+}
 
 const toml::node* CaseTable::lookup(std::string_view key) const {
     const toml::node* node = table_->get(key);
@@ -62,7 +65,7 @@ std::string shown(const toml::node& node) {
     return out.str();
 }
 
-}  // namespace
+} // namespace
 
 double CaseTable::quantity(std::string_view key, Dimension expected) const {
     const toml::node& node = require(key);
@@ -114,7 +117,8 @@ std::vector<double> CaseTable::quantity_list(std::string_view key, Dimension exp
     std::vector<double> values;
     auto check = [&](const Quantity& q, const std::string& text) {
         if (q.dimension != expected) {
-            fail_at(&node, key, wanted + ", got \"" + text + "\" which is " + describe(q.dimension));
+            fail_at(&node, key,
+                    wanted + ", got \"" + text + "\" which is " + describe(q.dimension));
         }
         values.push_back(q.value);
     };
@@ -167,7 +171,9 @@ Vec3 CaseTable::vector_or(std::string_view key, Dimension expected, const Vec3& 
     return has(key) ? vector(key, expected) : fallback;
 }
 
-double CaseTable::number(std::string_view key) const { return quantity(key, dimension::kNone); }
+double CaseTable::number(std::string_view key) const {
+    return quantity(key, dimension::kNone);
+}
 
 double CaseTable::number_or(std::string_view key, double fallback) const {
     return has(key) ? number(key) : fallback;
@@ -261,4 +267,4 @@ std::vector<CaseTable> CaseTable::array_of_tables(std::string_view key) const {
     return tables;
 }
 
-}  // namespace grainload::io
+} // namespace grainload::io

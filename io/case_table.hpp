@@ -15,8 +15,8 @@ namespace toml {
 inline namespace v3 {
 class table;
 class node;
-}  // namespace v3
-}  // namespace toml
+} // namespace v3
+} // namespace toml
 
 namespace grainload::io {
 
@@ -117,4 +117,4 @@ class CaseDocument {
     std::string file_;
 };
 
-}  // namespace grainload::io
+} // namespace grainload::io

@@ -32,7 +32,7 @@ constexpr std::array kNamedDimensions{
     NamedDimension{dimension::kForcePerLength, "a force per length", "3 N/m"},
 };
 
-}  // namespace
+} // namespace
 
 std::string describe(const Dimension& d) {
     for (const auto& named : kNamedDimensions) {
@@ -46,4 +46,4 @@ std::string describe(const Dimension& d) {
     return out.str();
 }
 
-}  // namespace grainload::io
+} // namespace grainload::io

@@ -16,9 +16,7 @@ struct Dimension {
     constexpr Dimension operator*(const Dimension& o) const {
         return {mass + o.mass, length + o.length, time + o.time, angle + o.angle};
     }
-    constexpr Dimension power(int p) const {
-        return {mass * p, length * p, time * p, angle * p};
-    }
+    constexpr Dimension power(int p) const { return {mass * p, length * p, time * p, angle * p}; }
 };
 
 namespace dimension {
@@ -39,9 +37,9 @@ inline constexpr Dimension kInversePressure{-1, 1, 2, 0};
 inline constexpr Dimension kEnergy{1, 2, -2, 0};
 inline constexpr Dimension kForcePerLength{1, 0, -2, 0};
 inline constexpr Dimension kMoment{1, 2, -2, 0};
-}  // namespace dimension
+} // namespace dimension
 
 /// Human description used in error messages: "a pressure (e.g. \"30.62 GPa\")".
 std::string describe(const Dimension& d);
 
-}  // namespace grainload::io
+} // namespace grainload::io

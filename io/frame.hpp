@@ -14,7 +14,7 @@ namespace grainload::io {
 struct FieldArray {
     std::string name;
     int components = 1;
-    std::vector<double> values;  ///< size = components * count
+    std::vector<double> values; ///< size = components * count
 };
 
 /// One block of an output frame: an SPH body (points only) or a shell mesh (quads/triangles).
@@ -42,7 +42,7 @@ struct ResultFigure {
     double value = 0.0;
     std::string unit;
     std::optional<double> reference;
-    std::string source;  ///< paper or formula of the reference
+    std::string source; ///< paper or formula of the reference
 };
 
-}  // namespace grainload::io
+} // namespace grainload::io

@@ -22,14 +22,21 @@ std::string quoted(const std::string& text) {
     out << '"';
     for (char c : text) {
         switch (c) {
-        case '"': out << "\\\""; break;
-        case '\\': out << "\\\\"; break;
-        case '\n': out << "\\n"; break;
-        case '\t': out << "\\t"; break;
+        case '"':
+            out << "\\\"";
+            break;
+        case '\\':
+            out << "\\\\";
+            break;
+        case '\n':
+            out << "\\n";
+            break;
+        case '\t':
+            out << "\\t";
+            break;
         default:
             if (static_cast<unsigned char>(c) < 0x20) {
-                out << "\\u" << std::hex << std::setw(4) << std::setfill('0') << int(c)
-                    << std::dec;
+                out << "\\u" << std::hex << std::setw(4) << std::setfill('0') << int(c) << std::dec;
             } else {
                 out << c;
             }
@@ -54,8 +61,8 @@ void write_result(std::ostream& out, const ResultFigure& figure) {
         << ", \"unit\": " << quoted(figure.unit);
     if (figure.reference) {
         const double reference = *figure.reference;
-        out << ", \"reference\": " << number(reference) << ", \"source\": "
-            << quoted(figure.source);
+        out << ", \"reference\": " << number(reference)
+            << ", \"source\": " << quoted(figure.source);
         if (reference != 0.0) {
             out << ", \"relative_error\": "
                 << number(std::abs(figure.value - reference) / std::abs(reference));
@@ -66,7 +73,7 @@ void write_result(std::ostream& out, const ResultFigure& figure) {
     out << '}';
 }
 
-}  // namespace
+} // namespace
 
 void write_run_summary(const RunSummary& summary, const std::string& path) {
     write_file_atomically(path, [&](std::ostream& out) {
@@ -95,4 +102,4 @@ void write_run_summary(const RunSummary& summary, const std::string& path) {
     });
 }
 
-}  // namespace grainload::io
+} // namespace grainload::io

@@ -12,11 +12,11 @@ struct RunSummary {
     std::string case_name;
     std::string case_file;
     int threads = 1;
-    double wall_time = 0.0;  ///< s
+    double wall_time = 0.0; ///< s
     double simulated_time = 0.0;
     Index steps = 0;
-    Index points = 0;  ///< particles + shell nodes
-    std::string status = "completed";  ///< "completed" or "unstable"
+    Index points = 0;                 ///< particles + shell nodes
+    std::string status = "completed"; ///< "completed" or "unstable"
     std::string diagnosis;
     std::vector<ResultFigure> results;
 
@@ -27,4 +27,4 @@ struct RunSummary {
 /// {"value", "unit"[, "reference", "source", "relative_error"]}.
 void write_run_summary(const RunSummary& summary, const std::string& path);
 
-}  // namespace grainload::io
+} // namespace grainload::io

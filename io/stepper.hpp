@@ -34,4 +34,4 @@ class Stepper {
     virtual void read_checkpoint(std::istream& in) = 0;
 };
 
-}  // namespace grainload::io
+} // namespace grainload::io

@@ -20,4 +20,4 @@ using Mat3 = Eigen::Matrix3d;
 using Voigt6 = Eigen::Matrix<double, 6, 1>;
 using Matrix6 = Eigen::Matrix<double, 6, 6>;
 
-}  // namespace grainload
+} // namespace grainload

@@ -42,7 +42,7 @@ struct Prefix {
 };
 
 constexpr std::array kPrefixes{
-    Prefix{"G", 1e9}, Prefix{"M", 1e6}, Prefix{"k", 1e3},  Prefix{"c", 1e-2},
+    Prefix{"G", 1e9},  Prefix{"M", 1e6},  Prefix{"k", 1e3},  Prefix{"c", 1e-2},
     Prefix{"m", 1e-3}, Prefix{"u", 1e-6}, Prefix{"µ", 1e-6}, Prefix{"n", 1e-9},
 };
 
@@ -126,7 +126,7 @@ std::size_t parse_number(std::string_view text, double& value) {
     return static_cast<std::size_t>(end - text.data());
 }
 
-}  // namespace
+} // namespace
 
 std::optional<Quantity> parse_unit(std::string_view text, std::string* error) {
     text = trim(text);
@@ -216,4 +216,4 @@ std::optional<Quantity> parse_quantity(std::string_view text, std::string* error
     return list->front();
 }
 
-}  // namespace grainload::io
+} // namespace grainload::io

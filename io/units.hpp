@@ -20,10 +20,9 @@ struct Quantity {
 std::optional<Quantity> parse_quantity(std::string_view text, std::string* error);
 
 /// Parse several numbers sharing one unit: "0 0 -9.81 m/s^2", "10, 20, 30 mm".
-std::optional<std::vector<Quantity>> parse_quantity_list(std::string_view text,
-                                                         std::string* error);
+std::optional<std::vector<Quantity>> parse_quantity_list(std::string_view text, std::string* error);
 
 /// Parse a unit expression alone ("kg/m^3", "MPa^-1"): its SI factor and dimension.
 std::optional<Quantity> parse_unit(std::string_view text, std::string* error);
 
-}  // namespace grainload::io
+} // namespace grainload::io

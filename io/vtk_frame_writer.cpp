@@ -2,6 +2,11 @@
 
 #include "io/atomic_file.hpp"
 
+#include <charconv>
+#include <cstdio>
+#include <filesystem>
+#include <ostream>
+#include <stdexcept>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
@@ -12,12 +17,6 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLUnstructuredGridWriter.h>
-
-#include <cstdio>
-#include <filesystem>
-#include <iomanip>
-#include <ostream>
-#include <stdexcept>
 
 namespace grainload::io {
 
@@ -50,8 +49,7 @@ vtkNew<vtkPoints> to_vtk_points(const std::vector<Vec3>& points) {
     return vtk_points;
 }
 
-template <class Writer>
-void configure_and_write(Writer& writer, const std::string& path) {
+template <class Writer> void configure_and_write(Writer& writer, const std::string& path) {
     writer->SetFileName(path.c_str());
     writer->SetDataModeToAppended();
     writer->EncodeAppendedDataOff();
@@ -67,7 +65,7 @@ void add_arrays(vtkDataSetAttributes* attributes, const std::vector<FieldArray>&
     }
 }
 
-}  // namespace
+} // namespace
 
 VtkFrameWriter::VtkFrameWriter(std::string directory, std::string case_name)
     : directory_(std::move(directory)), case_name_(std::move(case_name)) {
@@ -133,11 +131,13 @@ void VtkFrameWriter::write_collection() const {
     write_file_atomically(directory_ + "/" + case_name_ + ".pvd", [&](std::ostream& out) {
         out << "<?xml version=\"1.0\"?>\n"
                "<VTKFile type=\"Collection\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
-               "  <Collection>\n"
-            << std::setprecision(17);
+               "  <Collection>\n";
         for (std::size_t i = 0; i < times_.size(); ++i) {
-            out << "    <DataSet timestep=\"" << times_[i] << "\" file=\"frames/" << frame_stem(i)
-                << ".vtm\"/>\n";
+            // Shortest text that reads back as the same double: "0.2", not "0.20000000000000001".
+            char time[32];
+            const auto end = std::to_chars(time, time + sizeof time, times_[i]).ptr;
+            out << "    <DataSet timestep=\"" << std::string_view(time, end - time)
+                << "\" file=\"frames/" << frame_stem(i) << ".vtm\"/>\n";
         }
         out << "  </Collection>\n</VTKFile>\n";
     });
@@ -158,4 +158,4 @@ std::string VtkFrameWriter::write(const Frame& frame) {
     return directory_ + "/frames/" + stem + ".vtm";
 }
 
-}  // namespace grainload::io
+} // namespace grainload::io

@@ -33,4 +33,4 @@ class VtkFrameWriter {
     std::vector<double> times_;
 };
 
-}  // namespace grainload::io
+} // namespace grainload::io

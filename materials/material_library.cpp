@@ -28,10 +28,10 @@ int MaterialLibrary::index_of(const io::CaseTable& table, std::string_view key) 
         for (const auto& n : names_) {
             known += (known.empty() ? "\"" : ", \"") + n + "\"";
         }
-        table.fail(key, "no [[material]] is called \"" + name + "\" (defined: " +
-                            (known.empty() ? std::string("none") : known) + ")");
+        table.fail(key, "no [[material]] is called \"" + name +
+                            "\" (defined: " + (known.empty() ? std::string("none") : known) + ")");
     }
     return static_cast<int>(found - names_.begin());
 }
 
-}  // namespace grainload::materials
+} // namespace grainload::materials

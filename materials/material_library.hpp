@@ -19,7 +19,9 @@ class MaterialLibrary {
 
     /// Index of the material called table[key]; a CaseError names the key if there is none.
     int index_of(const io::CaseTable& table, std::string_view key) const;
-    const Material& operator[](int index) const { return *materials_[static_cast<std::size_t>(index)]; }
+    const Material& operator[](int index) const {
+        return *materials_[static_cast<std::size_t>(index)];
+    }
     const std::string& name(int index) const { return names_[static_cast<std::size_t>(index)]; }
     int size() const { return static_cast<int>(materials_.size()); }
 
@@ -28,4 +30,4 @@ class MaterialLibrary {
     std::vector<std::unique_ptr<Material>> materials_;
 };
 
-}  // namespace grainload::materials
+} // namespace grainload::materials

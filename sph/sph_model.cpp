@@ -16,8 +16,8 @@ std::unique_ptr<SphModel> SphModel::from_case(const io::CaseTable& root,
                                               const materials::MaterialLibrary& materials) {
     std::unique_ptr<SphModel> model(new SphModel(materials));
     const io::CaseTable sph = root.table("sph");
-    model->gravity_ = root.table("case").vector_or("gravity", dim::kAcceleration,
-                                                   Vec3(0.0, 0.0, -9.81));
+    model->gravity_ =
+        root.table("case").vector_or("gravity", dim::kAcceleration, Vec3(0.0, 0.0, -9.81));
     model->time_step_ = sph.positive_quantity_or("time_step", dim::kTime, 0.0);
     model->interactions_ = sph.boolean_or("interactions", true);
     if (model->interactions_) {
@@ -59,9 +59,10 @@ void SphModel::add_body(const io::CaseTable& body, int dimension) {
         particles_.add(x, velocity, particle_mass, law.density(), body_index, material,
                        law.state_size());
         const Index i = particles_.size() - 1;
-        auto state = std::span(particles_.state).subspan(
-            static_cast<std::size_t>(particles_.state_offset[static_cast<std::size_t>(i)]),
-            static_cast<std::size_t>(law.state_size()));
+        auto state = std::span(particles_.state)
+                         .subspan(static_cast<std::size_t>(
+                                      particles_.state_offset[static_cast<std::size_t>(i)]),
+                                  static_cast<std::size_t>(law.state_size()));
         law.initialise_state(state);
     }
     body_names_.push_back(std::move(name));
@@ -99,15 +100,15 @@ void SphModel::advance(double, double dt) {
 std::optional<std::string> SphModel::diagnose() const {
     const auto& p = particles_;
     for (std::size_t i = 0; i < p.position.size(); ++i) {
-        const char* bad = !p.position[i].allFinite()   ? "position"
-                          : !p.velocity[i].allFinite() ? "velocity"
-                          : !p.stress[i].allFinite()   ? "stress"
+        const char* bad = !p.position[i].allFinite()                            ? "position"
+                          : !p.velocity[i].allFinite()                          ? "velocity"
+                          : !p.stress[i].allFinite()                            ? "stress"
                           : !std::isfinite(p.density[i]) || p.density[i] <= 0.0 ? "density"
                                                                                 : nullptr;
         if (bad != nullptr) {
             std::ostringstream out;
-            out << "particle " << i << " (body " << body_names_[static_cast<std::size_t>(
-                                                          p.body_id[i])]
+            out << "particle " << i << " (body "
+                << body_names_[static_cast<std::size_t>(p.body_id[i])]
                 << ") has a non-finite or non-physical " << bad;
             return out.str();
         }
@@ -117,17 +118,18 @@ std::optional<std::string> SphModel::diagnose() const {
 
 namespace {
 
-double pressure_of(const Voigt6& s) { return -(s[0] + s[1] + s[2]) / 3.0; }
+double pressure_of(const Voigt6& s) {
+    return -(s[0] + s[1] + s[2]) / 3.0;
+}
 
 double von_mises_of(const Voigt6& s) {
     const double p = (s[0] + s[1] + s[2]) / 3.0;
-    const double dev = (s[0] - p) * (s[0] - p) + (s[1] - p) * (s[1] - p) +
-                       (s[2] - p) * (s[2] - p) +
+    const double dev = (s[0] - p) * (s[0] - p) + (s[1] - p) * (s[1] - p) + (s[2] - p) * (s[2] - p) +
                        2.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
     return std::sqrt(1.5 * dev);
 }
 
-}  // namespace
+} // namespace
 
 void SphModel::append_blocks(io::Frame& frame) const {
     const auto& p = particles_;
@@ -156,8 +158,8 @@ void SphModel::append_blocks(io::Frame& frame) const {
             body.values.push_back(p.body_id[i]);
             material.values.push_back(p.material_id[i]);
         }
-        block.point_arrays = {velocity, displacement, stress,  pressure, von_mises,
-                              plastic,  density,      body,    material};
+        block.point_arrays = {velocity, displacement, stress, pressure, von_mises,
+                              plastic,  density,      body,   material};
         frame.blocks.push_back(std::move(block));
     }
 }
@@ -211,4 +213,4 @@ void SphModel::read_checkpoint(std::istream& in) {
     }
 }
 
-}  // namespace grainload::sph
+} // namespace grainload::sph

@@ -44,8 +44,8 @@ class SphModel final : public io::Stepper {
     std::vector<Vec3> initial_position_;
     std::vector<Vec3> initial_velocity_;
     Vec3 gravity_ = Vec3::Zero();
-    double time_step_ = 0.0;  ///< fixed by the case; 0 means "from the CFL condition"
+    double time_step_ = 0.0; ///< fixed by the case; 0 means "from the CFL condition"
     bool interactions_ = true;
 };
 
-}  // namespace grainload::sph
+} // namespace grainload::sph

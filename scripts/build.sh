@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# scripts/build.sh [cmake --build options]
+# Installs missing Debian packages, configures build/ in Release once, and builds incrementally.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${GRAINLOAD_BUILD:-$root/build}"
+bash "$root/scripts/ensure_packages.sh"
+if [[ ! -f "$build/CMakeCache.txt" ]]; then
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+fi
+cmake --build "$build" -j "${GRAINLOAD_JOBS:-$(nproc)}" "$@"
