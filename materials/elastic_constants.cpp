@@ -59,4 +59,4 @@ Matrix6 ElasticConstants::stiffness() const {
     return d;
 }
 
-}  // namespace grainload::materials
+} // namespace grainload::materials

@@ -29,4 +29,4 @@ struct ElasticConstants {
     Matrix6 stiffness() const;
 };
 
-}  // namespace grainload::materials
+} // namespace grainload::materials

@@ -16,4 +16,4 @@ PlasticRegion LinearElastic::update(const Voigt6& strain_increment, Voigt6& stre
     return PlasticRegion::elastic;
 }
 
-}  // namespace grainload::materials
+} // namespace grainload::materials

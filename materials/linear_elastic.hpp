@@ -17,4 +17,4 @@ class LinearElastic final : public Material {
                          Matrix6* tangent) const override;
 };
 
-}  // namespace grainload::materials
+} // namespace grainload::materials

@@ -12,10 +12,10 @@ namespace grainload::materials {
 /// Which part of the yield surface the last update ended on; written per point for output.
 enum class PlasticRegion : int {
     elastic = 0,
-    failure_surface = 1,  ///< von Mises / Drucker-Prager cone / cap-model failure envelope
+    failure_surface = 1, ///< von Mises / Drucker-Prager cone / cap-model failure envelope
     cap = 2,
-    corner = 3,  ///< failure surface meets cap
-    apex = 4,    ///< cone apex or tension cutoff
+    corner = 3, ///< failure surface meets cap
+    apex = 4,   ///< cone apex or tension cutoff
 };
 
 /// A constitutive model shared by SPH and FEM. Parameters live in the object; the per-point
@@ -51,4 +51,4 @@ class Material {
     ElasticConstants elastic_;
 };
 
-}  // namespace grainload::materials
+} // namespace grainload::materials

@@ -9,4 +9,4 @@ namespace grainload::materials {
 /// Build the material described by one [[material]] table; its `model` key picks the class.
 std::unique_ptr<Material> make_material(const io::CaseTable& table);
 
-}  // namespace grainload::materials
+} // namespace grainload::materials
