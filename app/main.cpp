@@ -2,6 +2,7 @@
 #include "app/run_driver.hpp"
 #include "io/case_error.hpp"
 #include "io/version.hpp"
+#include "materials/material_point_driver.hpp"
 
 #include <exception>
 #include <iostream>
@@ -16,8 +17,10 @@ int main(int argc, char** argv) {
         case app::CommandLine::Command::check:
             return app::check_case(line);
         case app::CommandLine::Command::matpoint:
-            std::cerr << "grainload: matpoint is not in this build yet\n";
-            return app::kExitBadInput;
+            if (!line.out) {
+                throw io::CaseError("command line: matpoint expects --out FILE.csv");
+            }
+            return materials::run_material_point(line.input, *line.out);
         case app::CommandLine::Command::version:
             std::cout << "grainload " << kVersion << " (" << kGitHash << ")\n";
             return app::kExitOk;

@@ -1,0 +1,63 @@
+#pragma once
+
+#include "materials/material.hpp"
+
+#include <limits>
+#include <memory>
+
+namespace grainload::materials {
+
+/// Perfectly plastic Drucker-Prager model with non-associated flow and a tension cutoff.
+///
+/// Yield:     f = sqrt(J2) + alpha I1 - k <= 0     (thesis 4.6.3.1 with tension-positive I1:
+///                                                 the thesis's theta is alpha)
+/// Potential: g = sqrt(J2) + alpha_flow I1          (alpha_flow from the dilatancy angle)
+/// Cutoff:    f_t = I1 - T <= 0, associated flow    (thesis section 4.6.3, line I1 = T)
+///
+/// The invariant is sqrt(J2) = ||s|| / sqrt(2); constants fitted against ||s|| differ by sqrt 2.
+/// The return map is closed form (the model is perfectly plastic, so each region's equation is
+/// linear) with three regions: the cone, the cutoff plane, and their intersection circle, which
+/// is the apex itself when T is at the apex (the default). Derivation and consistent tangents in
+/// docs/theory/materials.md.
+///
+/// State per point: equivalent plastic strain sqrt(2/3)||e_p||, plastic volumetric strain.
+class DruckerPrager final : public Material {
+  public:
+    struct Parameters {
+        double alpha = 0.0;      ///< friction coefficient on I1
+        double k = 0.0;          ///< cohesion term, Pa
+        double alpha_flow = 0.0; ///< dilatancy coefficient on I1 in the potential
+        double tension_cutoff = std::numeric_limits<double>::infinity(); ///< T on I1, Pa
+    };
+
+    /// A cutoff above the apex k/alpha is clamped to it; infinity with alpha > 0 means the apex.
+    DruckerPrager(ElasticConstants elastic, Parameters parameters);
+    /// Keys, one of two forms plus the elastic keys:
+    ///  - friction_angle, cohesion, dilatancy_angle, cone_fit = plane_strain|compression|
+    ///    extension|inner;
+    ///  - dp_k (pressure), dp_theta (number), optional dp_theta_flow (default dp_theta).
+    /// Optional tension_cutoff (pressure, the limit on I1; default the apex).
+    static std::unique_ptr<DruckerPrager> from_case(const io::CaseTable& table);
+
+    std::string_view model() const override { return "drucker_prager"; }
+    int state_size() const override { return 2; }
+    std::vector<std::string> state_names() const override;
+    PlasticRegion update(const Voigt6& strain_increment, Voigt6& stress, std::span<double> state,
+                         Matrix6* tangent) const override;
+    double equivalent_plastic_strain(std::span<const double> state) const override;
+
+    const Parameters& parameters() const { return parameters_; }
+    /// f = sqrt(J2) + alpha I1 - k at a stress.
+    double yield_function(const Voigt6& stress) const;
+
+  private:
+    struct Trial;
+    void return_to_cone(const Trial& trial, double multiplier, Voigt6& stress,
+                        Matrix6* tangent) const;
+    void return_to_cutoff(const Trial& trial, Voigt6& stress, Matrix6* tangent) const;
+    void return_to_corner(const Trial& trial, Voigt6& stress, Matrix6* tangent) const;
+
+    Parameters parameters_;
+};
+
+} // namespace grainload::materials

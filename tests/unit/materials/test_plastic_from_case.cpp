@@ -1,0 +1,83 @@
+#include "io/case_error.hpp"
+#include "io/case_table.hpp"
+#include "materials/drucker_prager.hpp"
+#include "materials/material_factory.hpp"
+#include "materials/von_mises.hpp"
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <numbers>
+#include <string>
+
+namespace grainload::materials {
+namespace {
+
+std::unique_ptr<Material> build(const std::string& body) {
+    const auto document = io::CaseDocument::from_string("[[material]]\n" + body, "case.toml");
+    auto material = make_material(document->root().array_of_tables("material").front());
+    document->reject_unknown_keys();
+    return material;
+}
+
+constexpr const char* kSandElastic =
+    "density = \"1700 kg/m^3\"\nbulk_modulus = \"30 MPa\"\nshear_modulus = \"10 MPa\"\n";
+
+TEST(PlasticFromCase, VonMisesReadsUnitsAndHardening) {
+    const auto m = build("model = \"von_mises\"\ndensity = \"2700 kg/m^3\"\n"
+                         "youngs_modulus = \"1.65e5 MPa\"\npoisson_ratio = 0.33\n"
+                         "yield_stress = \"290 MPa\"\ntangent_modulus = \"1 GPa\"\n"
+                         "hardening_beta = 0.25\n");
+    const auto& vm = dynamic_cast<const VonMises&>(*m);
+    EXPECT_DOUBLE_EQ(vm.yield_stress(), 290e6);
+    EXPECT_DOUBLE_EQ(vm.beta(), 0.25);
+    // Thesis 4.6.2.1: E_p = E E_T / (E - E_T).
+    EXPECT_NEAR(vm.plastic_modulus(), 1.65e11 * 1e9 / (1.65e11 - 1e9), 1e-3);
+    EXPECT_EQ(m->state_size(), 7);
+}
+
+TEST(PlasticFromCase, VonMisesRefusesTangentAboveYoung) {
+    EXPECT_THROW(build("model = \"von_mises\"\ndensity = \"2700 kg/m^3\"\n"
+                       "youngs_modulus = \"1 GPa\"\npoisson_ratio = 0.3\n"
+                       "yield_stress = \"1 MPa\"\ntangent_modulus = \"2 GPa\"\n"),
+                 io::CaseError);
+}
+
+TEST(PlasticFromCase, DruckerPragerFromAnglesWithCutoff) {
+    const auto m = build(std::string("model = \"drucker_prager\"\n") + kSandElastic +
+                         "friction_angle = \"30 deg\"\ncohesion = \"10 kPa\"\n"
+                         "dilatancy_angle = \"0 deg\"\ncone_fit = \"plane_strain\"\n"
+                         "tension_cutoff = \"5 kPa\"\n");
+    const auto& p = dynamic_cast<const DruckerPrager&>(*m).parameters();
+    // Plane strain, psi = 0: alpha = sin(phi) / 3, k = c cos(phi).
+    EXPECT_NEAR(p.alpha, 0.5 / 3.0, 1e-14);
+    EXPECT_NEAR(p.k, 10e3 * std::cos(std::numbers::pi / 6.0), 1e-9);
+    EXPECT_EQ(p.alpha_flow, 0.0);
+    EXPECT_DOUBLE_EQ(p.tension_cutoff, 5e3);
+}
+
+TEST(PlasticFromCase, DruckerPragerFromThesisConstantsDefaultsToTheApex) {
+    const auto m = build(std::string("model = \"drucker_prager\"\n") + kSandElastic +
+                         "dp_k = \"0.03858 MPa\"\ndp_theta = 0.03\n");
+    const auto& p = dynamic_cast<const DruckerPrager&>(*m).parameters();
+    EXPECT_DOUBLE_EQ(p.k, 0.03858e6);
+    EXPECT_DOUBLE_EQ(p.alpha, 0.03);
+    EXPECT_DOUBLE_EQ(p.alpha_flow, 0.03);
+    EXPECT_NEAR(p.tension_cutoff, 0.03858e6 / 0.03, 1e-6);
+}
+
+TEST(PlasticFromCase, DruckerPragerRefusesMixedFormsAndCutoffBeyondApex) {
+    const std::string base = std::string("model = \"drucker_prager\"\n") + kSandElastic;
+    EXPECT_THROW(build(base + "dp_k = \"1 kPa\"\ndp_theta = 0.1\nfriction_angle = \"30 deg\"\n"),
+                 io::CaseError);
+    EXPECT_THROW(build(base + "dp_k = \"1 kPa\"\ndp_theta = 0.1\ntension_cutoff = \"20 kPa\"\n"),
+                 io::CaseError);
+    EXPECT_THROW(build(base + "friction_angle = \"30 deg\"\ncohesion = \"1 kPa\"\n"
+                              "dilatancy_angle = \"40 deg\"\ncone_fit = \"inner\"\n"),
+                 io::CaseError);
+    EXPECT_THROW(build(base + "friction_angle = \"30 deg\"\ncohesion = \"1 kPa\"\n"
+                              "dilatancy_angle = \"0 deg\"\ncone_fit = \"outer\"\n"),
+                 io::CaseError);
+}
+
+} // namespace
+} // namespace grainload::materials
