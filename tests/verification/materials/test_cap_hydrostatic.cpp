@@ -5,10 +5,9 @@
 
 #include "tests/unit/materials/cap_test_support.hpp"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
+#include <gtest/gtest.h>
 
 namespace grainload::materials::testing {
 namespace {
@@ -52,8 +51,8 @@ TEST(CapHydrostatic, FollowsTheHardeningLawIndependentlyOfTheStepCount) {
     // tolerance (1e-14) amplified by the condition of I1(ev) near W (dI1/dev up to ~1e12 Pa).
     EXPECT_LT(worst_steps, 1e-8);
     EXPECT_LT(worst_exact, 1e-8);
-    RecordProperty("worst_step_count_difference", std::to_string(worst_steps));
-    RecordProperty("worst_closed_form_difference", std::to_string(worst_exact));
+    RecordProperty("worst_step_count_difference", figure(worst_steps));
+    RecordProperty("worst_closed_form_difference", figure(worst_exact));
 }
 
 TEST(CapHydrostatic, UnloadingIsElasticAndReloadingResumesTheLaw) {
@@ -71,5 +70,5 @@ TEST(CapHydrostatic, UnloadingIsElasticAndReloadingResumesTheLaw) {
     EXPECT_NEAR(invariants(stress)[0], hydrostat_i1(p, 0.15), 1e-9 * hydrostat_i1(p, 0.15));
 }
 
-}  // namespace
-}  // namespace grainload::materials::testing
+} // namespace
+} // namespace grainload::materials::testing

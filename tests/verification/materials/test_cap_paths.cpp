@@ -5,10 +5,9 @@
 
 #include "tests/unit/materials/cap_test_support.hpp"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
+#include <gtest/gtest.h>
 
 namespace grainload::materials::testing {
 namespace {
@@ -25,24 +24,34 @@ Voigt6 all_normal(double value) {
 Voigt6 consolidate(const GeneralizedCap& m, std::vector<double>& state, double pressure) {
     Voigt6 stress = Voigt6::Zero();
     for (int i = 1; i <= 10; ++i) {
-        mixed_step(m, stress, state, Voigt6::Zero(), {true, true, true, false, false, false},
+        Voigt6 zero = Voigt6::Zero();
+        mixed_step(m, stress, state, zero, {true, true, true, false, false, false},
                    all_normal(-pressure * i / 10.0));
     }
     return stress;
 }
 
-/// Axial compression with the lateral stresses held at -p; returns the largest axial
-/// compression reached and the last region.
+/// Axial compression with the lateral stresses held at -p, on a sample consolidated to
+/// 2p + 1/3 MPa and unloaded to p, so that the cap centre L lies beyond the peak's I1 and the
+/// path meets the failure surface itself; returns the largest axial compression reached and
+/// the last region. (A normally consolidated sample rides the hardening cap and approaches the
+/// envelope only asymptotically, as the cap's flow turns deviatoric near its top.)
 std::pair<double, PlasticRegion> triaxial_peak(const GeneralizedCap& m, double pressure) {
     std::vector<double> state = initial_state(m);
-    Voigt6 stress = consolidate(m, state, pressure);
+    Voigt6 stress = consolidate(m, state, 2.0 * pressure + kMPa / 3.0);
+    for (int i = 1; i <= 10; ++i) {
+        Voigt6 zero = Voigt6::Zero();
+        mixed_step(m, stress, state, zero, {true, true, true, false, false, false},
+                   all_normal(-(2.0 * pressure + kMPa / 3.0) + (pressure + kMPa / 3.0) * i / 10.0));
+    }
     double peak = 0.0;
     PlasticRegion region = PlasticRegion::elastic;
     Voigt6 increment = Voigt6::Zero();
-    increment(0) = -1e-4;
-    for (int i = 0; i < 1000; ++i) {
-        region = mixed_step(m, stress, state, increment,
-                            {false, true, true, false, false, false}, all_normal(-pressure));
+    increment(0) = -2e-6;
+    for (int i = 0; i < 200; ++i) {
+        Voigt6 step = increment;
+        region = mixed_step(m, stress, state, step, {false, true, true, false, false, false},
+                            all_normal(-pressure));
         peak = std::max(peak, -stress(0));
     }
     return {peak, region};
@@ -64,7 +73,8 @@ TEST(CapTriaxial, PeakLiesOnTheFailureEnvelopeAtEveryConfiningPressure) {
         // The return satisfies f1 = 0 to the 1e-14 solver tolerance; the lateral stress
         // control converges to 1e-11 of the stress; 1e-9 relative is safely above both.
         EXPECT_NEAR(peak, expected, 1e-9 * expected) << "p = " << pressure;
-        RecordProperty("peak_MPa_at_" + std::to_string(pressure / kMPa), std::to_string(peak / kMPa));
+        RecordProperty("peak_error_at_kPa_" + std::to_string(static_cast<int>(pressure / 1e3)),
+                       figure(std::abs(peak - expected) / expected));
     }
 }
 
@@ -88,26 +98,25 @@ TEST(CapShear, PlateauAtTheEnvelopeWithAssociatedDilatancyUntilTheCapArrives) {
     const GeneralizedCap m(thesis_elastic(), p);
     std::vector<double> state = initial_state(m);
     Voigt6 stress = consolidate(m, state, 1.0 / 3.0 * kMPa); // X = 1 MPa, L ~ 0.87 MPa
-    const double pressure = 0.2 * kMPa;                       // I1 = 0.6 MPa < L
-    stress = drive(m, stress, state, hydrostatic_strain((0.6 * kMPa - 1.0 * kMPa) / (3.0 * kBulk)),
-                   1);
+    const double pressure = 0.2 * kMPa;                      // I1 = 0.6 MPa < L
+    stress =
+        drive(m, stress, state, hydrostatic_strain((0.6 * kMPa - 1.0 * kMPa) / (3.0 * kBulk)), 1);
     const double i1 = 3.0 * pressure;
     const double strength = envelope_of(p, i1);
     const double dilatancy = 3.0 * (p.theta + p.gamma * p.beta * std::exp(-p.beta * i1));
     Voigt6 increment = Voigt6::Zero();
-    increment(3) = 5e-5;
+    increment(3) = 1e-5;
     Voigt6 strain = Voigt6::Zero();
     int failure_steps = 0;
     int corner_steps = 0;
     double worst_ratio = 0.0;
     PlasticRegion previous = PlasticRegion::elastic;
-    for (int i = 0; i < 400; ++i) {
+    for (int i = 0; i < 2000; ++i) {
         const Voigt6 before = stress;
         std::vector<double> start = state;
         Voigt6 step = increment;
-        const PlasticRegion region = mixed_step(m, stress, state, step,
-                                                {true, true, true, false, false, false},
-                                                all_normal(-pressure));
+        const PlasticRegion region = mixed_step(
+            m, stress, state, step, {true, true, true, false, false, false}, all_normal(-pressure));
         // Recover the strain increment the control found: elastic part from the stress change,
         // the rest plastic. Total volumetric strain change = d(tr eps).
         const Voigt6 d_eps = strain_for_stress(m, stress - before);
@@ -119,7 +128,8 @@ TEST(CapShear, PlateauAtTheEnvelopeWithAssociatedDilatancyUntilTheCapArrives) {
             // 3 F'(I1) > 0 (dilation, tension positive), with gamma^p = gamma on the plateau.
             EXPECT_NEAR(invariants(stress)[1], strength, 1e-9 * strength);
             EXPECT_LT(std::abs(dv_elastic), 1e-15);
-            worst_ratio = std::max(worst_ratio, std::abs(dv_plastic / 5e-5 - dilatancy) / dilatancy);
+            worst_ratio =
+                std::max(worst_ratio, std::abs(dv_plastic / 1e-5 - dilatancy) / dilatancy);
             ++failure_steps;
         }
         if (region == PlasticRegion::corner && previous == region) {
@@ -141,16 +151,17 @@ TEST(CapShear, PlateauAtTheEnvelopeWithAssociatedDilatancyUntilTheCapArrives) {
     EXPECT_NEAR(state[GeneralizedCap::kCapCenter], i1, 1e-9 * i1);
     EXPECT_NEAR(state[GeneralizedCap::kPlasticVolumetricStrain],
                 p.W * (1.0 - std::exp(-p.D * (x_end - p.X0))), 1e-10);
-    RecordProperty("dilatancy_ratio_error", std::to_string(worst_ratio));
+    RecordProperty("dilatancy_ratio_error", figure(worst_ratio));
 }
 
 TEST(CapTension, ExtensionOfSandEndsAtTheApexWithZeroStress) {
     const GeneralizedCap m(thesis_elastic(), thesis_cap());
     std::vector<double> state = initial_state(m);
     Voigt6 stress = consolidate(m, state, 0.2 * kMPa);
-    Voigt6 extension = Voigt6::Zero();
-    extension(0) = 1e-3;
-    extension(4) = 2e-4;
+    // Volumetric extension with a little distortion: the trial lies beyond the normal cone of
+    // the failure surface at the apex, I1_tr < -9K F'(0) (q_tr - F(0)) / G.
+    Voigt6 extension = hydrostatic_strain(-1e-3);
+    extension(4) = 2e-6;
     Matrix6 tangent;
     EXPECT_EQ(m.update(extension, stress, state, &tangent), PlasticRegion::apex);
     // k = gamma puts the apex of the envelope at I1 = 0 = -T: cohesionless sand carries no
@@ -180,5 +191,5 @@ TEST(CapTension, CutoffPlaneKeepsTheDeviatorAndItsCornerLimitsIt) {
     }
 }
 
-}  // namespace
-}  // namespace grainload::materials::testing
+} // namespace
+} // namespace grainload::materials::testing

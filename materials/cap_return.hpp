@@ -1,0 +1,43 @@
+#pragma once
+
+#include "materials/cap_surfaces.hpp"
+#include "materials/material.hpp"
+
+// Backward-Euler return mapping of the generalized cap model in the invariant plane
+// (I1, sqrt(J2)), compression positive. Every region reduces to one scalar equation g(u) = 0
+// (derivations in docs/theory/generalized_cap.md); the deviator is always scaled radially,
+// s = rho s_trial, because every flow direction is coaxial with s.
+namespace grainload::materials::cap {
+
+/// Constants a return needs, fixed per material.
+struct Model {
+    Parameters p;
+    double bulk = 0.0;
+    double shear = 0.0;
+    double i1_min = 0.0; ///< minimum_pressure(p), cached
+};
+
+/// Hardening state of one point: cap position X and cap centre L (X = L + R F(L)).
+struct Hardening {
+    double x = 0.0;
+    double l = 0.0;
+};
+
+/// Outcome of a return: final I1, radial factor rho, the Jacobian of (I1, rho) with respect to
+/// the trial invariants (I1_tr, q_tr = sqrt(J2_tr)) for the consistent tangent, and the new
+/// hardening state with its plastic volumetric strain increment (compaction positive).
+struct Return {
+    PlasticRegion region = PlasticRegion::elastic;
+    double i1 = 0.0;
+    double rho = 1.0;
+    double di1_di1 = 1.0;
+    double di1_dq = 0.0;
+    double drho_di1 = 0.0;
+    double drho_dq = 0.0;
+    Hardening hardening;
+    double hardening_strain = 0.0;
+};
+
+Return return_map(const Model& model, double i1_trial, double q_trial, const Hardening& state);
+
+} // namespace grainload::materials::cap

@@ -1,0 +1,55 @@
+#pragma once
+
+#include "materials/cap_return.hpp"
+#include "materials/material.hpp"
+
+#include <memory>
+#include <string>
+#include <utility>
+
+namespace grainload::materials {
+
+/// Generalized cap model (Sandler-DiMaggio-Baladi; algorithm after Sandler & Rubin as given
+/// by Kojic & Bathe; thesis section 4.6.3), integrated fully implicitly (backward Euler) with
+/// the cap hardening coupled and an analytic consistent tangent in every region.
+///
+/// The model is written compression positive (I1 = tr sigma > 0 in compression, sqrt(J2) of the
+/// deviator) as in its sources; update() converts from the tension-positive convention of
+/// io/types.hpp at entry and back at exit. State per point (names as in state_names()):
+///   0 cap_position              X [Pa], where the cap meets the I1 axis
+///   1 cap_center                L [Pa], I1 of the ellipse centre, X = L + R F(L)
+///   2 plastic_volumetric_strain eps_v^p of the hardening law, COMPACTION positive
+///   3 equivalent_plastic_strain sqrt(2/3 deps^p : deps^p), accumulated
+class GeneralizedCap final : public Material {
+  public:
+    enum StateIndex : int {
+        kCapPosition = 0,
+        kCapCenter = 1,
+        kPlasticVolumetricStrain = 2,
+        kEquivalentPlasticStrain = 3,
+    };
+
+    /// Throws std::invalid_argument when the parameters admit no elastic region.
+    GeneralizedCap(ElasticConstants elastic, cap::Parameters parameters);
+    /// Reads the elastic keys and cap_k, cap_theta, cap_gamma, cap_beta, cap_D, cap_W, cap_X0,
+    /// cap_R and tension_cutoff (optional, default 0 MPa), each with explicit units.
+    static std::unique_ptr<GeneralizedCap> from_case(const io::CaseTable& table);
+
+    /// Key and message of the first inadmissible parameter; empty key when all are valid.
+    static std::pair<std::string, std::string> check(const cap::Parameters& parameters);
+
+    std::string_view model() const override { return "generalized_cap"; }
+    int state_size() const override { return 4; }
+    std::vector<std::string> state_names() const override;
+    void initialise_state(std::span<double> state) const override;
+    PlasticRegion update(const Voigt6& strain_increment, Voigt6& stress, std::span<double> state,
+                         Matrix6* tangent) const override;
+    double equivalent_plastic_strain(std::span<const double> state) const override;
+
+    const cap::Parameters& parameters() const { return model_.p; }
+
+  private:
+    cap::Model model_;
+};
+
+} // namespace grainload::materials
