@@ -1,5 +1,6 @@
 #include "app/scene.hpp"
 
+#include "fem/shell_model.hpp"
 #include "sph/sph_model.hpp"
 
 #include <filesystem>
@@ -31,8 +32,12 @@ std::unique_ptr<Scene> Scene::load(const std::string& file,
     if (root.has("sph")) {
         scene->steppers.push_back(sph::SphModel::from_case(root, scene->materials));
     }
+    if (root.has("fem")) {
+        scene->steppers.push_back(fem::ShellModel::from_case(root, scene->materials));
+    }
     if (scene->steppers.empty()) {
-        root.fail("", "expected at least one physics module: an [sph] table with [[sph.body]]");
+        root.fail("", "expected at least one physics module: an [sph] table with [[sph.body]] "
+                      "or an [fem] table with [[fem.shell]]");
     }
     scene->document->reject_unknown_keys();
     return scene;

@@ -2,6 +2,7 @@
 
 #include "io/units.hpp"
 
+#include <filesystem>
 #include <sstream>
 #include <toml++/toml.h>
 
@@ -212,6 +213,17 @@ std::string CaseTable::string(std::string_view key) const {
 
 std::string CaseTable::string_or(std::string_view key, std::string fallback) const {
     return has(key) ? string(key) : fallback;
+}
+
+std::string CaseTable::file_path(std::string_view key) const {
+    const std::filesystem::path name = string(key);
+    const auto path =
+        name.is_absolute() ? name : std::filesystem::path(document_->directory()) / name;
+    if (!std::filesystem::is_regular_file(path)) {
+        fail(key, "expected an existing file (relative to the case file), got \"" + path.string() +
+                      "\"");
+    }
+    return path.string();
 }
 
 std::string CaseTable::choice(std::string_view key,

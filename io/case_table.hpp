@@ -58,6 +58,9 @@ class CaseTable {
     bool boolean_or(std::string_view key, bool fallback) const;
     std::string string(std::string_view key) const;
     std::string string_or(std::string_view key, std::string fallback) const;
+    /// A file name, resolved relative to the case file's directory unless absolute; the file
+    /// must exist.
+    std::string file_path(std::string_view key) const;
     /// A string that must be one of `allowed`.
     std::string choice(std::string_view key, std::initializer_list<std::string_view> allowed) const;
     std::string choice_or(std::string_view key, std::initializer_list<std::string_view> allowed,

@@ -1,0 +1,478 @@
+#include "fem/shell_analysis.hpp"
+
+#include "io/binary_stream.hpp"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace grainload::fem {
+
+namespace {
+
+constexpr int kDofs = 6;
+
+/// Rotation matrix of a rotation vector (Rodrigues' formula).
+Mat3 exponential(const Vec3& v) {
+    const double angle = v.norm();
+    if (angle < 1e-300) {
+        return Mat3::Identity();
+    }
+    return Eigen::AngleAxisd(angle, v / angle).toRotationMatrix();
+}
+
+std::size_t at(Index i) {
+    return static_cast<std::size_t>(i);
+}
+
+} // namespace
+
+ShellAnalysis::ShellAnalysis(ShellMesh mesh, const materials::Material& material,
+                             Kinematics kinematics, int thickness_points)
+    : mesh_(std::move(mesh)), material_(&material), kinematics_(kinematics) {
+    mesh_.validate();
+    initial_directors_ = mesh_.nodal_normals();
+    const Index n = mesh_.node_count();
+    prescribed_.assign(at(kDofs * n), std::numeric_limits<double>::quiet_NaN());
+    reference_load_ = Eigen::VectorXd::Zero(kDofs * n);
+    additional_forces_ = reference_load_;
+    dofs_ = Eigen::VectorXd::Zero(kDofs * n);
+    rotations_.assign(at(n), Mat3::Identity());
+    elements_.reserve(at(mesh_.element_count()));
+    for (const auto& e : mesh_.elements()) {
+        elements_.emplace_back(element_nodes(e), e.thickness, material, thickness_points);
+    }
+    committed_dofs_ = dofs_;
+    committed_rotations_ = rotations_;
+}
+
+ShellNodes ShellAnalysis::element_nodes(const ShellElement& element) const {
+    ShellNodes nodes;
+    for (std::size_t k = 0; k < 4; ++k) {
+        const Index n = element.nodes[k];
+        nodes.x[k] = mesh_.node(n) + dofs_.segment<3>(kDofs * n);
+        nodes.director[k] = rotations_[at(n)] * initial_directors_[at(n)];
+    }
+    return nodes;
+}
+
+Vector24 ShellAnalysis::element_dofs(const ShellElement& element) const {
+    Vector24 a;
+    for (int k = 0; k < 4; ++k) {
+        a.segment<6>(kDofs * k) = dofs_.segment<6>(kDofs * element.nodes[at(k)]);
+    }
+    return a;
+}
+
+void ShellAnalysis::prescribe(Index node, int dof, double value) {
+    prescribed_[at(kDofs * node + dof)] = value;
+    numbered_ = false;
+}
+
+void ShellAnalysis::prescribe(const std::vector<Index>& nodes, std::initializer_list<int> dofs,
+                              double value) {
+    for (const Index n : nodes) {
+        for (const int d : dofs) {
+            prescribe(n, d, value);
+        }
+    }
+}
+
+void ShellAnalysis::add_nodal_load(Index node, int dof, double value) {
+    reference_load_(kDofs * node + dof) += value;
+}
+
+void ShellAnalysis::add_surface_load(const SurfaceTraction& traction) {
+    // Consistent nodal loads sum_gp h_k q |G_r x G_s| over 2 x 2 Gauss points of the initial
+    // mid-surface (Bathe FEP eq. 4.22, surface term).
+    constexpr double nr[4] = {-1.0, 1.0, 1.0, -1.0};
+    constexpr double ns[4] = {-1.0, -1.0, 1.0, 1.0};
+    const double g = 1.0 / std::sqrt(3.0);
+    for (const auto& e : mesh_.elements()) {
+        for (const double s : {-g, g}) {
+            for (const double r : {-g, g}) {
+                Vec3 gr = Vec3::Zero();
+                Vec3 gs = Vec3::Zero();
+                for (std::size_t k = 0; k < 4; ++k) {
+                    gr += 0.25 * nr[k] * (1.0 + s * ns[k]) * mesh_.node(e.nodes[k]);
+                    gs += 0.25 * ns[k] * (1.0 + r * nr[k]) * mesh_.node(e.nodes[k]);
+                }
+                const Vec3 normal = gr.cross(gs);
+                const double area = normal.norm();
+                const Vec3 q = traction(e, normal / area);
+                for (std::size_t k = 0; k < 4; ++k) {
+                    const double h = 0.25 * (1.0 + r * nr[k]) * (1.0 + s * ns[k]);
+                    reference_load_.segment<3>(kDofs * e.nodes[k]) += h * area * q;
+                }
+            }
+        }
+    }
+}
+
+void ShellAnalysis::add_area_load(const Vec3& force_per_area) {
+    add_surface_load([&](const ShellElement&, const Vec3&) { return force_per_area; });
+}
+
+void ShellAnalysis::add_pressure(double pressure) {
+    add_surface_load(
+        [&](const ShellElement&, const Vec3& normal) { return Vec3(pressure * normal); });
+}
+
+void ShellAnalysis::add_gravity(const Vec3& acceleration) {
+    const double rho = material_->density();
+    add_surface_load(
+        [&](const ShellElement& e, const Vec3&) { return Vec3(rho * e.thickness * acceleration); });
+}
+
+void ShellAnalysis::number_equations() {
+    equation_.assign(prescribed_.size(), -1);
+    free_count_ = 0;
+    for (std::size_t d = 0; d < prescribed_.size(); ++d) {
+        if (std::isnan(prescribed_[d])) {
+            equation_[d] = free_count_++;
+        }
+    }
+    numbered_ = true;
+}
+
+const std::vector<Index>& ShellAnalysis::equation_numbers() {
+    if (!numbered_) {
+        number_equations();
+    }
+    return equation_;
+}
+
+void ShellAnalysis::assemble(SparseSolver::Matrix* tangent, Eigen::VectorXd& internal,
+                             const Eigen::VectorXd* prescribed, Eigen::VectorXd* coupling) {
+    const std::vector<Index>& eq = equation_numbers();
+    internal = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(prescribed_.size()));
+    if (coupling != nullptr) {
+        *coupling = Eigen::VectorXd::Zero(internal.size());
+    }
+    std::vector<Eigen::Triplet<double>> triplets;
+    if (tangent != nullptr) {
+        triplets.reserve(at(576 * mesh_.element_count()));
+    }
+    Vector24 force;
+    Matrix24 k;
+    for (std::size_t e = 0; e < elements_.size(); ++e) {
+        const ShellElement& element = mesh_.elements()[e];
+        elements_[e].evaluate(element_nodes(element), element_dofs(element), kinematics_, force,
+                              tangent != nullptr ? &k : nullptr);
+        std::array<Index, 24> global{};
+        for (int a = 0; a < 24; ++a) {
+            global[at(a)] = kDofs * element.nodes[at(a / kDofs)] + a % kDofs;
+            internal(global[at(a)]) += force(a);
+        }
+        if (tangent == nullptr) {
+            continue;
+        }
+        if (prescribed != nullptr && coupling != nullptr) {
+            Vector24 ap;
+            for (int a = 0; a < 24; ++a) {
+                ap(a) = (*prescribed)(global[at(a)]);
+            }
+            const Vector24 fp = k * ap;
+            for (int a = 0; a < 24; ++a) {
+                (*coupling)(global[at(a)]) += fp(a);
+            }
+        }
+        for (int a = 0; a < 24; ++a) {
+            const Index row = eq[at(global[at(a)])];
+            for (int b = 0; b < 24 && row >= 0; ++b) {
+                const Index col = eq[at(global[at(b)])];
+                if (col >= 0) {
+                    triplets.emplace_back(row, col, k(a, b));
+                }
+            }
+        }
+    }
+    if (tangent != nullptr) {
+        add_moment_load_stiffness(internal, triplets);
+        tangent->resize(free_count_, free_count_);
+        tangent->setFromTriplets(triplets.begin(), triplets.end());
+    }
+}
+
+void ShellAnalysis::add_moment_load_stiffness(const Eigen::VectorXd& internal,
+                                              std::vector<Eigen::Triplet<double>>& triplets) {
+    // With multiplicative (spin) rotation increments the derivative of the nodal internal
+    // moment m has the non-symmetric part -[m]x / 2 (Simo & Vu-Quoc 1986). It vanishes at
+    // equilibrium where no moment is applied, and is kept only at nodes carrying a moment
+    // load: there it couples the drilling and the twisting rotation, and leaving it out makes
+    // Newton diverge once (m/2)^2 exceeds the product of their stiffnesses.
+    has_moment_loads_ = false;
+    if (kinematics_ == Kinematics::linear) {
+        return;
+    }
+    for (Index n = 0; n < mesh_.node_count(); ++n) {
+        if (reference_load_.segment<3>(kDofs * n + 3).isZero()) {
+            continue;
+        }
+        has_moment_loads_ = true;
+        const Vec3 m = internal.segment<3>(kDofs * n + 3);
+        Mat3 skew;
+        skew << 0.0, -m.z(), m.y(), m.z(), 0.0, -m.x(), -m.y(), m.x(), 0.0;
+        for (int a = 0; a < 3; ++a) {
+            for (int b = 0; b < 3; ++b) {
+                const Index row = equation_[at(kDofs * n + 3 + a)];
+                const Index col = equation_[at(kDofs * n + 3 + b)];
+                if (row >= 0 && col >= 0 && a != b) {
+                    triplets.emplace_back(row, col, -0.5 * skew(a, b));
+                }
+            }
+        }
+    }
+}
+
+void ShellAnalysis::update_state(const Eigen::VectorXd& increment) {
+    dofs_ += increment;
+    if (kinematics_ == Kinematics::linear) {
+        return;
+    }
+    // Multiplicative rotation update R <- exp(dtheta) R: the directors follow finite
+    // incremental rotations exactly (Bathe FEP eq. 6.122 in its exact form).
+    for (Index n = 0; n < mesh_.node_count(); ++n) {
+        rotations_[at(n)] = exponential(increment.segment<3>(kDofs * n + 3)) * rotations_[at(n)];
+    }
+}
+
+void ShellAnalysis::commit() {
+    for (auto& e : elements_) {
+        e.commit();
+    }
+    committed_dofs_ = dofs_;
+    committed_rotations_ = rotations_;
+}
+
+void ShellAnalysis::revert_to_committed() {
+    for (auto& e : elements_) {
+        e.revert();
+    }
+    dofs_ = committed_dofs_;
+    rotations_ = committed_rotations_;
+}
+
+bool ShellAnalysis::increment(double from, double to, const NewtonSettings& settings,
+                              StepReport& report) {
+    const std::vector<Index>& eq = equation_numbers();
+    Eigen::VectorXd prescribed_increment = Eigen::VectorXd::Zero(dofs_.size());
+    for (std::size_t d = 0; d < prescribed_.size(); ++d) {
+        if (!std::isnan(prescribed_[d])) {
+            prescribed_increment(static_cast<Eigen::Index>(d)) = (to - from) * prescribed_[d];
+        }
+    }
+    const Eigen::VectorXd applied = applied_forces(to);
+    const auto free_part = [&](const Eigen::VectorXd& full) {
+        Eigen::VectorXd out(free_count_);
+        for (std::size_t d = 0; d < eq.size(); ++d) {
+            if (eq[d] >= 0) {
+                out(eq[d]) = full(static_cast<Eigen::Index>(d));
+            }
+        }
+        return out;
+    };
+    SparseSolver::Matrix k;
+    Eigen::VectorXd internal;
+    Eigen::VectorXd coupling;
+    Eigen::VectorXd residual0;
+    Eigen::VectorXd step;
+    double energy0 = 0.0;
+    std::vector<NewtonIteration> log;
+    try {
+        for (int i = 0;; ++i) {
+            // Prescribed increments enter the first iteration through the right-hand side,
+            // -K_fp dU_p, with the tangent of the converged state (Bathe FEP section 8.4):
+            // imposing them on the state first would strain only the elements next to the
+            // constrained nodes and, with plasticity, yield them spuriously.
+            assemble(&k, internal, i == 0 ? &prescribed_increment : nullptr, &coupling);
+            Eigen::VectorXd residual = free_part(applied - internal);
+            if (i == 0) {
+                residual -= free_part(coupling);
+            }
+            if (!residual.allFinite()) {
+                return false;
+            }
+            if (i == 0) {
+                residual0 = residual;
+                if (residual0.norm() == 0.0) {
+                    break;
+                }
+            } else {
+                // Convergence norms of thesis eqs. 5.2.7-5.2.9.
+                NewtonIteration it;
+                it.iteration = i;
+                it.displacement_ratio = step.norm() / std::max(dofs_.norm(), 1e-300);
+                it.force_ratio = residual.norm() / residual0.norm();
+                it.energy_ratio = std::abs(step.dot(residual)) / std::max(energy0, 1e-300);
+                it.residual_norm = residual.norm();
+                log.push_back(it);
+                const auto met = [](double ratio, double tolerance) {
+                    return tolerance <= 0.0 || ratio <= tolerance;
+                };
+                if (met(it.displacement_ratio, settings.displacement_tolerance) &&
+                    met(it.force_ratio, settings.force_tolerance) &&
+                    met(it.energy_ratio, settings.energy_tolerance)) {
+                    break;
+                }
+            }
+            if (i == settings.max_iterations) {
+                return false;
+            }
+            solver_.factorize(k, !has_moment_loads_);
+            report.solver = SparseSolver::name(solver_.method());
+            step = solver_.solve(residual);
+            if (i == 0) {
+                energy0 = std::abs(step.dot(residual0));
+            }
+            Eigen::VectorXd full =
+                i == 0 ? prescribed_increment : Eigen::VectorXd::Zero(dofs_.size());
+            for (std::size_t d = 0; d < eq.size(); ++d) {
+                if (eq[d] >= 0) {
+                    full(static_cast<Eigen::Index>(d)) = step(eq[d]);
+                }
+            }
+            update_state(full);
+        }
+    } catch (const std::runtime_error&) {
+        return false;
+    }
+    commit();
+    report.log.insert(report.log.end(), log.begin(), log.end());
+    report.iterations.push_back(static_cast<int>(log.size()));
+    return true;
+}
+
+StepReport ShellAnalysis::advance_load(double target, int increments,
+                                       const NewtonSettings& settings) {
+    StepReport report;
+    const double nominal = (target - load_factor_) / std::max(increments, 1);
+    double step = nominal;
+    int consecutive_cutbacks = 0;
+    while (std::abs(target - load_factor_) > 1e-12 * std::abs(nominal)) {
+        const double to = std::abs(target - load_factor_) < std::abs(step) * (1.0 + 1e-9)
+                              ? target
+                              : load_factor_ + step;
+        if (increment(load_factor_, to, settings, report)) {
+            load_factor_ = to;
+            ++report.increments;
+            consecutive_cutbacks = 0;
+            step = std::abs(step * 2.0) < std::abs(nominal) ? step * 2.0 : nominal;
+            continue;
+        }
+        revert_to_committed();
+        ++report.cutbacks;
+        if (++consecutive_cutbacks > settings.max_cutbacks) {
+            report.load_factor = load_factor_;
+            return report;
+        }
+        step *= 0.5;
+    }
+    report.converged = true;
+    report.load_factor = load_factor_;
+    return report;
+}
+
+StepReport ShellAnalysis::equilibrate(const NewtonSettings& settings) {
+    StepReport report;
+    report.converged = increment(load_factor_, load_factor_, settings, report);
+    if (!report.converged) {
+        revert_to_committed();
+    }
+    report.increments = report.converged ? 1 : 0;
+    report.load_factor = load_factor_;
+    return report;
+}
+
+StepReport ShellAnalysis::solve_linear() {
+    return advance_load(1.0, 1, NewtonSettings{});
+}
+
+Vec3 ShellAnalysis::displacement(Index node) const {
+    return dofs_.segment<3>(kDofs * node);
+}
+
+Vec3 ShellAnalysis::rotation(Index node) const {
+    if (kinematics_ == Kinematics::linear) {
+        return dofs_.segment<3>(kDofs * node + 3);
+    }
+    const Eigen::AngleAxisd aa(rotations_[at(node)]);
+    return aa.angle() * aa.axis();
+}
+
+Vec3 ShellAnalysis::director(Index node) const {
+    return rotations_[at(node)] * initial_directors_[at(node)];
+}
+
+Eigen::VectorXd ShellAnalysis::reactions() {
+    Eigen::VectorXd internal;
+    assemble(nullptr, internal);
+    for (auto& e : elements_) {
+        e.revert();
+    }
+    return internal - applied_forces(load_factor_);
+}
+
+Eigen::VectorXd ShellAnalysis::lumped_mass() const {
+    Eigen::VectorXd m = Eigen::VectorXd::Zero(dofs_.size());
+    for (std::size_t e = 0; e < elements_.size(); ++e) {
+        const Vector24 me = elements_[e].lumped_mass();
+        const ShellElement& element = mesh_.elements()[e];
+        for (int a = 0; a < 24; ++a) {
+            m(kDofs * element.nodes[at(a / kDofs)] + a % kDofs) += me(a);
+        }
+    }
+    return m;
+}
+
+void ShellAnalysis::write_state(std::ostream& out) const {
+    io::write_value(out, load_factor_);
+    io::write_array(out, std::vector<double>(committed_dofs_.begin(), committed_dofs_.end()));
+    io::write_array(out, committed_rotations_);
+    for (const auto& e : elements_) {
+        std::vector<Voigt6> tensors;
+        std::vector<double> states;
+        for (const auto& p : e.committed_points()) {
+            tensors.push_back(p.strain);
+            tensors.push_back(p.stress);
+            states.insert(states.end(), p.state.begin(), p.state.end());
+        }
+        io::write_array(out, tensors);
+        io::write_array(out, states);
+    }
+}
+
+void ShellAnalysis::read_state(std::istream& in) {
+    load_factor_ = io::read_value<double>(in);
+    std::vector<double> dofs;
+    io::read_array(in, dofs);
+    io::read_array(in, committed_rotations_);
+    if (dofs.size() != static_cast<std::size_t>(dofs_.size()) ||
+        committed_rotations_.size() != at(mesh_.node_count())) {
+        throw std::runtime_error("shell checkpoint does not match the model (node count)");
+    }
+    committed_dofs_ = Eigen::Map<const Eigen::VectorXd>(dofs.data(), dofs_.size());
+    for (auto& e : elements_) {
+        std::vector<Voigt6> tensors;
+        std::vector<double> states;
+        io::read_array(in, tensors);
+        io::read_array(in, states);
+        std::vector<MaterialPoint> points = e.committed_points();
+        if (tensors.size() != 2 * points.size()) {
+            throw std::runtime_error("shell checkpoint does not match the model (points)");
+        }
+        std::size_t offset = 0;
+        for (std::size_t p = 0; p < points.size(); ++p) {
+            points[p].strain = tensors[2 * p];
+            points[p].stress = tensors[2 * p + 1];
+            for (auto& v : points[p].state) {
+                v = states.at(offset++);
+            }
+        }
+        e.restore_points(std::move(points));
+    }
+    revert_to_committed();
+}
+
+} // namespace grainload::fem

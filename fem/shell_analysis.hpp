@@ -1,0 +1,146 @@
+#pragma once
+
+#include "fem/mitc4_shell.hpp"
+#include "fem/shell_mesh.hpp"
+#include "fem/sparse_solver.hpp"
+
+#include <Eigen/SparseCore>
+#include <functional>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace grainload::fem {
+
+/// Tolerances of the incremental-iterative procedure (thesis Table 5.2.2). A tolerance <= 0
+/// switches its criterion off; an iteration has converged when every active one is met.
+struct NewtonSettings {
+    double displacement_tolerance = 0.0; ///< eps_U of thesis eq. 5.2.7
+    double force_tolerance = 1e-6;       ///< eps_F of thesis eq. 5.2.8
+    double energy_tolerance = 1e-10;     ///< eps_E of thesis eq. 5.2.9
+    int max_iterations = 20;
+    int max_cutbacks = 6; ///< halvings of a load increment that did not converge
+};
+
+/// One equilibrium iteration: the three norm ratios of thesis eqs. 5.2.7-5.2.9.
+struct NewtonIteration {
+    int iteration = 0;
+    double displacement_ratio = 0.0; ///< ||dU(i)|| / ||U(i)||
+    double force_ratio = 0.0;        ///< ||F - Fu(i)|| / ||F - Fu(t)||
+    double energy_ratio = 0.0;       ///< dU(i).(F - Fu(i)) / dU(1).(F - Fu(t))
+    double residual_norm = 0.0;      ///< ||F - Fu(i)|| [N, N m mixed]
+};
+
+struct StepReport {
+    bool converged = false;
+    double load_factor = 0.0;
+    int increments = 0;
+    int cutbacks = 0;
+    std::string solver;               ///< which factorisation ran last
+    std::vector<NewtonIteration> log; ///< iterations of every accepted increment, in order
+    std::vector<int> iterations;      ///< iterations per accepted increment
+};
+
+/// A shell structure under static loads: MITC4 elements on a ShellMesh, 6 DOF per node
+/// (u_x, u_y, u_z, theta_x, theta_y, theta_z; rotations as global rotation vectors), fixed and
+/// prescribed DOFs, and a reference load vector scaled by the load factor lambda.
+class ShellAnalysis {
+  public:
+    ShellAnalysis(ShellMesh mesh, const materials::Material& material, Kinematics kinematics,
+                  int thickness_points);
+
+    const ShellMesh& mesh() const { return mesh_; }
+    Kinematics kinematics() const { return kinematics_; }
+
+    /// Constrain DOF `dof` (0..5) of `node` to lambda * value.
+    void prescribe(Index node, int dof, double value = 0.0);
+    void prescribe(const std::vector<Index>& nodes, std::initializer_list<int> dofs,
+                   double value = 0.0);
+    /// Reference loads (scaled by lambda): a nodal force/moment component; a force per unit
+    /// mid-surface area (gravity: rho t g); a pressure along the initial element normal.
+    void add_nodal_load(Index node, int dof, double value);
+    void add_area_load(const Vec3& force_per_area);
+    void add_pressure(double pressure);
+    void add_gravity(const Vec3& acceleration);
+    /// Traction (force per unit initial area) as a function of the element and its unit normal.
+    using SurfaceTraction = std::function<Vec3(const ShellElement&, const Vec3& normal)>;
+    void add_surface_load(const SurfaceTraction& traction);
+
+    /// Linear analysis in one solve at lambda = 1 (Kinematics::linear), or the full Newton
+    /// procedure for other kinematics or inelastic materials.
+    StepReport solve_linear();
+    /// Newton-Raphson from the current load factor to `target` in `increments` equal steps,
+    /// halving an increment that does not converge (thesis Table 5.2.2).
+    StepReport advance_load(double target, int increments, const NewtonSettings& settings);
+
+    /// Newton-Raphson at the current load factor, e.g. after set_additional_forces().
+    StepReport equilibrate(const NewtonSettings& settings);
+
+    double load_factor() const { return load_factor_; }
+    void set_load_factor(double lambda) { load_factor_ = lambda; }
+    /// All DOF values: translations and (linear kinematics) rotation vectors / (total
+    /// Lagrangian) sums of the rotation increments.
+    const Eigen::VectorXd& dofs() const { return dofs_; }
+    Vec3 displacement(Index node) const;
+    /// Total rotation vector of the node (log of its rotation matrix).
+    Vec3 rotation(Index node) const;
+    Vec3 director(Index node) const;
+    /// Internal minus applied force at every DOF (the reactions at constrained DOFs).
+    Eigen::VectorXd reactions();
+    Index free_dof_count() const { return free_count_; }
+    const std::vector<Mitc4Shell>& elements() const { return elements_; }
+    std::vector<Mitc4Shell>& elements() { return elements_; }
+    /// Lumped mass per DOF (6 per node).
+    Eigen::VectorXd lumped_mass() const;
+    /// Assemble the tangent (free DOFs) and the full internal force vector at the current state;
+    /// with `prescribed` (full-size DOF values) also coupling = K * prescribed over all DOFs.
+    void assemble(SparseSolver::Matrix* tangent, Eigen::VectorXd& internal,
+                  const Eigen::VectorXd* prescribed = nullptr, Eigen::VectorXd* coupling = nullptr);
+    /// Add a full-size DOF increment to the state (translations add; rotations compose).
+    void update_state(const Eigen::VectorXd& increment);
+    const std::vector<Index>& equation_numbers();
+    const Eigen::VectorXd& reference_load() const { return reference_load_; }
+    /// Forces applied in full, not scaled by the load factor (6 per node), e.g. the contact
+    /// forces the SPH side returns to the walls (thesis section 5.3); zero by default.
+    void set_additional_forces(const Eigen::VectorXd& forces) { additional_forces_ = forces; }
+    /// Everything applied at load factor `lambda`: lambda * reference + additional.
+    Eigen::VectorXd applied_forces(double lambda) const {
+        return lambda * reference_load_ + additional_forces_;
+    }
+    std::vector<double>& prescribed_values() { return prescribed_; }
+    void commit();
+    void revert_to_committed();
+    /// Binary restart state (load factor, DOFs, rotations, integration points); read_state
+    /// restores exactly what write_state saved for the same model.
+    void write_state(std::ostream& out) const;
+    void read_state(std::istream& in);
+
+  private:
+    ShellNodes element_nodes(const ShellElement& element) const;
+    Vector24 element_dofs(const ShellElement& element) const;
+    bool increment(double from, double to, const NewtonSettings& settings, StepReport& report);
+    void number_equations();
+    void add_moment_load_stiffness(const Eigen::VectorXd& internal,
+                                   std::vector<Eigen::Triplet<double>>& triplets);
+
+    ShellMesh mesh_;
+    const materials::Material* material_;
+    Kinematics kinematics_;
+    std::vector<Vec3> initial_directors_;
+    std::vector<Mitc4Shell> elements_;
+    std::vector<double> prescribed_; ///< NaN where free
+    std::vector<Index> equation_;    ///< free equation number per DOF or -1
+    Index free_count_ = 0;
+    bool numbered_ = false;
+    bool has_moment_loads_ = false;
+    Eigen::VectorXd reference_load_;
+    Eigen::VectorXd additional_forces_;
+    Eigen::VectorXd dofs_; ///< translations and (linear kinematics) rotation vectors
+    std::vector<Mat3> rotations_;
+    Eigen::VectorXd committed_dofs_;
+    std::vector<Mat3> committed_rotations_;
+    double load_factor_ = 0.0;
+    SparseSolver solver_;
+};
+
+} // namespace grainload::fem

@@ -1,0 +1,180 @@
+#include "fem/shell_case_reader.hpp"
+
+#include "fem/gmsh_reader.hpp"
+#include "fem/shell_mesh_generators.hpp"
+#include "io/case_table.hpp"
+
+#include <array>
+#include <stdexcept>
+
+namespace grainload::fem {
+
+namespace dim = io::dimension;
+
+namespace {
+
+constexpr std::array<std::string_view, 6> kDofNames = {"ux", "uy", "uz", "rx", "ry", "rz"};
+
+int element_count(const io::CaseTable& shell, std::string_view key) {
+    const std::int64_t n = shell.integer(key);
+    if (n < 1 || n > 100000) {
+        shell.fail(key, "expected a number of elements between 1 and 100000");
+    }
+    return static_cast<int>(n);
+}
+
+ShellMesh generate(const io::CaseTable& shell, const std::string& generator, double thickness) {
+    if (generator == "plate") {
+        return make_plate(shell.positive_quantity("length_x", dim::kLength),
+                          shell.positive_quantity("length_y", dim::kLength),
+                          element_count(shell, "elements_x"), element_count(shell, "elements_y"),
+                          thickness);
+    }
+    if (generator == "cylinder") {
+        return make_cylinder(shell.positive_quantity("radius", dim::kLength),
+                             shell.positive_quantity("length", dim::kLength),
+                             shell.quantity("angle_start", dim::kAngle),
+                             shell.quantity("angle_end", dim::kAngle),
+                             element_count(shell, "elements_around"),
+                             element_count(shell, "elements_along"), thickness);
+    }
+    if (generator == "sphere_zone") {
+        return make_sphere_zone(shell.positive_quantity("radius", dim::kLength),
+                                shell.quantity("polar_start", dim::kAngle),
+                                shell.quantity("polar_end", dim::kAngle),
+                                shell.positive_quantity("azimuth_end", dim::kAngle),
+                                element_count(shell, "elements_polar"),
+                                element_count(shell, "elements_around"), thickness);
+    }
+    return make_cone(shell.positive_quantity("radius_bottom", dim::kLength),
+                     shell.positive_quantity("radius_top", dim::kLength, true),
+                     shell.positive_quantity("height", dim::kLength),
+                     shell.positive_quantity("azimuth_end", dim::kAngle),
+                     element_count(shell, "elements_around"),
+                     element_count(shell, "elements_along"), thickness);
+}
+
+const std::vector<Index>& node_set(const io::CaseTable& table, const ShellMesh& mesh) {
+    const std::string name = table.string("node_set");
+    try {
+        return mesh.node_set(name);
+    } catch (const std::invalid_argument& e) {
+        table.fail("node_set", e.what());
+    }
+}
+
+} // namespace
+
+int read_dof(const io::CaseTable& table, std::string_view key, const std::string& name) {
+    for (std::size_t d = 0; d < kDofNames.size(); ++d) {
+        if (name == kDofNames[d]) {
+            return static_cast<int>(d);
+        }
+    }
+    table.fail(key, "unknown DOF '" + name + "'; expected ux, uy, uz, rx, ry or rz");
+}
+
+ShellMesh read_shell_mesh(const io::CaseTable& shell) {
+    const std::string generator =
+        shell.choice("generator", {"plate", "cylinder", "sphere_zone", "cone", "gmsh"});
+    const double thickness = shell.positive_quantity("thickness", dim::kLength);
+    ShellMesh mesh;
+    try {
+        mesh = generator == "gmsh" ? read_gmsh_file(shell.file_path("file"), thickness)
+                                   : generate(shell, generator, thickness);
+        mesh.validate();
+    } catch (const std::invalid_argument& e) {
+        shell.fail("generator", e.what());
+    }
+    return mesh;
+}
+
+void read_shell_boundaries(const io::CaseTable& shell, ShellAnalysis& analysis) {
+    for (const io::CaseTable& bc : shell.array_of_tables("boundary")) {
+        const std::vector<Index> nodes =
+            bc.has("point")
+                ? std::vector<Index>{analysis.mesh().nearest_node(bc.vector("point", dim::kLength))}
+                : node_set(bc, analysis.mesh());
+        if (bc.has("symmetry")) {
+            // Symmetry plane with normal along the axis: normal translation and the two
+            // in-plane rotation components vanish (a rotation vector is an axial vector).
+            const std::string axis = bc.choice("symmetry", {"x", "y", "z"});
+            const int a = axis[0] - 'x';
+            analysis.prescribe(nodes, {a, 3 + (a + 1) % 3, 3 + (a + 2) % 3});
+            continue;
+        }
+        // Prescribed values follow the load factor, the same proportional history as the
+        // loads; zero by default.
+        const double displacement = bc.quantity_or("displacement", dim::kLength, 0.0);
+        const double rotation = bc.quantity_or("rotation", dim::kAngle, 0.0);
+        const std::string dofs = bc.string("dofs");
+        std::vector<int> selected;
+        std::size_t start = 0;
+        while (start < dofs.size()) {
+            const std::size_t end = std::min(dofs.find(' ', start), dofs.size());
+            const std::string name = dofs.substr(start, end - start);
+            if (name == "all") {
+                selected = {0, 1, 2, 3, 4, 5};
+            } else if (!name.empty()) {
+                selected.push_back(read_dof(bc, "dofs", name));
+            }
+            start = end + 1;
+        }
+        if (selected.empty()) {
+            bc.fail("dofs", "expected DOF names (ux uy uz rx ry rz) or \"all\"");
+        }
+        for (const int d : selected) {
+            for (const Index n : nodes) {
+                analysis.prescribe(n, d, d < 3 ? displacement : rotation);
+            }
+        }
+    }
+}
+
+void read_shell_loads(const io::CaseTable& shell, const Vec3& case_gravity,
+                      ShellAnalysis& analysis) {
+    for (const io::CaseTable& load : shell.array_of_tables("load")) {
+        const std::string type = load.choice(
+            "type", {"area_force", "pressure", "gravity", "nodal_force", "nodal_moment"});
+        if (type == "area_force") {
+            analysis.add_area_load(load.vector("value", dim::kPressure));
+        } else if (type == "pressure") {
+            analysis.add_pressure(load.quantity("value", dim::kPressure));
+        } else if (type == "gravity") {
+            analysis.add_gravity(load.vector_or("acceleration", dim::kAcceleration, case_gravity));
+        } else {
+            const bool force = type == "nodal_force";
+            const Vec3 value = load.vector("value", force ? dim::kForce : dim::kMoment);
+            std::vector<Index> nodes;
+            if (load.has("point")) {
+                nodes.push_back(analysis.mesh().nearest_node(load.vector("point", dim::kLength)));
+            } else {
+                nodes = node_set(load, analysis.mesh());
+            }
+            for (const Index n : nodes) {
+                for (int d = 0; d < 3; ++d) {
+                    analysis.add_nodal_load(n, (force ? 0 : 3) + d, value(d));
+                }
+            }
+        }
+    }
+}
+
+std::vector<ShellMonitor> read_shell_monitors(const io::CaseTable& shell, const ShellMesh& mesh) {
+    std::vector<ShellMonitor> monitors;
+    for (const io::CaseTable& table : shell.array_of_tables("monitor")) {
+        ShellMonitor m;
+        m.name = table.string("name");
+        m.node = mesh.nearest_node(table.vector("point", dim::kLength));
+        m.dof = read_dof(table, "dof", table.string("dof"));
+        m.magnitude = table.boolean_or("magnitude", false);
+        if (table.has("reference")) {
+            m.reference = table.quantity("reference", m.dof < 3 ? dim::kLength : dim::kAngle);
+        }
+        m.source = table.string_or("source", "");
+        monitors.push_back(std::move(m));
+    }
+    return monitors;
+}
+
+} // namespace grainload::fem

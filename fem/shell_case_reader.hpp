@@ -1,0 +1,36 @@
+#pragma once
+
+#include "fem/shell_analysis.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace grainload::io {
+class CaseTable;
+}
+
+namespace grainload::fem {
+
+/// A displacement or rotation the case asks to report, with its optional reference.
+struct ShellMonitor {
+    std::string name;
+    Index node = -1;
+    int dof = 0;
+    bool magnitude = false;
+    std::optional<double> reference;
+    std::string source;
+};
+
+/// Mesh of one [[fem.shell]] table from its `generator` keys (see docs/user-guide/fem.md).
+ShellMesh read_shell_mesh(const io::CaseTable& shell);
+/// Applies its [[fem.shell.boundary]] tables to `analysis`.
+void read_shell_boundaries(const io::CaseTable& shell, ShellAnalysis& analysis);
+/// Adds its [[fem.shell.load]] tables to the reference load (scaled by the load factor).
+void read_shell_loads(const io::CaseTable& shell, const Vec3& case_gravity,
+                      ShellAnalysis& analysis);
+std::vector<ShellMonitor> read_shell_monitors(const io::CaseTable& shell, const ShellMesh& mesh);
+/// "ux" .. "rz" -> 0 .. 5; a CaseError names the key otherwise.
+int read_dof(const io::CaseTable& table, std::string_view key, const std::string& name);
+
+} // namespace grainload::fem

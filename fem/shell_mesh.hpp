@@ -1,0 +1,67 @@
+#pragma once
+
+#include "io/types.hpp"
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace grainload::fem {
+
+/// A 4-node shell element; a triangle repeats its third node (nodes[3] == nodes[2]).
+struct ShellElement {
+    std::array<Index, 4> nodes{};
+    double thickness = 0.0;
+    bool is_triangle() const { return nodes[3] == nodes[2]; }
+};
+
+/// Shell mid-surface mesh: nodes, quadrilaterals (triangles as collapsed quads), thickness per
+/// element, and named node and element sets. Node and element ids are 0-based indices.
+class ShellMesh {
+  public:
+    Index add_node(const Vec3& x);
+    Index add_element(const std::array<Index, 4>& nodes, double thickness);
+
+    Index node_count() const { return static_cast<Index>(nodes_.size()); }
+    Index element_count() const { return static_cast<Index>(elements_.size()); }
+    const Vec3& node(Index i) const { return nodes_[static_cast<std::size_t>(i)]; }
+    const ShellElement& element(Index e) const { return elements_[static_cast<std::size_t>(e)]; }
+    const std::vector<Vec3>& nodes() const { return nodes_; }
+    const std::vector<ShellElement>& elements() const { return elements_; }
+
+    void set_thickness(double thickness);
+    void add_node_set(const std::string& name, std::vector<Index> nodes);
+    void add_element_set(const std::string& name, std::vector<Index> elements);
+    bool has_node_set(const std::string& name) const { return node_sets_.contains(name); }
+    /// Throws std::invalid_argument listing the known sets when `name` is unknown.
+    const std::vector<Index>& node_set(const std::string& name) const;
+    const std::vector<Index>& element_set(const std::string& name) const;
+    const std::map<std::string, std::vector<Index>>& node_sets() const { return node_sets_; }
+
+    /// Node closest to `x` (for point loads and monitored points).
+    Index nearest_node(const Vec3& x) const;
+    /// Unit normal per node: the exact surface normal when a generator supplied one, else the
+    /// average of the normals of the elements around it. It is the initial director of the
+    /// MITC4 element (Dvorkin & Bathe 1984, "V_n^k"). On a curved edge the average leans by
+    /// half an element angle, which would make a symmetry plane's rotation constraints act
+    /// on a tilted drilling axis; the exact normal avoids that.
+    std::vector<Vec3> nodal_normals() const;
+    void set_nodal_normals(std::vector<Vec3> normals) { normals_ = std::move(normals); }
+
+    /// Throws std::invalid_argument naming the first bad element: unknown node ids, zero
+    /// thickness, zero area, or a normal opposite to its neighbours' (inverted orientation).
+    void validate() const;
+
+  private:
+    std::vector<Vec3> nodes_;
+    std::vector<ShellElement> elements_;
+    std::vector<Vec3> normals_;
+    std::map<std::string, std::vector<Index>> node_sets_;
+    std::map<std::string, std::vector<Index>> element_sets_;
+};
+
+/// Unit normal of an element from its diagonals (zero vector for a degenerate element).
+Vec3 element_normal(const ShellMesh& mesh, const ShellElement& element);
+
+} // namespace grainload::fem

@@ -1,0 +1,209 @@
+#include "fem/shell_model.hpp"
+
+#include "io/binary_stream.hpp"
+#include "io/case_table.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace grainload::fem {
+
+namespace dim = io::dimension;
+
+namespace {
+
+NewtonSettings read_settings(const io::CaseTable& fem) {
+    NewtonSettings s;
+    s.displacement_tolerance = fem.number_or("displacement_tolerance", s.displacement_tolerance);
+    s.force_tolerance = fem.number_or("force_tolerance", s.force_tolerance);
+    s.energy_tolerance = fem.number_or("energy_tolerance", s.energy_tolerance);
+    s.max_iterations = static_cast<int>(fem.integer_or("max_iterations", s.max_iterations));
+    s.max_cutbacks = static_cast<int>(fem.integer_or("max_cutbacks", s.max_cutbacks));
+    return s;
+}
+
+} // namespace
+
+std::unique_ptr<ShellModel> ShellModel::from_case(const io::CaseTable& root,
+                                                  const materials::MaterialLibrary& materials) {
+    const io::CaseTable fem = root.table("fem");
+    const io::CaseTable settings = root.table("case");
+    std::unique_ptr<ShellModel> model(new ShellModel());
+    model->dynamic_ = fem.choice_or("analysis", {"static", "dynamic"}, "static") == "dynamic";
+    if (model->dynamic_) {
+        model->time_step_ = fem.positive_quantity("time_step", dim::kTime);
+    }
+    const std::string kinematics =
+        fem.choice_or("kinematics", {"linear", "total_lagrangian"}, "linear");
+    model->settings_ = read_settings(fem);
+    model->load_time_ = fem.positive_quantity_or(
+        "load_time", dim::kTime, settings.positive_quantity("end_time", dim::kTime));
+    model->increments_per_step_ = static_cast<int>(fem.integer_or("increments_per_step", 1));
+    const std::vector<io::CaseTable> shells = fem.array_of_tables("shell");
+    if (shells.size() != 1) {
+        fem.fail("shell", "expected exactly one [[fem.shell]] table (several shell parts are "
+                          "not supported yet)");
+    }
+    const io::CaseTable& shell = shells.front();
+    model->shell_name_ = shell.string_or("name", "shell");
+    const materials::Material& material = materials[materials.index_of(shell, "material")];
+    const bool elastic = material.model() == "linear_elastic";
+    const int points = static_cast<int>(shell.integer_or("thickness_points", elastic ? 2 : 5));
+    if (points < 2 || points > 15) {
+        shell.fail("thickness_points", "expected 2 to 15 Gauss points through the thickness");
+    }
+    model->analysis_ = std::make_unique<ShellAnalysis>(
+        read_shell_mesh(shell), material,
+        kinematics == "linear" ? Kinematics::linear : Kinematics::total_lagrangian, points);
+    read_shell_boundaries(shell, *model->analysis_);
+    read_shell_loads(shell, settings.vector_or("gravity", dim::kAcceleration, Vec3::Zero()),
+                     *model->analysis_);
+    model->monitors_ = read_shell_monitors(shell, model->analysis_->mesh());
+    model->reactions_ = Eigen::VectorXd::Zero(6 * model->analysis_->mesh().node_count());
+    if (model->dynamic_) {
+        const double gamma = fem.number_or("newmark_gamma", 0.5);
+        if (gamma < 0.5) {
+            fem.fail("newmark_gamma", "expected gamma >= 0.5 (unconditional stability)");
+        }
+        // beta = (gamma + 1/2)^2 / 4: unconditionally stable, the trapezoidal rule at 1/2.
+        model->newmark_ = std::make_unique<NewmarkIntegrator>(
+            *model->analysis_, 0.25 * (gamma + 0.5) * (gamma + 0.5), gamma);
+        model->newmark_->initialise(
+            Eigen::VectorXd::Zero(6 * model->analysis_->mesh().node_count()));
+    }
+    return model;
+}
+
+double ShellModel::stable_time_step() const {
+    // Implicit solution: no stability limit; a dynamic analysis asks for its accuracy step.
+    return dynamic_ ? time_step_ : std::numeric_limits<double>::infinity();
+}
+
+double ShellModel::load_factor_at(double t) const {
+    return std::min(t / load_time_, 1.0);
+}
+
+void ShellModel::advance(double t, double dt) {
+    const double target = load_factor_at(t + dt);
+    if (failure_ || (!dynamic_ && target == analysis_->load_factor())) {
+        return;
+    }
+    ShellStepLog entry;
+    entry.time = t + dt;
+    entry.report = dynamic_ ? newmark_->step(dt, target, settings_)
+                            : analysis_->advance_load(target, increments_per_step_, settings_);
+    entry.load_factor = analysis_->load_factor();
+    if (!entry.report.converged) {
+        std::ostringstream why;
+        why << "shell '" << shell_name_ << "': Newton-Raphson did not converge at load factor "
+            << target << " (t = " << t + dt << " s) after " << entry.report.cutbacks
+            << " cut-backs; last accepted load factor " << entry.load_factor;
+        failure_ = why.str();
+    }
+    log_.push_back(std::move(entry));
+    reactions_ = analysis_->reactions();
+}
+
+std::optional<std::string> ShellModel::diagnose() const {
+    if (failure_) {
+        return failure_;
+    }
+    for (Index n = 0; n < analysis_->mesh().node_count(); ++n) {
+        if (!analysis_->displacement(n).allFinite()) {
+            return "shell '" + shell_name_ + "' node " + std::to_string(n) +
+                   ": displacement is not finite";
+        }
+    }
+    return std::nullopt;
+}
+
+void ShellModel::append_blocks(io::Frame& frame) const {
+    const ShellAnalysis& a = *analysis_;
+    const ShellMesh& mesh = a.mesh();
+    io::Block block;
+    block.name = shell_name_;
+    block.kind = io::Block::Kind::shell;
+    io::FieldArray displacement{"displacement", 3, {}}, rotation{"rotation", 3, {}};
+    io::FieldArray reaction{"reaction_force", 3, {}}, moment{"reaction_moment", 3, {}};
+    for (Index n = 0; n < mesh.node_count(); ++n) {
+        const Vec3 u = a.displacement(n);
+        const Vec3 r = a.rotation(n);
+        block.points.push_back(mesh.node(n) + u);
+        displacement.values.insert(displacement.values.end(), u.begin(), u.end());
+        rotation.values.insert(rotation.values.end(), r.begin(), r.end());
+        for (int d = 0; d < 3; ++d) {
+            reaction.values.push_back(reactions_(6 * n + d));
+            moment.values.push_back(reactions_(6 * n + 3 + d));
+        }
+    }
+    io::FieldArray membrane{"membrane_force", 3, {}}, bending{"bending_moment", 3, {}};
+    io::FieldArray top{"von_mises_top", 1, {}}, middle{"von_mises_middle", 1, {}};
+    io::FieldArray bottom{"von_mises_bottom", 1, {}}, plastic{"plastic_strain", 1, {}};
+    io::FieldArray thickness{"thickness", 1, {}};
+    for (std::size_t e = 0; e < a.elements().size(); ++e) {
+        const ShellElement& element = mesh.elements()[e];
+        auto cell = element.nodes;
+        if (element.is_triangle()) {
+            cell[3] = -1;
+        }
+        block.cells.push_back(cell);
+        const ShellResultants r = a.elements()[e].resultants();
+        membrane.values.insert(membrane.values.end(), r.membrane.begin(), r.membrane.end());
+        bending.values.insert(bending.values.end(), r.bending.begin(), r.bending.end());
+        top.values.push_back(r.von_mises_top);
+        middle.values.push_back(r.von_mises_middle);
+        bottom.values.push_back(r.von_mises_bottom);
+        plastic.values.push_back(r.plastic_strain);
+        thickness.values.push_back(element.thickness);
+    }
+    block.point_arrays = {displacement, rotation, reaction, moment};
+    block.cell_arrays = {membrane, bending, top, middle, bottom, plastic, thickness};
+    frame.blocks.push_back(std::move(block));
+}
+
+void ShellModel::append_results(double, std::vector<io::ResultFigure>& results) const {
+    for (const ShellMonitor& m : monitors_) {
+        const double value = m.dof < 3 ? analysis_->displacement(m.node)(m.dof)
+                                       : analysis_->rotation(m.node)(m.dof - 3);
+        io::ResultFigure figure;
+        figure.name = m.name;
+        figure.value = m.magnitude ? std::abs(value) : value;
+        figure.unit = m.dof < 3 ? "m" : "rad";
+        figure.reference = m.reference;
+        figure.source = m.source;
+        results.push_back(figure);
+    }
+    if (!log_.empty()) {
+        const StepReport& last = log_.back().report;
+        results.push_back({"fem load factor", analysis_->load_factor(), "", std::nullopt, ""});
+        results.push_back({"fem Newton iterations (last step)",
+                           static_cast<double>(last.log.size()), "", std::nullopt, last.solver});
+    }
+}
+
+void ShellModel::write_checkpoint(std::ostream& out) const {
+    analysis_->write_state(out);
+    if (dynamic_) {
+        const auto& v = newmark_->velocity();
+        const auto& a = newmark_->acceleration();
+        io::write_array(out, std::vector<double>(v.begin(), v.end()));
+        io::write_array(out, std::vector<double>(a.begin(), a.end()));
+    }
+}
+
+void ShellModel::read_checkpoint(std::istream& in) {
+    analysis_->read_state(in);
+    if (dynamic_) {
+        std::vector<double> v, a;
+        io::read_array(in, v);
+        io::read_array(in, a);
+        const auto n = static_cast<Eigen::Index>(v.size());
+        newmark_->restore(Eigen::Map<const Eigen::VectorXd>(v.data(), n),
+                          Eigen::Map<const Eigen::VectorXd>(a.data(), n));
+    }
+    failure_.reset();
+    reactions_ = analysis_->reactions();
+}
+
+} // namespace grainload::fem
