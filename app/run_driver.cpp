@@ -118,6 +118,9 @@ int run_case(const CommandLine& line) {
     const std::string out = line.out.value_or("out/" + scene->case_name);
     std::filesystem::create_directories(out);
     std::ofstream log(out + "/log.txt", line.restart ? std::ios::app : std::ios::trunc);
+    for (const auto& stepper : scene->steppers) {
+        stepper->set_output_directory(out);
+    }
     io::VtkFrameWriter writer(out, scene->case_name);
     RunClock clock;
     if (line.restart) {
@@ -130,12 +133,16 @@ int run_case(const CommandLine& line) {
                      std::to_string(omp_get_max_threads()) + " threads, output " + out);
     const std::string checkpoint = out + "/checkpoint.bin";
     auto write_output = [&] {
-        const std::string frame = writer.write(collect_frame(*scene, clock.t));
+        writer.write(collect_frame(*scene, clock.t));
         clock.frame_times = writer.times();
         write_checkpoint(*scene, clock, checkpoint);
-        return frame;
+        for (const auto& stepper : scene->steppers) {
+            stepper->write_logs(out);
+        }
     };
-    std::string last_frame = clock.frame_times.empty() ? write_output() : "";
+    if (clock.frame_times.empty()) {
+        write_output();
+    }
     // Output instants are k * interval, computed afresh rather than accumulated, so that a
     // restarted run steps through exactly the same instants (and time steps) as a whole run.
     auto next_output_time = [&] {
@@ -157,15 +164,15 @@ int run_case(const CommandLine& line) {
             summary.status = "unstable";
             summary.diagnosis = *problem;
             io::write_run_summary(summary, out + "/summary.json");
-            progress.message(
-                "grainload: the run became unstable at t = " + std::to_string(clock.t) +
-                " s (step " + std::to_string(clock.step) + "): " + *problem +
-                "\nlast good frame: " + last_frame + "\ncheckpoint of that frame: " + checkpoint);
+            progress.message("grainload: the run became unstable at t = " +
+                             std::to_string(clock.t) + " s (step " + std::to_string(clock.step) +
+                             "): " + *problem + "\nlast good frame: " + writer.last_frame_path() +
+                             "\ncheckpoint of that frame: " + checkpoint);
             return kExitUnstable;
         }
         if (clock.t >= next_output - end_tolerance) {
             clock.t = next_output;
-            last_frame = write_output();
+            write_output();
         }
         progress.update(clock.t, clock.step, dt);
     }

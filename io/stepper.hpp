@@ -29,6 +29,12 @@ class Stepper {
     virtual void append_blocks(Frame& frame) const = 0;
     /// The case's own figures at time t, for summary.json.
     virtual void append_results(double t, std::vector<ResultFigure>& results) const = 0;
+    /// Write the module's own logs into the output directory (the shell FEM's per-step
+    /// convergence CSV); called at every output instant. Nothing by default.
+    virtual void write_logs(const std::string& /*directory*/) const {}
+    /// The run's output directory, for tables a module writes itself (wall_forces.csv, ...).
+    /// Called once by the driver before the first step; a module without such tables ignores it.
+    virtual void set_output_directory(const std::string& directory) { (void)directory; }
     /// Binary restart state; read_checkpoint must restore exactly what write_checkpoint saved.
     virtual void write_checkpoint(std::ostream& out) const = 0;
     virtual void read_checkpoint(std::istream& in) = 0;

@@ -143,6 +143,11 @@ void VtkFrameWriter::write_collection() const {
     });
 }
 
+std::string VtkFrameWriter::last_frame_path() const {
+    return times_.empty() ? std::string()
+                          : directory_ + "/frames/" + frame_stem(times_.size() - 1) + ".vtm";
+}
+
 std::string VtkFrameWriter::write(const Frame& frame) {
     const std::size_t index = times_.size();
     const std::string stem = frame_stem(index);
@@ -155,7 +160,7 @@ std::string VtkFrameWriter::write(const Frame& frame) {
     write_multiblock_index(frame, index);
     times_.push_back(frame.time);
     write_collection();
-    return directory_ + "/frames/" + stem + ".vtm";
+    return last_frame_path();
 }
 
 } // namespace grainload::io

@@ -21,6 +21,8 @@ class VtkFrameWriter {
     /// Frames written so far (index, time); restored on restart so the .pvd stays complete.
     void set_history(std::vector<double> times) { times_ = std::move(times); }
     const std::vector<double>& times() const { return times_; }
+    /// Path of the newest complete frame's .vtm; empty before the first frame.
+    std::string last_frame_path() const;
 
   private:
     std::string frame_stem(std::size_t index) const;

@@ -29,8 +29,7 @@ std::vector<Vec3> fill_box(const Vec3& min, const Vec3& max, double spacing, int
     return points;
 }
 
-std::vector<Vec3> generate_body_points(const io::CaseTable& shape, double spacing,
-                                       int dimension) {
+std::vector<Vec3> generate_body_points(const io::CaseTable& shape, double spacing, int dimension) {
     namespace dim = io::dimension;
     const std::string type = shape.choice("type", {"box"});
     const Vec3 min = shape.vector("min", dim::kLength);
@@ -43,4 +42,4 @@ std::vector<Vec3> generate_body_points(const io::CaseTable& shape, double spacin
     return fill_box(min, max, spacing, dimension);
 }
 
-}  // namespace grainload::sph
+} // namespace grainload::sph

@@ -24,8 +24,8 @@ void ParticleSet::add(const Vec3& x, const Vec3& v, double particle_mass, double
     state.resize(state.size() + static_cast<std::size_t>(state_size), 0.0);
 }
 
-void ParticleSet::add_wall_particle(const Vec3& x, const Vec3& v, double particle_mass,
-                                    double rho, int body, int wall) {
+void ParticleSet::add_wall_particle(const Vec3& x, const Vec3& v, double particle_mass, double rho,
+                                    int body, int wall) {
     add(x, v, particle_mass, rho, body, -1, 0);
     wall_id.back() = wall;
 }
@@ -51,4 +51,4 @@ void ParticleSet::reserve(Index n) {
     state_offset.reserve(count);
 }
 
-}  // namespace grainload::sph
+} // namespace grainload::sph

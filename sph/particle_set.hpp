@@ -17,13 +17,13 @@ struct ParticleSet {
     std::vector<double> mass;
     std::vector<double> density;
     std::vector<double> density_rate;
-    std::vector<double> internal_energy;   ///< specific, J/kg
+    std::vector<double> internal_energy; ///< specific, J/kg
     std::vector<double> energy_rate;
-    std::vector<Voigt6> stress;            ///< Cauchy, tension positive, tensor shear
-    std::vector<Voigt6> strain_rate;       ///< engineering shear
-    std::vector<Vec3> spin;                ///< axial vector of the spin tensor
-    std::vector<double> plastic_strain;    ///< equivalent plastic strain, for output
-    std::vector<int> plastic_region;       ///< materials::PlasticRegion of the last update
+    std::vector<Voigt6> stress;         ///< Cauchy, tension positive, tensor shear
+    std::vector<Voigt6> strain_rate;    ///< engineering shear
+    std::vector<Vec3> spin;             ///< axial vector of the spin tensor
+    std::vector<double> plastic_strain; ///< equivalent plastic strain, for output
+    std::vector<int> plastic_region;    ///< materials::PlasticRegion of the last update
     std::vector<int> body_id;
     std::vector<int> material_id;
     /// Index of the rigid wall a wall particle belongs to; -1 for material particles. Wall
@@ -34,13 +34,13 @@ struct ParticleSet {
 
     Index size() const { return static_cast<Index>(position.size()); }
     /// Append one particle with zero stress and rates; state is sized by the caller.
-    void add(const Vec3& x, const Vec3& v, double particle_mass, double rho, int body,
-             int material, int state_size);
+    void add(const Vec3& x, const Vec3& v, double particle_mass, double rho, int body, int material,
+             int state_size);
     /// Append one particle of rigid wall `wall` (no material, no state).
-    void add_wall_particle(const Vec3& x, const Vec3& v, double particle_mass, double rho,
-                           int body, int wall);
+    void add_wall_particle(const Vec3& x, const Vec3& v, double particle_mass, double rho, int body,
+                           int wall);
     bool is_wall(Index i) const { return wall_id[i] >= 0; }
     void reserve(Index n);
 };
 
-}  // namespace grainload::sph
+} // namespace grainload::sph

@@ -3,14 +3,31 @@
 #include "io/binary_stream.hpp"
 #include "io/case_table.hpp"
 #include "sph/body_generator.hpp"
+#include "sph/sph_case_reader.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <sstream>
 
 namespace grainload::sph {
 
 namespace dim = io::dimension;
+
+namespace {
+
+double pressure_of(const Voigt6& s) {
+    return -(s[0] + s[1] + s[2]) / 3.0;
+}
+
+double von_mises_of(const Voigt6& s) {
+    const double p = (s[0] + s[1] + s[2]) / 3.0;
+    const double dev = (s[0] - p) * (s[0] - p) + (s[1] - p) * (s[1] - p) + (s[2] - p) * (s[2] - p) +
+                       2.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
+    return std::sqrt(1.5 * dev);
+}
+
+} // namespace
 
 std::unique_ptr<SphModel> SphModel::from_case(const io::CaseTable& root,
                                               const materials::MaterialLibrary& materials) {
@@ -20,10 +37,6 @@ std::unique_ptr<SphModel> SphModel::from_case(const io::CaseTable& root,
         root.table("case").vector_or("gravity", dim::kAcceleration, Vec3(0.0, 0.0, -9.81));
     model->time_step_ = sph.positive_quantity_or("time_step", dim::kTime, 0.0);
     model->interactions_ = sph.boolean_or("interactions", true);
-    if (model->interactions_) {
-        sph.fail("interactions", "particle interactions are not in this build yet; "
-                                 "expected interactions = false");
-    }
     if (!model->interactions_ && model->time_step_ == 0.0) {
         sph.fail("time_step", "free flight (interactions = false) has no CFL limit: expected a "
                               "fixed time_step, e.g. \"1 ms\"");
@@ -35,10 +48,101 @@ std::unique_ptr<SphModel> SphModel::from_case(const io::CaseTable& root,
     for (const auto& body : bodies) {
         model->add_body(body, root.spatial_dimension());
     }
-    model->initial_position_ = model->particles_.position;
-    model->initial_velocity_ = model->particles_.velocity;
-    model->compute_accelerations();
+    if (model->interactions_) {
+        model->build_solver(sph, model->gravity_, root.spatial_dimension());
+        model->read_probes(sph);
+    }
+    model->initial_position_ = model->particles().position;
+    model->initial_velocity_ = model->particles().velocity;
+    if (!model->interactions_) {
+        model->compute_accelerations();
+    }
     return model;
+}
+
+void SphModel::build_solver(const io::CaseTable& sph, const Vec3& gravity, int dimension) {
+    const SphOptions options = read_sph_options(sph, dimension, spacing_, gravity);
+    SmoothingKernel kernel(options.kernel, options.smoothing_length, dimension);
+    auto walls = read_rigid_walls(sph, particles_, dimension, spacing_, kernel.support_radius(),
+                                  static_cast<int>(body_names_.size()));
+    SphSolver::MaterialList list;
+    for (int k = 0; k < materials_->size(); ++k) {
+        list.push_back(&(*materials_)[k]);
+    }
+    solver_ = std::make_unique<SphSolver>(std::move(particles_), std::move(list), options,
+                                          std::move(walls));
+    particles_ = ParticleSet{};
+    if (time_step_ > 0.0) {
+        const double limit = solver_->stable_time_step();
+        if (time_step_ > limit) {
+            std::ostringstream message;
+            message << "time step " << time_step_ << " s is above the CFL limit " << limit
+                    << " s (cfl_safety * h / (c + |v|), c = sqrt((K + 4G/3)/rho)); use at most "
+                    << limit << " s or leave time_step out";
+            sph.fail("time_step", message.str());
+        }
+    }
+}
+
+const std::string& SphModel::body_name(int body_id) const {
+    const auto bodies = static_cast<int>(body_names_.size());
+    if (body_id < bodies || !solver_) {
+        return body_names_[static_cast<std::size_t>(body_id)];
+    }
+    return solver_->walls()[static_cast<std::size_t>(body_id - bodies)].name;
+}
+
+void SphModel::set_output_directory(const std::string& directory) {
+    output_directory_ = directory;
+    wall_writer_.reset();
+    probe_writer_.reset();
+}
+
+void SphModel::read_probes(const io::CaseTable& sph) {
+    const auto& p = solver_->particles();
+    for (const auto& table : sph.array_of_tables("probe")) {
+        const Vec3 x = table.vector("position", dim::kLength);
+        Index nearest = -1;
+        double best = std::numeric_limits<double>::infinity();
+        for (Index i = 0; i < p.size(); ++i) {
+            const double d = (p.position[i] - x).norm();
+            if (!p.is_wall(i) && d < best) {
+                best = d;
+                nearest = i;
+            }
+        }
+        probes_.emplace_back(table.string("name"), nearest);
+    }
+}
+
+void SphModel::write_output_rows(double time) const {
+    if (output_directory_.empty() || !(time > last_row_time_)) {
+        return;
+    }
+    last_row_time_ = time;
+    if (!solver_->walls().empty()) {
+        if (!wall_writer_) {
+            wall_writer_ = std::make_unique<WallForceWriter>(output_directory_);
+        }
+        wall_writer_->write(time, solver_->walls());
+    }
+    if (probes_.empty()) {
+        return;
+    }
+    if (!probe_writer_) {
+        std::filesystem::create_directories(output_directory_);
+        probe_writer_ = std::make_unique<std::ofstream>(output_directory_ + "/probes.csv");
+        *probe_writer_ << "time_s,probe,particle,stress_xx_Pa,stress_yy_Pa,stress_zz_Pa,"
+                          "stress_xy_Pa,von_mises_Pa,pressure_Pa,plastic_strain\n";
+    }
+    const auto& p = solver_->particles();
+    for (const auto& [name, i] : probes_) {
+        const Voigt6& s = p.stress[i];
+        *probe_writer_ << time << ',' << name << ',' << i << ',' << s[0] << ',' << s[1] << ','
+                       << s[2] << ',' << s[3] << ',' << von_mises_of(s) << ',' << pressure_of(s)
+                       << ',' << p.plastic_strain[i] << '\n';
+    }
+    probe_writer_->flush();
 }
 
 void SphModel::add_body(const io::CaseTable& body, int dimension) {
@@ -50,6 +154,12 @@ void SphModel::add_body(const io::CaseTable& body, int dimension) {
     }
     const int material = materials_->index_of(body, "material");
     const double spacing = body.positive_quantity("spacing", dim::kLength);
+    if (spacing_ > 0.0 && std::abs(spacing - spacing_) > 1e-9 * spacing_) {
+        body.fail("spacing", "every body must use the same particle spacing (one smoothing "
+                             "length for the scene); the first body uses " +
+                                 std::to_string(spacing_) + " m");
+    }
+    spacing_ = spacing;
     const Vec3 velocity = body.vector_or("velocity", dim::kVelocity, Vec3::Zero());
     const auto points = generate_body_points(body.table("shape"), spacing, dimension);
     const auto& law = (*materials_)[material];
@@ -69,7 +179,10 @@ void SphModel::add_body(const io::CaseTable& body, int dimension) {
 }
 
 double SphModel::stable_time_step() const {
-    return time_step_ > 0.0 ? time_step_ : std::numeric_limits<double>::infinity();
+    if (time_step_ > 0.0) {
+        return time_step_;
+    }
+    return solver_ ? solver_->stable_time_step() : std::numeric_limits<double>::infinity();
 }
 
 void SphModel::compute_accelerations() {
@@ -81,6 +194,10 @@ void SphModel::compute_accelerations() {
 }
 
 void SphModel::advance(double, double dt) {
+    if (solver_) {
+        solver_->step(dt);
+        return;
+    }
     // Velocity Verlet (kick-drift-kick): second order, and exact for a constant acceleration,
     // which the free-fall case checks to round-off.
     const auto n = static_cast<std::size_t>(particles_.size());
@@ -98,7 +215,7 @@ void SphModel::advance(double, double dt) {
 }
 
 std::optional<std::string> SphModel::diagnose() const {
-    const auto& p = particles_;
+    const auto& p = particles();
     for (std::size_t i = 0; i < p.position.size(); ++i) {
         const char* bad = !p.position[i].allFinite()                            ? "position"
                           : !p.velocity[i].allFinite()                          ? "velocity"
@@ -116,23 +233,8 @@ std::optional<std::string> SphModel::diagnose() const {
     return std::nullopt;
 }
 
-namespace {
-
-double pressure_of(const Voigt6& s) {
-    return -(s[0] + s[1] + s[2]) / 3.0;
-}
-
-double von_mises_of(const Voigt6& s) {
-    const double p = (s[0] + s[1] + s[2]) / 3.0;
-    const double dev = (s[0] - p) * (s[0] - p) + (s[1] - p) * (s[1] - p) + (s[2] - p) * (s[2] - p) +
-                       2.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
-    return std::sqrt(1.5 * dev);
-}
-
-} // namespace
-
 void SphModel::append_blocks(io::Frame& frame) const {
-    const auto& p = particles_;
+    const auto& p = particles();
     for (std::size_t b = 0; b < body_names_.size(); ++b) {
         io::Block block;
         block.name = body_names_[b];
@@ -162,10 +264,44 @@ void SphModel::append_blocks(io::Frame& frame) const {
                               plastic,  density,      body,   material};
         frame.blocks.push_back(std::move(block));
     }
+    append_wall_blocks(frame);
+    // Frames are collected exactly at the output instants: wall loads and probes go with them.
+    if (solver_) {
+        write_output_rows(frame.time);
+    }
+}
+
+void SphModel::append_wall_blocks(io::Frame& frame) const {
+    if (!solver_ || solver_->walls().empty()) {
+        return;
+    }
+    const auto& p = solver_->particles();
+    for (const RigidWall& wall : solver_->walls()) {
+        io::Block block;
+        block.name = "wall_" + wall.name;
+        io::FieldArray velocity{"velocity", 3, {}}, body{"body_id", 1, {}};
+        for (Index k = wall.first; k < wall.first + wall.count; ++k) {
+            block.points.push_back(p.position[k]);
+            velocity.values.insert(velocity.values.end(), p.velocity[k].begin(),
+                                   p.velocity[k].end());
+            body.values.push_back(wall.body_id);
+        }
+        block.point_arrays = {velocity, body};
+        frame.blocks.push_back(std::move(block));
+    }
 }
 
 void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) const {
-    if (interactions_) {
+    if (solver_) {
+        results.push_back({"kinetic_energy", solver_->kinetic_energy(), "J", std::nullopt, ""});
+        results.push_back({"internal_energy", solver_->internal_energy(), "J", std::nullopt, ""});
+        for (const RigidWall& wall : solver_->walls()) {
+            for (int a = 0; a < 3; ++a) {
+                const std::string axis(1, static_cast<char>('x' + a));
+                results.push_back(
+                    {"wall_" + wall.name + "_force_" + axis, wall.force[a], "N", std::nullopt, ""});
+            }
+        }
         return;
     }
     // Without interactions every particle is a point mass in uniform gravity: its exact path is
@@ -185,7 +321,7 @@ void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) 
 }
 
 void SphModel::write_checkpoint(std::ostream& out) const {
-    const auto& p = particles_;
+    const auto& p = particles();
     io::write_array(out, p.position);
     io::write_array(out, p.velocity);
     io::write_array(out, p.acceleration);
@@ -194,10 +330,17 @@ void SphModel::write_checkpoint(std::ostream& out) const {
     io::write_array(out, p.stress);
     io::write_array(out, p.plastic_strain);
     io::write_array(out, p.state);
+    if (solver_) {
+        std::vector<Vec3> centres;
+        for (const RigidWall& wall : solver_->walls()) {
+            centres.push_back(wall.centre);
+        }
+        io::write_array(out, centres);
+    }
 }
 
 void SphModel::read_checkpoint(std::istream& in) {
-    auto& p = particles_;
+    auto& p = solver_ ? solver_->particles() : particles_;
     const auto n = p.position.size();
     io::read_array(in, p.position);
     io::read_array(in, p.velocity);
@@ -207,6 +350,15 @@ void SphModel::read_checkpoint(std::istream& in) {
     io::read_array(in, p.stress);
     io::read_array(in, p.plastic_strain);
     io::read_array(in, p.state);
+    if (solver_) {
+        std::vector<Vec3> centres;
+        io::read_array(in, centres);
+        auto& walls = solver_->walls();
+        for (std::size_t k = 0; k < walls.size() && k < centres.size(); ++k) {
+            walls[k].centre = centres[k];
+        }
+        solver_->restart();
+    }
     if (p.position.size() != n) {
         throw std::runtime_error("checkpoint holds " + std::to_string(p.position.size()) +
                                  " particles, the case makes " + std::to_string(n));

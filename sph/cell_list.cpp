@@ -1,0 +1,73 @@
+#include "sph/cell_list.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace grainload::sph {
+
+namespace {
+
+/// Cap on cells per particle: a few particles flying far away must not allocate a huge grid.
+constexpr double kMaxCellsPerParticle = 8.0;
+
+} // namespace
+
+std::array<Index, 3> CellList::cell_coordinates(const Vec3& x) const {
+    std::array<Index, 3> c{};
+    for (int a = 0; a < 3; ++a) {
+        const auto k = static_cast<Index>(std::floor((x[a] - origin_[a]) / cell_size_));
+        c[a] = std::clamp<Index>(k, 0, cells_[a] - 1);
+    }
+    return c;
+}
+
+void CellList::build(std::span<const Vec3> positions, double search_radius, int dimension) {
+    if (!(search_radius > 0.0)) {
+        throw std::invalid_argument("CellList: search radius must be positive");
+    }
+    const auto n = static_cast<Index>(positions.size());
+    Vec3 lower = Vec3::Constant(0.0);
+    Vec3 upper = Vec3::Constant(0.0);
+    if (n > 0) {
+        lower = positions[0];
+        upper = positions[0];
+        for (const Vec3& x : positions) {
+            lower = lower.cwiseMin(x);
+            upper = upper.cwiseMax(x);
+        }
+    }
+    origin_ = lower;
+    cell_size_ = search_radius;
+    const double budget = kMaxCellsPerParticle * static_cast<double>(std::max<Index>(n, 1)) + 27.0;
+    for (;;) {
+        double count = 1.0;
+        for (int a = 0; a < 3; ++a) {
+            const bool flat = a == 2 && dimension == 2;
+            cells_[a] = flat ? 1 : static_cast<Index>((upper[a] - lower[a]) / cell_size_) + 1;
+            count *= static_cast<double>(cells_[a]);
+        }
+        if (count <= budget) {
+            break;
+        }
+        cell_size_ *= 1.5;
+    }
+
+    cell_start_.assign(static_cast<std::size_t>(cell_count() + 1), 0);
+    cell_of_.resize(static_cast<std::size_t>(n));
+    for (Index i = 0; i < n; ++i) {
+        const auto c = cell_coordinates(positions[i]);
+        cell_of_[i] = (c[2] * cells_[1] + c[1]) * cells_[0] + c[0];
+        ++cell_start_[cell_of_[i] + 1];
+    }
+    for (Index c = 0; c < cell_count(); ++c) {
+        cell_start_[c + 1] += cell_start_[c];
+    }
+    sorted_.resize(static_cast<std::size_t>(n));
+    std::vector<Index> fill(cell_start_.begin(), cell_start_.end() - 1);
+    for (Index i = 0; i < n; ++i) {
+        sorted_[fill[cell_of_[i]]++] = i;
+    }
+}
+
+} // namespace grainload::sph

@@ -1,0 +1,60 @@
+#pragma once
+
+#include "io/types.hpp"
+
+#include <array>
+#include <span>
+#include <vector>
+
+namespace grainload::sph {
+
+/// Uniform grid of cells of edge >= the search radius: the neighbours of a particle lie in its
+/// own cell and the adjacent ones (9 in plane strain, 27 in 3D). Particles are binned by a
+/// counting sort, so a build is O(N) and allocates only when the grid grows.
+class CellList {
+  public:
+    /// dimension 2 keeps a single layer of cells in z.
+    void build(std::span<const Vec3> positions, double search_radius, int dimension);
+
+    /// Call visit(j) for every particle j in the cells around x (including x's own particle).
+    template <class Visit> void for_each_candidate(const Vec3& x, Visit&& visit) const {
+        const auto c = cell_coordinates(x);
+        const int z_reach = cells_[2] > 1 ? 1 : 0;
+        for (int dz = -z_reach; dz <= z_reach; ++dz) {
+            const Index z = c[2] + dz;
+            if (z < 0 || z >= cells_[2]) {
+                continue;
+            }
+            for (int dy = -1; dy <= 1; ++dy) {
+                const Index y = c[1] + dy;
+                if (y < 0 || y >= cells_[1]) {
+                    continue;
+                }
+                const Index row = (z * cells_[1] + y) * cells_[0];
+                const Index x_first = c[0] > 0 ? c[0] - 1 : 0;
+                const Index x_last = c[0] + 1 < cells_[0] ? c[0] + 1 : cells_[0] - 1;
+                // Cells adjacent in x are contiguous in the sorted order: one range per row.
+                const Index begin = cell_start_[row + x_first];
+                const Index end = cell_start_[row + x_last + 1];
+                for (Index k = begin; k < end; ++k) {
+                    visit(sorted_[k]);
+                }
+            }
+        }
+    }
+
+    Index cell_count() const { return cells_[0] * cells_[1] * cells_[2]; }
+    double cell_size() const { return cell_size_; }
+
+  private:
+    std::array<Index, 3> cell_coordinates(const Vec3& x) const;
+
+    Vec3 origin_ = Vec3::Zero();
+    double cell_size_ = 1.0;
+    std::array<Index, 3> cells_{1, 1, 1};
+    std::vector<Index> cell_start_; ///< size cell_count() + 1
+    std::vector<Index> sorted_;     ///< particle indices ordered by cell
+    std::vector<Index> cell_of_;    ///< cell of each particle
+};
+
+} // namespace grainload::sph

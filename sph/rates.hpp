@@ -1,0 +1,60 @@
+#pragma once
+
+#include "sph/kernels.hpp"
+#include "sph/neighbour_list.hpp"
+#include "sph/particle_set.hpp"
+#include "sph/sph_options.hpp"
+
+#include <span>
+#include <vector>
+
+namespace grainload::sph {
+
+/// Conversions between Voigt6 stress (tensor shear, order xx yy zz xy yz zx) and 3x3 tensors.
+Mat3 stress_tensor(const Voigt6& stress);
+Voigt6 stress_voigt(const Mat3& stress);
+
+/// Kinematic pass over pairs of the same body: velocity gradient
+/// L_i = sum_j (m_j / rho_i) (v_j - v_i) (grad_i W_ij)^T, the velocity-difference form of
+/// thesis eqs. 4.6.1.13 and 4.6.1.17 with the weight m_j/rho_i instead of m_j/rho_j, which
+/// makes the stress power exactly the work of the momentum equation (and rho_i tr L the
+/// standard continuity sum). With `gradient_correction`, L_i is multiplied by M_i^-1,
+/// M_i = sum_j (m_j / rho_i) (x_j - x_i) (grad_i W_ij)^T (Randles & Libersky 1996; Bonet &
+/// Lok 1999), exact for linear fields, and C_i = M_i^-T is stored in `correction` for the
+/// momentum equation; otherwise `correction` is cleared. From L it sets, per material
+/// particle: density_rate = -rho tr L (continuity with velocity differences, eq. 4.5.3.13),
+/// strain_rate = sym L in engineering shear (eq. 4.6.1.13), spin = axial vector of skew L
+/// (eq. 4.6.1.17). The thesis writes these with the gradient taken at x_j; the signs here are
+/// those of grad_i W_ij = W'(r) x_ij / r.
+void compute_velocity_gradient(ParticleSet& particles, const NeighbourList& neighbours,
+                               const SmoothingKernel& kernel, bool gradient_correction,
+                               std::vector<Mat3>& velocity_gradient, std::vector<Mat3>& correction);
+
+/// Per-particle quantities the force pass reads, computed once per step.
+struct ForceInputs {
+    std::vector<Mat3> stress_over_rho2;  ///< sigma_i / rho_i^2, times C_i when corrected
+    std::vector<Mat3> artificial_stress; ///< R_i (zero when epsilon = 0)
+    std::vector<double> sound_speed;     ///< c_i of the particle's material
+    /// C_i = M_i^-T of compute_velocity_gradient; empty without the gradient correction.
+    std::vector<Mat3> gradient_correction;
+};
+
+/// Fill stress_over_rho2 and artificial_stress from the particles' current stresses (after
+/// compute_velocity_gradient has set gradient_correction).
+void prepare_force_inputs(const ParticleSet& particles, const ArtificialStress& artificial,
+                          ForceInputs& inputs);
+
+/// Dynamic pass: acceleration of every particle and the viscous heating rate.
+/// Same-body pairs: momentum, thesis eq. (4.5.4.13) for tension-positive stress,
+///   dv_i/dt = sum_j m_j (sigma_i/rho_i^2 + sigma_j/rho_j^2 + f^n (R_i + R_j) - Pi_ij I) grad_i
+///   W_ij
+/// and with the gradient correction sigma_i/rho_i^2 C_i + sigma_j/rho_j^2 C_j in place of the
+/// first two terms (Bonet & Lok 1999): linear and angular momentum are then both conserved.
+///   plus gravity; heating de_i/dt += 1/2 sum_j m_j Pi_ij v_ij . grad_i W_ij (Monaghan 1992).
+/// Pairs of different bodies (walls included): the contact potential, thesis eq. (5.3.12).
+/// Wall particles get only contact; their `acceleration` times mass is the force on the wall.
+void compute_accelerations(ParticleSet& particles, const NeighbourList& neighbours,
+                           const SmoothingKernel& kernel, const SphOptions& options,
+                           const ForceInputs& inputs, std::vector<double>& heating_rate);
+
+} // namespace grainload::sph

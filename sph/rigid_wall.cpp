@@ -1,0 +1,134 @@
+#include "sph/rigid_wall.hpp"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+namespace grainload::sph {
+
+namespace {
+
+int steps_along(double length, double spacing) {
+    return std::max(1, static_cast<int>(std::lround(length / spacing))) + 1;
+}
+
+} // namespace
+
+std::vector<Vec3> plane_wall_points(const Vec3& origin, const Vec3& u, const Vec3& v,
+                                    const Vec3& normal, double spacing, int layers, int dimension) {
+    const int nu = steps_along(u.norm(), spacing);
+    const int nv = dimension == 2 ? 1 : steps_along(v.norm(), spacing);
+    const Vec3 inward = normal.normalized();
+    std::vector<Vec3> points;
+    points.reserve(static_cast<std::size_t>(nu) * static_cast<std::size_t>(nv) *
+                   static_cast<std::size_t>(layers));
+    for (int layer = 0; layer < layers; ++layer) {
+        for (int b = 0; b < nv; ++b) {
+            for (int a = 0; a < nu; ++a) {
+                const double s = static_cast<double>(a) / std::max(nu - 1, 1);
+                const double t = nv > 1 ? static_cast<double>(b) / (nv - 1) : 0.0;
+                points.push_back(origin + s * u + t * v -
+                                 (0.5 + static_cast<double>(layer)) * spacing * inward);
+            }
+        }
+    }
+    return points;
+}
+
+std::vector<Vec3> box_wall_points(const Vec3& lower, const Vec3& upper, double spacing, int layers,
+                                  int dimension, bool open_top) {
+    const int up = dimension == 2 ? 1 : 2;
+    const double thickness = layers * spacing;
+    Vec3 outer_lower = lower - Vec3::Constant(thickness - 0.5 * spacing);
+    Vec3 outer_upper = upper + Vec3::Constant(thickness - 0.5 * spacing);
+    if (dimension == 2) {
+        outer_lower.z() = 0.0;
+        outer_upper.z() = 0.0;
+    }
+    std::array<int, 3> count{1, 1, 1};
+    for (int a = 0; a < dimension; ++a) {
+        count[a] =
+            static_cast<int>(std::floor((outer_upper[a] - outer_lower[a]) / spacing + 1e-9)) + 1;
+    }
+    std::vector<Vec3> points;
+    for (int k = 0; k < count[2]; ++k) {
+        for (int j = 0; j < count[1]; ++j) {
+            for (int i = 0; i < count[0]; ++i) {
+                const Vec3 x = outer_lower + spacing * Vec3(i, j, k);
+                bool inside = true;
+                for (int a = 0; a < dimension; ++a) {
+                    inside = inside && x[a] > lower[a] && x[a] < upper[a];
+                }
+                const bool above = x[up] > upper[up];
+                if (!inside && !(open_top && above)) {
+                    points.push_back(x);
+                }
+            }
+        }
+    }
+    return points;
+}
+
+RigidWall add_rigid_wall(ParticleSet& particles, std::string name, int wall_index, int body_id,
+                         const std::vector<Vec3>& points, double spacing, double density,
+                         int dimension) {
+    RigidWall wall;
+    wall.name = std::move(name);
+    wall.body_id = body_id;
+    wall.first = particles.size();
+    wall.count = static_cast<Index>(points.size());
+    const double mass = density * std::pow(spacing, dimension);
+    Vec3 centre = Vec3::Zero();
+    for (const Vec3& x : points) {
+        particles.add_wall_particle(x, Vec3::Zero(), mass, density, body_id, wall_index);
+        centre += x;
+    }
+    wall.centre = points.empty() ? centre : Vec3(centre / static_cast<double>(points.size()));
+    return wall;
+}
+
+void move_rigid_wall(ParticleSet& particles, RigidWall& wall, double dt) {
+    const double angle = wall.angular_velocity.norm() * dt;
+    const Mat3 rotation =
+        angle > 0.0 ? Eigen::AngleAxisd(angle, wall.angular_velocity.normalized()).matrix()
+                    : Mat3::Identity();
+    const Vec3 new_centre = wall.centre + dt * wall.velocity;
+    for (Index k = wall.first; k < wall.first + wall.count; ++k) {
+        const Vec3 arm = rotation * (particles.position[k] - wall.centre);
+        particles.position[k] = new_centre + arm;
+        particles.velocity[k] = wall.velocity + wall.angular_velocity.cross(arm);
+    }
+    wall.centre = new_centre;
+}
+
+void accumulate_wall_load(const ParticleSet& particles, RigidWall& wall) {
+    wall.force.setZero();
+    wall.moment.setZero();
+    for (Index k = wall.first; k < wall.first + wall.count; ++k) {
+        const Vec3 f = particles.mass[k] * particles.acceleration[k];
+        wall.force += f;
+        wall.moment += (particles.position[k] - wall.centre).cross(f);
+    }
+}
+
+WallForceWriter::WallForceWriter(const std::string& directory) {
+    std::filesystem::create_directories(directory);
+    const std::string file = (std::filesystem::path(directory) / "wall_forces.csv").string();
+    out_.open(file);
+    if (!out_) {
+        throw std::runtime_error("cannot write " + file);
+    }
+    out_ << "time_s,wall,force_x_N,force_y_N,force_z_N,moment_x_Nm,moment_y_Nm,moment_z_Nm\n";
+}
+
+void WallForceWriter::write(double time, const std::vector<RigidWall>& walls) {
+    for (const RigidWall& w : walls) {
+        out_ << time << ',' << w.name << ',' << w.force.x() << ',' << w.force.y() << ','
+             << w.force.z() << ',' << w.moment.x() << ',' << w.moment.y() << ',' << w.moment.z()
+             << '\n';
+    }
+    out_.flush();
+}
+
+} // namespace grainload::sph

@@ -1,0 +1,28 @@
+#pragma once
+
+#include "sph/particle_set.hpp"
+#include "sph/rigid_wall.hpp"
+#include "sph/sph_options.hpp"
+
+#include <vector>
+
+namespace grainload::io {
+class CaseTable;
+}
+
+namespace grainload::sph {
+
+/// Solver settings of an [sph] table with particle interactions (see docs/user-guide/sph.md):
+/// kernel, smoothing_length_ratio, cfl_safety, verlet_skin, kernel_gradient_correction and
+/// the [sph.artificial_viscosity], [sph.artificial_stress] and [sph.contact] tables.
+/// `spacing` is the bodies' particle spacing, gravity comes from [case].
+SphOptions read_sph_options(const io::CaseTable& sph, int dimension, double spacing,
+                            const Vec3& gravity);
+
+/// Append the particles of every [[sph.wall]] to `particles` and return the walls. Wall body
+/// ids follow `first_body_id`; `support_radius` sets the default number of layers.
+std::vector<RigidWall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& particles,
+                                        int dimension, double spacing, double support_radius,
+                                        int first_body_id);
+
+} // namespace grainload::sph

@@ -1,0 +1,49 @@
+#pragma once
+
+#include "io/types.hpp"
+#include "sph/kernels.hpp"
+
+namespace grainload::sph {
+
+/// Monaghan artificial viscosity (Monaghan & Gingold 1983; Monaghan 1992, eq. 4.1):
+/// Pi_ij = (-alpha c_ij mu_ij + beta mu_ij^2) / rho_ij for approaching pairs.
+struct ArtificialViscosity {
+    double alpha = 0.0;
+    double beta = 0.0;
+};
+
+/// Artificial stress against the tensile instability (Monaghan 2000; Gray, Monaghan & Swift
+/// 2001, eqs. 4.7-4.11): R^a = -epsilon sigma^a / rho^2 for tensile principal stresses
+/// sigma^a, scaled pairwise by f^n with f = W(r)/W(particle spacing).
+struct ArtificialStress {
+    double epsilon = 0.0;
+    double exponent = 4.0;
+};
+
+/// Contact potential between particles of different bodies and walls, thesis eq. (5.3.12)
+/// with the repulsive sign: f_i = -sum_j V_i V_j K (W_ij/W(dp))^(n-1) grad_i W_ij.
+/// K here is a pressure; the thesis' K (unit depending on the dimension) is K * W(dp).
+struct ContactPotential {
+    double stiffness = 0.0; ///< K, Pa; 0 disables contact
+    double exponent = 2.0;  ///< n
+};
+
+/// Everything the SPH integrator needs besides particles and materials.
+struct SphOptions {
+    int dimension = 3; ///< 2: plane strain (z = 0), 3
+    KernelType kernel = KernelType::wendland_c2;
+    double smoothing_length = 0.0; ///< h, m
+    double particle_spacing =
+        0.0; ///< dp, m: the reference distance of artificial stress and contact
+    Vec3 gravity = Vec3::Zero();
+    ArtificialViscosity viscosity;
+    ArtificialStress artificial_stress;
+    ContactPotential contact;
+    /// Randles & Libersky (1996) / Bonet & Lok (1999) corrected gradient in the velocity
+    /// gradient (thesis section 4.4.1): exact for linear velocity fields also at free surfaces.
+    bool kernel_gradient_correction = false;
+    double cfl_safety = 0.3;         ///< dt = safety * h / (c + |v|)
+    double verlet_skin_factor = 0.1; ///< Verlet skin as a fraction of h (0: rebuild each step)
+};
+
+} // namespace grainload::sph

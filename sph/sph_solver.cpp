@@ -1,0 +1,205 @@
+#include "sph/sph_solver.hpp"
+
+#include "sph/stress_update.hpp"
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+#include <algorithm>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace grainload::sph {
+
+SphSolver::SphSolver(ParticleSet particles, MaterialList materials, SphOptions options,
+                     std::vector<RigidWall> walls)
+    : particles_(std::move(particles)), materials_(std::move(materials)), options_(options),
+      kernel_(options.kernel, options.smoothing_length, options.dimension),
+      neighbours_(kernel_.support_radius(), options.verlet_skin_factor * options.smoothing_length,
+                  options.dimension),
+      walls_(std::move(walls)) {
+    if (!(options_.particle_spacing > 0.0)) {
+        throw std::invalid_argument("SphSolver: particle spacing must be positive");
+    }
+    const Index n = particles_.size();
+    is_wall_.resize(static_cast<std::size_t>(n));
+    force_inputs_.sound_speed.resize(static_cast<std::size_t>(n));
+    for (Index i = 0; i < n; ++i) {
+        is_wall_[i] = particles_.is_wall(i) ? 1 : 0;
+        const int m = particles_.material_id[i];
+        if (!is_wall_[i] && (m < 0 || m >= static_cast<int>(materials_.size()))) {
+            throw std::invalid_argument("SphSolver: particle has no material");
+        }
+        force_inputs_.sound_speed[i] =
+            is_wall_[i] ? 0.0 : materials_[static_cast<std::size_t>(m)]->elastic().p_wave_speed();
+    }
+    refresh_neighbours();
+}
+
+double SphSolver::stable_time_step() const {
+    double fastest = 0.0;
+    const Index n = particles_.size();
+#pragma omp parallel for reduction(max : fastest) schedule(static)
+    for (Index i = 0; i < n; ++i) {
+        fastest = std::max(fastest, force_inputs_.sound_speed[i] + particles_.velocity[i].norm());
+    }
+    if (fastest == 0.0) {
+        return std::numeric_limits<double>::infinity();
+    }
+    return options_.cfl_safety * options_.smoothing_length / fastest;
+}
+
+void SphSolver::check_time_step(double dt) const {
+    const double limit = stable_time_step();
+    if (dt > limit) {
+        std::ostringstream message;
+        message << "time step " << dt << " s exceeds the CFL limit " << limit << " s (safety "
+                << options_.cfl_safety << " * h / (c + |v|)); use dt <= " << limit << " s";
+        throw std::invalid_argument(message.str());
+    }
+}
+
+void SphSolver::restart() {
+    neighbours_.update(particles_.position, is_wall_, true);
+    forces_valid_ = false;
+}
+
+void SphSolver::refresh_neighbours() {
+    neighbours_.update(particles_.position, is_wall_);
+}
+
+void SphSolver::compute_forces() {
+    prepare_force_inputs(particles_, options_.artificial_stress, force_inputs_);
+    compute_accelerations(particles_, neighbours_, kernel_, options_, force_inputs_, heating_rate_);
+    for (RigidWall& wall : walls_) {
+        accumulate_wall_load(particles_, wall);
+    }
+    forces_valid_ = true;
+}
+
+void SphSolver::kick(double half_dt) {
+    const Index n = particles_.size();
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+        if (!is_wall_[i]) {
+            particles_.velocity[i] += half_dt * particles_.acceleration[i];
+        }
+    }
+}
+
+void SphSolver::compute_kinematics() {
+    compute_velocity_gradient(particles_, neighbours_, kernel_, options_.kernel_gradient_correction,
+                              velocity_gradient_, force_inputs_.gradient_correction);
+}
+
+void SphSolver::step(double dt) {
+    if (!forces_valid_) {
+        refresh_neighbours();
+        compute_kinematics();
+        compute_forces();
+    }
+    ParticleSet& p = particles_;
+    const Index n = p.size();
+    kick(0.5 * dt);
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+        if (!is_wall_[i]) {
+            p.position[i] += dt * p.velocity[i];
+        }
+    }
+    for (RigidWall& wall : walls_) {
+        move_rigid_wall(p, wall, dt);
+    }
+    refresh_neighbours();
+    compute_kinematics();
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+        if (!is_wall_[i]) {
+            p.density[i] += dt * p.density_rate[i];
+        }
+    }
+    update_stresses(p, materials_, dt);
+    compute_forces();
+    kick(0.5 * dt);
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+        p.internal_energy[i] += dt * heating_rate_[i];
+    }
+    time_ += dt;
+    ++steps_;
+}
+
+Vec3 SphSolver::linear_momentum() const {
+    Vec3 sum = Vec3::Zero();
+    for (Index i = 0; i < particles_.size(); ++i) {
+        if (!is_wall_[i]) {
+            sum += particles_.mass[i] * particles_.velocity[i];
+        }
+    }
+    return sum;
+}
+
+Vec3 SphSolver::angular_momentum() const {
+    Vec3 sum = Vec3::Zero();
+    for (Index i = 0; i < particles_.size(); ++i) {
+        if (!is_wall_[i]) {
+            sum += particles_.mass[i] * particles_.position[i].cross(particles_.velocity[i]);
+        }
+    }
+    return sum;
+}
+
+double SphSolver::kinetic_energy() const {
+    double sum = 0.0;
+    for (Index i = 0; i < particles_.size(); ++i) {
+        if (!is_wall_[i]) {
+            sum += 0.5 * particles_.mass[i] * particles_.velocity[i].squaredNorm();
+        }
+    }
+    return sum;
+}
+
+double SphSolver::internal_energy() const {
+    double sum = 0.0;
+    for (Index i = 0; i < particles_.size(); ++i) {
+        if (!is_wall_[i]) {
+            sum += particles_.mass[i] * particles_.internal_energy[i];
+        }
+    }
+    return sum;
+}
+
+double SphSolver::elastic_strain_energy() const {
+    std::vector<Matrix6> compliance(materials_.size());
+    for (std::size_t k = 0; k < materials_.size(); ++k) {
+        compliance[k] = materials_[k]->elastic().stiffness().inverse();
+    }
+    double sum = 0.0;
+    for (Index i = 0; i < particles_.size(); ++i) {
+        if (!is_wall_[i]) {
+            const Voigt6& s = particles_.stress[i];
+            const double volume = particles_.mass[i] / particles_.density[i];
+            sum += 0.5 * volume *
+                   s.dot(compliance[static_cast<std::size_t>(particles_.material_id[i])] * s);
+        }
+    }
+    return sum;
+}
+
+std::size_t SphSolver::bytes() const {
+    const ParticleSet& p = particles_;
+    auto held = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+    const std::size_t particle_fields =
+        held(p.position) + held(p.velocity) + held(p.acceleration) + held(p.mass) +
+        held(p.density) + held(p.density_rate) + held(p.internal_energy) + held(p.energy_rate) +
+        held(p.stress) + held(p.strain_rate) + held(p.spin) + held(p.plastic_strain) +
+        held(p.plastic_region) + held(p.body_id) + held(p.material_id) + held(p.wall_id) +
+        held(p.state_offset) + held(p.state);
+    const std::size_t work =
+        held(is_wall_) + held(force_inputs_.stress_over_rho2) +
+        held(force_inputs_.artificial_stress) + held(force_inputs_.sound_speed) +
+        held(force_inputs_.gradient_correction) + held(velocity_gradient_) + held(heating_rate_);
+    return particle_fields + work + neighbours_.bytes();
+}
+
+} // namespace grainload::sph

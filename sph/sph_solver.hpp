@@ -1,0 +1,81 @@
+#pragma once
+
+#include "materials/material.hpp"
+#include "sph/kernels.hpp"
+#include "sph/neighbour_list.hpp"
+#include "sph/particle_set.hpp"
+#include "sph/rates.hpp"
+#include "sph/rigid_wall.hpp"
+#include "sph/sph_options.hpp"
+
+#include <vector>
+
+namespace grainload::sph {
+
+/// Explicit SPH for solids: one code path for plane strain (dimension 2) and 3D.
+///
+/// Time integration is the kick-drift-kick leapfrog (velocity Verlet), second order and
+/// symplectic for conservative forces:
+///   v(n+1/2) = v(n) + dt/2 a(n);  x(n+1) = x(n) + dt v(n+1/2);
+///   rates from v(n+1/2) at x(n+1) -> rho, sigma at n+1;  a(n+1);  v(n+1) = v(n+1/2) + dt/2 a(n+1).
+class SphSolver {
+  public:
+    /// Non-owning: the materials (a case's MaterialLibrary) outlive the solver.
+    using MaterialList = std::vector<const materials::Material*>;
+
+    /// materials[k] is the material of particles with material_id k.
+    SphSolver(ParticleSet particles, MaterialList materials, SphOptions options,
+              std::vector<RigidWall> walls = {});
+
+    /// CFL limit (Monaghan 1992): safety * h / max_i (c_i + |v_i|), c = sqrt((K + 4G/3)/rho).
+    double stable_time_step() const;
+    /// Throws std::invalid_argument, giving the limit, when dt exceeds stable_time_step().
+    void check_time_step(double dt) const;
+    /// Advance by dt (not checked against the CFL limit: call check_time_step for user input).
+    void step(double dt);
+
+    /// After particle fields were replaced (a checkpoint): rebuild neighbours and forces.
+    void restart();
+    double time() const { return time_; }
+    Index step_count() const { return steps_; }
+    ParticleSet& particles() { return particles_; }
+    const ParticleSet& particles() const { return particles_; }
+    const SphOptions& options() const { return options_; }
+    const SmoothingKernel& kernel() const { return kernel_; }
+    const NeighbourList& neighbours() const { return neighbours_; }
+    std::vector<RigidWall>& walls() { return walls_; }
+    const std::vector<RigidWall>& walls() const { return walls_; }
+    const MaterialList& materials() const { return materials_; }
+
+    /// Sums over material particles (walls excluded), for conservation checks.
+    Vec3 linear_momentum() const;
+    Vec3 angular_momentum() const; ///< about the origin
+    double kinetic_energy() const;
+    double internal_energy() const; ///< sum m e
+    /// Sum of V sigma : C^-1 : sigma / 2: the elastic strain energy from the stresses.
+    double elastic_strain_energy() const;
+    /// Heap bytes of particles, neighbour list and work arrays.
+    std::size_t bytes() const;
+
+  private:
+    void refresh_neighbours();
+    void compute_kinematics();
+    void compute_forces();
+    void kick(double half_dt);
+
+    ParticleSet particles_;
+    MaterialList materials_;
+    SphOptions options_;
+    SmoothingKernel kernel_;
+    NeighbourList neighbours_;
+    std::vector<RigidWall> walls_;
+    std::vector<char> is_wall_;
+    ForceInputs force_inputs_;
+    std::vector<Mat3> velocity_gradient_;
+    std::vector<double> heating_rate_;
+    bool forces_valid_ = false;
+    double time_ = 0.0;
+    Index steps_ = 0;
+};
+
+} // namespace grainload::sph

@@ -1,0 +1,25 @@
+#pragma once
+
+#include "materials/material.hpp"
+#include "sph/particle_set.hpp"
+
+#include <span>
+#include <vector>
+
+namespace grainload::sph {
+
+/// Incremental rotation of the Jaumann rate (thesis eq. 4.6.1.8) over one step, after Hughes &
+/// Winget (1980): Q = (I - dt/2 W)^-1 (I + dt/2 W), W the spin tensor of the axial vector
+/// `spin`. Q is exactly orthogonal, so sigma' = Q sigma Q^T keeps the stress invariants to
+/// round-off however large the rotation per step; to second order it is the Jaumann update
+/// sigma + dt (W sigma - sigma W).
+Mat3 jaumann_rotation(const Vec3& spin, double dt);
+
+/// Per material particle: rotate the stress by jaumann_rotation(), then call the particle's
+/// material with strain increment strain_rate * dt (engineering shear). The specific internal
+/// energy advances by the stress power at the mid-step stress, thesis eq. (4.5.5.9) in the
+/// form de/dt = sigma : D / rho. Plastic strain and plastic region are stored for output.
+void update_stresses(ParticleSet& particles, std::span<const materials::Material* const> materials,
+                     double dt);
+
+} // namespace grainload::sph

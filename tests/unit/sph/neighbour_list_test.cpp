@@ -1,0 +1,107 @@
+#include "sph/neighbour_list.hpp"
+
+#include <algorithm>
+#include <gtest/gtest.h>
+#include <random>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace grainload::sph {
+namespace {
+
+std::vector<Vec3> random_points(int count, int dimension, unsigned seed) {
+    std::mt19937 generator(seed);
+    std::uniform_real_distribution<double> coordinate(0.0, 1.0);
+    std::vector<Vec3> points(static_cast<std::size_t>(count));
+    for (Vec3& x : points) {
+        x = Vec3(coordinate(generator), coordinate(generator),
+                 dimension == 3 ? coordinate(generator) : 0.0);
+    }
+    return points;
+}
+
+using PairSet = std::set<std::pair<Index, Index>>;
+
+PairSet brute_force_pairs(const std::vector<Vec3>& points, double radius) {
+    PairSet pairs;
+    const auto n = static_cast<Index>(points.size());
+    for (Index i = 0; i < n; ++i) {
+        for (Index j = 0; j < n; ++j) {
+            if (i != j && (points[i] - points[j]).norm() < radius) {
+                pairs.emplace(i, j);
+            }
+        }
+    }
+    return pairs;
+}
+
+/// Pairs of the list that are within `radius` (the list may hold more, up to radius + skin).
+PairSet listed_pairs(const NeighbourList& list, const std::vector<Vec3>& points, double radius) {
+    PairSet pairs;
+    for (Index i = 0; i < static_cast<Index>(points.size()); ++i) {
+        for (const Index j : list.neighbours(i)) {
+            if ((points[i] - points[j]).norm() < radius) {
+                pairs.emplace(i, j);
+            }
+        }
+    }
+    return pairs;
+}
+
+TEST(NeighbourList, CellListMatchesBruteForce) {
+    for (const int dimension : {2, 3}) {
+        const auto points = random_points(1500, dimension, 7u + static_cast<unsigned>(dimension));
+        const double radius = 0.06;
+        NeighbourList list(radius, 0.0, dimension);
+        list.update(points, {});
+        const PairSet expected = brute_force_pairs(points, radius);
+        EXPECT_EQ(listed_pairs(list, points, radius), expected) << dimension << "D";
+        EXPECT_EQ(list.pair_entries(), static_cast<Index>(expected.size()));
+    }
+}
+
+TEST(NeighbourList, VerletListIsReusedUntilHalfSkinAndStaysComplete) {
+    const int dimension = 3;
+    auto points = random_points(2000, dimension, 3u);
+    const double radius = 0.08;
+    const double skin = 0.02;
+    NeighbourList list(radius, skin, dimension);
+    EXPECT_TRUE(list.update(points, {}));
+    std::mt19937 generator(11u);
+    std::uniform_real_distribution<double> jitter(-1.0, 1.0);
+    // Moves of at most 0.45 skin in total per particle: no rebuild, no pair lost.
+    for (int step = 0; step < 3; ++step) {
+        for (Vec3& x : points) {
+            x +=
+                Vec3(jitter(generator), jitter(generator), jitter(generator)) * (0.15 * skin / 2.0);
+        }
+        EXPECT_FALSE(list.update(points, {}));
+        EXPECT_EQ(listed_pairs(list, points, radius), brute_force_pairs(points, radius));
+    }
+    points[0] += Vec3(0.6 * skin, 0.0, 0.0);
+    EXPECT_TRUE(list.update(points, {}));
+    EXPECT_EQ(list.rebuild_count(), 2);
+    EXPECT_EQ(listed_pairs(list, points, radius), brute_force_pairs(points, radius));
+}
+
+TEST(NeighbourList, FrozenPairsAreLeftOut) {
+    const std::vector<Vec3> points{Vec3(0, 0, 0), Vec3(0.1, 0, 0), Vec3(0.2, 0, 0)};
+    const std::vector<char> frozen{1, 1, 0};
+    NeighbourList list(0.15, 0.0, 2);
+    list.update(points, frozen);
+    EXPECT_EQ(list.neighbours(0).size(), 0u);
+    ASSERT_EQ(list.neighbours(1).size(), 1u);
+    EXPECT_EQ(list.neighbours(1)[0], 2);
+}
+
+TEST(NeighbourList, FarOutlierDoesNotBlowUpTheGrid) {
+    auto points = random_points(100, 3, 5u);
+    points.emplace_back(1e6, 1e6, 1e6);
+    NeighbourList list(0.01, 0.0, 3);
+    list.update(points, {});
+    EXPECT_EQ(listed_pairs(list, points, 0.01), brute_force_pairs(points, 0.01));
+}
+
+} // namespace
+} // namespace grainload::sph

@@ -1,0 +1,64 @@
+#include "materials/linear_elastic.hpp"
+#include "sph/lattice_fill.hpp"
+#include "sph/sph_solver.hpp"
+
+#include <gtest/gtest.h>
+#include <string>
+
+namespace grainload::sph {
+namespace {
+
+const materials::LinearElastic& aluminium() {
+    static const materials::LinearElastic material(
+        materials::ElasticConstants::from_young(2700.0, 70e9, 0.3));
+    return material;
+}
+
+SphSolver make_solver(int dimension, Vec3 gravity) {
+    const auto elastic = aluminium().elastic();
+    ParticleSet particles;
+    LatticeBody body;
+    body.upper = Vec3(0.05, 0.05, 0.05);
+    body.spacing = 0.01;
+    body.density = elastic.density;
+    fill_box_lattice(particles, body, dimension);
+    SphOptions options;
+    options.dimension = dimension;
+    options.smoothing_length = 0.013;
+    options.particle_spacing = 0.01;
+    options.gravity = gravity;
+    return SphSolver(std::move(particles), {&aluminium()}, options);
+}
+
+TEST(SphSolver, TimeStepAboveTheCflLimitIsRefusedWithTheLimit) {
+    const SphSolver solver = make_solver(2, Vec3::Zero());
+    const double c = materials::ElasticConstants::from_young(2700.0, 70e9, 0.3).p_wave_speed();
+    const double limit = 0.3 * 0.013 / c;
+    EXPECT_NEAR(solver.stable_time_step(), limit, 1e-12 * limit);
+    EXPECT_NO_THROW(solver.check_time_step(0.99 * limit));
+    try {
+        solver.check_time_step(2.0 * limit);
+        FAIL() << "expected the time step to be refused";
+    } catch (const std::invalid_argument& error) {
+        EXPECT_NE(std::string(error.what()).find("CFL limit"), std::string::npos);
+    }
+}
+
+TEST(SphSolver, UnstressedBodyFallsFreelyUnderGravity) {
+    for (const int dimension : {2, 3}) {
+        SphSolver solver = make_solver(dimension, Vec3(0.0, -9.81, 0.0));
+        const double dt = solver.stable_time_step();
+        for (int k = 0; k < 50; ++k) {
+            solver.step(dt);
+        }
+        const double t = solver.time();
+        for (Index i = 0; i < solver.particles().size(); ++i) {
+            EXPECT_NEAR(solver.particles().velocity[i].y(), -9.81 * t, 1e-9);
+        }
+        const Vec3 p = solver.linear_momentum();
+        EXPECT_NEAR(p.x(), 0.0, 1e-12);
+    }
+}
+
+} // namespace
+} // namespace grainload::sph
