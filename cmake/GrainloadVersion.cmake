@@ -1,12 +1,12 @@
-# Version and git hash baked into io/version.hpp at configure time.
-execute_process(
-  COMMAND git rev-parse --short=12 HEAD
-  WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
-  OUTPUT_VARIABLE GRAINLOAD_GIT_HASH
-  OUTPUT_STRIP_TRAILING_WHITESPACE
-  ERROR_QUIET)
-if(NOT GRAINLOAD_GIT_HASH)
-  set(GRAINLOAD_GIT_HASH "unknown")
-endif()
-configure_file(${PROJECT_SOURCE_DIR}/cmake/version.hpp.in
-               ${PROJECT_BINARY_DIR}/generated/io/version.hpp @ONLY)
+# Version and git hash for io/version.hpp. The hash is read at every build, not only at
+# configure time, so summary.json names the commit that was built; the header is rewritten
+# only when its text changes, so an unchanged hash rebuilds nothing.
+set(GRAINLOAD_VERSION_HEADER ${PROJECT_BINARY_DIR}/generated/io/version.hpp)
+add_custom_target(grainload_version
+  COMMAND ${CMAKE_COMMAND}
+    -DSOURCE_DIR=${PROJECT_SOURCE_DIR}
+    -DOUTPUT=${GRAINLOAD_VERSION_HEADER}
+    -DVERSION=${PROJECT_VERSION}
+    -P ${PROJECT_SOURCE_DIR}/cmake/WriteVersion.cmake
+  BYPRODUCTS ${GRAINLOAD_VERSION_HEADER}
+  COMMENT "Reading the git hash")
