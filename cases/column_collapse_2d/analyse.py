@@ -1,0 +1,275 @@
+#!/usr/bin/python3
+"""Analyse a plane-strain granular column collapse run (cases/column_collapse_2d).
+
+Usage:
+    /usr/bin/python3 cases/column_collapse_2d/analyse.py OUT_DIR [--body column]
+        [--frame N] [--csv FILE] [--svg FILE] [--history]
+
+Reads the last frame (or frame N) of OUT_DIR/frames/*.vtm, takes the SPH body named --body,
+and prints:
+  * the final surface profile: free-surface height vs x in bins of 2 particle spacings
+    (also written as CSV, default OUT_DIR/profile.csv);
+  * the run-out L_inf, the final height H_inf, the normalised run-out (L_inf - L0)/L0 and
+    H_inf/H0;
+  * the failure-line angle;
+  * with --history: kinetic energy, largest speed and run-out of every frame (is the heap at rest?).
+
+Coordinates. x and y are measured from the column's initial back face and base, i.e. from
+min(initial x) - dp/2 and min(initial y) - dp/2, where "initial" = position - displacement.
+The case files leave a contact gap between the walls' planes and the material (the contact
+potential's range), so the wall planes are not the natural origin.
+
+Run-out criterion. Two particles are "in contact" when their centres are closer than
+LINK * dp (LINK = 1.5: nearest neighbours in a lattice sit 1 dp apart, diagonal ones 1.41 dp; a
+particle that has left the bulk is further than 1.5 dp from every other one). The bulk is the
+largest connected set under this relation (a chain of touching particles along the floor is
+part of the bulk). L_inf is the largest x + dp/2 over the bulk; particles outside the bulk are
+counted and their furthest x reported separately, but not used.
+
+Failure line. A particle "moved" when its final displacement exceeds one spacing. In the
+initial configuration, for every lattice row (constant initial y) that holds both moved and
+unmoved particles, the boundary point is the initial x of the furthest unmoved particle that is
+connected to the back wall through unmoved particles of that row, plus dp/2. A least-squares
+line y = m x + b through those boundary points gives the failure angle atan(|m|) from the
+horizontal. Rows without unmoved particles (above the static wedge) are skipped.
+"""
+
+import argparse
+import glob
+import math
+import os
+import sys
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+
+LINK = 1.5  # contact distance in spacings for the bulk/isolated-particle criterion
+
+
+def frame_files(out_dir):
+    files = sorted(glob.glob(os.path.join(out_dir, "frames", "*.vtm")))
+    if not files:
+        sys.exit(f"analyse.py: no frames/*.vtm in {out_dir}")
+    return files
+
+
+def frame_times(out_dir):
+    """Map frame file basename -> time from the .pvd collection (if any)."""
+    times = {}
+    for pvd in glob.glob(os.path.join(out_dir, "*.pvd")):
+        for ds in ET.parse(pvd).getroot().iter("DataSet"):
+            times[os.path.basename(ds.get("file"))] = float(ds.get("timestep"))
+    return times
+
+
+def read_body(vtm_file, body):
+    base = os.path.splitext(vtm_file)[0]
+    path = os.path.join(base, body + ".vtp")
+    if not os.path.exists(path):
+        found = [os.path.basename(p) for p in glob.glob(os.path.join(base, "*.vtp"))]
+        sys.exit(f"analyse.py: no {body}.vtp in {base} (found: {', '.join(found)})")
+    reader = vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    data = reader.GetOutput()
+    pos = vtk_to_numpy(data.GetPoints().GetData()).astype(float)
+    pd = data.GetPointData()
+    fields = {pd.GetArrayName(i): vtk_to_numpy(pd.GetArray(i)) for i in range(pd.GetNumberOfArrays())}
+    return pos, fields
+
+
+def spacing_of(initial):
+    """Lattice spacing from the initial positions (smallest gap between distinct x values)."""
+    xs = np.unique(np.round(initial[:, 0], 9))
+    gaps = np.diff(xs)
+    gaps = gaps[gaps > 1e-9]
+    return float(np.median(gaps))
+
+
+def components(points, link):
+    """Connected components of the graph 'distance < link' (cell list + union-find)."""
+    n = len(points)
+    parent = np.arange(n)
+
+    def find(i):
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    cells = {}
+    keys = np.floor(points[:, :2] / link).astype(np.int64)
+    for i, (a, b) in enumerate(keys):
+        cells.setdefault((a, b), []).append(i)
+    link2 = link * link
+    for (a, b), members in cells.items():
+        cand = []
+        for da in (-1, 0, 1):
+            for db in (-1, 0, 1):
+                cand.extend(cells.get((a + da, b + db), ()))
+        cand = np.array(cand)
+        for i in members:
+            d2 = np.sum((points[cand, :2] - points[i, :2]) ** 2, axis=1)
+            for j in cand[(d2 < link2) & (cand > i)]:
+                ri, rj = find(i), find(j)
+                if ri != rj:
+                    parent[max(ri, rj)] = min(ri, rj)
+    return np.array([find(i) for i in range(n)])
+
+
+def bulk_mask(pos, dp):
+    labels = components(pos, LINK * dp)
+    values, counts = np.unique(labels, return_counts=True)
+    return labels == values[np.argmax(counts)]
+
+
+def failure_line(initial, moved, dp, x0, y0):
+    rows = np.round((initial[:, 1] - y0) / dp - 0.5).astype(int)
+    cols = np.round((initial[:, 0] - x0) / dp - 0.5).astype(int)
+    pts = []
+    for r in np.unique(rows):
+        in_row = rows == r
+        c_moved = set(cols[in_row & moved])
+        c_still = set(cols[in_row & ~moved])
+        if not c_still or not c_moved or 0 not in c_still:
+            continue
+        c = 0
+        while c + 1 in c_still:
+            c += 1
+        pts.append(((c + 1) * dp, (r + 0.5) * dp))
+    if len(pts) < 3:
+        return None, pts
+    p = np.array(pts)
+    m, b = np.polyfit(p[:, 0], p[:, 1], 1)
+    return (math.degrees(math.atan(abs(m))), m, b), pts
+
+
+def profile(pos_b, dp, x0, y0, width):
+    xr = pos_b[:, 0] - x0
+    top = pos_b[:, 1] - y0 + 0.5 * dp
+    nbins = int(xr.max() // width) + 1
+    rows = []
+    for k in range(nbins):
+        sel = (xr >= k * width) & (xr < (k + 1) * width)
+        h = float(top[sel].max()) if np.any(sel) else 0.0
+        rows.append(((k + 0.5) * width, h, int(np.sum(sel))))
+    return rows
+
+
+def write_svg(path, prof, L0, H0, fit, dp):
+    """Tiny dependency-free SVG of the final profile, the initial column and the failure line."""
+    xmax = max(r[0] for r in prof) + 0.02
+    ymax = max(H0, max(r[1] for r in prof)) + 0.02
+    W, H, pad = 800, 320, 40
+    sx = (W - 2 * pad) / xmax
+    sy = sx  # true aspect
+    H = int(ymax * sy + 2 * pad)
+    tx = lambda x: pad + x * sx
+    ty = lambda y: H - pad - y * sy
+    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" font-size="12">',
+           f'<rect x="{tx(0)}" y="{ty(H0)}" width="{L0 * sx}" height="{H0 * sy}" fill="none" '
+           'stroke="grey" stroke-dasharray="4 3"/>']
+    pts = " ".join(f"{tx(x):.1f},{ty(h):.1f}" for x, h, _ in prof)
+    out.append(f'<polyline points="{tx(0)},{ty(0)} {pts} {tx(prof[-1][0])},{ty(0)}" '
+               'fill="#e8c07a" stroke="black"/>')
+    if fit:
+        ang, m, b = fit
+        xe = -b / m if m != 0 else L0
+        out.append(f'<line x1="{tx(0)}" y1="{ty(b)}" x2="{tx(xe)}" y2="{ty(0)}" stroke="red"/>')
+        out.append(f'<text x="{tx(xe) + 4}" y="{ty(0) - 4}" fill="red">failure line {ang:.1f} deg</text>')
+    out.append(f'<line x1="{tx(0)}" y1="{ty(0)}" x2="{tx(xmax)}" y2="{ty(0)}" stroke="black"/>')
+    for k in range(0, int(xmax * 10) + 1):
+        out.append(f'<text x="{tx(k / 10) - 8}" y="{ty(0) + 16}">{k / 10:.1f}</text>')
+    out.append(f'<text x="{tx(xmax) - 60}" y="{ty(0) + 30}">x (m)</text></svg>')
+    with open(path, "w") as f:
+        f.write("\n".join(out) + "\n")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[1])
+    ap.add_argument("out_dir")
+    ap.add_argument("--body", default="column")
+    ap.add_argument("--frame", type=int, help="frame index (default: last)")
+    ap.add_argument("--csv", help="profile CSV (default OUT_DIR/profile.csv)")
+    ap.add_argument("--svg", help="write an SVG sketch of the final profile")
+    ap.add_argument("--history", action="store_true", help="kinetic energy per frame")
+    args = ap.parse_args()
+
+    files = frame_files(args.out_dir)
+    times = frame_times(args.out_dir)
+    vtm = files[-1] if args.frame is None else files[args.frame]
+    pos, f = read_body(vtm, args.body)
+    disp = f["displacement"].astype(float)
+    vel = f["velocity"].astype(float)
+    initial = pos - disp
+    dp = spacing_of(initial)
+    x0 = initial[:, 0].min() - 0.5 * dp
+    y0 = initial[:, 1].min() - 0.5 * dp
+    L0 = initial[:, 0].max() + 0.5 * dp - x0
+    H0 = initial[:, 1].max() + 0.5 * dp - y0
+    t = times.get(os.path.basename(vtm), float("nan"))
+
+    bulk = bulk_mask(pos, dp)
+    pb = pos[bulk]
+    L_inf = pb[:, 0].max() + 0.5 * dp - x0
+    H_inf = pb[:, 1].max() + 0.5 * dp - y0
+    L_all = pos[:, 0].max() + 0.5 * dp - x0
+    prof = profile(pb, dp, x0, y0, 2 * dp)
+    moved = np.linalg.norm(disp[:, :2], axis=1) > dp
+    fit, fpts = failure_line(initial, moved, dp, x0, y0)
+    rho = f["density"].astype(float) if "density" in f else None
+    speed = np.linalg.norm(vel[:, :2], axis=1)
+
+    print(f"frame {os.path.basename(vtm)}  t = {t:.4g} s  particles {len(pos)}  dp = {dp * 1e3:.3g} mm")
+    print(f"initial column L0 = {L0:.4f} m, H0 = {H0:.4f} m, a = H0/L0 = {H0 / L0:.3f}")
+    print(f"\nfinal surface profile (bins of 2 dp = {2 * dp * 1e3:.3g} mm; height of the highest bulk "
+          "particle top in the bin)")
+    print("   x_centre_m  height_m  particles")
+    for x, h, n in prof:
+        print(f"   {x:10.4f}  {h:8.4f}  {n:9d}")
+    print(f"\nbulk: {int(bulk.sum())} particles; {int((~bulk).sum())} outside it "
+          f"(link {LINK} dp); furthest particle of all at x = {L_all:.4f} m")
+    print(f"run-out L_inf            = {L_inf:.4f} m")
+    print(f"final height H_inf       = {H_inf:.4f} m   (H_inf/H0 = {H_inf / H0:.3f})")
+    print(f"height at the back wall  = {prof[0][1]:.4f} m")
+    print(f"normalised run-out (L_inf - L0)/L0 = {(L_inf - L0) / L0:.3f}")
+    if fit:
+        ang, m, b = fit
+        print(f"failure line: {ang:.1f} deg from horizontal (fit through {len(fpts)} row boundaries; "
+              f"meets the back wall at y = {b:.4f} m, the base at x = {-b / m:.4f} m)")
+    else:
+        print(f"failure line: not found (only {len(fpts)} rows with a static part next to the wall)")
+    print(f"moved > 1 dp: {int(moved.sum())} of {len(pos)} particles")
+    print(f"last frame: max speed {speed.max():.3g} m/s, mean speed {speed.mean():.3g} m/s")
+    if rho is not None:
+        print(f"density: min {rho.min():.1f}, max {rho.max():.1f} kg/m^3")
+
+    csv = args.csv or os.path.join(args.out_dir, "profile.csv")
+    with open(csv, "w") as out:
+        out.write("x_centre_m,height_m,particles\n")
+        for x, h, n in prof:
+            out.write(f"{x:.5f},{h:.5f},{n}\n")
+    print(f"profile written to {csv}")
+    if args.svg:
+        write_svg(args.svg, prof, L0, H0, fit, dp)
+        print(f"sketch written to {args.svg}")
+
+    if args.history:
+        # particle mass per unit thickness = rho0 dp^2, rho0 = mean density of the first frame
+        p0, f0 = read_body(files[0], args.body)
+        rho0 = float(np.mean(f0["density"])) if "density" in f0 else float("nan")
+        print(f"\n   t_s      kinetic_J/m   max_speed_m/s  runout_m   (particle mass rho0 dp^2, rho0 = {rho0:.1f})")
+        for vf in files:
+            p, ff = read_body(vf, args.body)
+            v = ff["velocity"].astype(float)
+            sp2 = np.sum(v[:, :2] ** 2, axis=1)
+            ke = 0.5 * rho0 * dp * dp * sp2.sum()
+            b = bulk_mask(p, dp)
+            print(f"   {times.get(os.path.basename(vf), float('nan')):6.3f}  {ke:12.5g}  "
+                  f"{np.sqrt(sp2).max():12.4g}  {p[b, 0].max() + 0.5 * dp - x0:8.4f}")
+
+
+if __name__ == "__main__":
+    main()
