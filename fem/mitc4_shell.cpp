@@ -337,4 +337,29 @@ Vector24 Mitc4Shell::lumped_mass() const {
     return m;
 }
 
+Matrix24 Mitc4Shell::consistent_mass() const {
+    const double rho = material_->density();
+    const double translation = rho * thickness_;
+    const double rotation = rho * thickness_ * thickness_ * thickness_ / 12.0;
+    Matrix24 m = Matrix24::Zero();
+    const double g = 1.0 / std::sqrt(3.0);
+    for (const double s : {-g, g}) {
+        for (const double r : {-g, g}) {
+            const Basis b = basis(initial_, r, s, 0.0);
+            const double area = b.g[0].cross(b.g[1]).norm();
+            for (int i = 0; i < 4; ++i) {
+                const double hi = 0.25 * (1.0 + r * kNodeR[i]) * (1.0 + s * kNodeS[i]);
+                for (int j = 0; j < 4; ++j) {
+                    const double hj = 0.25 * (1.0 + r * kNodeR[j]) * (1.0 + s * kNodeS[j]);
+                    for (int d = 0; d < 3; ++d) {
+                        m(6 * i + d, 6 * j + d) += translation * hi * hj * area;
+                        m(6 * i + 3 + d, 6 * j + 3 + d) += rotation * hi * hj * area;
+                    }
+                }
+            }
+        }
+    }
+    return m;
+}
+
 } // namespace grainload::fem

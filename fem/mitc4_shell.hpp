@@ -69,6 +69,11 @@ class Mitc4Shell {
     }
     /// Lumped (row-sum) translational mass and a rotational inertia rho t^3/12 per unit area.
     Vector24 lumped_mass() const;
+    /// Consistent mass: the integral of rho h_i h_j over the initial volume (2 x 2 Gauss points,
+    /// exact for a parallelogram), translational rho t and rotational rho t^3/12 per unit area
+    /// (Bathe FEP eq. 4.25 with the shell kinematics of eq. 5.100; the rotary inertia is
+    /// taken isotropic, as in the lumped mass).
+    Matrix24 consistent_mass() const;
 
     /// Fraction of the largest rotational stiffness given to the drilling rotation (tangent
     /// only: the element's internal force has no drilling component, so results do not depend

@@ -5,8 +5,29 @@
 
 namespace grainload::fem {
 
-NewmarkIntegrator::NewmarkIntegrator(ShellAnalysis& analysis, double beta, double gamma)
-    : analysis_(&analysis), beta_(beta), gamma_(gamma), mass_(analysis.lumped_mass()) {
+NewmarkIntegrator::NewmarkIntegrator(ShellAnalysis& analysis, double beta, double gamma,
+                                     double alpha, MassMatrix mass)
+    : analysis_(&analysis), beta_(beta), gamma_(gamma), alpha_(alpha),
+      mass_(analysis.lumped_mass()), consistent_(mass == MassMatrix::consistent) {
+    if (alpha < -1.0 / 3.0 || alpha > 0.0) {
+        throw std::invalid_argument("HHT alpha must lie in [-1/3, 0]");
+    }
+    if (consistent_) {
+        mass_matrix_ = analysis.consistent_mass();
+        const std::vector<Index>& eq = analysis.equation_numbers();
+        std::vector<Eigen::Triplet<double>> triplets;
+        for (Eigen::Index col = 0; col < mass_matrix_.outerSize(); ++col) {
+            for (SparseSolver::Matrix::InnerIterator it(mass_matrix_, col); it; ++it) {
+                const Index r = eq[static_cast<std::size_t>(it.row())];
+                const Index c = eq[static_cast<std::size_t>(it.col())];
+                if (r >= 0 && c >= 0) {
+                    triplets.emplace_back(r, c, it.value());
+                }
+            }
+        }
+        mass_free_.resize(analysis.free_dof_count(), analysis.free_dof_count());
+        mass_free_.setFromTriplets(triplets.begin(), triplets.end());
+    }
     velocity_ = Eigen::VectorXd::Zero(mass_.size());
     acceleration_ = Eigen::VectorXd::Zero(mass_.size());
 }
@@ -15,12 +36,29 @@ void NewmarkIntegrator::initialise(const Eigen::VectorXd& velocity) {
     velocity_ = velocity;
     // Initial acceleration from equilibrium at t = 0: M a = F - Fu (Bathe FEP Table 9.3).
     Eigen::VectorXd internal;
+    analysis_->set_assembly_load_factor(analysis_->load_factor());
     analysis_->assemble(nullptr, internal);
     analysis_->revert_to_committed();
     const std::vector<Index>& eq = analysis_->equation_numbers();
     const Eigen::VectorXd force = analysis_->applied_forces(analysis_->load_factor()) - internal;
     acceleration_.setZero();
-    for (std::size_t d = 0; d < eq.size(); ++d) {
+    if (consistent_) {
+        Eigen::VectorXd rhs(analysis_->free_dof_count());
+        for (std::size_t d = 0; d < eq.size(); ++d) {
+            if (eq[d] >= 0) {
+                rhs(eq[d]) = force(static_cast<Eigen::Index>(d));
+            }
+        }
+        SparseSolver mass_solver;
+        mass_solver.factorize(mass_free_);
+        const Eigen::VectorXd a = mass_solver.solve(rhs);
+        for (std::size_t d = 0; d < eq.size(); ++d) {
+            if (eq[d] >= 0) {
+                acceleration_(static_cast<Eigen::Index>(d)) = a(eq[d]);
+            }
+        }
+    }
+    for (std::size_t d = 0; d < eq.size() && !consistent_; ++d) {
         const auto i = static_cast<Eigen::Index>(d);
         if (eq[d] >= 0 && mass_(i) > 0.0) {
             acceleration_(i) = force(i) / mass_(i);
@@ -38,16 +76,22 @@ StepReport NewmarkIntegrator::step(double dt, double load_factor, const NewtonSe
     const Index free = analysis_->free_dof_count();
     const double c0 = 1.0 / (beta_ * dt * dt);
     const Eigen::VectorXd applied = analysis_->applied_forces(load_factor);
-    // Prescribed values follow the load factor; they enter the first iteration through
-    // -K_fp dU_p (M is diagonal, so inertia does not couple them to the free DOFs).
-    Eigen::VectorXd prescribed = Eigen::VectorXd::Zero(mass_.size());
-    for (std::size_t d = 0; d < eq.size(); ++d) {
-        const double value = analysis_->prescribed_values()[d];
-        if (eq[d] < 0 && !std::isnan(value)) {
-            prescribed(static_cast<Eigen::Index>(d)) =
-                (load_factor - analysis_->load_factor()) * value;
-        }
+    // HHT-alpha: the out-of-balance force of the converged state n (its follower loads at
+    // t(n)), weighted by -alpha.
+    Eigen::VectorXd previous = Eigen::VectorXd::Zero(mass_.size());
+    if (alpha_ != 0.0) {
+        Eigen::VectorXd internal_n;
+        analysis_->set_assembly_load_factor(analysis_->load_factor());
+        analysis_->assemble(nullptr, internal_n);
+        analysis_->revert_to_committed();
+        previous = analysis_->applied_forces(analysis_->load_factor()) - internal_n;
     }
+    analysis_->set_assembly_load_factor(load_factor);
+    // Prescribed values follow their histories; they enter the first iteration through
+    // -K_fp dU_p. A lumped M does not couple them to the free DOFs; a consistent M does, and
+    // that coupling enters through the residual from the second iteration on.
+    const Eigen::VectorXd prescribed =
+        analysis_->prescribed_at(load_factor) - analysis_->prescribed_at(analysis_->load_factor());
     Eigen::VectorXd increment = Eigen::VectorXd::Zero(mass_.size());
     // Newmark: a1 = c0 (dU - dt v0) - (1/(2 beta) - 1) a0.
     const auto new_acceleration = [&] {
@@ -63,9 +107,10 @@ StepReport NewmarkIntegrator::step(double dt, double load_factor, const NewtonSe
     double energy0 = 0.0;
     for (int i = 0;; ++i) {
         analysis_->assemble(&k, internal, i == 0 ? &prescribed : nullptr, &coupling);
-        Eigen::VectorXd full = applied - internal - mass_.cwiseProduct(new_acceleration());
+        Eigen::VectorXd full =
+            (1.0 + alpha_) * (applied - internal) - alpha_ * previous - inertia(new_acceleration());
         if (i == 0) {
-            full -= coupling;
+            full -= (1.0 + alpha_) * coupling;
         }
         Eigen::VectorXd residual(free);
         for (std::size_t d = 0; d < eq.size(); ++d) {
@@ -96,13 +141,18 @@ StepReport NewmarkIntegrator::step(double dt, double load_factor, const NewtonSe
             }
             break;
         }
-        // Effective tangent K + c0 M (M lumped: diagonal).
-        for (std::size_t d = 0; d < eq.size(); ++d) {
+        // Effective tangent (1 + alpha) K + c0 M. The consistent M couples only DOFs that K
+        // couples too, so the sum keeps the pattern (and the reused symbolic analysis).
+        k *= 1.0 + alpha_;
+        if (consistent_) {
+            k += c0 * mass_free_;
+        }
+        for (std::size_t d = 0; d < eq.size() && !consistent_; ++d) {
             if (eq[d] >= 0) {
                 k.coeffRef(eq[d], eq[d]) += c0 * mass_(static_cast<Eigen::Index>(d));
             }
         }
-        solver_.factorize(k);
+        solver_.factorize(k, analysis_->tangent_symmetric());
         report.solver = SparseSolver::name(solver_.method());
         step = solver_.solve(residual);
         if (i == 0) {
@@ -130,7 +180,11 @@ StepReport NewmarkIntegrator::step(double dt, double load_factor, const NewtonSe
 }
 
 double NewmarkIntegrator::kinetic_energy() const {
-    return 0.5 * velocity_.dot(mass_.cwiseProduct(velocity_));
+    return 0.5 * velocity_.dot(inertia(velocity_));
+}
+
+Eigen::VectorXd NewmarkIntegrator::inertia(const Eigen::VectorXd& x) const {
+    return consistent_ ? Eigen::VectorXd(mass_matrix_ * x) : Eigen::VectorXd(mass_.cwiseProduct(x));
 }
 
 double NewmarkIntegrator::strain_energy() {

@@ -52,15 +52,41 @@ class ShellAnalysis {
     const ShellMesh& mesh() const { return mesh_; }
     Kinematics kinematics() const { return kinematics_; }
 
-    /// Constrain DOF `dof` (0..5) of `node` to lambda * value.
+    /// Load histories: every load and prescribed value belongs to one history h and is scaled by
+    /// f_h(lambda). History 0 is f(lambda) = lambda (proportional loading); add_history()
+    /// registers another (e.g. a time function when lambda is the time) and use_history()
+    /// selects the one that the prescribe/add calls below fill.
+    using History = std::function<double(double)>;
+    int add_history(History scale);
+    void set_history(int index, History scale) {
+        histories_.at(static_cast<std::size_t>(index)).scale = std::move(scale);
+    }
+    void use_history(int index) { active_history_ = index; }
+    double history_value(int index, double lambda) const {
+        return histories_.at(static_cast<std::size_t>(index)).scale(lambda);
+    }
+    /// True when some history changes between the two load factors.
+    bool loads_change(double from, double to) const;
+
+    /// Constrain DOF `dof` (0..5) of `node` to f(lambda) * value.
     void prescribe(Index node, int dof, double value = 0.0);
     void prescribe(const std::vector<Index>& nodes, std::initializer_list<int> dofs,
                    double value = 0.0);
-    /// Reference loads (scaled by lambda): a nodal force/moment component; a force per unit
+    /// Constrain all six DOFs of `nodes` to the rigid rotation by f(lambda) * angle about the
+    /// axis through `point`: exact translations (R - I)(X - point) and the rotation vector.
+    void prescribe_rigid_rotation(const std::vector<Index>& nodes, const Vec3& axis,
+                                  const Vec3& point, double angle);
+    /// Values of all constrained DOFs at load factor `lambda` (zero at free DOFs).
+    Eigen::VectorXd prescribed_at(double lambda) const;
+    /// Reference loads (scaled by f(lambda)): a nodal force/moment component; a force per unit
     /// mid-surface area (gravity: rho t g); a pressure along the initial element normal.
     void add_nodal_load(Index node, int dof, double value);
     void add_area_load(const Vec3& force_per_area);
     void add_pressure(double pressure);
+    /// A pressure normal to the deformed mid-surface (follower load), positive along the normal
+    /// the node order defines. Its load stiffness is not symmetric: the tangent then goes to
+    /// UMFPACK.
+    void add_follower_pressure(double pressure);
     void add_gravity(const Vec3& acceleration);
     /// Traction (force per unit initial area) as a function of the element and its unit normal.
     using SurfaceTraction = std::function<Vec3(const ShellElement&, const Vec3& normal)>;
@@ -92,22 +118,27 @@ class ShellAnalysis {
     std::vector<Mitc4Shell>& elements() { return elements_; }
     /// Lumped mass per DOF (6 per node).
     Eigen::VectorXd lumped_mass() const;
+    /// Consistent mass matrix over all DOFs (6 per node).
+    SparseSolver::Matrix consistent_mass() const;
     /// Assemble the tangent (free DOFs) and the full internal force vector at the current state;
     /// with `prescribed` (full-size DOF values) also coupling = K * prescribed over all DOFs.
     void assemble(SparseSolver::Matrix* tangent, Eigen::VectorXd& internal,
                   const Eigen::VectorXd* prescribed = nullptr, Eigen::VectorXd* coupling = nullptr);
+    /// Load factor at which assemble() evaluates the follower loads (they depend on the state,
+    /// so they are assembled with the internal forces, with their load stiffness).
+    void set_assembly_load_factor(double lambda) { assembly_load_factor_ = lambda; }
+    /// False when the tangent has a non-symmetric part (moment or follower loads).
+    bool tangent_symmetric() const { return !has_moment_loads_ && follower_pressures_.empty(); }
     /// Add a full-size DOF increment to the state (translations add; rotations compose).
     void update_state(const Eigen::VectorXd& increment);
     const std::vector<Index>& equation_numbers();
-    const Eigen::VectorXd& reference_load() const { return reference_load_; }
+    /// The loads of history 0.
+    const Eigen::VectorXd& reference_load() const { return histories_.front().load; }
     /// Forces applied in full, not scaled by the load factor (6 per node), e.g. the contact
     /// forces the SPH side returns to the walls (thesis section 5.3); zero by default.
     void set_additional_forces(const Eigen::VectorXd& forces) { additional_forces_ = forces; }
-    /// Everything applied at load factor `lambda`: lambda * reference + additional.
-    Eigen::VectorXd applied_forces(double lambda) const {
-        return lambda * reference_load_ + additional_forces_;
-    }
-    std::vector<double>& prescribed_values() { return prescribed_; }
+    /// Everything applied at load factor `lambda`: sum_h f_h(lambda) * loads_h + additional.
+    Eigen::VectorXd applied_forces(double lambda) const;
     void commit();
     void revert_to_committed();
     /// Binary restart state (load factor, DOFs, rotations, integration points); read_state
@@ -116,10 +147,13 @@ class ShellAnalysis {
     void read_state(std::istream& in);
 
   private:
+    Eigen::VectorXd& active_load();
     ShellNodes element_nodes(const ShellElement& element) const;
     Vector24 element_dofs(const ShellElement& element) const;
     bool increment(double from, double to, const NewtonSettings& settings, StepReport& report);
     void number_equations();
+    void add_follower_loads(Eigen::VectorXd& internal,
+                            std::vector<Eigen::Triplet<double>>* triplets) const;
     void add_moment_load_stiffness(const Eigen::VectorXd& internal,
                                    std::vector<Eigen::Triplet<double>>& triplets);
 
@@ -128,12 +162,32 @@ class ShellAnalysis {
     Kinematics kinematics_;
     std::vector<Vec3> initial_directors_;
     std::vector<Mitc4Shell> elements_;
-    std::vector<double> prescribed_; ///< NaN where free
-    std::vector<Index> equation_;    ///< free equation number per DOF or -1
+    struct LoadHistory {
+        History scale;
+        Eigen::VectorXd load;
+    };
+    struct RigidRotation {
+        std::vector<Index> nodes;
+        Vec3 axis;
+        Vec3 point;
+        double angle = 0.0;
+        int history = 0;
+    };
+    std::vector<LoadHistory> histories_;
+    int active_history_ = 0;
+    std::vector<RigidRotation> rigid_rotations_;
+    struct FollowerPressure {
+        double pressure = 0.0;
+        int history = 0;
+    };
+    std::vector<FollowerPressure> follower_pressures_;
+    double assembly_load_factor_ = 0.0;
+    std::vector<double> prescribed_;      ///< NaN where free
+    std::vector<int> prescribed_history_; ///< history of each prescribed value
+    std::vector<Index> equation_;         ///< free equation number per DOF or -1
     Index free_count_ = 0;
     bool numbered_ = false;
     bool has_moment_loads_ = false;
-    Eigen::VectorXd reference_load_;
     Eigen::VectorXd additional_forces_;
     Eigen::VectorXd dofs_; ///< translations and (linear kinematics) rotation vectors
     std::vector<Mat3> rotations_;

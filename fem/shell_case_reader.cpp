@@ -63,6 +63,21 @@ const std::vector<Index>& node_set(const io::CaseTable& table, const ShellMesh& 
     }
 }
 
+/// Selects the history of the table's optional `time_function` (else history 0).
+void use_time_function(const io::CaseTable& table, const HistoryNames& histories,
+                       ShellAnalysis& analysis) {
+    if (!table.has("time_function")) {
+        analysis.use_history(0);
+        return;
+    }
+    const std::string name = table.string("time_function");
+    const auto found = histories.find(name);
+    if (found == histories.end()) {
+        table.fail("time_function", "no [[fem.time_function]] named '" + name + "'");
+    }
+    analysis.use_history(found->second);
+}
+
 } // namespace
 
 int read_dof(const io::CaseTable& table, std::string_view key, const std::string& name) {
@@ -89,8 +104,10 @@ ShellMesh read_shell_mesh(const io::CaseTable& shell) {
     return mesh;
 }
 
-void read_shell_boundaries(const io::CaseTable& shell, ShellAnalysis& analysis) {
+void read_shell_boundaries(const io::CaseTable& shell, const HistoryNames& histories,
+                           ShellAnalysis& analysis) {
     for (const io::CaseTable& bc : shell.array_of_tables("boundary")) {
+        use_time_function(bc, histories, analysis);
         const std::vector<Index> nodes =
             bc.has("point")
                 ? std::vector<Index>{analysis.mesh().nearest_node(bc.vector("point", dim::kLength))}
@@ -103,8 +120,16 @@ void read_shell_boundaries(const io::CaseTable& shell, ShellAnalysis& analysis) 
             analysis.prescribe(nodes, {a, 3 + (a + 1) % 3, 3 + (a + 2) % 3});
             continue;
         }
-        // Prescribed values follow the load factor, the same proportional history as the
-        // loads; zero by default.
+        if (bc.has("angle")) {
+            // Rigid rotation of the nodes about an axis (a lifted or tipped edge).
+            analysis.prescribe_rigid_rotation(
+                nodes, bc.vector("axis", dim::kNone),
+                bc.vector_or("axis_point", dim::kLength, Vec3::Zero()),
+                bc.quantity("angle", dim::kAngle));
+            continue;
+        }
+        // Prescribed values follow the table's history (the load factor by default); zero by
+        // default.
         const double displacement = bc.quantity_or("displacement", dim::kLength, 0.0);
         const double rotation = bc.quantity_or("rotation", dim::kAngle, 0.0);
         const std::string dofs = bc.string("dofs");
@@ -129,17 +154,24 @@ void read_shell_boundaries(const io::CaseTable& shell, ShellAnalysis& analysis) 
             }
         }
     }
+    analysis.use_history(0);
 }
 
 void read_shell_loads(const io::CaseTable& shell, const Vec3& case_gravity,
-                      ShellAnalysis& analysis) {
+                      const HistoryNames& histories, ShellAnalysis& analysis) {
     for (const io::CaseTable& load : shell.array_of_tables("load")) {
+        use_time_function(load, histories, analysis);
         const std::string type = load.choice(
             "type", {"area_force", "pressure", "gravity", "nodal_force", "nodal_moment"});
         if (type == "area_force") {
             analysis.add_area_load(load.vector("value", dim::kPressure));
         } else if (type == "pressure") {
-            analysis.add_pressure(load.quantity("value", dim::kPressure));
+            const double pressure = load.quantity("value", dim::kPressure);
+            if (load.boolean_or("follower", false)) {
+                analysis.add_follower_pressure(pressure);
+            } else {
+                analysis.add_pressure(pressure);
+            }
         } else if (type == "gravity") {
             analysis.add_gravity(load.vector_or("acceleration", dim::kAcceleration, case_gravity));
         } else {
@@ -158,6 +190,7 @@ void read_shell_loads(const io::CaseTable& shell, const Vec3& case_gravity,
             }
         }
     }
+    analysis.use_history(0);
 }
 
 std::vector<ShellMonitor> read_shell_monitors(const io::CaseTable& shell, const ShellMesh& mesh) {

@@ -2,6 +2,7 @@
 
 #include "fem/shell_analysis.hpp"
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -24,11 +25,15 @@ struct ShellMonitor {
 
 /// Mesh of one [[fem.shell]] table from its `generator` keys (see docs/user-guide/fem.md).
 ShellMesh read_shell_mesh(const io::CaseTable& shell);
+/// Load histories of the analysis by time-function name, for the `time_function` keys.
+using HistoryNames = std::map<std::string, int>;
 /// Applies its [[fem.shell.boundary]] tables to `analysis`.
-void read_shell_boundaries(const io::CaseTable& shell, ShellAnalysis& analysis);
-/// Adds its [[fem.shell.load]] tables to the reference load (scaled by the load factor).
+void read_shell_boundaries(const io::CaseTable& shell, const HistoryNames& histories,
+                           ShellAnalysis& analysis);
+/// Adds its [[fem.shell.load]] tables to the loads of their histories (history 0, the load
+/// factor, unless a table names a `time_function`).
 void read_shell_loads(const io::CaseTable& shell, const Vec3& case_gravity,
-                      ShellAnalysis& analysis);
+                      const HistoryNames& histories, ShellAnalysis& analysis);
 std::vector<ShellMonitor> read_shell_monitors(const io::CaseTable& shell, const ShellMesh& mesh);
 /// "ux" .. "rz" -> 0 .. 5; a CaseError names the key otherwise.
 int read_dof(const io::CaseTable& table, std::string_view key, const std::string& name);

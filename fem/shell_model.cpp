@@ -1,10 +1,14 @@
 #include "fem/shell_model.hpp"
 
+#include "fem/time_function.hpp"
 #include "io/binary_stream.hpp"
 #include "io/case_table.hpp"
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <limits>
+#include <map>
 #include <sstream>
 
 namespace grainload::fem {
@@ -56,19 +60,43 @@ std::unique_ptr<ShellModel> ShellModel::from_case(const io::CaseTable& root,
     model->analysis_ = std::make_unique<ShellAnalysis>(
         read_shell_mesh(shell), material,
         kinematics == "linear" ? Kinematics::linear : Kinematics::total_lagrangian, points);
-    read_shell_boundaries(shell, *model->analysis_);
+    // The analysis' load factor is the time: history 0 (loads without a time_function) ramps
+    // to 1 at load_time and holds; every [[fem.time_function]] becomes a history of its own.
+    const double load_time = model->load_time_;
+    model->analysis_->set_history(0,
+                                  [load_time](double t) { return std::min(t / load_time, 1.0); });
+    std::map<std::string, int> histories;
+    for (auto& [name, function] : read_time_functions(fem)) {
+        histories[name] = model->analysis_->add_history(function);
+    }
+    read_shell_boundaries(shell, histories, *model->analysis_);
     read_shell_loads(shell, settings.vector_or("gravity", dim::kAcceleration, Vec3::Zero()),
-                     *model->analysis_);
+                     histories, *model->analysis_);
     model->monitors_ = read_shell_monitors(shell, model->analysis_->mesh());
     model->reactions_ = Eigen::VectorXd::Zero(6 * model->analysis_->mesh().node_count());
     if (model->dynamic_) {
-        const double gamma = fem.number_or("newmark_gamma", 0.5);
-        if (gamma < 0.5) {
-            fem.fail("newmark_gamma", "expected gamma >= 0.5 (unconditional stability)");
+        const bool hht = fem.choice_or("integrator", {"newmark", "hht"}, "newmark") == "hht";
+        double alpha = 0.0;
+        double gamma = 0.5;
+        if (hht) {
+            alpha = fem.number_or("hht_alpha", -0.05);
+            if (alpha < -1.0 / 3.0 || alpha > 0.0) {
+                fem.fail("hht_alpha", "expected -1/3 <= alpha <= 0");
+            }
+            gamma = 0.5 - alpha; // Hilber, Hughes & Taylor 1977: second order
+        } else {
+            gamma = fem.number_or("newmark_gamma", 0.5);
+            if (gamma < 0.5) {
+                fem.fail("newmark_gamma", "expected gamma >= 0.5 (unconditional stability)");
+            }
         }
-        // beta = (gamma + 1/2)^2 / 4: unconditionally stable, the trapezoidal rule at 1/2.
+        // beta = (gamma + 1/2)^2 / 4: unconditionally stable, the trapezoidal rule at 1/2;
+        // for HHT this is (1 - alpha)^2 / 4.
+        const bool consistent =
+            fem.choice_or("mass", {"lumped", "consistent"}, "lumped") == "consistent";
         model->newmark_ = std::make_unique<NewmarkIntegrator>(
-            *model->analysis_, 0.25 * (gamma + 0.5) * (gamma + 0.5), gamma);
+            *model->analysis_, 0.25 * (gamma + 0.5) * (gamma + 0.5), gamma, alpha,
+            consistent ? MassMatrix::consistent : MassMatrix::lumped);
         model->newmark_->initialise(
             Eigen::VectorXd::Zero(6 * model->analysis_->mesh().node_count()));
     }
@@ -80,25 +108,26 @@ double ShellModel::stable_time_step() const {
     return dynamic_ ? time_step_ : std::numeric_limits<double>::infinity();
 }
 
-double ShellModel::load_factor_at(double t) const {
-    return std::min(t / load_time_, 1.0);
-}
-
 void ShellModel::advance(double t, double dt) {
-    const double target = load_factor_at(t + dt);
-    if (failure_ || (!dynamic_ && target == analysis_->load_factor())) {
+    const double target = t + dt;
+    if (failure_) {
+        return;
+    }
+    if (!dynamic_ && !analysis_->loads_change(analysis_->load_factor(), target)) {
+        analysis_->set_load_factor(target); // nothing to solve: every history is constant
         return;
     }
     ShellStepLog entry;
     entry.time = t + dt;
     entry.report = dynamic_ ? newmark_->step(dt, target, settings_)
                             : analysis_->advance_load(target, increments_per_step_, settings_);
-    entry.load_factor = analysis_->load_factor();
+    entry.load_factor = analysis_->history_value(0, analysis_->load_factor());
     if (!entry.report.converged) {
         std::ostringstream why;
-        why << "shell '" << shell_name_ << "': Newton-Raphson did not converge at load factor "
-            << target << " (t = " << t + dt << " s) after " << entry.report.cutbacks
-            << " cut-backs; last accepted load factor " << entry.load_factor;
+        why << "shell '" << shell_name_ << "': Newton-Raphson did not converge at t = " << target
+            << " s after " << entry.report.cutbacks
+            << " cut-backs; last converged t = " << analysis_->load_factor() << " s (load factor "
+            << entry.load_factor << ")";
         failure_ = why.str();
     }
     log_.push_back(std::move(entry));
@@ -176,9 +205,46 @@ void ShellModel::append_results(double, std::vector<io::ResultFigure>& results) 
     }
     if (!log_.empty()) {
         const StepReport& last = log_.back().report;
-        results.push_back({"fem load factor", analysis_->load_factor(), "", std::nullopt, ""});
+        results.push_back({"fem load factor", log_.back().load_factor, "", std::nullopt, ""});
         results.push_back({"fem Newton iterations (last step)",
                            static_cast<double>(last.log.size()), "", std::nullopt, last.solver});
+        // Which factorisation ran: steps whose last solve went through each solver.
+        std::map<std::string, int> solvers;
+        for (const ShellStepLog& entry : log_) {
+            if (!entry.report.solver.empty()) {
+                ++solvers[entry.report.solver];
+            }
+        }
+        for (const auto& [solver, steps] : solvers) {
+            results.push_back({"fem steps solved by " + solver, static_cast<double>(steps), "",
+                               std::nullopt, ""});
+        }
+    }
+}
+
+void ShellModel::write_logs(const std::string& directory) const {
+    // Appends the steps since the last call; a fresh run starts the file, a restarted one
+    // (whose in-memory log begins at the checkpoint) continues it.
+    const std::string path = directory + "/fem_convergence.csv";
+    const bool fresh = (logged_steps_ == 0 && !restarted_) || !std::filesystem::exists(path);
+    std::ofstream csv(path, fresh ? std::ios::trunc : std::ios::app);
+    if (fresh) {
+        csv << "time,increment,iteration,displacement_ratio,force_ratio,energy_ratio,"
+               "residual_norm,solver\n";
+    }
+    csv.precision(10);
+    for (; logged_steps_ < log_.size(); ++logged_steps_) {
+        const ShellStepLog& entry = log_[logged_steps_];
+        std::size_t row = 0;
+        for (std::size_t inc = 0; inc < entry.report.iterations.size(); ++inc) {
+            for (int i = 0; i < entry.report.iterations[inc] && row < entry.report.log.size();
+                 ++i, ++row) {
+                const NewtonIteration& it = entry.report.log[row];
+                csv << entry.time << ',' << inc + 1 << ',' << it.iteration << ','
+                    << it.displacement_ratio << ',' << it.force_ratio << ',' << it.energy_ratio
+                    << ',' << it.residual_norm << ",\"" << entry.report.solver << "\"\n";
+            }
+        }
     }
 }
 
@@ -203,6 +269,7 @@ void ShellModel::read_checkpoint(std::istream& in) {
                           Eigen::Map<const Eigen::VectorXd>(a.data(), n));
     }
     failure_.reset();
+    restarted_ = true;
     reactions_ = analysis_->reactions();
 }
 

@@ -18,11 +18,13 @@ struct ShellStepLog {
     StepReport report;
 };
 
-/// The shell FEM side of a scene, as the app's time loop sees it. The load factor follows
-/// lambda(t) = min(t / load_time, 1). Static analysis: every advance() solves the
-/// incremental-iterative equilibrium problem of thesis Table 5.2.2 up to lambda(t + dt), so
-/// "time" only orders the load steps. Dynamic analysis: implicit Newmark steps of at most
-/// [fem].time_step. Built from the case's [fem] table and its one [[fem.shell]] table.
+/// The shell FEM side of a scene, as the app's time loop sees it. The analysis is driven by the
+/// time t: loads and prescribed values without a time function follow the load factor
+/// min(t / load_time, 1), the others their [[fem.time_function]]. Static analysis: every
+/// advance() solves the incremental-iterative equilibrium problem of thesis Table 5.2.2 at
+/// t + dt (cut-backs halve the time increment), so "time" only orders the load steps. Dynamic
+/// analysis: implicit Newmark or HHT-alpha steps of at most [fem].time_step. Built from the case's
+/// [fem] table and its one [[fem.shell]] table.
 class ShellModel final : public io::Stepper {
   public:
     static std::unique_ptr<ShellModel> from_case(const io::CaseTable& root,
@@ -35,6 +37,8 @@ class ShellModel final : public io::Stepper {
     std::optional<std::string> diagnose() const override;
     void append_blocks(io::Frame& frame) const override;
     void append_results(double t, std::vector<io::ResultFigure>& results) const override;
+    /// DIRECTORY/fem_convergence.csv: one row per Newton iteration of every step.
+    void write_logs(const std::string& directory) const override;
     void write_checkpoint(std::ostream& out) const override;
     void read_checkpoint(std::istream& in) override;
 
@@ -45,7 +49,6 @@ class ShellModel final : public io::Stepper {
 
   private:
     ShellModel() = default;
-    double load_factor_at(double t) const;
 
     std::string shell_name_;
     std::unique_ptr<ShellAnalysis> analysis_;
@@ -57,6 +60,8 @@ class ShellModel final : public io::Stepper {
     std::unique_ptr<NewmarkIntegrator> newmark_;
     int increments_per_step_ = 1;
     std::vector<ShellStepLog> log_;
+    mutable std::size_t logged_steps_ = 0; ///< steps of log_ already in the convergence CSV
+    bool restarted_ = false;
     Eigen::VectorXd reactions_;
     std::optional<std::string> failure_;
 };

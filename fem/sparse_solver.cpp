@@ -78,6 +78,10 @@ Eigen::VectorXd SparseSolver::solve(const Eigen::VectorXd& rhs) const {
     throw std::logic_error("SparseSolver::solve called before a successful factorize");
 }
 
+double SparseSolver::cholesky_flops() const {
+    return impl_->cholesky.cholmod().fl;
+}
+
 std::string_view SparseSolver::name(Method method) {
     switch (method) {
     case Method::cholmod_supernodal_llt:

@@ -31,6 +31,9 @@ class SparseSolver {
     /// Seconds spent in the last symbolic analysis and numeric factorisation.
     double analysis_seconds() const { return analysis_seconds_; }
     double factorization_seconds() const { return factorization_seconds_; }
+    /// CHOLMOD's floating-point operation count of its last symbolic analysis (cholmod_common
+    /// `fl`), to turn the factorisation time into a rate; 0 before any analysis.
+    double cholesky_flops() const;
 
   private:
     struct Impl;

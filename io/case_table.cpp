@@ -153,6 +153,79 @@ std::vector<double> CaseTable::quantity_list(std::string_view key, Dimension exp
     return values;
 }
 
+std::vector<std::pair<double, double>>
+CaseTable::quantity_pairs(std::string_view key, Dimension first, Dimension second) const {
+    const toml::node& node = require(key);
+    const std::string wanted =
+        "expected a list of pairs [" + describe(first) + ", " + describe(second) + "]";
+    const auto value = [&](const toml::node& element, Dimension expected) {
+        if (element.is_number() && expected == dimension::kNone) {
+            return element.value<double>().value();
+        }
+        const auto text = element.value<std::string>();
+        std::string error;
+        const auto q = text ? parse_quantity(*text, &error) : std::nullopt;
+        if (!q || q->dimension != expected) {
+            fail_at(&element, key, wanted + ", got " + shown(element));
+        }
+        return q->value;
+    };
+    const auto* array = node.as_array();
+    if (array == nullptr || array->empty()) {
+        fail_at(&node, key, wanted + ", got " + shown(node));
+    }
+    std::vector<std::pair<double, double>> pairs;
+    for (const auto& entry : *array) {
+        const auto* pair = entry.as_array();
+        if (pair == nullptr || pair->size() != 2) {
+            fail_at(&entry, key, wanted + ", got " + shown(entry));
+        }
+        pairs.emplace_back(value(*pair->get(0), first), value(*pair->get(1), second));
+    }
+    return pairs;
+}
+
+std::vector<std::pair<double, Vec3>> CaseTable::vector_pairs(std::string_view key, Dimension first,
+                                                             Dimension second) const {
+    const toml::node& node = require(key);
+    const int dim = spatial_dimension();
+    const std::string wanted = "expected a list of pairs [" + describe(first) + ", " +
+                               (dim == 2 ? "2 or 3" : "3") + " components of " + describe(second) +
+                               "]";
+    const auto* array = node.as_array();
+    if (array == nullptr || array->empty()) {
+        fail_at(&node, key, wanted + ", got " + shown(node));
+    }
+    std::vector<std::pair<double, Vec3>> pairs;
+    for (const auto& entry : *array) {
+        const auto* pair = entry.as_array();
+        const auto* time =
+            pair != nullptr && pair->size() == 2 ? pair->get(0)->as_string() : nullptr;
+        const auto* text =
+            pair != nullptr && pair->size() == 2 ? pair->get(1)->as_string() : nullptr;
+        std::string error;
+        std::optional<Quantity> t;
+        std::optional<std::vector<Quantity>> list;
+        if (time != nullptr && text != nullptr) {
+            t = parse_quantity(time->get(), &error);
+            list = parse_quantity_list(text->get(), &error);
+        }
+        const bool size_ok = list && (list->size() == 3 || (dim == 2 && list->size() == 2));
+        if (!t || t->dimension != first || !size_ok) {
+            fail_at(&entry, key, wanted + ", got " + shown(entry));
+        }
+        Vec3 v = Vec3::Zero();
+        for (std::size_t i = 0; i < list->size(); ++i) {
+            if ((*list)[i].dimension != second) {
+                fail_at(&entry, key, wanted + ", got " + shown(entry));
+            }
+            v[static_cast<Eigen::Index>(i)] = (*list)[i].value;
+        }
+        pairs.emplace_back(t->value, v);
+    }
+    return pairs;
+}
+
 Vec3 CaseTable::vector(std::string_view key, Dimension expected) const {
     const auto values = quantity_list(key, expected);
     const int dim = spatial_dimension();

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace toml {
@@ -49,6 +50,14 @@ class CaseTable {
     Vec3 vector_or(std::string_view key, Dimension expected, const Vec3& fallback) const;
     /// A list of quantities of one dimension: "1 2 3 mm" or ["1 mm", "2 mm"].
     std::vector<double> quantity_list(std::string_view key, Dimension expected) const;
+    /// A list of pairs, e.g. a time function's points [["0 s", 0.0], ["0.5 s", 1.0]]; each
+    /// entry a quantity string of its dimension or, for a dimensionless one, a bare number.
+    std::vector<std::pair<double, double>> quantity_pairs(std::string_view key, Dimension first,
+                                                          Dimension second) const;
+    /// A list of (quantity, vector) pairs, e.g. a wall's velocity history
+    /// [["0 s", "0 0 0 m/s"], ["0.5 s", "0 0 0.1 m/s"]]; vectors as in vector().
+    std::vector<std::pair<double, Vec3>> vector_pairs(std::string_view key, Dimension first,
+                                                      Dimension second) const;
 
     /// A plain number (no unit allowed), e.g. a Poisson ratio or a safety factor.
     double number(std::string_view key) const;

@@ -3,8 +3,43 @@
 #include "io/case_table.hpp"
 
 #include <cmath>
+#include <functional>
+#include <random>
 
 namespace grainload::sph {
+
+namespace {
+
+/// Cell centres anchor + spacing (i + 1/2, j + 1/2, k + 1/2) inside [lower, upper] that pass
+/// `inside`. Anchoring the lattice at a point of the shape (not at the bounding box) keeps it
+/// symmetric about that point.
+std::vector<Vec3> fill_where(const Vec3& anchor, const Vec3& lower, const Vec3& upper,
+                             double spacing, int dimension,
+                             const std::function<bool(const Vec3&)>& inside) {
+    Eigen::Vector3i first = Eigen::Vector3i::Zero();
+    Eigen::Vector3i last = Eigen::Vector3i::Zero();
+    for (int axis = 0; axis < dimension; ++axis) {
+        first[axis] = static_cast<int>(std::floor((lower[axis] - anchor[axis]) / spacing)) - 1;
+        last[axis] = static_cast<int>(std::ceil((upper[axis] - anchor[axis]) / spacing)) + 1;
+    }
+    std::vector<Vec3> points;
+    for (int k = first.z(); k <= last.z(); ++k) {
+        for (int j = first.y(); j <= last.y(); ++j) {
+            for (int i = first.x(); i <= last.x(); ++i) {
+                Vec3 p = anchor + spacing * Vec3(i + 0.5, j + 0.5, k + 0.5);
+                if (dimension == 2) {
+                    p.z() = 0.0;
+                }
+                if (inside(p)) {
+                    points.push_back(p);
+                }
+            }
+        }
+    }
+    return points;
+}
+
+} // namespace
 
 std::vector<Vec3> fill_box(const Vec3& min, const Vec3& max, double spacing, int dimension) {
     // Each particle represents a cell of volume spacing^dimension, so the cells tile the box
@@ -29,17 +64,107 @@ std::vector<Vec3> fill_box(const Vec3& min, const Vec3& max, double spacing, int
     return points;
 }
 
-std::vector<Vec3> generate_body_points(const io::CaseTable& shape, double spacing, int dimension) {
-    namespace dim = io::dimension;
-    const std::string type = shape.choice("type", {"box"});
-    const Vec3 min = shape.vector("min", dim::kLength);
-    const Vec3 max = shape.vector("max", dim::kLength);
-    for (int axis = 0; axis < dimension; ++axis) {
-        if (!(max[axis] > min[axis])) {
-            shape.fail("max", "expected max > min in every direction");
+std::vector<Vec3> fill_cone(const Vec3& base, const Vec3& axis, double base_radius,
+                            double top_radius, double height, double spacing, int dimension) {
+    Vec3 a = axis;
+    if (dimension == 2) {
+        a.z() = 0.0;
+    }
+    a.normalize();
+    const Vec3 top = base + height * a;
+    const double r = std::max(base_radius, top_radius);
+    const Vec3 reach = Vec3::Constant(r);
+    const Vec3 lower = base.cwiseMin(top) - reach;
+    const Vec3 upper = base.cwiseMax(top) + reach;
+    return fill_where(base, lower, upper, spacing, dimension, [&](const Vec3& p) {
+        const Vec3 d = p - base;
+        const double s = d.dot(a);
+        if (s < 0.0 || s > height) {
+            return false;
+        }
+        const double radius = base_radius + (top_radius - base_radius) * s / height;
+        return (d - s * a).norm() <= radius;
+    });
+}
+
+std::vector<Vec3> fill_disc(const Vec3& centre, double radius, double spacing, int dimension) {
+    const Vec3 reach = Vec3::Constant(radius);
+    return fill_where(centre, centre - reach, centre + reach, spacing, dimension,
+                      [&](const Vec3& p) {
+                          Vec3 d = p - centre;
+                          if (dimension == 2) {
+                              d.z() = 0.0;
+                          }
+                          return d.norm() <= radius;
+                      });
+}
+
+void jitter_points(std::vector<Vec3>& points, double spacing, double fraction, std::uint64_t seed,
+                   int dimension) {
+    std::mt19937_64 engine(seed);
+    // The 53 high bits give a uniform double in [0, 1) without std::uniform_real_distribution,
+    // whose algorithm is left to the library: this keeps runs identical across compilers.
+    const auto uniform = [&engine] { return static_cast<double>(engine() >> 11) * 0x1.0p-53; };
+    for (Vec3& p : points) {
+        for (int axis = 0; axis < dimension; ++axis) {
+            p[axis] += fraction * spacing * (2.0 * uniform() - 1.0);
         }
     }
-    return fill_box(min, max, spacing, dimension);
+}
+
+std::vector<Vec3> generate_body_points(const io::CaseTable& shape, double spacing, int dimension) {
+    namespace dim = io::dimension;
+    const std::string type = shape.choice("type", {"box", "cylinder", "cone"});
+    std::vector<Vec3> points;
+    if (type == "box") {
+        const Vec3 min = shape.vector("min", dim::kLength);
+        const Vec3 max = shape.vector("max", dim::kLength);
+        for (int axis = 0; axis < dimension; ++axis) {
+            if (!(max[axis] > min[axis])) {
+                shape.fail("max", "expected max > min in every direction");
+            }
+        }
+        points = fill_box(min, max, spacing, dimension);
+    } else if (type == "cylinder" && dimension == 2) {
+        points = fill_disc(shape.vector("centre", dim::kLength),
+                           shape.positive_quantity("radius", dim::kLength), spacing, dimension);
+    } else {
+        const Vec3 base = shape.vector("base", dim::kLength);
+        const Vec3 axis = shape.vector("axis", dim::kNone);
+        Vec3 in_plane = axis;
+        if (dimension == 2) {
+            in_plane.z() = 0.0;
+        }
+        if (!(in_plane.norm() > 0.0)) {
+            shape.fail("axis", "expected a non-zero axis direction");
+        }
+        const double height = shape.positive_quantity("height", dim::kLength);
+        double base_radius = 0.0;
+        double top_radius = 0.0;
+        if (type == "cylinder") {
+            base_radius = top_radius = shape.positive_quantity("radius", dim::kLength);
+        } else {
+            base_radius = shape.positive_quantity("base_radius", dim::kLength);
+            top_radius = shape.quantity_or("top_radius", dim::kLength, 0.0);
+            if (top_radius < 0.0) {
+                shape.fail("top_radius", "expected a radius >= 0 (0: a full cone)");
+            }
+        }
+        points = fill_cone(base, axis, base_radius, top_radius, height, spacing, dimension);
+    }
+    if (points.empty()) {
+        shape.fail("type", "the shape holds no lattice cell centre: make it larger than the "
+                           "spacing");
+    }
+    if (shape.choice_or("lattice", {"regular", "jittered"}, "regular") == "jittered") {
+        const double fraction = shape.number_or("jitter", 0.1);
+        if (!(fraction >= 0.0 && fraction < 0.5)) {
+            shape.fail("jitter", "expected a fraction of the spacing in [0, 0.5)");
+        }
+        const auto seed = shape.integer_or("seed", 1);
+        jitter_points(points, spacing, fraction, static_cast<std::uint64_t>(seed), dimension);
+    }
+    return points;
 }
 
 } // namespace grainload::sph

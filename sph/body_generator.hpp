@@ -2,6 +2,7 @@
 
 #include "io/types.hpp"
 
+#include <cstdint>
 #include <vector>
 
 namespace grainload::io {
@@ -10,11 +11,30 @@ class CaseTable;
 
 namespace grainload::sph {
 
-/// Particle centres filling one shape of a [[sph.body]] ([sph.body.shape] table) on a lattice of
-/// the body's spacing. In 2D (plane strain) the lattice lies in the x-y plane with z = 0.
+/// Particle centres filling one shape of a [[sph.body]] ([sph.body.shape] table: type = "box",
+/// "cylinder" or "cone", lattice = "regular" or "jittered") on a lattice of the body's spacing.
+/// In 2D (plane strain) the lattice lies in the x-y plane with z = 0.
 std::vector<Vec3> generate_body_points(const io::CaseTable& shape, double spacing, int dimension);
 
 /// Points of a box [min, max] on a lattice whose cells have their centres inside the box.
 std::vector<Vec3> fill_box(const Vec3& min, const Vec3& max, double spacing, int dimension);
+
+/// Centres of the lattice cells inside a (truncated) cone: the circle of radius `base_radius`
+/// about `base`, normal to `axis`, swept `height` along `axis` while the radius goes linearly to
+/// `top_radius` (equal radii: a cylinder; 0: a full cone). The lattice is aligned with x, y, z
+/// and has a cell corner at `base`, so a shape whose axis is a coordinate axis is filled
+/// symmetrically about it. In 2D the shape is the x-y section through the axis (a trapezoid).
+std::vector<Vec3> fill_cone(const Vec3& base, const Vec3& axis, double base_radius,
+                            double top_radius, double height, double spacing, int dimension);
+
+/// Centres of the lattice cells inside the disc (2D) or ball (3D) of `radius` about `centre`.
+std::vector<Vec3> fill_disc(const Vec3& centre, double radius, double spacing, int dimension);
+
+/// Move every point by an independent uniform offset in [-fraction, fraction] * spacing per
+/// in-plane axis. With fraction < 1/2 each particle stays in its own lattice cell, so its
+/// volume spacing^dimension still stands for that cell. Same seed, same points: the generator
+/// is std::mt19937_64, whose sequence the C++ standard fixes.
+void jitter_points(std::vector<Vec3>& points, double spacing, double fraction, std::uint64_t seed,
+                   int dimension);
 
 } // namespace grainload::sph

@@ -1,6 +1,7 @@
 #include "sph/rigid_wall.hpp"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
@@ -88,12 +89,62 @@ RigidWall add_rigid_wall(ParticleSet& particles, std::string name, int wall_inde
     return wall;
 }
 
-void move_rigid_wall(ParticleSet& particles, RigidWall& wall, double dt) {
-    const double angle = wall.angular_velocity.norm() * dt;
+Vec3 history_value(const std::vector<std::pair<double, Vec3>>& history, double time) {
+    if (time <= history.front().first) {
+        return history.front().second;
+    }
+    for (std::size_t k = 1; k < history.size(); ++k) {
+        const auto& [t1, v1] = history[k];
+        if (time < t1) {
+            const auto& [t0, v0] = history[k - 1];
+            return v0 + (time - t0) / (t1 - t0) * (v1 - v0);
+        }
+    }
+    return history.back().second;
+}
+
+namespace {
+
+/// Integral of the history from its first point to `time` (negative before it), summed
+/// segment by segment with the trapezoid rule, exact for a linear segment.
+Vec3 history_antiderivative(const std::vector<std::pair<double, Vec3>>& history, double time) {
+    const double start = history.front().first;
+    if (time <= start) {
+        return (time - start) * history.front().second;
+    }
+    Vec3 sum = Vec3::Zero();
+    for (std::size_t k = 1; k < history.size(); ++k) {
+        const auto& [t0, v0] = history[k - 1];
+        const double end = std::min(time, history[k].first);
+        sum += 0.5 * (end - t0) * (v0 + history_value(history, end));
+        if (time <= history[k].first) {
+            return sum;
+        }
+    }
+    return sum + (time - history.back().first) * history.back().second;
+}
+
+} // namespace
+
+Vec3 history_integral(const std::vector<std::pair<double, Vec3>>& history, double from, double to) {
+    return history_antiderivative(history, to) - history_antiderivative(history, from);
+}
+
+void move_rigid_wall(ParticleSet& particles, RigidWall& wall, double time, double dt) {
+    Vec3 displacement = dt * wall.velocity;
+    if (!wall.velocity_history.empty()) {
+        displacement = history_integral(wall.velocity_history, time, time + dt);
+        wall.velocity = history_value(wall.velocity_history, time + dt);
+    }
+    Vec3 rotation_vector = dt * wall.angular_velocity;
+    if (!wall.angular_velocity_history.empty()) {
+        rotation_vector = history_integral(wall.angular_velocity_history, time, time + dt);
+        wall.angular_velocity = history_value(wall.angular_velocity_history, time + dt);
+    }
+    const double angle = rotation_vector.norm();
     const Mat3 rotation =
-        angle > 0.0 ? Eigen::AngleAxisd(angle, wall.angular_velocity.normalized()).matrix()
-                    : Mat3::Identity();
-    const Vec3 new_centre = wall.centre + dt * wall.velocity;
+        angle > 0.0 ? Eigen::AngleAxisd(angle, rotation_vector / angle).matrix() : Mat3::Identity();
+    const Vec3 new_centre = wall.centre + displacement;
     for (Index k = wall.first; k < wall.first + wall.count; ++k) {
         const Vec3 arm = rotation * (particles.position[k] - wall.centre);
         particles.position[k] = new_centre + arm;

@@ -4,6 +4,7 @@
 
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace grainload::sph {
@@ -15,8 +16,12 @@ struct RigidWall {
     std::string name;
     int body_id = -1; ///< distinct from every material body
     Vec3 centre = Vec3::Zero();
-    Vec3 velocity = Vec3::Zero();
-    Vec3 angular_velocity = Vec3::Zero();
+    Vec3 velocity = Vec3::Zero();         ///< now; set from velocity_history when it has points
+    Vec3 angular_velocity = Vec3::Zero(); ///< now; likewise
+    /// Prescribed histories (time, value), piecewise linear, held before the first and after
+    /// the last point; empty: the constant velocity / angular_velocity above.
+    std::vector<std::pair<double, Vec3>> velocity_history;
+    std::vector<std::pair<double, Vec3>> angular_velocity_history;
     Index first = 0; ///< its particles are [first, first + count) of the ParticleSet
     Index count = 0;
     Vec3 force = Vec3::Zero();  ///< total contact force of the bodies on the wall
@@ -40,9 +45,18 @@ RigidWall add_rigid_wall(ParticleSet& particles, std::string name, int wall_inde
                          const std::vector<Vec3>& points, double spacing, double density,
                          int dimension);
 
-/// Move wall particles rigidly over dt (exact rotation about the moving centre) and set their
-/// velocities to the rigid-body field.
-void move_rigid_wall(ParticleSet& particles, RigidWall& wall, double dt);
+/// Value at `time` of a piecewise-linear history, held constant outside its points.
+Vec3 history_value(const std::vector<std::pair<double, Vec3>>& history, double time);
+
+/// Exact integral of the same function over [from, to].
+Vec3 history_integral(const std::vector<std::pair<double, Vec3>>& history, double from, double to);
+
+/// Move wall particles rigidly from `time` to `time + dt` and set their velocities to the
+/// rigid-body field at the end. The centre moves by the exact integral of the velocity history
+/// over the step, so it follows a piecewise-linear history to round-off at any dt. The rotation
+/// is the exact rotation by the integrated angular velocity: exact while the axis is fixed
+/// within a step, second order in dt otherwise.
+void move_rigid_wall(ParticleSet& particles, RigidWall& wall, double time, double dt);
 
 /// Sum mass * acceleration of the wall's particles (set by the force pass to the contact force
 /// the bodies exert on them) into wall.force and wall.moment.

@@ -76,6 +76,26 @@ std::vector<Vec3> wall_points(const io::CaseTable& wall, int dimension, double s
     return plane_wall_points(origin, u, v, normal, spacing, layers, dimension);
 }
 
+/// `<key>_history` of a wall: [[time, vector], ...] with non-decreasing times, an alternative
+/// to the constant `<key>`. The wall starts with the history's value at t = 0.
+std::vector<std::pair<double, Vec3>> motion_history(const io::CaseTable& wall,
+                                                    const std::string& key, io::Dimension value) {
+    const std::string name = key + "_history";
+    if (!wall.has(name)) {
+        return {};
+    }
+    if (wall.has(key)) {
+        wall.fail(name, "give either " + key + " (constant) or " + name + ", not both");
+    }
+    auto history = wall.vector_pairs(name, dim::kTime, value);
+    for (std::size_t k = 1; k < history.size(); ++k) {
+        if (history[k].first < history[k - 1].first) {
+            wall.fail(name, "expected non-decreasing times");
+        }
+    }
+    return history;
+}
+
 } // namespace
 
 std::vector<RigidWall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& particles,
@@ -96,6 +116,15 @@ std::vector<RigidWall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& p
         wall.velocity = table.vector_or("velocity", dim::kVelocity, Vec3::Zero());
         wall.angular_velocity =
             table.vector_or("angular_velocity", dim::kAngularVelocity, Vec3::Zero());
+        wall.velocity_history = motion_history(table, "velocity", dim::kVelocity);
+        wall.angular_velocity_history =
+            motion_history(table, "angular_velocity", dim::kAngularVelocity);
+        if (!wall.velocity_history.empty()) {
+            wall.velocity = history_value(wall.velocity_history, 0.0);
+        }
+        if (!wall.angular_velocity_history.empty()) {
+            wall.angular_velocity = history_value(wall.angular_velocity_history, 0.0);
+        }
         walls.push_back(std::move(wall));
     }
     return walls;

@@ -193,8 +193,9 @@ void SphModel::compute_accelerations() {
     }
 }
 
-void SphModel::advance(double, double dt) {
+void SphModel::advance(double t, double dt) {
     if (solver_) {
+        solver_->set_time(t);
         solver_->step(dt);
         return;
     }

@@ -108,7 +108,7 @@ void SphSolver::step(double dt) {
         }
     }
     for (RigidWall& wall : walls_) {
-        move_rigid_wall(p, wall, dt);
+        move_rigid_wall(p, wall, time_, dt);
     }
     refresh_neighbours();
     compute_kinematics();

@@ -37,6 +37,8 @@ class SphSolver {
     /// After particle fields were replaced (a checkpoint): rebuild neighbours and forces.
     void restart();
     double time() const { return time_; }
+    /// The driver's clock, which wall motion histories follow (also after a restart).
+    void set_time(double time) { time_ = time; }
     Index step_count() const { return steps_; }
     ParticleSet& particles() { return particles_; }
     const ParticleSet& particles() const { return particles_; }

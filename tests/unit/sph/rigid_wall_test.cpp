@@ -1,4 +1,6 @@
+#include "io/case_table.hpp"
 #include "sph/rigid_wall.hpp"
+#include "sph/sph_case_reader.hpp"
 
 #include <Eigen/Geometry>
 #include <filesystem>
@@ -40,10 +42,51 @@ TEST(RigidWall, RigidMotionRotatesExactlyAboutTheMovingCentre) {
     wall.velocity = Vec3(0.0, 0.0, 2.0);
     wall.angular_velocity = Vec3(0.0, 0.0, 0.5 * std::numbers::pi);
     for (int k = 0; k < 10; ++k) {
-        move_rigid_wall(particles, wall, 0.1);
+        move_rigid_wall(particles, wall, 0.1 * k, 0.1);
     }
     EXPECT_LT((particles.position[0] - Vec3(0.0, 1.0, 2.0)).norm(), 1e-12);
     EXPECT_LT((particles.velocity[0] - Vec3(-0.5 * std::numbers::pi, 0.0, 2.0)).norm(), 1e-12);
+}
+
+// A piecewise-linear history has a piecewise-quadratic integral; the wall moves by the exact
+// integral over each step, so a step size that straddles the breakpoints still ends on it.
+TEST(RigidWall, VelocityHistoryMovesTheWallByItsIntegral) {
+    const auto document = io::CaseDocument::from_string(R"(
+[sph]
+[[sph.wall]]
+name = "piston"
+type = "plane"
+origin = "0 0 0 m"
+edge_u = "1 0 0 m"
+edge_v = "0 1 0 m"
+normal = "0 0 1"
+layers = 1
+velocity_history = [["0 s", "0 0 0 m/s"], ["0.5 s", "0 0 0.1 m/s"], ["0.8 s", "0.2 0 0.1 m/s"]]
+angular_velocity_history = [["0.2 s", "0 0 0 rad/s"], ["0.6 s", "0 0 2 rad/s"]]
+)",
+                                                        "walls.toml");
+    ParticleSet particles;
+    auto walls = read_rigid_walls(document->root().table("sph"), particles, 3, 0.5, 0.5, 1);
+    ASSERT_EQ(walls.size(), 1u);
+    RigidWall& wall = walls[0];
+    const Vec3 start = wall.centre;
+    const Vec3 arm0 = particles.position[0] - start;
+    const double dt = 0.0123; // not a divisor of the breakpoints
+    double t = 0.0;
+    while (t < 1.2) {
+        move_rigid_wall(particles, wall, t, dt);
+        t += dt;
+    }
+    // Integral of the velocity up to t: 0.025 (ramp) + 0.3 * 0.1 + (t - 0.8) * 0.1 in z;
+    // 0.03 + (t - 0.8) * 0.2 in x; the angle is 0.4 + 2 (t - 0.6) rad about z.
+    const Vec3 travelled(0.03 + (t - 0.8) * 0.2, 0.0, 0.025 + 0.03 + (t - 0.8) * 0.1);
+    EXPECT_LT((wall.centre - start - travelled).norm(), 1e-13);
+    const Mat3 turned = Eigen::AngleAxisd(0.4 + 2.0 * (t - 0.6), Vec3::UnitZ()).matrix();
+    EXPECT_LT((particles.position[0] - wall.centre - turned * arm0).norm(), 1e-12);
+    EXPECT_LT((wall.velocity - Vec3(0.2, 0.0, 0.1)).norm(), 1e-15);
+    EXPECT_LT((history_integral(wall.velocity_history, 0.0, 0.5) - Vec3(0, 0, 0.025)).norm(),
+              1e-15);
+    EXPECT_LT((history_value(wall.velocity_history, 0.25) - Vec3(0, 0, 0.05)).norm(), 1e-15);
 }
 
 TEST(RigidWall, WallForcesFileHasOneRowPerWallAndInstant) {
