@@ -1,11 +1,9 @@
 #include "support/cli_runner.hpp"
+#include "support/frame_reader.hpp"
 
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <regex>
-#include <vtkMultiBlockDataSet.h>
-#include <vtkPolyData.h>
-#include <vtkXMLMultiBlockDataReader.h>
 
 namespace {
 
@@ -19,11 +17,7 @@ struct ColumnState {
 };
 
 ColumnState read_column(const std::string& vtm) {
-    vtkNew<vtkXMLMultiBlockDataReader> reader;
-    reader->SetFileName(vtm.c_str());
-    reader->Update();
-    auto* column = vtkPolyData::SafeDownCast(
-        vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput())->GetBlock(0));
+    const auto column = read_particle_block(vtm);
     ColumnState state;
     for (vtkIdType i = 0; i < column->GetNumberOfPoints(); ++i) {
         double x[3];

@@ -1,14 +1,11 @@
 #include "support/cli_runner.hpp"
+#include "support/frame_reader.hpp"
 
 #include <Eigen/Core>
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <vtkDataArray.h>
-#include <vtkMultiBlockDataSet.h>
 #include <vtkPointData.h>
-#include <vtkPolyData.h>
-#include <vtkSmartPointer.h>
-#include <vtkXMLMultiBlockDataReader.h>
 
 namespace {
 
@@ -23,11 +20,7 @@ struct Cloud {
 };
 
 Cloud read_frame(const std::string& vtm) {
-    vtkNew<vtkXMLMultiBlockDataReader> reader;
-    reader->SetFileName(vtm.c_str());
-    reader->Update();
-    auto* block = vtkPolyData::SafeDownCast(
-        vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput())->GetBlock(0));
+    const auto block = read_particle_block(vtm);
     Cloud cloud;
     vtkDataArray* velocity = block->GetPointData()->GetArray("velocity");
     for (vtkIdType i = 0; i < block->GetNumberOfPoints(); ++i) {
