@@ -7,20 +7,6 @@ namespace {
 
 using namespace testing;
 
-/// Smallest distance between particles of different bodies, in units of the spacing.
-double closest_approach(const SphSolver& solver) {
-    const auto& p = solver.particles();
-    double smallest = std::numeric_limits<double>::infinity();
-    for (Index i = 0; i < p.size(); ++i) {
-        for (const Index j : solver.neighbours().neighbours(i)) {
-            if (p.body_id[i] != p.body_id[j]) {
-                smallest = std::min(smallest, (p.position[i] - p.position[j]).norm());
-            }
-        }
-    }
-    return smallest / solver.options().particle_spacing;
-}
-
 /// Two elastic discs (plane strain) in an oblique frictionless collision through the contact
 /// potential (thesis eq. 5.3.12): they must not interpenetrate, must separate, and the linear
 /// momentum must be kept.
@@ -53,10 +39,10 @@ TEST(Contact, DiscsCollideSeparateAndDoNotInterpenetrate) {
     const Vec3 p0 = solver.linear_momentum();
     const double c = aluminium.elastic().p_wave_speed();
     const double dt = solver.stable_time_step();
-    double closest = closest_approach(solver);
+    double closest = smallest_neighbour_distance(solver, true);
     while (solver.time() < 0.012 / 20.0 + 8.0 * radius / c) {
         solver.step(dt);
-        closest = std::min(closest, closest_approach(solver));
+        closest = std::min(closest, smallest_neighbour_distance(solver, true));
     }
     const auto& p = solver.particles();
     const double v_left = mean_over(

@@ -61,4 +61,19 @@ inline double first_crossing_down(const std::vector<double>& times,
     return std::nan("");
 }
 
+/// Smallest distance between neighbouring particles, in units of the spacing; with
+/// `between_bodies_only`, only pairs from different bodies count (contact interpenetration).
+inline double smallest_neighbour_distance(const SphSolver& solver, bool between_bodies_only) {
+    const auto& p = solver.particles();
+    double smallest = std::numeric_limits<double>::infinity();
+    for (Index i = 0; i < p.size(); ++i) {
+        for (const Index j : solver.neighbours().neighbours(i)) {
+            if (!between_bodies_only || p.body_id[i] != p.body_id[j]) {
+                smallest = std::min(smallest, (p.position[i] - p.position[j]).norm());
+            }
+        }
+    }
+    return smallest / solver.options().particle_spacing;
+}
+
 } // namespace grainload::sph::testing
