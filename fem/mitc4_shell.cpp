@@ -238,6 +238,9 @@ void Mitc4Shell::add_drilling_stiffness(const ShellNodes& current, Matrix24& sti
             std::max(largest, stiffness.block<3, 3>(6 * k + 3, 6 * k + 3).diagonal().maxCoeff());
     }
     for (std::size_t k = 0; k < 4; ++k) {
+        if (fold_corners_[k]) {
+            continue;
+        }
         const Vec3& v = current.director[k];
         const int o = 6 * static_cast<int>(k) + 3;
         stiffness.block<3, 3>(o, o) += kDrillingFactor * largest * v * v.transpose();

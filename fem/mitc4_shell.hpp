@@ -79,6 +79,10 @@ class Mitc4Shell {
     /// only: the element's internal force has no drilling component, so results do not depend
     /// on it; it only makes the global matrix nonsingular).
     static constexpr double kDrillingFactor = 1e-4;
+    /// Corners on a fold line get no drilling spring: there the rotation about this element's
+    /// director is a bending rotation of the neighbouring face, which holds it with real
+    /// stiffness, and the spring would only make the tangent inexact.
+    void set_fold_corners(const std::array<bool, 4>& fold) { fold_corners_ = fold; }
 
   private:
     struct Basis;
@@ -98,6 +102,7 @@ class Mitc4Shell {
     void add_drilling_stiffness(const ShellNodes& current, Matrix24& stiffness) const;
 
     ShellNodes initial_;
+    std::array<bool, 4> fold_corners_{};
     double thickness_;
     const materials::Material* material_;
     std::vector<double> z_points_;

@@ -32,7 +32,7 @@ ShellAnalysis::ShellAnalysis(ShellMesh mesh, const materials::Material& material
                              Kinematics kinematics, int thickness_points)
     : mesh_(std::move(mesh)), material_(&material), kinematics_(kinematics) {
     mesh_.validate();
-    initial_directors_ = mesh_.nodal_normals();
+    initial_directors_ = element_directors(mesh_);
     const Index n = mesh_.node_count();
     prescribed_.assign(at(kDofs * n), std::numeric_limits<double>::quiet_NaN());
     prescribed_history_.assign(at(kDofs * n), 0);
@@ -41,19 +41,28 @@ ShellAnalysis::ShellAnalysis(ShellMesh mesh, const materials::Material& material
     dofs_ = Eigen::VectorXd::Zero(kDofs * n);
     rotations_.assign(at(n), Mat3::Identity());
     elements_.reserve(at(mesh_.element_count()));
-    for (const auto& e : mesh_.elements()) {
-        elements_.emplace_back(element_nodes(e), e.thickness, material, thickness_points);
+    std::vector<bool> fold(at(n), false);
+    for (const Index node : fold_nodes(mesh_)) {
+        fold[at(node)] = true;
+    }
+    for (std::size_t e = 0; e < mesh_.elements().size(); ++e) {
+        const ShellElement& element = mesh_.elements()[e];
+        elements_.emplace_back(element_nodes(e), element.thickness, material, thickness_points);
+        elements_.back().set_fold_corners({fold[at(element.nodes[0])], fold[at(element.nodes[1])],
+                                           fold[at(element.nodes[2])], fold[at(element.nodes[3])]});
     }
     committed_dofs_ = dofs_;
     committed_rotations_ = rotations_;
 }
 
-ShellNodes ShellAnalysis::element_nodes(const ShellElement& element) const {
+ShellNodes ShellAnalysis::element_nodes(std::size_t element) const {
     ShellNodes nodes;
     for (std::size_t k = 0; k < 4; ++k) {
-        const Index n = element.nodes[k];
+        const Index n = mesh_.elements()[element].nodes[k];
         nodes.x[k] = mesh_.node(n) + dofs_.segment<3>(kDofs * n);
-        nodes.director[k] = rotations_[at(n)] * initial_directors_[at(n)];
+        // One rotation per node turns every director attached to it (Dvorkin & Bathe 1984:
+        // the rotational DOFs are global, so the folded faces stay rigidly joined).
+        nodes.director[k] = rotations_[at(n)] * initial_directors_[element][k];
     }
     return nodes;
 }
@@ -99,7 +108,7 @@ void ShellAnalysis::assemble(SparseSolver::Matrix* tangent, Eigen::VectorXd& int
     Matrix24 k;
     for (std::size_t e = 0; e < elements_.size(); ++e) {
         const ShellElement& element = mesh_.elements()[e];
-        elements_[e].evaluate(element_nodes(element), element_dofs(element), kinematics_, force,
+        elements_[e].evaluate(element_nodes(e), element_dofs(element), kinematics_, force,
                               tangent != nullptr ? &k : nullptr);
         std::array<Index, 24> global{};
         for (int a = 0; a < 24; ++a) {
@@ -350,8 +359,9 @@ Vec3 ShellAnalysis::rotation(Index node) const {
     return aa.angle() * aa.axis();
 }
 
-Vec3 ShellAnalysis::director(Index node) const {
-    return rotations_[at(node)] * initial_directors_[at(node)];
+Vec3 ShellAnalysis::director(Index element, int corner) const {
+    const Index node = mesh_.element(element).nodes[at(corner)];
+    return rotations_[at(node)] * initial_directors_[at(element)][at(corner)];
 }
 
 Eigen::VectorXd ShellAnalysis::reactions() {

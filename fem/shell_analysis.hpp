@@ -1,6 +1,7 @@
 #pragma once
 
 #include "fem/mitc4_shell.hpp"
+#include "fem/shell_directors.hpp"
 #include "fem/shell_mesh.hpp"
 #include "fem/sparse_solver.hpp"
 
@@ -110,7 +111,10 @@ class ShellAnalysis {
     Vec3 displacement(Index node) const;
     /// Total rotation vector of the node (log of its rotation matrix).
     Vec3 rotation(Index node) const;
-    Vec3 director(Index node) const;
+    /// Current director of corner `corner` (0..3) of element `element`: its initial director
+    /// (fem/shell_directors.hpp; its own face's normal at a fold node) rotated by the node's
+    /// rotation.
+    Vec3 director(Index element, int corner) const;
     /// Internal minus applied force at every DOF (the reactions at constrained DOFs).
     Eigen::VectorXd reactions();
     Index free_dof_count() const { return free_count_; }
@@ -148,7 +152,7 @@ class ShellAnalysis {
 
   private:
     Eigen::VectorXd& active_load();
-    ShellNodes element_nodes(const ShellElement& element) const;
+    ShellNodes element_nodes(std::size_t element) const;
     Vector24 element_dofs(const ShellElement& element) const;
     bool increment(double from, double to, const NewtonSettings& settings, StepReport& report);
     void number_equations();
@@ -160,7 +164,7 @@ class ShellAnalysis {
     ShellMesh mesh_;
     const materials::Material* material_;
     Kinematics kinematics_;
-    std::vector<Vec3> initial_directors_;
+    ElementDirectors initial_directors_; ///< per element corner, rotated by the nodal R
     std::vector<Mitc4Shell> elements_;
     struct LoadHistory {
         History scale;

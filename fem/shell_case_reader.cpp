@@ -5,6 +5,7 @@
 #include "io/case_table.hpp"
 
 #include <array>
+#include <numbers>
 #include <stdexcept>
 
 namespace grainload::fem {
@@ -45,6 +46,14 @@ ShellMesh generate(const io::CaseTable& shell, const std::string& generator, dou
                                 shell.positive_quantity("azimuth_end", dim::kAngle),
                                 element_count(shell, "elements_polar"),
                                 element_count(shell, "elements_around"), thickness);
+    }
+    if (generator == "box") {
+        return make_box(shell.positive_quantity("length_x", dim::kLength),
+                        shell.positive_quantity("length_y", dim::kLength),
+                        shell.positive_quantity("height", dim::kLength),
+                        element_count(shell, "elements_x"), element_count(shell, "elements_y"),
+                        element_count(shell, "elements_z"),
+                        shell.choice_or("top", {"open", "closed"}, "open") == "closed", thickness);
     }
     return make_cone(shell.positive_quantity("radius_bottom", dim::kLength),
                      shell.positive_quantity("radius_top", dim::kLength, true),
@@ -91,7 +100,7 @@ int read_dof(const io::CaseTable& table, std::string_view key, const std::string
 
 ShellMesh read_shell_mesh(const io::CaseTable& shell) {
     const std::string generator =
-        shell.choice("generator", {"plate", "cylinder", "sphere_zone", "cone", "gmsh"});
+        shell.choice("generator", {"plate", "cylinder", "sphere_zone", "cone", "box", "gmsh"});
     const double thickness = shell.positive_quantity("thickness", dim::kLength);
     ShellMesh mesh;
     try {
@@ -101,6 +110,13 @@ ShellMesh read_shell_mesh(const io::CaseTable& shell) {
     } catch (const std::invalid_argument& e) {
         shell.fail("generator", e.what());
     }
+    // Fold lines (box edges, kinks of an imported mesh): see fem/shell_directors.hpp.
+    const double fold_angle =
+        shell.quantity_or("fold_angle", dim::kAngle, ShellMesh::kDefaultFoldAngle);
+    if (!(fold_angle > 0.0 && fold_angle <= std::numbers::pi * (1.0 + 1e-12))) {
+        shell.fail("fold_angle", "expected an angle in (0 deg, 180 deg]");
+    }
+    mesh.set_fold_angle(fold_angle);
     return mesh;
 }
 

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <map>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -43,11 +44,23 @@ class ShellMesh {
     Index nearest_node(const Vec3& x) const;
     /// Unit normal per node: the exact surface normal when a generator supplied one, else the
     /// average of the normals of the elements around it. It is the initial director of the
-    /// MITC4 element (Dvorkin & Bathe 1984, "V_n^k"). On a curved edge the average leans by
+    /// MITC4 element (Dvorkin & Bathe 1984, "V_n^k") except at fold nodes, where each element
+    /// has its own (fem/shell_directors.hpp). On a curved edge the average leans by
     /// half an element angle, which would make a symmetry plane's rotation constraints act
     /// on a tilted drilling axis; the exact normal avoids that.
     std::vector<Vec3> nodal_normals() const;
     void set_nodal_normals(std::vector<Vec3> normals) { normals_ = std::move(normals); }
+    /// True when a generator supplied the exact normals of a smooth surface.
+    bool has_exact_normals() const { return normals_.size() == nodes_.size(); }
+
+    /// Fold-line threshold [rad]: a node at which some element normal deviates from the
+    /// average of the normals around it by more than this angle is a fold node, where every
+    /// element keeps its own director (fem/shell_directors.hpp). 20 deg by default, the
+    /// threshold Abaqus uses (pairwise there); pi switches fold detection off. Meshes with
+    /// exact normals (smooth generated surfaces) have no fold nodes.
+    double fold_angle() const { return fold_angle_; }
+    void set_fold_angle(double angle) { fold_angle_ = angle; }
+    static constexpr double kDefaultFoldAngle = 20.0 * std::numbers::pi / 180.0;
 
     /// Throws std::invalid_argument naming the first bad element: unknown node ids, zero
     /// thickness, zero area, or a normal opposite to its neighbours' (inverted orientation).
@@ -57,6 +70,7 @@ class ShellMesh {
     std::vector<Vec3> nodes_;
     std::vector<ShellElement> elements_;
     std::vector<Vec3> normals_;
+    double fold_angle_ = kDefaultFoldAngle;
     std::map<std::string, std::vector<Index>> node_sets_;
     std::map<std::string, std::vector<Index>> element_sets_;
 };

@@ -25,4 +25,14 @@ ShellMesh make_sphere_zone(double radius, double polar0, double polar1, double a
 ShellMesh make_cone(double r0, double r1, double height, double azimuth1, int n_azimuth,
                     int n_height, double thickness);
 
+/// Rectangular box [0, lx] x [0, ly] x [0, lz] of quads (a silo or wagon body): the bottom,
+/// the four walls and, when `closed_top`, the top, with shared nodes along the edges and
+/// outward normals (a positive pressure pushes outward). Its edges are 90 deg fold lines
+/// (fem/shell_directors.hpp). Node sets: bottom (z = 0, its edge included), bottom_edge (the
+/// z = 0 perimeter), top (z = lz), top_edge (the z = lz perimeter, the rim of an open box),
+/// x0, x1, y0, y1 (each wall with its edges), all; element sets bottom, top, x0, x1, y0, y1,
+/// all.
+ShellMesh make_box(double lx, double ly, double lz, int nx, int ny, int nz, bool closed_top,
+                   double thickness);
+
 } // namespace grainload::fem

@@ -4,6 +4,7 @@
 #include "io/binary_stream.hpp"
 #include "io/case_table.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -25,6 +26,16 @@ NewtonSettings read_settings(const io::CaseTable& fem) {
     s.max_iterations = static_cast<int>(fem.integer_or("max_iterations", s.max_iterations));
     s.max_cutbacks = static_cast<int>(fem.integer_or("max_cutbacks", s.max_cutbacks));
     return s;
+}
+
+/// Result names are snake_case identifiers, as the SPH side's: a solver is named by the
+/// first word of SparseSolver::name() in lower case ("cholmod", "umfpack").
+std::string solver_identifier(const std::string& solver) {
+    std::string id = solver.substr(0, solver.find(' '));
+    for (char& c : id) {
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
+    return id;
 }
 
 } // namespace
@@ -205,9 +216,9 @@ void ShellModel::append_results(double, std::vector<io::ResultFigure>& results) 
     }
     if (!log_.empty()) {
         const StepReport& last = log_.back().report;
-        results.push_back({"fem load factor", log_.back().load_factor, "", std::nullopt, ""});
-        results.push_back({"fem Newton iterations (last step)",
-                           static_cast<double>(last.log.size()), "", std::nullopt, last.solver});
+        results.push_back({"fem_load_factor", log_.back().load_factor, "", std::nullopt, ""});
+        results.push_back({"fem_newton_iterations_last_step", static_cast<double>(last.log.size()),
+                           "", std::nullopt, last.solver});
         // Which factorisation ran: steps whose last solve went through each solver.
         std::map<std::string, int> solvers;
         for (const ShellStepLog& entry : log_) {
@@ -216,8 +227,8 @@ void ShellModel::append_results(double, std::vector<io::ResultFigure>& results) 
             }
         }
         for (const auto& [solver, steps] : solvers) {
-            results.push_back({"fem steps solved by " + solver, static_cast<double>(steps), "",
-                               std::nullopt, ""});
+            results.push_back({"fem_steps_solved_by_" + solver_identifier(solver),
+                               static_cast<double>(steps), "", std::nullopt, solver});
         }
     }
 }

@@ -1,6 +1,7 @@
 #include "sph/body_generator.hpp"
 
 #include "io/case_table.hpp"
+#include "sph/closed_mesh_fill.hpp"
 
 #include <cmath>
 #include <functional>
@@ -114,9 +115,11 @@ void jitter_points(std::vector<Vec3>& points, double spacing, double fraction, s
 
 std::vector<Vec3> generate_body_points(const io::CaseTable& shape, double spacing, int dimension) {
     namespace dim = io::dimension;
-    const std::string type = shape.choice("type", {"box", "cylinder", "cone"});
+    const std::string type = shape.choice("type", {"box", "cylinder", "cone", "mesh"});
     std::vector<Vec3> points;
-    if (type == "box") {
+    if (type == "mesh") {
+        points = fill_mesh_shape(shape, spacing, dimension);
+    } else if (type == "box") {
         const Vec3 min = shape.vector("min", dim::kLength);
         const Vec3 max = shape.vector("max", dim::kLength);
         for (int axis = 0; axis < dimension; ++axis) {

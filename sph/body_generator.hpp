@@ -12,7 +12,8 @@ class CaseTable;
 namespace grainload::sph {
 
 /// Particle centres filling one shape of a [[sph.body]] ([sph.body.shape] table: type = "box",
-/// "cylinder" or "cone", lattice = "regular" or "jittered") on a lattice of the body's spacing.
+/// "cylinder", "cone" or "mesh" (a closed surface mesh, see closed_mesh_fill.hpp),
+/// lattice = "regular" or "jittered") on a lattice of the body's spacing.
 /// In 2D (plane strain) the lattice lies in the x-y plane with z = 0.
 std::vector<Vec3> generate_body_points(const io::CaseTable& shape, double spacing, int dimension);
 

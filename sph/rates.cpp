@@ -1,7 +1,10 @@
 #include "sph/rates.hpp"
 
+#include "sph/contact_force.hpp"
+
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 
 namespace grainload::sph {
@@ -175,11 +178,21 @@ void compute_accelerations(ParticleSet& p, const NeighbourList& neighbours,
                 }
                 a.noalias() += p.mass[j] * (t * grad);
             } else if (use_contact && p.body_id[i] != p.body_id[j]) {
-                const double w_ratio = kernel.value(r) / w_reference;
-                const double volume_j = p.mass[j] / p.density[j];
-                const double scale = options.contact.stiffness * volume_i * volume_j *
-                                     std::pow(w_ratio, options.contact.exponent - 1.0);
-                a.noalias() -= (scale / p.mass[i]) * grad;
+                const double volumes = volume_i * p.mass[j] / p.density[j];
+                if (wall || p.wall_id[j] >= 0) {
+                    // Undamped here: WallContact damps along the wall normal.
+                    const double repulsion =
+                        contact_repulsion(kernel, options.contact, w_reference, volumes, r);
+                    a.noalias() += (repulsion / (r * p.mass[i])) * x_ij;
+                } else {
+                    const ContactPair pair{x_ij, r, vi - p.velocity[j], volumes,
+                                           p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j])};
+                    double dissipation = 0.0;
+                    a.noalias() += contact_pair_force(kernel, options.contact, w_reference, pair,
+                                                      dissipation) /
+                                   p.mass[i];
+                    heating += 0.5 * dissipation / p.mass[i];
+                }
             }
         }
         p.acceleration[i] = a;

@@ -145,12 +145,30 @@ void move_rigid_wall(ParticleSet& particles, RigidWall& wall, double time, doubl
     const Mat3 rotation =
         angle > 0.0 ? Eigen::AngleAxisd(angle, rotation_vector / angle).matrix() : Mat3::Identity();
     const Vec3 new_centre = wall.centre + displacement;
+    for (Vec3& normal : wall.normals) {
+        normal = rotation * normal;
+    }
     for (Index k = wall.first; k < wall.first + wall.count; ++k) {
         const Vec3 arm = rotation * (particles.position[k] - wall.centre);
         particles.position[k] = new_centre + arm;
         particles.velocity[k] = wall.velocity + wall.angular_velocity.cross(arm);
     }
     wall.centre = new_centre;
+}
+
+std::vector<Vec3> box_wall_normals(const std::vector<Vec3>& points, const Vec3& lower,
+                                   const Vec3& upper, int dimension) {
+    std::vector<Vec3> normals;
+    normals.reserve(points.size());
+    for (const Vec3& x : points) {
+        Vec3 inward = x.cwiseMax(lower).cwiseMin(upper) - x;
+        if (dimension == 2) {
+            inward.z() = 0.0;
+        }
+        const double length = inward.norm();
+        normals.push_back(length > 0.0 ? Vec3(inward / length) : Vec3::Zero());
+    }
+    return normals;
 }
 
 void accumulate_wall_load(const ParticleSet& particles, RigidWall& wall) {

@@ -24,6 +24,9 @@ struct RigidWall {
     std::vector<std::pair<double, Vec3>> angular_velocity_history;
     Index first = 0; ///< its particles are [first, first + count) of the ParticleSet
     Index count = 0;
+    /// Unit normals of the wall surface at its particles, pointing into the material (empty:
+    /// unknown, and the contact normal comes from the colour function). They turn with it.
+    std::vector<Vec3> normals;
     Vec3 force = Vec3::Zero();  ///< total contact force of the bodies on the wall
     Vec3 moment = Vec3::Zero(); ///< about `centre`
 };
@@ -38,6 +41,11 @@ std::vector<Vec3> plane_wall_points(const Vec3& origin, const Vec3& u, const Vec
 /// outside each face; `open_top` leaves out the face of largest y (2D) or z (3D).
 std::vector<Vec3> box_wall_points(const Vec3& lower, const Vec3& upper, double spacing, int layers,
                                   int dimension, bool open_top);
+
+/// Normals for box_wall_points: from each point towards the nearest point of [lower, upper]
+/// (a face normal beside a face, the bisector beyond an edge or a corner).
+std::vector<Vec3> box_wall_normals(const std::vector<Vec3>& points, const Vec3& lower,
+                                   const Vec3& upper, int dimension);
 
 /// Append `points` to the particle set as wall `wall_index` and return its RigidWall.
 /// Wall particles get density `density` and mass density * spacing^dimension.

@@ -1,6 +1,7 @@
 #include "sph/sph_case_reader.hpp"
 
 #include "io/case_table.hpp"
+#include "sph/surface_mesh_wall.hpp"
 
 #include <cmath>
 
@@ -51,6 +52,11 @@ SphOptions read_sph_options(const io::CaseTable& sph, int dimension, double spac
         if (!(options.contact.exponent >= 1.0)) {
             contact->fail("exponent", "expected n >= 1");
         }
+        options.contact.damping_ratio = contact->number_or("damping_ratio", 0.0);
+        if (!(options.contact.damping_ratio >= 0.0 && options.contact.damping_ratio <= 10.0)) {
+            contact->fail("damping_ratio",
+                          "expected a fraction of critical damping zeta in [0, 10]");
+        }
     }
     return options;
 }
@@ -59,7 +65,10 @@ namespace {
 
 std::vector<Vec3> wall_points(const io::CaseTable& wall, int dimension, double spacing,
                               int layers) {
-    const std::string type = wall.choice("type", {"plane", "box"});
+    const std::string type = wall.choice("type", {"plane", "box", "mesh"});
+    if (type == "mesh") {
+        return read_mesh_wall_points(wall, dimension, spacing, layers);
+    }
     if (type == "box") {
         const Vec3 lower = wall.vector("min", dim::kLength);
         const Vec3 upper = wall.vector("max", dim::kLength);
@@ -74,6 +83,22 @@ std::vector<Vec3> wall_points(const io::CaseTable& wall, int dimension, double s
         wall.fail("normal", "expected a non-zero normal pointing into the material");
     }
     return plane_wall_points(origin, u, v, normal, spacing, layers, dimension);
+}
+
+/// Surface normals of plane and box walls, which know their geometry exactly; other walls
+/// leave them empty and their contact normal comes from the colour function.
+std::vector<Vec3> wall_normals(const io::CaseTable& wall, const std::vector<Vec3>& points,
+                               int dimension) {
+    const std::string type = wall.string("type");
+    if (type == "plane") {
+        const Vec3 normal = wall.vector("normal", dim::kNone).normalized();
+        return std::vector<Vec3>(points.size(), normal);
+    }
+    if (type == "box") {
+        return box_wall_normals(points, wall.vector("min", dim::kLength),
+                                wall.vector("max", dim::kLength), dimension);
+    }
+    return {};
 }
 
 /// `<key>_history` of a wall: [[time, vector], ...] with non-decreasing times, an alternative
@@ -103,15 +128,23 @@ std::vector<RigidWall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& p
                                         int first_body_id) {
     std::vector<RigidWall> walls;
     for (const auto& table : sph.array_of_tables("wall")) {
-        const int default_layers = static_cast<int>(std::ceil(support_radius / spacing));
-        const auto layers = table.integer_or("layers", default_layers);
-        if (layers < 1 || layers > 10) {
-            table.fail("layers", "expected 1 to 10 layers of wall particles");
+        // A finer wall is smoother: see docs/theory/sph.md, "Wall contact".
+        const double wall_spacing = table.positive_quantity_or("spacing", dim::kLength, spacing);
+        if (wall_spacing > spacing * (1.0 + 1e-9) || wall_spacing < 0.2 * spacing) {
+            table.fail("spacing", "expected a wall particle spacing between 0.2 and 1 times the "
+                                  "bodies' spacing");
         }
-        const auto points = wall_points(table, dimension, spacing, static_cast<int>(layers));
+        const int default_layers = static_cast<int>(std::ceil(support_radius / wall_spacing));
+        const auto layers = table.integer_or("layers", default_layers);
+        if (layers < 1 || layers > 20) {
+            table.fail("layers", "expected 1 to 20 layers of wall particles");
+        }
+        const auto points = wall_points(table, dimension, wall_spacing, static_cast<int>(layers));
         const int index = static_cast<int>(walls.size());
-        RigidWall wall = add_rigid_wall(particles, table.string("name"), index,
-                                        first_body_id + index, points, spacing, 1.0, dimension);
+        RigidWall wall =
+            add_rigid_wall(particles, table.string("name"), index, first_body_id + index, points,
+                           wall_spacing, 1.0, dimension);
+        wall.normals = wall_normals(table, points, dimension);
         wall.centre = table.vector_or("centre", dim::kLength, wall.centre);
         wall.velocity = table.vector_or("velocity", dim::kVelocity, Vec3::Zero());
         wall.angular_velocity =
@@ -128,6 +161,55 @@ std::vector<RigidWall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& p
         walls.push_back(std::move(wall));
     }
     return walls;
+}
+
+namespace {
+
+template <typename Named, typename NameOf>
+int index_by_name(const io::CaseTable& table, const std::string& key, const Named& items,
+                  NameOf name_of, const char* what) {
+    const std::string name = table.string(key);
+    std::string known;
+    for (std::size_t k = 0; k < items.size(); ++k) {
+        if (name_of(items[k]) == name) {
+            return static_cast<int>(k);
+        }
+        known += (known.empty() ? "\"" : ", \"") + name_of(items[k]) + "\"";
+    }
+    table.fail(key, std::string("expected the name of a ") + what + " (" +
+                        (known.empty() ? std::string("none defined") : known) + ")");
+}
+
+} // namespace
+
+std::vector<FrictionPair> read_friction_pairs(const io::CaseTable& sph,
+                                              const std::vector<std::string>& body_names,
+                                              const std::vector<RigidWall>& walls) {
+    std::vector<FrictionPair> pairs;
+    for (const auto& table : sph.array_of_tables("friction")) {
+        FrictionPair pair;
+        pair.body_id = index_by_name(
+            table, "body", body_names, [](const std::string& s) { return s; }, "[[sph.body]]");
+        const int wall = index_by_name(
+            table, "wall", walls, [](const RigidWall& w) { return w.name; }, "[[sph.wall]]");
+        pair.wall_body_id = walls[static_cast<std::size_t>(wall)].body_id;
+        pair.mu_static = table.number("mu_static");
+        pair.mu_kinetic = table.number_or("mu_kinetic", pair.mu_static);
+        if (!(pair.mu_static >= 0.0)) {
+            table.fail("mu_static", "expected a friction coefficient >= 0");
+        }
+        if (!(pair.mu_kinetic >= 0.0 && pair.mu_kinetic <= pair.mu_static)) {
+            table.fail("mu_kinetic", "expected 0 <= mu_kinetic <= mu_static (Coulomb: kinetic "
+                                     "friction does not exceed static friction)");
+        }
+        for (const FrictionPair& other : pairs) {
+            if (other.body_id == pair.body_id && other.wall_body_id == pair.wall_body_id) {
+                table.fail("wall", "this body-wall pair already has friction coefficients");
+            }
+        }
+        pairs.push_back(pair);
+    }
+    return pairs;
 }
 
 } // namespace grainload::sph

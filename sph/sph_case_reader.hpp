@@ -4,6 +4,7 @@
 #include "sph/rigid_wall.hpp"
 #include "sph/sph_options.hpp"
 
+#include <string>
 #include <vector>
 
 namespace grainload::io {
@@ -24,5 +25,11 @@ SphOptions read_sph_options(const io::CaseTable& sph, int dimension, double spac
 std::vector<RigidWall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& particles,
                                         int dimension, double spacing, double support_radius,
                                         int first_body_id);
+
+/// The [[sph.friction]] pairs: `body` and `wall` by name, `mu_static` >= `mu_kinetic` >= 0.
+/// Body ids are indices into `body_names`; walls carry their own.
+std::vector<FrictionPair> read_friction_pairs(const io::CaseTable& sph,
+                                              const std::vector<std::string>& body_names,
+                                              const std::vector<RigidWall>& walls);
 
 } // namespace grainload::sph

@@ -61,10 +61,15 @@ std::unique_ptr<SphModel> SphModel::from_case(const io::CaseTable& root,
 }
 
 void SphModel::build_solver(const io::CaseTable& sph, const Vec3& gravity, int dimension) {
-    const SphOptions options = read_sph_options(sph, dimension, spacing_, gravity);
+    SphOptions options = read_sph_options(sph, dimension, spacing_, gravity);
     SmoothingKernel kernel(options.kernel, options.smoothing_length, dimension);
     auto walls = read_rigid_walls(sph, particles_, dimension, spacing_, kernel.support_radius(),
                                   static_cast<int>(body_names_.size()));
+    options.friction = read_friction_pairs(sph, body_names_, walls);
+    if (!options.friction.empty() && !(options.contact.stiffness > 0.0)) {
+        sph.fail("friction", "wall friction acts through the contact force: expected an "
+                             "[sph.contact] table with a stiffness");
+    }
     SphSolver::MaterialList list;
     for (int k = 0; k < materials_->size(); ++k) {
         list.push_back(&(*materials_)[k]);
@@ -296,6 +301,10 @@ void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) 
     if (solver_) {
         results.push_back({"kinetic_energy", solver_->kinetic_energy(), "J", std::nullopt, ""});
         results.push_back({"internal_energy", solver_->internal_energy(), "J", std::nullopt, ""});
+        if (!solver_->options().friction.empty()) {
+            results.push_back({"wall_friction_work", solver_->wall_contact().friction_work(), "J",
+                               std::nullopt, ""});
+        }
         for (const RigidWall& wall : solver_->walls()) {
             for (int a = 0; a < 3; ++a) {
                 const std::string axis(1, static_cast<char>('x' + a));
@@ -335,8 +344,12 @@ void SphModel::write_checkpoint(std::ostream& out) const {
         std::vector<Vec3> centres;
         for (const RigidWall& wall : solver_->walls()) {
             centres.push_back(wall.centre);
+            io::write_array(out, wall.normals);
         }
         io::write_array(out, centres);
+        const std::vector<double> scalars{solver_->last_time_step(),
+                                          solver_->wall_contact().friction_work()};
+        io::write_array(out, scalars);
     }
 }
 
@@ -352,11 +365,20 @@ void SphModel::read_checkpoint(std::istream& in) {
     io::read_array(in, p.plastic_strain);
     io::read_array(in, p.state);
     if (solver_) {
+        auto& walls = solver_->walls();
+        for (RigidWall& wall : walls) {
+            io::read_array(in, wall.normals);
+        }
         std::vector<Vec3> centres;
         io::read_array(in, centres);
-        auto& walls = solver_->walls();
         for (std::size_t k = 0; k < walls.size() && k < centres.size(); ++k) {
             walls[k].centre = centres[k];
+        }
+        std::vector<double> scalars;
+        io::read_array(in, scalars);
+        if (scalars.size() == 2) {
+            solver_->set_last_time_step(scalars[0]);
+            solver_->wall_contact().set_friction_work(scalars[1]);
         }
         solver_->restart();
     }

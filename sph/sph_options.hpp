@@ -3,6 +3,8 @@
 #include "io/types.hpp"
 #include "sph/kernels.hpp"
 
+#include <vector>
+
 namespace grainload::sph {
 
 /// Monaghan artificial viscosity (Monaghan & Gingold 1983; Monaghan 1992, eq. 4.1):
@@ -26,6 +28,16 @@ struct ArtificialStress {
 struct ContactPotential {
     double stiffness = 0.0; ///< K, Pa; 0 disables contact
     double exponent = 2.0;  ///< n
+    /// zeta: normal damping as a fraction of each pair's critical damping (contact_force.hpp).
+    double damping_ratio = 0.0;
+};
+
+/// Coulomb coefficients of one body-wall pair (thesis section 5.4): mu_kinetic <= mu_static.
+struct FrictionPair {
+    int body_id = -1;
+    int wall_body_id = -1;
+    double mu_static = 0.0;
+    double mu_kinetic = 0.0;
 };
 
 /// Everything the SPH integrator needs besides particles and materials.
@@ -39,6 +51,8 @@ struct SphOptions {
     ArtificialViscosity viscosity;
     ArtificialStress artificial_stress;
     ContactPotential contact;
+    /// Body-wall pairs with friction; pairs not listed are frictionless.
+    std::vector<FrictionPair> friction;
     /// Randles & Libersky (1996) / Bonet & Lok (1999) corrected gradient in the velocity
     /// gradient (thesis section 4.4.1): exact for linear velocity fields also at free surfaces.
     bool kernel_gradient_correction = false;

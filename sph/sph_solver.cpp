@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -68,9 +69,10 @@ void SphSolver::refresh_neighbours() {
     neighbours_.update(particles_.position, is_wall_);
 }
 
-void SphSolver::compute_forces() {
+void SphSolver::compute_forces(double dt) {
     prepare_force_inputs(particles_, options_.artificial_stress, force_inputs_);
     compute_accelerations(particles_, neighbours_, kernel_, options_, force_inputs_, heating_rate_);
+    wall_contact_.apply(particles_, neighbours_, kernel_, options_, walls_, dt, heating_rate_);
     for (RigidWall& wall : walls_) {
         accumulate_wall_load(particles_, wall);
     }
@@ -96,7 +98,7 @@ void SphSolver::step(double dt) {
     if (!forces_valid_) {
         refresh_neighbours();
         compute_kinematics();
-        compute_forces();
+        compute_forces(last_dt_ > 0.0 ? last_dt_ : dt);
     }
     ParticleSet& p = particles_;
     const Index n = p.size();
@@ -119,13 +121,14 @@ void SphSolver::step(double dt) {
         }
     }
     update_stresses(p, materials_, dt);
-    compute_forces();
+    compute_forces(dt);
     kick(0.5 * dt);
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
         p.internal_energy[i] += dt * heating_rate_[i];
     }
     time_ += dt;
+    last_dt_ = dt;
     ++steps_;
 }
 

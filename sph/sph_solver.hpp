@@ -7,6 +7,7 @@
 #include "sph/rates.hpp"
 #include "sph/rigid_wall.hpp"
 #include "sph/sph_options.hpp"
+#include "sph/wall_contact.hpp"
 
 #include <vector>
 
@@ -40,6 +41,17 @@ class SphSolver {
     /// The driver's clock, which wall motion histories follow (also after a restart).
     void set_time(double time) { time_ = time; }
     Index step_count() const { return steps_; }
+    /// Change gravity from the next step on (a tilted frame, a ramped load).
+    void set_gravity(const Vec3& gravity) {
+        options_.gravity = gravity;
+        forces_valid_ = false;
+    }
+    /// The dt of the last step: wall friction's stick force depends on it, so a restart that
+    /// sets it back reproduces the uninterrupted run.
+    double last_time_step() const { return last_dt_; }
+    void set_last_time_step(double dt) { last_dt_ = dt; }
+    WallContact& wall_contact() { return wall_contact_; }
+    const WallContact& wall_contact() const { return wall_contact_; }
     ParticleSet& particles() { return particles_; }
     const ParticleSet& particles() const { return particles_; }
     const SphOptions& options() const { return options_; }
@@ -62,7 +74,7 @@ class SphSolver {
   private:
     void refresh_neighbours();
     void compute_kinematics();
-    void compute_forces();
+    void compute_forces(double dt);
     void kick(double half_dt);
 
     ParticleSet particles_;
@@ -71,12 +83,14 @@ class SphSolver {
     SmoothingKernel kernel_;
     NeighbourList neighbours_;
     std::vector<RigidWall> walls_;
+    WallContact wall_contact_;
     std::vector<char> is_wall_;
     ForceInputs force_inputs_;
     std::vector<Mat3> velocity_gradient_;
     std::vector<double> heating_rate_;
     bool forces_valid_ = false;
     double time_ = 0.0;
+    double last_dt_ = 0.0;
     Index steps_ = 0;
 };
 

@@ -1,0 +1,23 @@
+#pragma once
+
+#include "io/surface_mesh.hpp"
+
+#include <string>
+
+namespace grainload::io {
+
+class CaseTable;
+
+/// The mesh in `path`, by its extension (either case): .stl (ASCII or binary) or .msh (Gmsh
+/// 4.1 ASCII). Coordinates as in the file. Throws std::invalid_argument naming the file (and
+/// the line for text formats) when it cannot be read.
+SurfaceMesh read_surface_mesh_file(const std::string& path);
+
+/// The mesh of a case-file table with the keys `file` (relative to the case file), `unit`
+/// (length unit of the file's coordinates, default "m"), `scale` (a factor, default 1) and
+/// `offset` (a length vector added after scaling, default 0). Every face (segment in 2D) is
+/// checked to have a non-zero area (length) and, in a 2D case, every vertex to lie in z = 0.
+/// Errors throw CaseError located at the key `file` (or the key at fault).
+SurfaceMesh read_surface_mesh(const CaseTable& table);
+
+} // namespace grainload::io

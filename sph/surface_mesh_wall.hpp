@@ -1,0 +1,34 @@
+#pragma once
+
+#include "io/surface_mesh.hpp"
+
+#include <vector>
+
+namespace grainload::io {
+class CaseTable;
+}
+
+namespace grainload::sph {
+
+/// Particles of a rigid wall on a surface mesh (3D: its triangles and quadrangles; plane
+/// strain: its line segments). Layer 0 lies on the surface: a triangle is subdivided
+/// barycentrically from its vertex opposite the longest edge into n = ceil(longer of the two
+/// other edges / spacing) parts per edge, a quadrangle bilinearly (ceil(longer of opposite
+/// edges / spacing) parts each way), a segment into ceil(length / spacing) parts; every point
+/// of a face is then within about spacing / sqrt(2) of a sample (exact for right triangles
+/// and rectangles). Layer k (k = 1 .. layers - 1) repeats the samples k * spacing against
+/// the face normal, which points into the material (right-hand rule of the vertex order, or
+/// the left side of a segment; `flip_normals` reverses it). Samples of neighbouring faces
+/// that coincide (shared edges and vertices) are merged: a sample closer than 0.3 spacing to
+/// an earlier one is dropped, layer 0 first, so the surface keeps its samples and the layers
+/// overlapping behind a convex edge are thinned.
+std::vector<Vec3> mesh_wall_points(const io::SurfaceMesh& mesh, double spacing, int layers,
+                                   int dimension, bool flip_normals);
+
+/// mesh_wall_points for a [[sph.wall]] of type = "mesh": the mesh of its `file` (see
+/// io::read_surface_mesh) and `flip_normals` (default false). Refused when the mesh has no
+/// faces (3D) or no line segments (plane strain).
+std::vector<Vec3> read_mesh_wall_points(const io::CaseTable& wall, int dimension, double spacing,
+                                        int layers);
+
+} // namespace grainload::sph

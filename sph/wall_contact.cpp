@@ -1,0 +1,219 @@
+#include "sph/wall_contact.hpp"
+
+#include "sph/contact_force.hpp"
+
+#include <Eigen/Geometry>
+#include <array>
+#include <cmath>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace grainload::sph {
+
+namespace {
+
+/// What one body particle sees of one wall, summed over that wall's particles in its support.
+struct WallTouch {
+    int wall_body = -1;
+    Vec3 repulsion = Vec3::Zero();       ///< contact potential of the wall on i, eq. (5.3.12)
+    Vec3 colour_gradient = Vec3::Zero(); ///< sum_j V_j grad_i W_ij, eq. (5.4.2)
+    Mat3 stiffness = Mat3::Zero();       ///< sum_j k_ij e_ij e_ij^T
+    int wall_index = -1;
+    Vec3 weighted_normal = Vec3::Zero(); ///< sum_j V_j W_ij n_j, walls that know their normals
+    double weight_sum = 0.0;             ///< sum_j V_j W_ij
+};
+
+/// A particle rarely touches more than a floor and a side wall; a corner of a box touches three.
+constexpr int kMaxWalls = 4;
+
+const FrictionPair* pair_of(const SphOptions& options, int body, int wall_body) {
+    for (const FrictionPair& pair : options.friction) {
+        if (pair.body_id == body && pair.wall_body_id == wall_body) {
+            return &pair;
+        }
+    }
+    return nullptr;
+}
+
+WallTouch& touch_of(std::array<WallTouch, kMaxWalls>& walls, int& count, int wall_body) {
+    for (int k = 0; k < count; ++k) {
+        if (walls[k].wall_body == wall_body) {
+            return walls[k];
+        }
+    }
+    if (count < kMaxWalls) {
+        walls[count] = WallTouch{};
+        walls[count].wall_body = wall_body;
+        return walls[count++];
+    }
+    // More walls than slots: the last slot pools the extra walls rather than drop their load.
+    return walls[kMaxWalls - 1];
+}
+
+int gather_walls(const ParticleSet& p, Index i, const NeighbourList& neighbours,
+                 const SmoothingKernel& kernel, const SphOptions& options,
+                 const std::vector<RigidWall>& rigid_walls,
+                 std::array<WallTouch, kMaxWalls>& walls) {
+    const double support_squared = kernel.support_radius() * kernel.support_radius();
+    const double w_reference = kernel.value(options.particle_spacing);
+    const double volume_i = p.mass[i] / p.density[i];
+    int count = 0;
+    for (const Index j : neighbours.neighbours(i)) {
+        if (p.wall_id[j] < 0) {
+            continue;
+        }
+        const Vec3 x_ij = p.position[i] - p.position[j];
+        const double r2 = x_ij.squaredNorm();
+        if (r2 >= support_squared || r2 == 0.0) {
+            continue;
+        }
+        const double r = std::sqrt(r2);
+        const Vec3 e = x_ij / r;
+        const double volume_j = p.mass[j] / p.density[j];
+        const double volumes = volume_i * volume_j;
+        const double w = kernel.value(r);
+        WallTouch& touch = touch_of(walls, count, p.body_id[j]);
+        touch.repulsion += contact_repulsion(kernel, options.contact, w_reference, volumes, r) * e;
+        touch.colour_gradient += volume_j * kernel.gradient(x_ij, r);
+        touch.stiffness.noalias() +=
+            contact_stiffness(kernel, options.contact, w_reference, volumes, r) * e * e.transpose();
+        touch.wall_index = p.wall_id[j];
+        const RigidWall& wall = rigid_walls[static_cast<std::size_t>(p.wall_id[j])];
+        if (!wall.normals.empty()) {
+            touch.weighted_normal +=
+                volume_j * w * wall.normals[static_cast<std::size_t>(j - wall.first)];
+        }
+        touch.weight_sum += volume_j * w;
+    }
+    return count;
+}
+
+/// Coulomb's law on the sliding velocity (see the class comment); returns the friction force
+/// and counts the contact as stuck or slipping.
+Vec3 coulomb_force(const FrictionPair& pair, double load, double mass, const Vec3& slip,
+                   const Vec3& a_tangential, double dt, bool& stuck) {
+    const Vec3 stick = -mass * (slip / dt + a_tangential);
+    const double stick_norm = stick.norm();
+    stuck = stick_norm <= pair.mu_static * load;
+    return stuck ? stick : Vec3((pair.mu_kinetic * load / stick_norm) * stick);
+}
+
+} // namespace
+
+void WallContact::apply(ParticleSet& p, const NeighbourList& neighbours,
+                        const SmoothingKernel& kernel, const SphOptions& options,
+                        const std::vector<RigidWall>& rigid_walls, double dt,
+                        std::vector<double>& heating_rate) {
+    sticking_ = 0;
+    slipping_ = 0;
+    const double zeta = options.contact.damping_ratio;
+    if ((options.friction.empty() && !(zeta > 0.0)) || !(dt > 0.0) ||
+        !(options.contact.stiffness > 0.0)) {
+        return;
+    }
+    int threads = 1;
+#ifdef _OPENMP
+    threads = omp_get_max_threads();
+#endif
+    per_thread_.resize(static_cast<std::size_t>(threads));
+    const Index n = p.size();
+    double friction_work = 0.0;
+    Index sticking = 0;
+    Index slipping = 0;
+#pragma omp parallel reduction(+ : friction_work, sticking, slipping)
+    {
+        int thread = 0;
+#ifdef _OPENMP
+        thread = omp_get_thread_num();
+#endif
+        auto& records = per_thread_[static_cast<std::size_t>(thread)];
+        records.clear();
+        std::array<WallTouch, kMaxWalls> walls;
+#pragma omp for schedule(dynamic, 256)
+        for (Index i = 0; i < n; ++i) {
+            if (p.wall_id[i] >= 0) {
+                continue;
+            }
+            const int count = gather_walls(p, i, neighbours, kernel, options, rigid_walls, walls);
+            double heat = 0.0;
+            for (int k = 0; k < count; ++k) {
+                const WallTouch& touch = walls[k];
+                const Vec3 direction = touch.weighted_normal.squaredNorm() > 0.0
+                                           ? touch.weighted_normal
+                                           : Vec3(-touch.colour_gradient);
+                const double direction_norm = direction.norm();
+                if (!(direction_norm > 0.0) || !(touch.weight_sum > 0.0)) {
+                    continue;
+                }
+                const Vec3 normal = direction / direction_norm;
+                // The wall's rigid-body velocity at x_i: what a particle stuck to it moves
+                // with. (Its particles' mean velocity would be the velocity below the surface,
+                // wrong by omega x (x_i - x_j) on a turning wall.)
+                const RigidWall& wall = rigid_walls[static_cast<std::size_t>(touch.wall_index)];
+                const Vec3 wall_velocity =
+                    wall.velocity + wall.angular_velocity.cross(p.position[i] - wall.centre);
+                const Vec3 relative = p.velocity[i] - wall_velocity;
+                const double normal_speed = relative.dot(normal);
+                double load = touch.repulsion.dot(normal);
+                Vec3 force = Vec3::Zero();
+                if (zeta > 0.0) {
+                    const double k_n = normal.dot(touch.stiffness * normal);
+                    const double damper =
+                        std::max(-2.0 * zeta * std::sqrt(k_n * p.mass[i]) * normal_speed, -load);
+                    force += damper * normal;
+                    load += damper;
+                    heat -= damper * normal_speed;
+                }
+                const FrictionPair* pair = pair_of(options, p.body_id[i], touch.wall_body);
+                if (pair != nullptr && load > 0.0) {
+                    const Vec3 slip = relative - normal_speed * normal;
+                    const Vec3 a = p.acceleration[i] + force / p.mass[i];
+                    bool stuck = false;
+                    const Vec3 friction = coulomb_force(*pair, load, p.mass[i], slip,
+                                                        a - a.dot(normal) * normal, dt, stuck);
+                    (stuck ? sticking : slipping) += 1;
+                    force += friction;
+                    friction_work -= friction.dot(slip) * dt;
+                    heat -= friction.dot(slip);
+                }
+                if (force.squaredNorm() > 0.0) {
+                    p.acceleration[i] += force / p.mass[i];
+                    records.push_back({i, touch.wall_body, force, touch.weight_sum});
+                }
+            }
+            heating_rate[static_cast<std::size_t>(i)] += heat / p.mass[i];
+        }
+    }
+    friction_work_ += friction_work;
+    sticking_ = sticking;
+    slipping_ = slipping;
+    distribute_reactions(p, neighbours, kernel);
+}
+
+void WallContact::distribute_reactions(ParticleSet& p, const NeighbourList& neighbours,
+                                       const SmoothingKernel& kernel) {
+    // Serial: only the contact layer has records, and wall particles are shared between
+    // the records of neighbouring body particles.
+    const double support_squared = kernel.support_radius() * kernel.support_radius();
+    for (const auto& records : per_thread_) {
+        for (const Record& record : records) {
+            const Index i = record.particle;
+            for (const Index j : neighbours.neighbours(i)) {
+                if (p.body_id[j] != record.wall_body) {
+                    continue;
+                }
+                const double r2 = (p.position[i] - p.position[j]).squaredNorm();
+                if (r2 >= support_squared) {
+                    continue;
+                }
+                const double share =
+                    p.mass[j] / p.density[j] * kernel.value(std::sqrt(r2)) / record.weight_sum;
+                p.acceleration[j] -= (share / p.mass[j]) * record.force;
+            }
+        }
+    }
+}
+
+} // namespace grainload::sph

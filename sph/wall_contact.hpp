@@ -1,0 +1,68 @@
+#pragma once
+
+#include "sph/kernels.hpp"
+#include "sph/neighbour_list.hpp"
+#include "sph/particle_set.hpp"
+#include "sph/rigid_wall.hpp"
+#include "sph/sph_options.hpp"
+
+#include <vector>
+
+namespace grainload::sph {
+
+/// What a body particle feels of a wall beyond the contact potential's repulsion: a normal
+/// dashpot and Coulomb friction (thesis section 5.4, made a stick/slip law on the sliding
+/// velocity as BRIEF.md requires).
+///
+/// For a body particle i touching wall w (wall particles j within the support):
+///   contact normal n: the kernel average of the wall's own surface normals n_j where the wall
+///   knows them (planes, boxes), sum_j V_j W_ij n_j normalised, exact on a plane; otherwise
+///   the wall's colour function (thesis eqs. 5.4.1-5.4.3), n = -grad c / |grad c|,
+///   grad c = sum_j V_j grad_i W_ij. On a lattice of wall particles the colour gradient tilts
+///   by a few degrees as a particle slides past them, and a normal dashpot on that tilted n
+///   would resist sliding: a spurious friction;
+///   repulsion load N_c = F_c . n, F_c the contact-potential force of w on i (eq. 5.3.12);
+///   relative velocity u = v_i - v_w(x_i), v_w the wall's rigid-body velocity field;
+///   normal dashpot D = -2 zeta sqrt(k_n m_i) (u . n) >= -N_c, k_n = sum_j k_ij (e_ij . n)^2
+///   (k_ij the pair stiffness |dF/dr|), so the load N = N_c + D is never a pull;
+///   sliding velocity u_t = u - (u . n) n and the tangential force that makes it vanish at the
+///   next half step of the leapfrog, F_stick = -m_i (u_t / dt + a_t), a_t the tangential
+///   part of all other accelerations;
+///   stick: F = F_stick when |F_stick| <= mu_s N;  slip: F = mu_k N F_stick / |F_stick|,
+///   opposite the slip for a sliding particle (u_t / dt dominates) and opposite the driving
+///   force at the onset of sliding (u_t = 0).
+/// The reaction -(D n + F) goes to the wall particles j in proportion to V_j W_ij, so wall
+/// forces and moments include damping and friction. The heat of both goes to particle i.
+class WallContact {
+  public:
+    /// Adds damping and friction to p.acceleration of body particles, their heat to
+    /// heating_rate, and the reaction to wall particles. Call after the contact-potential
+    /// force pass, with the step about to be taken.
+    void apply(ParticleSet& p, const NeighbourList& neighbours, const SmoothingKernel& kernel,
+               const SphOptions& options, const std::vector<RigidWall>& walls, double dt,
+               std::vector<double>& heating_rate);
+
+    /// Work done against wall friction so far (J, or J/m in plane strain), positive.
+    double friction_work() const { return friction_work_; }
+    void set_friction_work(double value) { friction_work_ = value; }
+    /// Body-wall particle contacts that stuck and slipped in the last call.
+    Index sticking() const { return sticking_; }
+    Index slipping() const { return slipping_; }
+
+  private:
+    struct Record {
+        Index particle;
+        int wall_body;
+        Vec3 force;
+        double weight_sum;
+    };
+    void distribute_reactions(ParticleSet& p, const NeighbourList& neighbours,
+                              const SmoothingKernel& kernel);
+
+    std::vector<std::vector<Record>> per_thread_;
+    double friction_work_ = 0.0;
+    Index sticking_ = 0;
+    Index slipping_ = 0;
+};
+
+} // namespace grainload::sph

@@ -1,0 +1,98 @@
+#include "support/cli_runner.hpp"
+#include "support/frame_reader.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <gtest/gtest.h>
+#include <numbers>
+#include <vector>
+
+namespace {
+
+using namespace grainload::testing;
+
+struct PlateFrame {
+    double angle = 0.0;    ///< plate rotation since frame 0, rad
+    double position = 0.0; ///< block centroid along the plate, in the plate's frame, m
+};
+
+/// The plate turns rigidly about the hinge at the origin: its angle is that of its particle
+/// farthest from the hinge.
+double plate_angle(const std::string& vtm) {
+    const auto plate = read_particle_block(vtm, 1);
+    double far[3] = {0.0, 0.0, 0.0};
+    for (vtkIdType k = 0; k < plate->GetNumberOfPoints(); ++k) {
+        double x[3];
+        plate->GetPoint(k, x);
+        if (std::hypot(x[0], x[1]) > std::hypot(far[0], far[1])) {
+            std::copy(x, x + 3, far);
+        }
+    }
+    return std::atan2(far[1], far[0]);
+}
+
+/// The block's position: its centroid projected on the plate.
+PlateFrame read_frame(const std::string& vtm, double angle_zero) {
+    const auto block = read_particle_block(vtm, 0);
+    PlateFrame frame;
+    frame.angle = plate_angle(vtm) - angle_zero;
+    double cx = 0.0;
+    double cy = 0.0;
+    for (vtkIdType k = 0; k < block->GetNumberOfPoints(); ++k) {
+        double x[3];
+        block->GetPoint(k, x);
+        cx += x[0] / static_cast<double>(block->GetNumberOfPoints());
+        cy += x[1] / static_cast<double>(block->GetNumberOfPoints());
+    }
+    frame.position = cx * std::cos(frame.angle) + cy * std::sin(frame.angle);
+    return frame;
+}
+
+std::string frame_file(const std::string& out, int k) {
+    char name[64];
+    std::snprintf(name, sizeof name, "/frames/tilting_plate_small_%06d.vtm", k);
+    return out + name;
+}
+
+// The CI version of tilting_plate: a sand block on a plate turned slowly (5 deg/s near the
+// onset) about its hinge, wall friction mu_s = mu_k = 0.5. Coulomb: the block holds until
+// tan(theta) = mu_s, 26.57 deg, then slides. Onset here = the first frame (every 0.1 deg) at
+// which the block slides down the plate faster than 1 mm/s; a rigid block sliding from rest
+// at the friction angle, with a = g (sin - mu cos) growing as the plate turns, reaches that
+// speed 0.3 deg after the onset. The issue asks for 1 deg.
+TEST(TiltingPlateSmall, BlockStartsSlidingAtTheFrictionAngle) {
+    const std::string out = ::testing::TempDir() + "grainload_tilting_plate_small";
+    std::filesystem::remove_all(out);
+    const auto run = run_cli("run '" + source_path("cases/tilting_plate/tilting_plate_small.toml") +
+                                 "' --out '" + out + "'",
+                             out + ".log");
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    const double angle_zero = plate_angle(frame_file(out, 0));
+    const double interval = 0.02;
+    const double onset = std::atan(0.5) * 180.0 / std::numbers::pi;
+    std::vector<PlateFrame> frames;
+    for (int k = 0; std::filesystem::exists(frame_file(out, k)); ++k) {
+        frames.push_back(read_frame(frame_file(out, k), angle_zero));
+    }
+    ASSERT_GT(frames.size(), 100u);
+    double measured = std::nan("");
+    double held_slip = 0.0; // largest slip while the plate is more than 1 deg below the onset
+    for (std::size_t k = 1; k < frames.size(); ++k) {
+        const double degrees = frames[k].angle * 180.0 / std::numbers::pi;
+        const double speed = (frames[k - 1].position - frames[k].position) / interval;
+        if (degrees < onset - 1.0) {
+            held_slip = std::max(held_slip, std::abs(frames[k].position - frames[0].position));
+        }
+        if (std::isnan(measured) && speed > 1e-3) {
+            measured = degrees;
+        }
+    }
+    std::cout << "onset of sliding at " << measured << " deg, atan(mu_s) = " << onset
+              << " deg; slip before " << onset - 1.0 << " deg: " << held_slip * 1e3 << " mm\n";
+    EXPECT_NEAR(measured, onset, 1.0);
+    // Held, the block creeps only by the contact layer's elastic shear: under 0.01 mm.
+    EXPECT_LT(held_slip, 1e-5);
+}
+
+} // namespace
