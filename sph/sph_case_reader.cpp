@@ -63,17 +63,26 @@ SphOptions read_sph_options(const io::CaseTable& sph, int dimension, double spac
 
 namespace {
 
-std::vector<Vec3> wall_points(const io::CaseTable& wall, int dimension, double spacing,
-                              int layers) {
+/// A wall's particles and, for planes and boxes, which know their geometry exactly, the
+/// surface normal at each; mesh walls leave the normals empty and their contact normal comes
+/// from the colour function.
+struct WallSurface {
+    std::vector<Vec3> points;
+    std::vector<Vec3> normals;
+};
+
+WallSurface wall_surface(const io::CaseTable& wall, int dimension, double spacing, int layers) {
     const std::string type = wall.choice("type", {"plane", "box", "mesh"});
     if (type == "mesh") {
-        return read_mesh_wall_points(wall, dimension, spacing, layers);
+        return {read_mesh_wall_points(wall, dimension, spacing, layers), {}};
     }
     if (type == "box") {
         const Vec3 lower = wall.vector("min", dim::kLength);
         const Vec3 upper = wall.vector("max", dim::kLength);
-        return box_wall_points(lower, upper, spacing, layers, dimension,
-                               wall.boolean_or("open_top", true));
+        auto points = box_wall_points(lower, upper, spacing, layers, dimension,
+                                      wall.boolean_or("open_top", true));
+        auto normals = box_wall_normals(points, lower, upper, dimension);
+        return {std::move(points), std::move(normals)};
     }
     const Vec3 origin = wall.vector("origin", dim::kLength);
     const Vec3 u = wall.vector("edge_u", dim::kLength);
@@ -82,23 +91,9 @@ std::vector<Vec3> wall_points(const io::CaseTable& wall, int dimension, double s
     if (!(normal.norm() > 0.0)) {
         wall.fail("normal", "expected a non-zero normal pointing into the material");
     }
-    return plane_wall_points(origin, u, v, normal, spacing, layers, dimension);
-}
-
-/// Surface normals of plane and box walls, which know their geometry exactly; other walls
-/// leave them empty and their contact normal comes from the colour function.
-std::vector<Vec3> wall_normals(const io::CaseTable& wall, const std::vector<Vec3>& points,
-                               int dimension) {
-    const std::string type = wall.string("type");
-    if (type == "plane") {
-        const Vec3 normal = wall.vector("normal", dim::kNone).normalized();
-        return std::vector<Vec3>(points.size(), normal);
-    }
-    if (type == "box") {
-        return box_wall_normals(points, wall.vector("min", dim::kLength),
-                                wall.vector("max", dim::kLength), dimension);
-    }
-    return {};
+    auto points = plane_wall_points(origin, u, v, normal, spacing, layers, dimension);
+    std::vector<Vec3> normals(points.size(), normal.normalized());
+    return {std::move(points), std::move(normals)};
 }
 
 /// `<key>_history` of a wall: [[time, vector], ...] with non-decreasing times, an alternative
@@ -139,12 +134,13 @@ std::vector<RigidWall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& p
         if (layers < 1 || layers > 20) {
             table.fail("layers", "expected 1 to 20 layers of wall particles");
         }
-        const auto points = wall_points(table, dimension, wall_spacing, static_cast<int>(layers));
+        WallSurface surface =
+            wall_surface(table, dimension, wall_spacing, static_cast<int>(layers));
         const int index = static_cast<int>(walls.size());
         RigidWall wall =
-            add_rigid_wall(particles, table.string("name"), index, first_body_id + index, points,
-                           wall_spacing, 1.0, dimension);
-        wall.normals = wall_normals(table, points, dimension);
+            add_rigid_wall(particles, table.string("name"), index, first_body_id + index,
+                           surface.points, wall_spacing, 1.0, dimension);
+        wall.normals = std::move(surface.normals);
         wall.centre = table.vector_or("centre", dim::kLength, wall.centre);
         wall.velocity = table.vector_or("velocity", dim::kVelocity, Vec3::Zero());
         wall.angular_velocity =

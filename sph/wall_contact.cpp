@@ -16,11 +16,10 @@ namespace {
 
 /// What one body particle sees of one wall, summed over that wall's particles in its support.
 struct WallTouch {
-    int wall_body = -1;
+    int wall_index = -1; ///< index of the wall in the solver's wall list (ParticleSet::wall_id)
     Vec3 repulsion = Vec3::Zero();       ///< contact potential of the wall on i, eq. (5.3.12)
     Vec3 colour_gradient = Vec3::Zero(); ///< sum_j V_j grad_i W_ij, eq. (5.4.2)
     Mat3 stiffness = Mat3::Zero();       ///< sum_j k_ij e_ij e_ij^T
-    int wall_index = -1;
     Vec3 weighted_normal = Vec3::Zero(); ///< sum_j V_j W_ij n_j, walls that know their normals
     double weight_sum = 0.0;             ///< sum_j V_j W_ij
 };
@@ -37,15 +36,15 @@ const FrictionPair* pair_of(const SphOptions& options, int body, int wall_body) 
     return nullptr;
 }
 
-WallTouch& touch_of(std::array<WallTouch, kMaxWalls>& walls, int& count, int wall_body) {
+WallTouch& touch_of(std::array<WallTouch, kMaxWalls>& walls, int& count, int wall_index) {
     for (int k = 0; k < count; ++k) {
-        if (walls[k].wall_body == wall_body) {
+        if (walls[k].wall_index == wall_index) {
             return walls[k];
         }
     }
     if (count < kMaxWalls) {
         walls[count] = WallTouch{};
-        walls[count].wall_body = wall_body;
+        walls[count].wall_index = wall_index;
         return walls[count++];
     }
     // More walls than slots: the last slot pools the extra walls rather than drop their load.
@@ -74,12 +73,11 @@ int gather_walls(const ParticleSet& p, Index i, const NeighbourList& neighbours,
         const double volume_j = p.mass[j] / p.density[j];
         const double volumes = volume_i * volume_j;
         const double w = kernel.value(r);
-        WallTouch& touch = touch_of(walls, count, p.body_id[j]);
+        WallTouch& touch = touch_of(walls, count, p.wall_id[j]);
         touch.repulsion += contact_repulsion(kernel, options.contact, w_reference, volumes, r) * e;
         touch.colour_gradient += volume_j * kernel.gradient(x_ij, r);
         touch.stiffness.noalias() +=
             contact_stiffness(kernel, options.contact, w_reference, volumes, r) * e * e.transpose();
-        touch.wall_index = p.wall_id[j];
         const RigidWall& wall = rigid_walls[static_cast<std::size_t>(p.wall_id[j])];
         if (!wall.normals.empty()) {
             touch.weighted_normal +=
@@ -166,7 +164,7 @@ void WallContact::apply(ParticleSet& p, const NeighbourList& neighbours,
                     load += damper;
                     heat -= damper * normal_speed;
                 }
-                const FrictionPair* pair = pair_of(options, p.body_id[i], touch.wall_body);
+                const FrictionPair* pair = pair_of(options, p.body_id[i], wall.body_id);
                 if (pair != nullptr && load > 0.0) {
                     const Vec3 slip = relative - normal_speed * normal;
                     const Vec3 a = p.acceleration[i] + force / p.mass[i];
@@ -180,7 +178,7 @@ void WallContact::apply(ParticleSet& p, const NeighbourList& neighbours,
                 }
                 if (force.squaredNorm() > 0.0) {
                     p.acceleration[i] += force / p.mass[i];
-                    records.push_back({i, touch.wall_body, force, touch.weight_sum});
+                    records.push_back({i, touch.wall_index, force, touch.weight_sum});
                 }
             }
             heating_rate[static_cast<std::size_t>(i)] += heat / p.mass[i];
@@ -201,7 +199,7 @@ void WallContact::distribute_reactions(ParticleSet& p, const NeighbourList& neig
         for (const Record& record : records) {
             const Index i = record.particle;
             for (const Index j : neighbours.neighbours(i)) {
-                if (p.body_id[j] != record.wall_body) {
+                if (p.wall_id[j] != record.wall_index) {
                     continue;
                 }
                 const double r2 = (p.position[i] - p.position[j]).squaredNorm();

@@ -52,7 +52,7 @@ class WallContact {
   private:
     struct Record {
         Index particle;
-        int wall_body;
+        int wall_index;
         Vec3 force;
         double weight_sum;
     };
