@@ -6,12 +6,11 @@
 
 namespace grainload::io {
 
-/// The surface of a Gmsh ASCII mesh, format 4.1 (gmsh.info, "MSH file format", sections
-/// $MeshFormat, $Nodes, $Elements; others are skipped): 2-node lines (type 1), 3-node
-/// triangles (type 2) and 4-node quadrangles (type 3), in their node order; points (type 15)
-/// are skipped and any other type is refused. Unlike fem/gmsh_reader (shell elements with
-/// physical groups) it keeps no groups: a rigid wall or a body takes the whole file.
-/// Throws std::invalid_argument naming `name` and the line.
+/// The surface of a Gmsh ASCII mesh, format 4.1 (parsed by read_gmsh_file_content, see
+/// gmsh_file.hpp): 2-node lines, 3-node triangles and 4-node quadrangles in their node order;
+/// points are dropped. It keeps no physical groups (fem/gmsh_reader turns those into sets): a
+/// rigid wall or a body takes the whole file. Throws std::invalid_argument naming `name` and
+/// the line.
 SurfaceMesh read_gmsh_surface(const std::string& text, const std::string& name);
 
 } // namespace grainload::io
