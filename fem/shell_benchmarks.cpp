@@ -24,9 +24,19 @@ Index corner(const ShellMesh& mesh, const std::string& a, const std::string& b) 
     return -1;
 }
 
-std::unique_ptr<materials::Material> elastic(double young, double poisson) {
-    return std::make_unique<materials::LinearElastic>(
+/// A benchmark from the literature: a linear analysis of `mesh` in an elastic material (the
+/// density does not enter a static solve), 2 points through the thickness.
+ShellBenchmark linear_benchmark(std::string name, std::string source, double reference,
+                                double young, double poisson, ShellMesh mesh) {
+    ShellBenchmark b;
+    b.name = std::move(name);
+    b.source = std::move(source);
+    b.reference = reference;
+    b.material = std::make_unique<materials::LinearElastic>(
         materials::ElasticConstants::from_young(1.0, young, poisson));
+    b.analysis =
+        std::make_unique<ShellAnalysis>(std::move(mesh), *b.material, Kinematics::linear, 2);
+    return b;
 }
 
 /// Symmetry about a plane with unit normal along `axis`: the normal translation and the two
@@ -40,14 +50,9 @@ void symmetry(ShellAnalysis& analysis, const std::vector<Index>& nodes, int axis
 } // namespace
 
 ShellBenchmark scordelis_lo_roof(int n) {
-    ShellBenchmark b;
-    b.name = "Scordelis-Lo roof";
-    b.source = "MacNeal & Harder 1985, Finite Elem. Anal. Des. 1:3-20";
-    b.reference = 0.3024;
-    b.material = elastic(4.32e8, 0.0);
-    ShellMesh mesh = make_cylinder(25.0, 25.0, 0.0, 40.0 * kDegree, n, n, 0.25);
-    b.analysis =
-        std::make_unique<ShellAnalysis>(std::move(mesh), *b.material, Kinematics::linear, 2);
+    ShellBenchmark b = linear_benchmark(
+        "Scordelis-Lo roof", "MacNeal & Harder 1985, Finite Elem. Anal. Des. 1:3-20", 0.3024,
+        4.32e8, 0.0, make_cylinder(25.0, 25.0, 0.0, 40.0 * kDegree, n, n, 0.25));
     ShellAnalysis& a = *b.analysis;
     const ShellMesh& m = a.mesh();
     a.prescribe(m.node_set("y0"), {ux, uz}); // rigid diaphragm: no motion in its own plane
@@ -60,14 +65,9 @@ ShellBenchmark scordelis_lo_roof(int n) {
 }
 
 ShellBenchmark pinched_cylinder(int n) {
-    ShellBenchmark b;
-    b.name = "pinched cylinder";
-    b.source = "Belytschko et al. 1985, Comput. Methods Appl. Mech. Eng. 51:221-258";
-    b.reference = 1.8248e-5;
-    b.material = elastic(3e6, 0.3);
-    ShellMesh mesh = make_cylinder(300.0, 300.0, 0.0, 90.0 * kDegree, n, n, 3.0);
-    b.analysis =
-        std::make_unique<ShellAnalysis>(std::move(mesh), *b.material, Kinematics::linear, 2);
+    ShellBenchmark b = linear_benchmark(
+        "pinched cylinder", "Belytschko et al. 1985, Comput. Methods Appl. Mech. Eng. 51:221-258",
+        1.8248e-5, 3e6, 0.3, make_cylinder(300.0, 300.0, 0.0, 90.0 * kDegree, n, n, 3.0));
     ShellAnalysis& a = *b.analysis;
     const ShellMesh& m = a.mesh();
     a.prescribe(m.node_set("y1"), {ux, uz}); // rigid diaphragm at the end
@@ -81,15 +81,10 @@ ShellBenchmark pinched_cylinder(int n) {
 }
 
 ShellBenchmark pinched_hemisphere(int n) {
-    ShellBenchmark b;
-    b.name = "pinched hemisphere";
-    b.source = "MacNeal & Harder 1985, Finite Elem. Anal. Des. 1:3-20";
-    b.reference = 0.094;
-    b.material = elastic(6.825e7, 0.3);
-    ShellMesh mesh =
-        make_sphere_zone(10.0, 18.0 * kDegree, 90.0 * kDegree, 90.0 * kDegree, n, n, 0.04);
-    b.analysis =
-        std::make_unique<ShellAnalysis>(std::move(mesh), *b.material, Kinematics::linear, 2);
+    ShellBenchmark b = linear_benchmark(
+        "pinched hemisphere", "MacNeal & Harder 1985, Finite Elem. Anal. Des. 1:3-20", 0.094,
+        6.825e7, 0.3,
+        make_sphere_zone(10.0, 18.0 * kDegree, 90.0 * kDegree, 90.0 * kDegree, n, n, 0.04));
     ShellAnalysis& a = *b.analysis;
     const ShellMesh& m = a.mesh();
     symmetry(a, m.node_set("azimuth0"), 1); // plane y = 0
