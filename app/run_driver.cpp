@@ -145,11 +145,14 @@ int run_case(const CommandLine& line) {
     }
     // Output instants are k * interval, computed afresh rather than accumulated, so that a
     // restarted run steps through exactly the same instants (and time steps) as a whole run.
-    auto next_output_time = [&] {
-        return std::min(scene->end_time,
-                        scene->output_interval * static_cast<double>(clock.frame_times.size()));
-    };
+    // An end time within round-off of an instant is that instant: "0.15 s" is 2e-17 s short of
+    // 3 * 0.05, and a run stopped there and restarted would otherwise take different steps.
     const double end_tolerance = 1e-12 * scene->end_time;
+    auto next_output_time = [&] {
+        const double instant =
+            scene->output_interval * static_cast<double>(clock.frame_times.size());
+        return instant < scene->end_time + end_tolerance ? instant : scene->end_time;
+    };
     double dt = 0.0;
     while (clock.t < scene->end_time - end_tolerance) {
         const double next_output = next_output_time();

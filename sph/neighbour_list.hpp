@@ -32,6 +32,9 @@ class NeighbourList {
     Index rebuild_count() const { return rebuilds_; }
     double search_radius() const { return support_ + skin_; }
     double skin() const { return skin_; }
+    /// Positions at the last build: a checkpoint stores them so that a restart rebuilds the same
+    /// list (same pairs, same order) that the uninterrupted run is still using.
+    std::span<const Vec3> reference() const { return reference_; }
     /// Heap bytes held by the list and its cell grid, for the memory figures of the benchmark.
     std::size_t bytes() const;
 

@@ -20,6 +20,7 @@ void ParticleSet::add(const Vec3& x, const Vec3& v, double particle_mass, double
     body_id.push_back(body);
     material_id.push_back(material);
     wall_id.push_back(-1);
+    clamped.push_back(0);
     state_offset.push_back(static_cast<Index>(state.size()));
     state.resize(state.size() + static_cast<std::size_t>(state_size), 0.0);
 }
@@ -48,6 +49,7 @@ void ParticleSet::reserve(Index n) {
     body_id.reserve(count);
     material_id.reserve(count);
     wall_id.reserve(count);
+    clamped.reserve(count);
     state_offset.reserve(count);
 }
 

@@ -29,6 +29,9 @@ struct ParticleSet {
     /// Index of the rigid wall a wall particle belongs to; -1 for material particles. Wall
     /// particles move kinematically and interact with bodies only through the contact potential.
     std::vector<int> wall_id;
+    /// 1: a clamped material particle ([[sph.body.clamp]]), whose velocity the integrator holds
+    /// at zero while it still takes part in every SPH sum (the built-in root of a cantilever).
+    std::vector<char> clamped;
     std::vector<Index> state_offset;
     std::vector<double> state;
 

@@ -178,6 +178,36 @@ int index_by_name(const io::CaseTable& table, const std::string& key, const Name
 
 } // namespace
 
+void read_clamps(const io::CaseTable& body, ParticleSet& particles, Index first, int dimension) {
+    for (const auto& table : body.array_of_tables("clamp")) {
+        const Vec3 lower = table.vector("min", dim::kLength);
+        const Vec3 upper = table.vector("max", dim::kLength);
+        for (int a = 0; a < dimension; ++a) {
+            if (!(upper[a] > lower[a])) {
+                table.fail("max", "expected max > min in every direction");
+            }
+        }
+        // Lattice points on a face of the box count as inside: a tolerance of a millionth of the
+        // box keeps round-off in the generated positions from deciding.
+        const Vec3 slack = 1e-6 * (upper - lower);
+        Index held = 0;
+        for (Index i = first; i < particles.size(); ++i) {
+            const Vec3& x = particles.position[i];
+            bool inside = true;
+            for (int a = 0; a < dimension; ++a) {
+                inside = inside && x[a] >= lower[a] - slack[a] && x[a] <= upper[a] + slack[a];
+            }
+            if (inside) {
+                particles.clamped[i] = 1;
+                ++held;
+            }
+        }
+        if (held == 0) {
+            table.fail("", "expected a box holding particles of this body (it holds none)");
+        }
+    }
+}
+
 std::vector<FrictionPair> read_friction_pairs(const io::CaseTable& sph,
                                               const std::vector<std::string>& body_names,
                                               const std::vector<RigidWall>& walls) {

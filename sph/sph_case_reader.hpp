@@ -26,6 +26,11 @@ std::vector<RigidWall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& p
                                         int dimension, double spacing, double support_radius,
                                         int first_body_id);
 
+/// The [[sph.body.clamp]] boxes (`min`, `max`) of one body, whose particles are
+/// particles[first, size()): every particle inside one of them (boundary included) is flagged
+/// clamped. A box that holds none of the body's particles is refused.
+void read_clamps(const io::CaseTable& body, ParticleSet& particles, Index first, int dimension);
+
 /// The [[sph.friction]] pairs: `body` and `wall` by name, `mu_static` >= `mu_kinetic` >= 0.
 /// Body ids are indices into `body_names`; walls carry their own.
 std::vector<FrictionPair> read_friction_pairs(const io::CaseTable& sph,

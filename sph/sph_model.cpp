@@ -52,6 +52,10 @@ std::unique_ptr<SphModel> SphModel::from_case(const io::CaseTable& root,
         model->build_solver(sph, model->gravity_, root.spatial_dimension());
         model->read_probes(sph);
     }
+    if (const auto heap = sph.optional_table("heap")) {
+        model->heap_.emplace(*heap, model->body_names_, model->particles(), model->spacing_,
+                             model->gravity_, root.spatial_dimension());
+    }
     model->initial_position_ = model->particles().position;
     model->initial_velocity_ = model->particles().velocity;
     if (!model->interactions_) {
@@ -170,6 +174,7 @@ void SphModel::add_body(const io::CaseTable& body, int dimension) {
     const auto& law = (*materials_)[material];
     const double particle_mass = law.density() * std::pow(spacing, dimension);
     const int body_index = static_cast<int>(body_names_.size());
+    const Index first = particles_.size();
     for (const Vec3& x : points) {
         particles_.add(x, velocity, particle_mass, law.density(), body_index, material,
                        law.state_size());
@@ -180,6 +185,10 @@ void SphModel::add_body(const io::CaseTable& body, int dimension) {
                                   static_cast<std::size_t>(law.state_size()));
         law.initialise_state(state);
     }
+    if (body.has("clamp") && !interactions_) {
+        body.fail("clamp", "clamped particles need the SPH solver: expected interactions = true");
+    }
+    read_clamps(body, particles_, first, dimension);
     body_names_.push_back(std::move(name));
 }
 
@@ -202,6 +211,9 @@ void SphModel::advance(double t, double dt) {
     if (solver_) {
         solver_->set_time(t);
         solver_->step(dt);
+        if (heap_) {
+            heap_->record(t + dt, solver_->particles());
+        }
         return;
     }
     // Velocity Verlet (kick-drift-kick): second order, and exact for a constant acceleration,
@@ -298,6 +310,9 @@ void SphModel::append_wall_blocks(io::Frame& frame) const {
 }
 
 void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) const {
+    if (heap_) {
+        heap_->append_results(particles(), results);
+    }
     if (solver_) {
         results.push_back({"kinetic_energy", solver_->kinetic_energy(), "J", std::nullopt, ""});
         results.push_back({"internal_energy", solver_->internal_energy(), "J", std::nullopt, ""});
@@ -340,6 +355,7 @@ void SphModel::write_checkpoint(std::ostream& out) const {
     io::write_array(out, p.stress);
     io::write_array(out, p.plastic_strain);
     io::write_array(out, p.state);
+    io::write_array(out, p.clamped);
     if (solver_) {
         std::vector<Vec3> centres;
         for (const RigidWall& wall : solver_->walls()) {
@@ -348,8 +364,14 @@ void SphModel::write_checkpoint(std::ostream& out) const {
         }
         io::write_array(out, centres);
         const std::vector<double> scalars{solver_->last_time_step(),
-                                          solver_->wall_contact().friction_work()};
+                                          solver_->wall_contact().friction_work(),
+                                          solver_->forces_valid() ? 1.0 : 0.0};
         io::write_array(out, scalars);
+        const auto reference = solver_->neighbours().reference();
+        io::write_array(out, std::vector<Vec3>(reference.begin(), reference.end()));
+    }
+    if (heap_) {
+        io::write_array(out, heap_->state());
     }
 }
 
@@ -357,6 +379,10 @@ void SphModel::read_checkpoint(std::istream& in) {
     auto& p = solver_ ? solver_->particles() : particles_;
     const auto n = p.position.size();
     io::read_array(in, p.position);
+    if (p.position.size() != n) {
+        throw std::runtime_error("checkpoint holds " + std::to_string(p.position.size()) +
+                                 " particles, the case makes " + std::to_string(n));
+    }
     io::read_array(in, p.velocity);
     io::read_array(in, p.acceleration);
     io::read_array(in, p.density);
@@ -364,6 +390,7 @@ void SphModel::read_checkpoint(std::istream& in) {
     io::read_array(in, p.stress);
     io::read_array(in, p.plastic_strain);
     io::read_array(in, p.state);
+    io::read_array(in, p.clamped);
     if (solver_) {
         auto& walls = solver_->walls();
         for (RigidWall& wall : walls) {
@@ -376,15 +403,20 @@ void SphModel::read_checkpoint(std::istream& in) {
         }
         std::vector<double> scalars;
         io::read_array(in, scalars);
-        if (scalars.size() == 2) {
-            solver_->set_last_time_step(scalars[0]);
-            solver_->wall_contact().set_friction_work(scalars[1]);
+        if (scalars.size() != 3) {
+            throw std::runtime_error("checkpoint: expected 3 solver scalars, found " +
+                                     std::to_string(scalars.size()));
         }
-        solver_->restart();
+        solver_->set_last_time_step(scalars[0]);
+        solver_->wall_contact().set_friction_work(scalars[1]);
+        std::vector<Vec3> reference;
+        io::read_array(in, reference);
+        solver_->restart(reference, scalars[2] != 0.0);
     }
-    if (p.position.size() != n) {
-        throw std::runtime_error("checkpoint holds " + std::to_string(p.position.size()) +
-                                 " particles, the case makes " + std::to_string(n));
+    if (heap_) {
+        std::vector<double> state;
+        io::read_array(in, state);
+        heap_->set_state(state);
     }
 }
 

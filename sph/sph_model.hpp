@@ -2,6 +2,7 @@
 
 #include "io/stepper.hpp"
 #include "materials/material_library.hpp"
+#include "sph/heap_monitor.hpp"
 #include "sph/particle_set.hpp"
 #include "sph/rigid_wall.hpp"
 #include "sph/sph_solver.hpp"
@@ -68,6 +69,8 @@ class SphModel final : public io::Stepper {
     mutable std::unique_ptr<WallForceWriter> wall_writer_;
     mutable std::unique_ptr<std::ofstream> probe_writer_;
     mutable double last_row_time_ = -1.0;
+    /// [sph.heap]: the measured body's kinetic energy per step and its heap at the end.
+    std::optional<HeapMonitor> heap_;
 };
 
 } // namespace grainload::sph

@@ -34,6 +34,7 @@ SphSolver::SphSolver(ParticleSet particles, MaterialList materials, SphOptions o
         force_inputs_.sound_speed[i] =
             is_wall_[i] ? 0.0 : materials_[static_cast<std::size_t>(m)]->elastic().p_wave_speed();
     }
+    hold_clamped();
     refresh_neighbours();
 }
 
@@ -60,9 +61,11 @@ void SphSolver::check_time_step(double dt) const {
     }
 }
 
-void SphSolver::restart() {
-    neighbours_.update(particles_.position, is_wall_, true);
-    forces_valid_ = false;
+void SphSolver::restart(std::span<const Vec3> neighbour_reference, bool forces_valid) {
+    neighbours_.update(neighbour_reference.empty() ? std::span<const Vec3>(particles_.position)
+                                                   : neighbour_reference,
+                       is_wall_, true);
+    forces_valid_ = forces_valid;
 }
 
 void SphSolver::refresh_neighbours() {
@@ -76,7 +79,24 @@ void SphSolver::compute_forces(double dt) {
     for (RigidWall& wall : walls_) {
         accumulate_wall_load(particles_, wall);
     }
+    hold_clamped();
     forces_valid_ = true;
+}
+
+void SphSolver::hold_clamped() {
+    // A clamped particle is a Dirichlet condition v = 0 (the built-in root of the cantilever
+    // plate of Gray, Monaghan & Swift 2001): zero acceleration after every force evaluation
+    // keeps both kicks and the drift from moving it, while its stress and density still evolve
+    // from the velocity gradient of its neighbours and it still pushes on them.
+    ParticleSet& p = particles_;
+    const Index n = p.size();
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+        if (p.clamped[i]) {
+            p.velocity[i].setZero();
+            p.acceleration[i].setZero();
+        }
+    }
 }
 
 void SphSolver::kick(double half_dt) {
@@ -197,7 +217,7 @@ std::size_t SphSolver::bytes() const {
         held(p.density) + held(p.density_rate) + held(p.internal_energy) + held(p.energy_rate) +
         held(p.stress) + held(p.strain_rate) + held(p.spin) + held(p.plastic_strain) +
         held(p.plastic_region) + held(p.body_id) + held(p.material_id) + held(p.wall_id) +
-        held(p.state_offset) + held(p.state);
+        held(p.clamped) + held(p.state_offset) + held(p.state);
     const std::size_t work =
         held(is_wall_) + held(force_inputs_.stress_over_rho2) +
         held(force_inputs_.artificial_stress) + held(force_inputs_.sound_speed) +

@@ -19,6 +19,7 @@ namespace grainload::sph {
 /// symplectic for conservative forces:
 ///   v(n+1/2) = v(n) + dt/2 a(n);  x(n+1) = x(n) + dt v(n+1/2);
 ///   rates from v(n+1/2) at x(n+1) -> rho, sigma at n+1;  a(n+1);  v(n+1) = v(n+1/2) + dt/2 a(n+1).
+/// Clamped particles have v = a = 0 from construction on, so neither kick nor drift moves them.
 class SphSolver {
   public:
     /// Non-owning: the materials (a case's MaterialLibrary) outlive the solver.
@@ -35,8 +36,13 @@ class SphSolver {
     /// Advance by dt (not checked against the CFL limit: call check_time_step for user input).
     void step(double dt);
 
-    /// After particle fields were replaced (a checkpoint): rebuild neighbours and forces.
-    void restart();
+    /// After particle fields were replaced (a checkpoint): rebuild the neighbour list from the
+    /// positions it was last built from (`neighbour_reference`; empty: the current positions)
+    /// and, unless `forces_valid`, the forces. A checkpoint written after a step holds that
+    /// step's accelerations, which were computed from the mid-step velocity; recomputing them
+    /// from the end-of-step velocity would change the continuation at round-off level.
+    void restart(std::span<const Vec3> neighbour_reference, bool forces_valid);
+    bool forces_valid() const { return forces_valid_; }
     double time() const { return time_; }
     /// The driver's clock, which wall motion histories follow (also after a restart).
     void set_time(double time) { time_ = time; }
@@ -76,6 +82,8 @@ class SphSolver {
     void compute_kinematics();
     void compute_forces(double dt);
     void kick(double half_dt);
+    /// Zero velocity and acceleration of clamped particles (ParticleSet::clamped).
+    void hold_clamped();
 
     ParticleSet particles_;
     MaterialList materials_;

@@ -11,7 +11,7 @@ and prints:
     (also written as CSV, default OUT_DIR/profile.csv);
   * the run-out L_inf, the final height H_inf, the normalised run-out (L_inf - L0)/L0 and
     H_inf/H0;
-  * the failure-line angle;
+  * the failure-line angle and the heap's flank angle (heap_angle);
   * with --history: kinetic energy, largest speed and run-out of every frame (is the heap at rest?).
 
 Coordinates. x and y are measured from the column's initial back face and base, i.e. from
@@ -26,12 +26,14 @@ largest connected set under this relation (a chain of touching particles along t
 part of the bulk). L_inf is the largest x + dp/2 over the bulk; particles outside the bulk are
 counted and their furthest x reported separately, but not used.
 
-Failure line. A particle "moved" when its final displacement exceeds one spacing. In the
+Failure line. A particle "moved" when its final displacement exceeds MOVED_FRACTION (10 %) of H0. In the
 initial configuration, for every lattice row (constant initial y) that holds both moved and
 unmoved particles, the boundary point is the initial x of the furthest unmoved particle that is
 connected to the back wall through unmoved particles of that row, plus dp/2. A least-squares
 line y = m x + b through those boundary points gives the failure angle atan(|m|) from the
-horizontal. Rows without unmoved particles (above the static wedge) are skipped.
+horizontal. Rows without unmoved particles (above the static wedge) are skipped. (Until
+2026-11-22 the threshold was one spacing, which marked the whole column as moved once the floor
+had friction: the column settles ~dp/2 onto the contact layer and sinks while it spreads.)
 """
 
 import argparse
@@ -46,6 +48,11 @@ import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 
 LINK = 1.5  # contact distance in spacings for the bulk/isolated-particle criterion
+THICK_FRACTION = 0.05  # deposit thickness, as a fraction of H0, that defines the front L_5%
+# A particle "moved" (failure line) when its displacement exceeds this fraction of H0. A fixed
+# physical threshold: the whole column first settles about dp/2 onto the walls' contact layer
+# and sinks a few per cent while it spreads, so a threshold of one spacing marks all of it.
+MOVED_FRACTION = 0.1
 
 
 def frame_files(out_dir):
@@ -158,6 +165,75 @@ def profile(pos_b, dp, x0, y0, width):
     return rows
 
 
+def front_at(prof, thickness):
+    """Run-out measured where the deposit is still `thickness` deep: the largest x at which the
+    profile height reaches it (linear between bins). The bulk's last particle (L_inf) sits in a
+    tail one or two particles thick, so L_inf moves with the spacing; a fixed physical thickness
+    (THICK_FRACTION of H0) does not."""
+    for k in range(len(prof) - 1, -1, -1):
+        if prof[k][1] >= thickness:
+            if k + 1 < len(prof):
+                (x0, h0, _), (x1, h1, _) = prof[k], prof[k + 1]
+                return x0 + (h0 - thickness) / (h0 - h1) * (x1 - x0)
+            return prof[k][0]
+    return 0.0
+
+
+def deposit(vtm, body="column"):
+    """One frame's deposit, measured as in the module docstring: a dict with the particles
+    (pos, fields, initial, bulk mask), the initial column (L0, H0, dp, origin x0, y0), the bulk's
+    run-out L_inf and height H_inf, the profile and the failure-line fit (None if not found)
+    with its boundary points."""
+    pos, fields = read_body(vtm, body)
+    disp = fields["displacement"].astype(float)
+    initial = pos - disp
+    dp = spacing_of(initial)
+    x0 = initial[:, 0].min() - 0.5 * dp
+    y0 = initial[:, 1].min() - 0.5 * dp
+    H0 = initial[:, 1].max() + 0.5 * dp - y0
+    bulk = bulk_mask(pos, dp)
+    moved = np.linalg.norm(disp[:, :2], axis=1) > MOVED_FRACTION * H0
+    fit, points = failure_line(initial, moved, dp, x0, y0)
+    return {
+        "pos": pos, "fields": fields, "initial": initial, "bulk": bulk, "moved": moved,
+        "dp": dp, "x0": x0, "y0": y0, "L0": initial[:, 0].max() + 0.5 * dp - x0, "H0": H0,
+        "L_inf": pos[bulk, 0].max() + 0.5 * dp - x0, "H_inf": pos[bulk, 1].max() + 0.5 * dp - y0,
+        "profile": profile(pos[bulk], dp, x0, y0, 2 * dp), "failure": fit,
+        "failure_points": points,
+    }
+
+
+def heap_angle(prof, height):
+    """Flank angle of the final heap: least-squares slope of the profile heights that lie
+    between 20 % and 80 % of the final height, taken from the highest bin onwards (the downhill
+    flank). Returns degrees from the horizontal, or None with fewer than 3 bins."""
+    xs = np.array([r[0] for r in prof])
+    hs = np.array([r[1] for r in prof])
+    start = int(np.argmax(hs))
+    sel = np.arange(len(hs)) >= start
+    sel &= (hs >= 0.2 * height) & (hs <= 0.8 * height)
+    if np.count_nonzero(sel) < 3:
+        return None
+    slope = np.polyfit(xs[sel], hs[sel], 1)[0]
+    return math.degrees(math.atan(abs(slope)))
+
+
+def rest_time(out_dir, body, fraction=1e-4):
+    """First output time after the kinetic-energy peak at which the body's kinetic energy is
+    below `fraction` of that peak (issue 4's "time to rest"); None if never."""
+    files = frame_files(out_dir)
+    times = frame_times(out_dir)
+    energies = []
+    for vtm in files:
+        _, f = read_body(vtm, body)
+        energies.append(float(np.sum(f["velocity"].astype(float)[:, :2] ** 2)))
+    peak = int(np.argmax(energies))
+    for k in range(peak, len(files)):
+        if energies[k] < fraction * energies[peak]:
+            return times.get(os.path.basename(files[k]), float("nan"))
+    return None
+
+
 def write_svg(path, prof, L0, H0, fit, dp):
     """Tiny dependency-free SVG of the final profile, the initial column and the failure line."""
     xmax = max(r[0] for r in prof) + 0.02
@@ -200,25 +276,14 @@ def main():
     files = frame_files(args.out_dir)
     times = frame_times(args.out_dir)
     vtm = files[-1] if args.frame is None else files[args.frame]
-    pos, f = read_body(vtm, args.body)
-    disp = f["displacement"].astype(float)
+    d = deposit(vtm, args.body)
+    pos, f, bulk, moved = d["pos"], d["fields"], d["bulk"], d["moved"]
+    dp, x0, y0, L0, H0 = d["dp"], d["x0"], d["y0"], d["L0"], d["H0"]
+    L_inf, H_inf, prof = d["L_inf"], d["H_inf"], d["profile"]
+    fit, fpts = d["failure"], d["failure_points"]
     vel = f["velocity"].astype(float)
-    initial = pos - disp
-    dp = spacing_of(initial)
-    x0 = initial[:, 0].min() - 0.5 * dp
-    y0 = initial[:, 1].min() - 0.5 * dp
-    L0 = initial[:, 0].max() + 0.5 * dp - x0
-    H0 = initial[:, 1].max() + 0.5 * dp - y0
     t = times.get(os.path.basename(vtm), float("nan"))
-
-    bulk = bulk_mask(pos, dp)
-    pb = pos[bulk]
-    L_inf = pb[:, 0].max() + 0.5 * dp - x0
-    H_inf = pb[:, 1].max() + 0.5 * dp - y0
     L_all = pos[:, 0].max() + 0.5 * dp - x0
-    prof = profile(pb, dp, x0, y0, 2 * dp)
-    moved = np.linalg.norm(disp[:, :2], axis=1) > dp
-    fit, fpts = failure_line(initial, moved, dp, x0, y0)
     rho = f["density"].astype(float) if "density" in f else None
     speed = np.linalg.norm(vel[:, :2], axis=1)
 
@@ -235,13 +300,20 @@ def main():
     print(f"final height H_inf       = {H_inf:.4f} m   (H_inf/H0 = {H_inf / H0:.3f})")
     print(f"height at the back wall  = {prof[0][1]:.4f} m")
     print(f"normalised run-out (L_inf - L0)/L0 = {(L_inf - L0) / L0:.3f}")
+    L_thick = front_at(prof, THICK_FRACTION * H0)
+    print(f"front where the deposit is {THICK_FRACTION * H0 * 1e3:.3g} mm deep (5 % of H0): "
+          f"L_5% = {L_thick:.4f} m, (L_5% - L0)/L0 = {(L_thick - L0) / L0:.3f}")
+    angle = heap_angle(prof, H_inf)
+    print("heap angle (flank, 20-80 % of the height) = " +
+          (f"{angle:.1f} deg" if angle is not None else "not found"))
     if fit:
         ang, m, b = fit
         print(f"failure line: {ang:.1f} deg from horizontal (fit through {len(fpts)} row boundaries; "
               f"meets the back wall at y = {b:.4f} m, the base at x = {-b / m:.4f} m)")
     else:
         print(f"failure line: not found (only {len(fpts)} rows with a static part next to the wall)")
-    print(f"moved > 1 dp: {int(moved.sum())} of {len(pos)} particles")
+    print(f"moved > {MOVED_FRACTION * H0 * 1e3:.3g} mm (10 % of H0): {int(moved.sum())} of "
+          f"{len(pos)} particles")
     print(f"last frame: max speed {speed.max():.3g} m/s, mean speed {speed.mean():.3g} m/s")
     if rho is not None:
         print(f"density: min {rho.min():.1f}, max {rho.max():.1f} kg/m^3")

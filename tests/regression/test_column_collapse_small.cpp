@@ -1,27 +1,53 @@
 #include "support/cli_runner.hpp"
 #include "support/frame_reader.hpp"
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <regex>
+#include <vector>
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
 
 namespace {
 
 using namespace grainload::testing;
 
 struct ColumnState {
-    double height_sum = 0.0; ///< sum of particle y, m
-    double front = 0.0;      ///< largest particle x, m
-    double top = 0.0;        ///< largest particle y, m
+    double height_sum = 0.0;        ///< sum of particle y, m
+    double front = 0.0;             ///< largest particle x, m
+    double top = 0.0;               ///< largest particle y, m
+    double speed_squared_sum = 0.0; ///< sum of |v|^2, m^2/s^2
+    double bottom_settlement = 0.0; ///< mean downward displacement of the initial bottom row, m
     std::size_t count = 0;
 };
 
 ColumnState read_column(const std::string& vtm) {
     const auto column = read_particle_block(vtm);
     ColumnState state;
+    vtkDataArray* velocity = column->GetPointData()->GetArray("velocity");
+    vtkDataArray* displacement = column->GetPointData()->GetArray("displacement");
+    std::vector<double> initial_y;
     for (vtkIdType i = 0; i < column->GetNumberOfPoints(); ++i) {
         double x[3];
         column->GetPoint(i, x);
+        initial_y.push_back(x[1] - displacement->GetTuple3(i)[1]);
+    }
+    const double lowest = *std::min_element(initial_y.begin(), initial_y.end());
+    int bottom = 0;
+    for (vtkIdType i = 0; i < column->GetNumberOfPoints(); ++i) {
+        if (initial_y[static_cast<std::size_t>(i)] < lowest + 1e-9) {
+            state.bottom_settlement -= displacement->GetTuple3(i)[1];
+            ++bottom;
+        }
+    }
+    state.bottom_settlement /= bottom;
+    for (vtkIdType i = 0; i < column->GetNumberOfPoints(); ++i) {
+        double x[3];
+        column->GetPoint(i, x);
+        const double* v = velocity->GetTuple3(i);
+        state.speed_squared_sum += v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
         state.height_sum += x[1];
         state.front = std::max(state.front, x[0]);
         state.top = std::max(state.top, x[1]);
@@ -37,12 +63,17 @@ double result_value(const std::string& summary, const std::string& name) {
     return match.empty() ? 0.0 : std::stod(match[1]);
 }
 
-// The CI version of column_collapse_2d (20 x 10 particles, 0.2 s). With static walls and no
-// friction nothing outside the column does work, so the potential energy it loses must reappear
-// as kinetic plus internal energy (stress power, plastic and viscous dissipation included).
-// What the balance leaves out is the elastic energy stored in the wall contact potential and
-// the O(dt^2) energy error of leapfrog: measured 1.4 % of the drop; 3 % bounds it.
-TEST(ColumnCollapseSmall, PotentialEnergyLostReappearsAsKineticPlusInternal) {
+// The CI version of column_collapse_2d (20 x 10 particles, 0.6 s). The walls are static, so they
+// do no work: the potential energy the column loses must reappear as kinetic plus internal
+// energy (stress power, plastic and viscous dissipation, and the heat of wall friction and of
+// the contact dashpot, which wall contact books into the particles' internal energy). What the
+// balance leaves out is the elastic energy stored in the floor's contact potential, at most
+// W delta / 2 for the weight W pressed delta into the contact layer (a spring that stiffens with
+// overlap stores less), and leapfrog's O(dt^2) energy error, below 1 %. Measured: 2.6 % missing,
+// W delta / 2 = 3.9 % (bottom row settled 0.96 mm). The heap must also come
+// to rest (issue 4's criterion: kinetic energy below 1e-4 of its peak): on a frictionless floor
+// the back wall's thrust keeps the heap sliding for ever (docs/validation/column_collapse_2d.md).
+TEST(ColumnCollapseSmall, LosesPotentialEnergyToHeatAndComesToRest) {
     const std::string out = ::testing::TempDir() + "grainload_column_collapse_small";
     std::filesystem::remove_all(out);
     const auto run =
@@ -50,8 +81,14 @@ TEST(ColumnCollapseSmall, PotentialEnergyLostReappearsAsKineticPlusInternal) {
                     "' --out '" + out + "'",
                 out + ".log");
     ASSERT_EQ(run.exit_code, 0) << run.output;
-    const ColumnState start = read_column(out + "/frames/column_collapse_2d_small_000000.vtm");
-    const ColumnState end = read_column(out + "/frames/column_collapse_2d_small_000004.vtm");
+    std::vector<ColumnState> frames;
+    for (int frame = 0; frame <= 12; ++frame) {
+        char name[64];
+        std::snprintf(name, sizeof name, "/frames/column_collapse_2d_small_%06d.vtm", frame);
+        frames.push_back(read_column(out + name));
+    }
+    const ColumnState& start = frames.front();
+    const ColumnState& end = frames.back();
     ASSERT_EQ(start.count, 200u);
     const double particle_mass = 2040.0 * 0.01 * 0.01; // rho dx^2, kg per metre of depth
     const double potential_drop = particle_mass * 9.81 * (start.height_sum - end.height_sum);
@@ -59,11 +96,53 @@ TEST(ColumnCollapseSmall, PotentialEnergyLostReappearsAsKineticPlusInternal) {
     const double gained =
         result_value(summary, "kinetic_energy") + result_value(summary, "internal_energy");
     EXPECT_GT(potential_drop, 0.0);
-    EXPECT_NEAR(gained / potential_drop, 1.0, 0.03)
+    const double weight = 200 * particle_mass * 9.81;
+    const double contact_bound = 0.5 * weight * end.bottom_settlement / potential_drop;
+    EXPECT_GT(gained / potential_drop, 1.0 - contact_bound - 0.01)
         << "potential energy lost " << potential_drop << " J/m, gained " << gained << " J/m";
+    EXPECT_LT(gained / potential_drop, 1.01);
     // The column slumps: its front runs out and its top comes down.
     EXPECT_GT(end.front, start.front + 0.01);
     EXPECT_LT(end.top, start.top);
+    double peak = 0.0;
+    for (const ColumnState& frame : frames) {
+        peak = std::max(peak, frame.speed_squared_sum);
+    }
+    EXPECT_LT(end.speed_squared_sum, 1e-4 * peak);
+}
+
+// A deforming run (plasticity, wall friction and dashpot, Verlet list, gradient correction)
+// continued from its checkpoint must end bit for bit where the uninterrupted run ends: the
+// checkpoint carries the step's accelerations (computed from the mid-step velocity) and the
+// positions the neighbour list was built from, so nothing is recomputed differently. The split
+// at 0.15 s, 2e-17 s short of the output instant 3 x 0.05 s, also checks that an end time is
+// snapped to the instant it means.
+TEST(ColumnCollapseSmall, RestartOfADeformingRunReproducesTheUninterruptedRun) {
+    const std::string base = ::testing::TempDir() + "grainload_column_collapse_restart";
+    const std::string kase =
+        "'" + source_path("cases/column_collapse_2d/column_collapse_2d_small.toml") +
+        "' --set 'sph.kernel_gradient_correction=true' --set 'case.end_time=0.3 s'";
+    std::filesystem::remove_all(base + "_whole");
+    std::filesystem::remove_all(base + "_split");
+    ASSERT_EQ(run_cli("run " + kase + " --out '" + base + "_whole'", base + ".log").exit_code, 0);
+    const auto first = run_cli(
+        "run " + kase + " --set 'case.end_time=0.15 s' --out '" + base + "_split'", base + ".log");
+    ASSERT_EQ(first.exit_code, 0) << first.output;
+    const auto second = run_cli("run " + kase + " --out '" + base + "_split' --restart '" + base +
+                                    "_split/checkpoint.bin'",
+                                base + ".log");
+    ASSERT_EQ(second.exit_code, 0) << second.output;
+    const std::string frame = "/frames/column_collapse_2d_small_000006.vtm";
+    const auto whole = read_particle_block(base + "_whole" + frame);
+    const auto split = read_particle_block(base + "_split" + frame);
+    ASSERT_EQ(whole->GetNumberOfPoints(), split->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < whole->GetNumberOfPoints(); ++i) {
+        double a[3];
+        double b[3];
+        whole->GetPoint(i, a);
+        split->GetPoint(i, b);
+        EXPECT_TRUE(a[0] == b[0] && a[1] == b[1]) << "particle " << i;
+    }
 }
 
 } // namespace

@@ -3,6 +3,7 @@
 #include "sph/stress_update.hpp"
 
 #include <Eigen/Geometry>
+#include <Eigen/SVD>
 #include <gtest/gtest.h>
 #include <random>
 
@@ -164,6 +165,54 @@ TEST(Rates, JaumannRotationIsOrthogonalAndSecondOrder) {
     const Mat3 rotated = q * sigma * q.transpose();
     const Mat3 jaumann = sigma + dt * (w * sigma - sigma * w);
     EXPECT_LT((rotated - jaumann).norm(), 10.0 * dt * dt * sigma.norm());
+}
+
+// A flow front thinned to one row with one neighbour a little off the line: M (the
+// Randles-Libersky moment) has det well above 1e-3 but a smallest singular value near 0.01, so
+// the full correction would multiply a neighbour's velocity noise by ~100 and the continuity
+// equation could make the density negative in one step. The correction must fall back to the
+// plain gradient there, while lattice corners (smallest singular value >= 0.21) stay exact
+// (CorrectedVelocityGradientIsExactForLinearFields).
+TEST(Rates, GradientCorrectionFallsBackAtNearlyCollinearNeighbours) {
+    const double spacing = 0.1;
+    const double offset = 0.02; // the off-line neighbour's distance from the row, m
+    ParticleSet p;
+    for (int k = -2; k <= 2; ++k) {
+        const double y = k == 1 ? offset : 0.0;
+        p.add(Vec3(k * spacing, y, 0.0), Vec3::Zero(), 1000.0 * spacing * spacing, 1000.0, 0, 0, 0);
+    }
+    const Index centre = 2;
+    p.velocity[3] = Vec3(0.0, 1e-3, 0.0); // velocity noise on the off-line neighbour
+    const SmoothingKernel kernel(KernelType::cubic_spline, 1.3 * spacing, 2);
+    NeighbourList neighbours(kernel.support_radius(), 0.0, 2);
+    neighbours.update(p.position, {});
+
+    // The moment as the solver forms it, to show the configuration is the dangerous one.
+    Mat3 moment = Mat3::Zero();
+    for (Index j = 0; j < p.size(); ++j) {
+        const Vec3 x_ij = p.position[centre] - p.position[j];
+        if (j != centre && x_ij.norm() < kernel.support_radius()) {
+            moment += (-p.mass[j] / p.density[centre] * x_ij) *
+                      kernel.gradient(x_ij, x_ij.norm()).transpose();
+        }
+    }
+    const Eigen::Matrix2d in_plane = moment.topLeftCorner<2, 2>();
+    const Eigen::JacobiSVD<Eigen::Matrix2d> svd(in_plane);
+    ASSERT_GT(in_plane.determinant(), 1e-3);
+    ASSERT_LT(svd.singularValues()(1), 0.05);
+
+    std::vector<Mat3> plain;
+    std::vector<Mat3> corrected;
+    std::vector<Mat3> correction;
+    compute_velocity_gradient(p, neighbours, kernel, false, plain, correction);
+    compute_velocity_gradient(p, neighbours, kernel, true, corrected, correction);
+    EXPECT_LT((correction[centre] - Mat3::Identity()).norm(), 1e-14);
+    EXPECT_LT((corrected[centre] - plain[centre]).norm(), 1e-12 * plain[centre].norm());
+    // What the inverse would have done: amplify the same noise by 1/s.
+    Mat3 padded = moment; // plane strain: zz = 1, as the solver does
+    padded(2, 2) = 1.0;
+    const Mat3 full = plain[centre] * padded.inverse();
+    EXPECT_GT(full.norm(), 20.0 * plain[centre].norm());
 }
 
 } // namespace

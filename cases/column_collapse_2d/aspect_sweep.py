@@ -1,0 +1,170 @@
+#!/usr/bin/python3
+"""Aspect-ratio sweep of the plane-strain column collapse against the published scaling laws.
+
+Usage:
+    /usr/bin/python3 cases/column_collapse_2d/aspect_sweep.py GRAINLOAD OUT_DIR
+        [--aspects 0.5,1,2,3,4,6] [--spacing-mm 4] [--length-mm 80] [--threads 1]
+        [--analyse-only]
+
+Runs cases/column_collapse_2d/column_collapse_2d.toml once per aspect ratio a = H0/L0 with the
+column length L0 fixed and H0 = a L0 (same material, friction floor and walls; only the box, the
+spacing, the back wall's height and the end time are overridden with --set), then measures the
+final run-out, height and rest state with analyse.py's definitions and writes
+OUT_DIR/aspect_sweep.csv and OUT_DIR/aspect_sweep.svg (normalised run-out (L_inf - L0)/L0 and
+final height H_inf/L0 against a, beside the laws below).
+
+Scaling laws (final deposit of a column released on a horizontal plane; L0 initial length):
+  * Lube et al. (2005), quasi-2D channel:  (L_inf - L0)/L0 = 1.2 a for a < 1.8,
+    1.9 a^(2/3) for a > 2.8; H_inf/L0 = a for a < 1.15, a^(2/5) beyond.
+  * Lajeunesse et al. (2005), quasi-2D channel: (L_inf - L0)/L0 = a for a < 3, 1.9 a^(2/3)
+    beyond (both groups' constants as quoted in the secondary literature).
+  * Nguyen et al. (2015, arXiv:1512.05180), true 2D aluminium rods (the material of this case):
+    H_inf = H0 for a < 0.65; (L_inf - L0)/L0 = 3.25 a^0.96 for 0.65 < a < 1.5, 3.80 a^0.73 for
+    a > 1.5; H0/H_inf = 1.42 a^(2/3) for a > 0.65.
+"""
+
+import argparse
+import math
+import os
+import subprocess
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import analyse  # noqa: E402
+
+CASE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "column_collapse_2d.toml")
+GRAVITY = 9.81
+
+
+def end_time(height):
+    """Long enough for the heap to stop: the collapse lasts a few free-fall times sqrt(H0/g)."""
+    return max(0.6, 6.0 * math.sqrt(height / GRAVITY))
+
+
+def floor_length(aspect, length):
+    """Floor long enough for the run-out: twice Lube et al.'s law, whose rate the SPH exceeds."""
+    return max(1.0, 2.0 * (1.0 + 1.9 * aspect ** (2.0 / 3.0)) * length / 1000.0 + 0.1)
+
+
+def overrides(aspect, dp_mm, length_mm):
+    offset = 1.85 * dp_mm  # first particle centres 2h from the first wall layer (see the case)
+    height_mm = aspect * length_mm
+    return [
+        f"case.end_time={end_time(height_mm / 1000.0):.3f} s",
+        f"sph.body[0].spacing={dp_mm:g} mm",
+        f"sph.body[0].shape.min={offset:g} {offset:g} mm",
+        f"sph.body[0].shape.max={offset + length_mm:g} {offset + height_mm:g} mm",
+        f"sph.wall[0].spacing={dp_mm / 2:g} mm",
+        f"sph.wall[1].spacing={dp_mm / 2:g} mm",
+        f"sph.wall[1].edge_u=0 {1.6 * height_mm:g} mm",
+        f"sph.wall[0].edge_u={1000.0 * floor_length(aspect, length_mm):.0f} 0 mm",
+    ]
+
+
+def run_case(grainload, out, aspect, args):
+    cmd = [grainload, "run", CASE, "--out", out, "--threads", str(args.threads)]
+    for item in overrides(aspect, args.spacing_mm, args.length_mm):
+        cmd += ["--set", item]
+    env = dict(os.environ, OMP_WAIT_POLICY="PASSIVE")
+    with open(out + ".log", "w") as log:
+        subprocess.run(cmd, check=True, stdout=log, stderr=subprocess.STDOUT, env=env)
+
+
+def measure(out):
+    d = analyse.deposit(analyse.frame_files(out)[-1])
+    energies = []
+    for vtm in analyse.frame_files(out):
+        _, f = analyse.read_body(vtm, "column")
+        energies.append(float(np.sum(f["velocity"].astype(float)[:, :2] ** 2)))
+    return {
+        "a": d["H0"] / d["L0"], "L0": d["L0"], "H0": d["H0"], "L_inf": d["L_inf"],
+        "H_inf": d["H_inf"], "runout": (d["L_inf"] - d["L0"]) / d["L0"],
+        "height": d["H_inf"] / d["L0"], "rest": energies[-1] / max(energies),
+        "outside": int((~d["bulk"]).sum()), "particles": len(d["pos"]),
+    }
+
+
+def lube_runout(a):
+    return 1.2 * a if a < 1.8 else (1.9 * a ** (2 / 3) if a > 2.8 else float("nan"))
+
+
+def lajeunesse_runout(a):
+    return a if a < 3.0 else 1.9 * a ** (2 / 3)
+
+
+def nguyen_runout(a):
+    if a < 0.65:
+        return float("nan")
+    return 3.25 * a ** 0.96 if a < 1.5 else 3.80 * a ** 0.73
+
+
+def write_svg(path, rows):
+    W, H, pad = 640, 420, 50
+    amax = max(6.0, max(r["a"] for r in rows))
+    ymax = max(12.0, max(r["runout"] for r in rows) * 1.1)
+    tx = lambda a: pad + a / amax * (W - 2 * pad)
+    ty = lambda y: H - pad - y / ymax * (H - 2 * pad)
+    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" font-size="12">',
+           f'<line x1="{tx(0)}" y1="{ty(0)}" x2="{tx(amax)}" y2="{ty(0)}" stroke="black"/>',
+           f'<line x1="{tx(0)}" y1="{ty(0)}" x2="{tx(0)}" y2="{ty(ymax)}" stroke="black"/>']
+    grid = np.linspace(0.05, amax, 200)
+    for law, colour, label in ((lube_runout, "blue", "Lube et al. 2005"),
+                               (lajeunesse_runout, "green", "Lajeunesse et al. 2005"),
+                               (nguyen_runout, "purple", "Nguyen et al. 2015 (Al rods)")):
+        pts = [f"{tx(a):.1f},{ty(law(a)):.1f}" for a in grid if not math.isnan(law(a))]
+        out.append(f'<polyline points="{" ".join(pts)}" fill="none" stroke="{colour}"/>')
+        y = ty(law(amax)) if law(amax) <= ymax else ty(ymax)
+        out.append(f'<text x="{tx(amax) - 170}" y="{y - 6:.1f}" fill="{colour}">{label}</text>')
+    for r in rows:
+        out.append(f'<circle cx="{tx(r["a"]):.1f}" cy="{ty(r["runout"]):.1f}" r="4" fill="red"/>')
+    out.append(f'<text x="{tx(0.2)}" y="{ty(ymax) + 14}" fill="red">grainload SPH (dots)</text>')
+    for k in range(0, int(amax) + 1):
+        out.append(f'<text x="{tx(k) - 4}" y="{ty(0) + 16}">{k}</text>')
+    for k in range(0, int(ymax) + 1, 2):
+        out.append(f'<text x="{tx(0) - 24}" y="{ty(k) + 4}">{k}</text>')
+    out.append(f'<text x="{W / 2 - 60}" y="{H - 10}">aspect ratio a = H0/L0</text>')
+    out.append(f'<text x="8" y="{pad - 20}">(L_inf - L0)/L0</text></svg>')
+    with open(path, "w") as f:
+        f.write("\n".join(out) + "\n")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("grainload")
+    ap.add_argument("out_dir")
+    ap.add_argument("--aspects", default="0.5,1,2,3,4,6")
+    ap.add_argument("--spacing-mm", type=float, default=4.0)
+    ap.add_argument("--length-mm", type=float, default=80.0)
+    ap.add_argument("--threads", type=int, default=1)
+    ap.add_argument("--analyse-only", action="store_true", help="measure existing runs only")
+    args = ap.parse_args()
+    os.makedirs(args.out_dir, exist_ok=True)
+    rows = []
+    for aspect in (float(a) for a in args.aspects.split(",")):
+        out = os.path.join(args.out_dir, f"a{aspect:g}")
+        if not args.analyse_only:
+            run_case(args.grainload, out, aspect, args)
+        rows.append(measure(out))
+        r = rows[-1]
+        print(f"a = {r['a']:.3g}: (L_inf - L0)/L0 = {r['runout']:.3f} (Lube {lube_runout(r['a']):.3g}, "
+              f"Lajeunesse {lajeunesse_runout(r['a']):.3g}, Nguyen {nguyen_runout(r['a']):.3g}), "
+              f"H_inf/L0 = {r['height']:.3f}, H_inf/H0 = {r['H_inf'] / r['H0']:.3f}, "
+              f"KE end/peak = {r['rest']:.1e}, {r['outside']} of {r['particles']} outside the heap",
+              flush=True)
+    csv = os.path.join(args.out_dir, "aspect_sweep.csv")
+    with open(csv, "w") as f:
+        f.write("a,L0_m,H0_m,L_inf_m,H_inf_m,runout_normalised,height_over_L0,"
+                "lube_runout,lajeunesse_runout,nguyen_runout,ke_end_over_peak,outside\n")
+        for r in rows:
+            f.write(f"{r['a']:.4f},{r['L0']:.4f},{r['H0']:.4f},{r['L_inf']:.4f},{r['H_inf']:.4f},"
+                    f"{r['runout']:.4f},{r['height']:.4f},{lube_runout(r['a']):.4f},"
+                    f"{lajeunesse_runout(r['a']):.4f},{nguyen_runout(r['a']):.4f},"
+                    f"{r['rest']:.3e},{r['outside']}\n")
+    write_svg(os.path.join(args.out_dir, "aspect_sweep.svg"), rows)
+    print(f"written: {csv}, {os.path.join(args.out_dir, 'aspect_sweep.svg')}")
+
+
+if __name__ == "__main__":
+    main()

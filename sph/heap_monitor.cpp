@@ -1,0 +1,102 @@
+#include "sph/heap_monitor.hpp"
+
+#include "io/case_table.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace grainload::sph {
+
+namespace dim = io::dimension;
+
+namespace {
+
+double rest_fraction(const io::CaseTable& heap) {
+    const double fraction = heap.number_or("rest_fraction", 1e-4);
+    if (!(fraction > 0.0 && fraction < 1.0)) {
+        heap.fail("rest_fraction", "expected a fraction of the peak kinetic energy in (0, 1)");
+    }
+    return fraction;
+}
+
+} // namespace
+
+HeapMonitor::HeapMonitor(const io::CaseTable& heap, const std::vector<std::string>& body_names,
+                         const ParticleSet& particles, double spacing, const Vec3& gravity,
+                         int dimension)
+    : rest_(rest_fraction(heap)) {
+    const std::string name = heap.string("body");
+    const auto found = std::find(body_names.begin(), body_names.end(), name);
+    if (found == body_names.end()) {
+        std::string known;
+        for (const auto& body : body_names) {
+            known += (known.empty() ? "\"" : ", \"") + body + "\"";
+        }
+        heap.fail("body", "expected the name of a [[sph.body]] (" + known + ")");
+    }
+    body_ = static_cast<int>(std::distance(body_names.begin(), found));
+    if (!(gravity.norm() > 0.0)) {
+        heap.fail("", "a heap is measured along gravity: expected a non-zero [case] gravity");
+    }
+    frame_.origin = heap.vector("origin", dim::kLength);
+    frame_.up = -gravity.normalized();
+    frame_.spacing = spacing;
+    frame_.dimension = dimension;
+    double lowest = std::numeric_limits<double>::infinity();
+    double highest = -std::numeric_limits<double>::infinity();
+    for (const Vec3& x : body_positions(particles)) {
+        const double s = (x - frame_.origin).dot(frame_.up);
+        lowest = std::min(lowest, s);
+        highest = std::max(highest, s);
+    }
+    frame_.floor_level = lowest - 0.5 * spacing;
+    initial_height_ = highest - lowest + spacing;
+}
+
+std::vector<Vec3> HeapMonitor::body_positions(const ParticleSet& particles) const {
+    std::vector<Vec3> x;
+    for (Index i = 0; i < particles.size(); ++i) {
+        if (particles.body_id[i] == body_ && !particles.is_wall(i)) {
+            x.push_back(particles.position[i]);
+        }
+    }
+    return x;
+}
+
+void HeapMonitor::record(double time, const ParticleSet& particles) {
+    double energy = 0.0;
+    for (Index i = 0; i < particles.size(); ++i) {
+        if (particles.body_id[i] == body_ && !particles.is_wall(i)) {
+            energy += 0.5 * particles.mass[i] * particles.velocity[i].squaredNorm();
+        }
+    }
+    rest_.add(time, energy);
+}
+
+void HeapMonitor::append_results(const ParticleSet& particles,
+                                 std::vector<io::ResultFigure>& results) const {
+    const HeapMeasures heap = measure_heap(body_positions(particles), frame_);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double degrees = 180.0 / std::numbers::pi;
+    // summary.json writes NaN as null: an angle that cannot be fitted, a rest not reached.
+    results.push_back({"heap_initial_height", initial_height_, "m", std::nullopt, ""});
+    results.push_back({"heap_final_height", heap.final_height, "m", std::nullopt, ""});
+    results.push_back({"heap_run_out", heap.run_out, "m", std::nullopt, ""});
+    results.push_back(
+        {"heap_angle", heap.angle ? *heap.angle * degrees : nan, "deg", std::nullopt, ""});
+    results.push_back(
+        {"heap_time_to_rest", rest_.rest_time().value_or(nan), "s", std::nullopt, ""});
+    results.push_back({"heap_peak_kinetic_energy", rest_.peak(), "J", std::nullopt, ""});
+    results.push_back({"heap_peak_time", rest_.peak_time(), "s", std::nullopt, ""});
+    results.push_back({"heap_final_kinetic_energy_ratio",
+                       rest_.peak() > 0.0 ? rest_.last() / rest_.peak() : nan, "", std::nullopt,
+                       ""});
+    results.push_back(
+        {"heap_particles", static_cast<double>(heap.heap_count), "", std::nullopt, ""});
+    results.push_back(
+        {"heap_particles_outside", static_cast<double>(heap.outside_count), "", std::nullopt, ""});
+}
+
+} // namespace grainload::sph

@@ -1,0 +1,107 @@
+#include "support/cli_runner.hpp"
+#include "support/frame_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <gtest/gtest.h>
+#include <numbers>
+#include <regex>
+
+namespace {
+
+using namespace grainload::testing;
+
+// The CI versions of cases/column_collapse (thesis section 7.2): 5 x 5 x 13 particles of the
+// thesis sand at 14.4 mm spacing, K and G / 1000, to 0.4 s. Independent references: the body's
+// particle count and weight from the case's numbers, the heap geometry from the column's, the
+// friction angle from the cap envelope's parameters.
+constexpr int kParticles = 5 * 5 * 13;
+constexpr double kSpacing = 0.0144;
+constexpr double kDensity = 2099.0;
+constexpr double kGravity = 9.81;
+
+double result_value(const std::string& summary, const std::string& name) {
+    // A figure written as null (an angle that cannot be fitted, a rest not reached) fails here.
+    const std::regex pattern("\"" + name + "\": \\{\"value\": ([-+0-9.eE]+)");
+    std::smatch match;
+    EXPECT_TRUE(std::regex_search(summary, match, pattern)) << name << " missing or null";
+    return match.empty() ? std::nan("") : std::stod(match[1]);
+}
+
+/// Friction angle of the cap envelope F(I1) = k + theta I1 - gamma exp(-B1 I1) at I1 -> 0
+/// (k = gamma: no cohesion), where its slope is steepest: theta + gamma B1 = 0.377, matched to
+/// Mohr-Coulomb on the compression meridian, alpha = 2 sin(phi) / (sqrt(3) (3 - sin(phi))):
+/// 47.6 deg. The sand holds no steeper slope in triaxial compression; a Drucker-Prager cone is
+/// stronger than that in other stress states (in plane strain it has no Mohr-Coulomb match at
+/// all), which the margin below must also cover.
+double envelope_friction_angle() {
+    const double alpha = 0.03 + 0.03858e6 * 9.0e-6;
+    const double s = 3.0 * std::sqrt(3.0) * alpha / (2.0 + std::sqrt(3.0) * alpha);
+    return std::asin(s) * 180.0 / std::numbers::pi;
+}
+
+std::string run_case(const std::string& name) {
+    const std::string out = ::testing::TempDir() + "grainload_" + name;
+    std::filesystem::remove_all(out);
+    const auto run = run_cli("run '" + source_path("cases/column_collapse/" + name + ".toml") +
+                                 "' --out '" + out + "'",
+                             out + ".log");
+    EXPECT_EQ(run.exit_code, 0) << run.output;
+    return out;
+}
+
+/// What both variants must show: every particle kept, the weight carried by the floor, the
+/// kinetic energy below 1e-4 of its peak before the end, a lower heap.
+std::string expect_heap_at_rest(const std::string& out, const std::string& wall, double end_time) {
+    const std::string summary = read_file(out + "/summary.json");
+    std::printf("%s\n", summary.c_str());
+    EXPECT_EQ(result_value(summary, "heap_particles") +
+                  result_value(summary, "heap_particles_outside"),
+              kParticles);
+    // At rest the floor carries the whole weight; what still moves (KE < 1e-4 of the peak)
+    // leaves well under 1 % of it.
+    const double weight = kParticles * kDensity * std::pow(kSpacing, 3) * kGravity;
+    EXPECT_NEAR(-result_value(summary, "wall_" + wall + "_force_z") / weight, 1.0, 0.01);
+    const double rest = result_value(summary, "heap_time_to_rest");
+    EXPECT_GT(rest, result_value(summary, "heap_peak_time"));
+    EXPECT_LT(rest, end_time);
+    const double initial = result_value(summary, "heap_initial_height");
+    EXPECT_NEAR(initial, 13 * kSpacing, 1e-9); // 13 layers of the column as generated
+    const double height = result_value(summary, "heap_final_height");
+    EXPECT_GT(height, 0.0);
+    EXPECT_LT(height, initial);
+    return summary;
+}
+
+// On the plate the heap is a free cone: its slope lies between 0 and the envelope's friction
+// angle. The slope is fitted to about 4 surface bins of one spacing each, each bin's top known
+// to dp: about +-7 deg (the unit tests' estimate dp / (4 dp) / sqrt(4)), hence 10 deg over
+// the friction angle.
+TEST(ColumnCollapse3dSmall, OnAPlateTheColumnSlumpsIntoAConeAtRest) {
+    const std::string out = run_case("column_collapse_plate_small");
+    const std::string summary = expect_heap_at_rest(out, "plate", 0.4);
+    const double angle = result_value(summary, "heap_angle");
+    EXPECT_GT(angle, 0.0);
+    EXPECT_LT(angle, envelope_friction_angle() + 10.0);
+}
+
+// In the container (inner faces at +-108 mm, floor z = 0) the contact keeps every particle
+// centre inside: none may end outside the inner faces. The heap fills the floor, so its flank
+// is too short at this spacing for a slope (fewer than 3 bins: null); none is asserted.
+TEST(ColumnCollapse3dSmall, InTheContainerNoParticleLeavesIt) {
+    const std::string out = run_case("column_collapse_small");
+    expect_heap_at_rest(out, "container", 0.4);
+    const auto column = read_particle_block(out + "/frames/column_collapse_small_000008.vtm");
+    ASSERT_TRUE(column);
+    ASSERT_EQ(column->GetNumberOfPoints(), kParticles);
+    for (vtkIdType i = 0; i < column->GetNumberOfPoints(); ++i) {
+        double x[3];
+        column->GetPoint(i, x);
+        EXPECT_LT(std::max(std::abs(x[0]), std::abs(x[1])), 0.108) << "particle " << i;
+        EXPECT_GT(x[2], 0.0) << "particle " << i;
+    }
+}
+
+} // namespace
