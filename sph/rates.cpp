@@ -159,6 +159,9 @@ void compute_accelerations(ParticleSet& p, const NeighbourList& neighbours,
     const bool use_contact = options.contact.stiffness > 0.0;
     const double alpha = options.viscosity.alpha;
     const double beta = options.viscosity.beta;
+    // Monaghan's alpha c h is a viscosity set by the elastic wave speed; a case that scales the
+    // moduli down for speed can pin c here (docs/validation/column_collapse_2d.md).
+    const double viscosity_speed = options.viscosity.sound_speed;
 #pragma omp parallel for schedule(dynamic, 128)
     for (Index i = 0; i < n; ++i) {
         const bool wall = p.wall_id[i] >= 0;
@@ -186,7 +189,9 @@ void compute_accelerations(ParticleSet& p, const NeighbourList& neighbours,
                 const double approach = v_ij.dot(x_ij);
                 if (use_viscosity && approach < 0.0) {
                     const double mu = h * approach / (r2 + 0.01 * h * h);
-                    const double c = 0.5 * (in.sound_speed[i] + in.sound_speed[j]);
+                    const double c = viscosity_speed > 0.0
+                                         ? viscosity_speed
+                                         : 0.5 * (in.sound_speed[i] + in.sound_speed[j]);
                     const double rho = 0.5 * (p.density[i] + p.density[j]);
                     const double pi_ij = (-alpha * c * mu + beta * mu * mu) / rho;
                     t.diagonal().array() -= pi_ij;

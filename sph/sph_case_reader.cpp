@@ -38,6 +38,10 @@ SphOptions read_sph_options(const io::CaseTable& sph, int dimension, double spac
         if (options.viscosity.alpha < 0.0 || options.viscosity.beta < 0.0) {
             viscosity->fail("", "expected alpha >= 0 and beta >= 0");
         }
+        options.viscosity.sound_speed = viscosity->quantity_or("sound_speed", dim::kVelocity, 0.0);
+        if (!(options.viscosity.sound_speed >= 0.0)) {
+            viscosity->fail("sound_speed", "expected a speed >= 0 (0: the materials' own)");
+        }
     }
     if (const auto stress = sph.optional_table("artificial_stress")) {
         options.artificial_stress.epsilon = stress->number_or("epsilon", 0.0);

@@ -12,6 +12,9 @@ namespace grainload::sph {
 struct ArtificialViscosity {
     double alpha = 0.0;
     double beta = 0.0;
+    /// m/s; > 0: the sound speed of the linear term alpha c mu instead of the materials' elastic
+    /// wave speed, so that scaling the moduli for a longer time step leaves the viscosity alone.
+    double sound_speed = 0.0;
 };
 
 /// Artificial stress against the tensile instability (Monaghan 2000; Gray, Monaghan & Swift

@@ -215,5 +215,39 @@ TEST(Rates, GradientCorrectionFallsBackAtNearlyCollinearNeighbours) {
     EXPECT_GT(full.norm(), 20.0 * plain[centre].norm());
 }
 
+// [sph.artificial_viscosity] sound_speed pins the c of Monaghan's linear term: a block whose
+// moduli were scaled by 1/100 (c / 10) must feel the same viscous forces as the unscaled one
+// when the unscaled c is given, and ten times smaller linear-term forces without it.
+TEST(Rates, ViscositySoundSpeedReplacesTheMaterialsWaveSpeed) {
+    Block b = make_block(2, 5);
+    std::mt19937 generator(3u);
+    std::uniform_real_distribution<double> value(-1.0, 1.0);
+    for (Index i = 0; i < b.particles.size(); ++i) {
+        b.particles.velocity[i] = Vec3(value(generator), value(generator), 0.0);
+    }
+    const auto accelerations = [&](double material_speed, double pinned_speed) {
+        SphOptions options;
+        options.dimension = 2;
+        options.particle_spacing = 0.1;
+        options.viscosity = {1.0, 0.0, pinned_speed};
+        ForceInputs inputs;
+        inputs.sound_speed.assign(static_cast<std::size_t>(b.particles.size()), material_speed);
+        prepare_force_inputs(b.particles, options.artificial_stress, inputs);
+        std::vector<double> heating;
+        compute_accelerations(b.particles, b.neighbours, b.kernel, options, inputs, heating);
+        return b.particles.acceleration;
+    };
+    const auto stiff = accelerations(100.0, 0.0);
+    const auto pinned = accelerations(10.0, 100.0);
+    const auto soft = accelerations(10.0, 0.0);
+    double viscous = 0.0;
+    for (Index i = 0; i < b.particles.size(); ++i) {
+        EXPECT_EQ(stiff[i], pinned[i]) << "particle " << i;
+        EXPECT_LT((soft[i] - stiff[i] / 10.0).norm(), 1e-12 * stiff[i].norm() + 1e-15);
+        viscous += stiff[i].norm();
+    }
+    EXPECT_GT(viscous, 0.0);
+}
+
 } // namespace
 } // namespace grainload::sph
