@@ -1,6 +1,7 @@
 #include "sph/heap_monitor.hpp"
 
 #include "io/case_table.hpp"
+#include "sph/sph_case_reader.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -27,16 +28,7 @@ HeapMonitor::HeapMonitor(const io::CaseTable& heap, const std::vector<std::strin
                          const ParticleSet& particles, double spacing, const Vec3& gravity,
                          int dimension)
     : rest_(rest_fraction(heap)) {
-    const std::string name = heap.string("body");
-    const auto found = std::find(body_names.begin(), body_names.end(), name);
-    if (found == body_names.end()) {
-        std::string known;
-        for (const auto& body : body_names) {
-            known += (known.empty() ? "\"" : ", \"") + body + "\"";
-        }
-        heap.fail("body", "expected the name of a [[sph.body]] (" + known + ")");
-    }
-    body_ = static_cast<int>(std::distance(body_names.begin(), found));
+    body_ = body_index(heap, "body", body_names);
     if (!(gravity.norm() > 0.0)) {
         heap.fail("", "a heap is measured along gravity: expected a non-zero [case] gravity");
     }

@@ -182,6 +182,12 @@ int index_by_name(const io::CaseTable& table, const std::string& key, const Name
 
 } // namespace
 
+int body_index(const io::CaseTable& table, const std::string& key,
+               const std::vector<std::string>& body_names) {
+    return index_by_name(
+        table, key, body_names, [](const std::string& s) { return s; }, "[[sph.body]]");
+}
+
 void read_clamps(const io::CaseTable& body, ParticleSet& particles, Index first, int dimension) {
     for (const auto& table : body.array_of_tables("clamp")) {
         const Vec3 lower = table.vector("min", dim::kLength);
@@ -218,8 +224,7 @@ std::vector<FrictionPair> read_friction_pairs(const io::CaseTable& sph,
     std::vector<FrictionPair> pairs;
     for (const auto& table : sph.array_of_tables("friction")) {
         FrictionPair pair;
-        pair.body_id = index_by_name(
-            table, "body", body_names, [](const std::string& s) { return s; }, "[[sph.body]]");
+        pair.body_id = body_index(table, "body", body_names);
         const int wall = index_by_name(
             table, "wall", walls, [](const RigidWall& w) { return w.name; }, "[[sph.wall]]");
         pair.wall_body_id = walls[static_cast<std::size_t>(wall)].body_id;

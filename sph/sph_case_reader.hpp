@@ -31,6 +31,11 @@ std::vector<RigidWall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& p
 /// clamped. A box that holds none of the body's particles is refused.
 void read_clamps(const io::CaseTable& body, ParticleSet& particles, Index first, int dimension);
 
+/// Index into `body_names` of the [[sph.body]] that `table`'s `key` names; an unknown name fails
+/// with the known ones listed (file:line, exit code 2).
+int body_index(const io::CaseTable& table, const std::string& key,
+               const std::vector<std::string>& body_names);
+
 /// The [[sph.friction]] pairs: `body` and `wall` by name, `mu_static` >= `mu_kinetic` >= 0.
 /// Body ids are indices into `body_names`; walls carry their own.
 std::vector<FrictionPair> read_friction_pairs(const io::CaseTable& sph,

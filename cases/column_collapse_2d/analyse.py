@@ -40,6 +40,7 @@ import argparse
 import glob
 import math
 import os
+import subprocess
 import sys
 import xml.etree.ElementTree as ET
 
@@ -218,19 +219,49 @@ def heap_angle(prof, height):
     return math.degrees(math.atan(abs(slope)))
 
 
-def rest_time(out_dir, body, fraction=1e-4):
-    """First output time after the kinetic-energy peak at which the body's kinetic energy is
-    below `fraction` of that peak (issue 4's "time to rest"); None if never."""
+def placement_overrides(dp_mm, length_mm, height_mm):
+    """`--set` items that give column_collapse_2d.toml another spacing and column size: the box
+    starts 1.85 dp from both wall planes (first particle centres 2h from the first wall layer,
+    dp/4 behind the plane; see the case file) and the walls are sampled at dp/2."""
+    offset = 1.85 * dp_mm
+    return [
+        f"sph.body[0].spacing={dp_mm:g} mm",
+        f"sph.body[0].shape.min={offset:g} {offset:g} mm",
+        f"sph.body[0].shape.max={offset + length_mm:g} {offset + height_mm:g} mm",
+        f"sph.wall[0].spacing={dp_mm / 2:g} mm",
+        f"sph.wall[1].spacing={dp_mm / 2:g} mm",
+    ]
+
+
+def run_case(grainload, case, out, threads, overrides):
+    """`grainload run case --out out` with `--set` overrides, its output in out + ".log"."""
+    cmd = [grainload, "run", case, "--out", out, "--threads", str(threads)]
+    for item in overrides:
+        cmd += ["--set", item]
+    with open(out + ".log", "w") as log:
+        subprocess.run(cmd, check=True, stdout=log, stderr=subprocess.STDOUT,
+                       env=dict(os.environ, OMP_WAIT_POLICY="PASSIVE"))
+
+
+def kinetic_history(out_dir, body):
+    """(frame times, sum of |v|^2 per frame): the body's kinetic energy up to the particle mass."""
     files = frame_files(out_dir)
     times = frame_times(out_dir)
     energies = []
     for vtm in files:
         _, f = read_body(vtm, body)
         energies.append(float(np.sum(f["velocity"].astype(float)[:, :2] ** 2)))
+    return [times.get(os.path.basename(vtm), float("nan")) for vtm in files], energies
+
+
+def rest_time(out_dir, body, fraction=1e-4):
+    """First output time after the kinetic-energy peak at which the body's kinetic energy is
+    below `fraction` of that peak (issue 4's "time to rest"); None if never."""
+    times, energies = kinetic_history(out_dir, body)
     peak = int(np.argmax(energies))
-    for k in range(peak, len(files)):
+    for k in range(peak, len(energies)):
         if energies[k] < fraction * energies[peak]:
-            return times.get(os.path.basename(files[k]), float("nan"))
+            return times[k]
     return None
 
 

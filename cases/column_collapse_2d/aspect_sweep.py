@@ -26,7 +26,6 @@ Scaling laws (final deposit of a column released on a horizontal plane; L0 initi
 import argparse
 import math
 import os
-import subprocess
 import sys
 
 import numpy as np
@@ -49,35 +48,17 @@ def floor_length(aspect, length):
 
 
 def overrides(aspect, dp_mm, length_mm):
-    offset = 1.85 * dp_mm  # first particle centres 2h from the first wall layer (see the case)
     height_mm = aspect * length_mm
-    return [
+    return analyse.placement_overrides(dp_mm, length_mm, height_mm) + [
         f"case.end_time={end_time(height_mm / 1000.0):.3f} s",
-        f"sph.body[0].spacing={dp_mm:g} mm",
-        f"sph.body[0].shape.min={offset:g} {offset:g} mm",
-        f"sph.body[0].shape.max={offset + length_mm:g} {offset + height_mm:g} mm",
-        f"sph.wall[0].spacing={dp_mm / 2:g} mm",
-        f"sph.wall[1].spacing={dp_mm / 2:g} mm",
         f"sph.wall[1].edge_u=0 {1.6 * height_mm:g} mm",
         f"sph.wall[0].edge_u={1000.0 * floor_length(aspect, length_mm):.0f} 0 mm",
     ]
 
 
-def run_case(grainload, out, aspect, args):
-    cmd = [grainload, "run", CASE, "--out", out, "--threads", str(args.threads)]
-    for item in overrides(aspect, args.spacing_mm, args.length_mm):
-        cmd += ["--set", item]
-    env = dict(os.environ, OMP_WAIT_POLICY="PASSIVE")
-    with open(out + ".log", "w") as log:
-        subprocess.run(cmd, check=True, stdout=log, stderr=subprocess.STDOUT, env=env)
-
-
 def measure(out):
     d = analyse.deposit(analyse.frame_files(out)[-1])
-    energies = []
-    for vtm in analyse.frame_files(out):
-        _, f = analyse.read_body(vtm, "column")
-        energies.append(float(np.sum(f["velocity"].astype(float)[:, :2] ** 2)))
+    _, energies = analyse.kinetic_history(out, "column")
     return {
         "a": d["H0"] / d["L0"], "L0": d["L0"], "H0": d["H0"], "L_inf": d["L_inf"],
         "H_inf": d["H_inf"], "runout": (d["L_inf"] - d["L0"]) / d["L0"],
@@ -145,7 +126,8 @@ def main():
     for aspect in (float(a) for a in args.aspects.split(",")):
         out = os.path.join(args.out_dir, f"a{aspect:g}")
         if not args.analyse_only:
-            run_case(args.grainload, out, aspect, args)
+            analyse.run_case(args.grainload, CASE, out, args.threads,
+                             overrides(aspect, args.spacing_mm, args.length_mm))
         rows.append(measure(out))
         r = rows[-1]
         print(f"a = {r['a']:.3g}: (L_inf - L0)/L0 = {r['runout']:.3f} (Lube {lube_runout(r['a']):.3g}, "

@@ -19,7 +19,6 @@ rest, and their change against the first run (the reference). Run-out is given t
 import argparse
 import json
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -31,17 +30,9 @@ WIDTH_MM, HEIGHT_MM = 200.0, 100.0
 
 
 def overrides(factor, dp_mm):
-    offset = 1.85 * dp_mm  # first particle centres 2h from the first wall layer (see the case)
     modulus = f"{YOUNGS_MODULUS_MPA * factor:.6g} MPa"
-    return [
-        f"material[0].youngs_modulus={modulus}",
-        f"sph.contact.stiffness={modulus}",
-        f"sph.body[0].spacing={dp_mm:g} mm",
-        f"sph.body[0].shape.min={offset:g} {offset:g} mm",
-        f"sph.body[0].shape.max={offset + WIDTH_MM:g} {offset + HEIGHT_MM:g} mm",
-        f"sph.wall[0].spacing={dp_mm / 2:g} mm",
-        f"sph.wall[1].spacing={dp_mm / 2:g} mm",
-    ]
+    return [f"material[0].youngs_modulus={modulus}", f"sph.contact.stiffness={modulus}"] + \
+        analyse.placement_overrides(dp_mm, WIDTH_MM, HEIGHT_MM)
 
 
 def measure(out):
@@ -80,12 +71,7 @@ def main():
         factor, dp_mm = (float(v) for v in item.split(":"))
         out = os.path.join(args.out_dir, f"E{factor:g}_dp{dp_mm:g}mm")
         if not args.analyse_only and not os.path.exists(os.path.join(out, "summary.json")):
-            cmd = [args.grainload, "run", CASE, "--out", out, "--threads", str(args.threads)]
-            for o in overrides(factor, dp_mm):
-                cmd += ["--set", o]
-            with open(out + ".log", "w") as log:
-                subprocess.run(cmd, check=True, stdout=log, stderr=subprocess.STDOUT,
-                               env=dict(os.environ, OMP_WAIT_POLICY="PASSIVE"))
+            analyse.run_case(args.grainload, CASE, out, args.threads, overrides(factor, dp_mm))
         rows.append((factor, dp_mm, measure(out)))
     ref = rows[0][2]
     header = ("E factor,spacing_mm,wall_time_s,steps,final_height_m,runout_normalised,"
