@@ -29,16 +29,18 @@ inline bool same_continuum(const ParticleSet& p, Index i, Index j) {
     return p.body_id[i] == p.body_id[j] && p.wall_id[i] < 0 && p.wall_id[j] < 0;
 }
 
-/// Randles & Libersky (1996): M^-1 makes L M^-1 exact for linear fields. In plane strain M
-/// has no z row or column; its zz entry is set to 1 so that the inverse exists and z stays
-/// untouched.
-///
-/// M -> I in the interior, and its smallest singular value s is about 0.5 at a flat free
-/// surface and 0.27 (2D) / 0.21 (3D) at a lattice corner. A particle whose neighbours are nearly
-/// collinear (a thinning flow front) has s -> 0 while det M can still be well above any fixed
-/// threshold; M^-1 then multiplies the velocity gradient by 1/s and the continuity equation can
-/// drive the density negative in one step. So the correction is blended to the plain gradient
-/// by s: full for s >= 0.15 (every lattice configuration), none for s <= 0.05, linear between.
+} // namespace
+
+// Randles & Libersky (1996): M^-1 makes L M^-1 exact for linear fields. In plane strain M
+// has no z row or column; its zz entry is set to 1 so that the inverse exists and z stays
+// untouched.
+//
+// M -> I in the interior, and its smallest singular value s is about 0.5 at a flat free
+// surface and 0.27 (2D) / 0.21 (3D) at a lattice corner. A particle whose neighbours are nearly
+// collinear (a thinning flow front) has s -> 0 while det M can still be well above any fixed
+// threshold; M^-1 then multiplies the velocity gradient by 1/s and the continuity equation can
+// drive the density negative in one step. So the correction is blended to the plain gradient
+// by s: full for s >= 0.15 (every lattice configuration), none for s <= 0.05, linear between.
 Mat3 correction_inverse(Mat3 moment, int dimension) {
     if (dimension == 2) {
         moment(2, 2) = 1.0;
@@ -66,8 +68,6 @@ void store_kinematics(ParticleSet& p, Index i, const Mat3& l) {
     const Mat3 w = 0.5 * (l - l.transpose());
     p.spin[i] = Vec3(w(2, 1), w(0, 2), w(1, 0));
 }
-
-} // namespace
 
 void compute_velocity_gradient(ParticleSet& p, const NeighbourList& neighbours,
                                const SmoothingKernel& kernel, bool gradient_correction,
@@ -154,9 +154,12 @@ void compute_accelerations(ParticleSet& p, const NeighbourList& neighbours,
     const double support_squared = kernel.support_radius() * kernel.support_radius();
     const double h = kernel.smoothing_length();
     const double w_reference = kernel.value(options.particle_spacing);
-    const bool use_artificial_stress = options.artificial_stress.epsilon > 0.0;
+    const bool stress_pairs = options.formulation == Formulation::updated_lagrangian;
+    const bool use_artificial_stress = stress_pairs && options.artificial_stress.epsilon > 0.0;
     const bool use_viscosity = options.viscosity.alpha > 0.0 || options.viscosity.beta > 0.0;
     const bool use_contact = options.contact.stiffness > 0.0;
+    // Whether same-body pairs of the current neighbour list exchange anything here.
+    const bool current_pairs_act = stress_pairs || use_viscosity;
     const double alpha = options.viscosity.alpha;
     const double beta = options.viscosity.beta;
     // Monaghan's alpha c h is a viscosity set by the elastic wave speed; a case that scales the
@@ -173,13 +176,17 @@ void compute_accelerations(ParticleSet& p, const NeighbourList& neighbours,
         for (const Index j : neighbours.neighbours(i)) {
             const Vec3 x_ij = xi - p.position[j];
             const double r2 = x_ij.squaredNorm();
-            if (r2 >= support_squared || r2 == 0.0) {
+            const bool same = same_continuum(p, i, j);
+            if (r2 >= support_squared || r2 == 0.0 || (same && !current_pairs_act)) {
                 continue;
             }
             const double r = std::sqrt(r2);
             const Vec3 grad = kernel.gradient(x_ij, r);
-            if (same_continuum(p, i, j)) {
-                Mat3 t = in.stress_over_rho2[i] + in.stress_over_rho2[j];
+            if (same) {
+                // Total-Lagrangian stress forces come from TotalLagrangian over the reference
+                // pairs; the viscosity below still acts between current neighbours.
+                Mat3 t = stress_pairs ? Mat3(in.stress_over_rho2[i] + in.stress_over_rho2[j])
+                                      : Mat3::Zero();
                 if (use_artificial_stress) {
                     const double f = kernel.value(r) / w_reference;
                     t += std::pow(f, options.artificial_stress.exponent) *

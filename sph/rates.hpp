@@ -14,6 +14,14 @@ namespace grainload::sph {
 Mat3 stress_tensor(const Voigt6& stress);
 Voigt6 stress_voigt(const Mat3& stress);
 
+/// M^-1 of the Randles-Libersky corrected gradient, blended to I where M is near singular
+/// (smallest singular value below 0.15; none below 0.05). Plane strain: M's zz entry is set to 1.
+Mat3 correction_inverse(Mat3 moment, int dimension);
+
+/// From the velocity gradient L of particle i: density_rate = -rho tr L, strain_rate = sym L
+/// (engineering shear), spin = axial vector of skew L.
+void store_kinematics(ParticleSet& particles, Index i, const Mat3& velocity_gradient);
+
 /// Kinematic pass over pairs of the same body: velocity gradient
 /// L_i = sum_j (m_j / rho_i) (v_j - v_i) (grad_i W_ij)^T, the velocity-difference form of
 /// thesis eqs. 4.6.1.13 and 4.6.1.17 with the weight m_j/rho_i instead of m_j/rho_j, which
@@ -53,6 +61,8 @@ void prepare_force_inputs(const ParticleSet& particles, const ArtificialStress& 
 ///   plus gravity; heating de_i/dt += 1/2 sum_j m_j Pi_ij v_ij . grad_i W_ij (Monaghan 1992).
 /// Pairs of different bodies (walls included): the contact potential, thesis eq. (5.3.12).
 /// Wall particles get only contact; their `acceleration` times mass is the force on the wall.
+/// With Formulation::total_lagrangian the same-body stress terms are left out (TotalLagrangian
+/// adds them); viscosity and contact stay.
 void compute_accelerations(ParticleSet& particles, const NeighbourList& neighbours,
                            const SmoothingKernel& kernel, const SphOptions& options,
                            const ForceInputs& inputs, std::vector<double>& heating_rate);

@@ -32,6 +32,17 @@ SphOptions read_sph_options(const io::CaseTable& sph, int dimension, double spac
         sph.fail("verlet_skin", "expected the Verlet skin as a fraction of h in [0, 1]");
     }
     options.kernel_gradient_correction = sph.boolean_or("kernel_gradient_correction", true);
+    const std::string formulation = sph.choice_or(
+        "formulation", {"updated_lagrangian", "total_lagrangian"}, "updated_lagrangian");
+    if (formulation == "total_lagrangian") {
+        options.formulation = Formulation::total_lagrangian;
+        // F = I + grad0 u must be exact for rigid rotations, which needs the corrected gradient.
+        if (!options.kernel_gradient_correction) {
+            sph.fail("kernel_gradient_correction",
+                     "the total-Lagrangian formulation always corrects its reference gradient: "
+                     "expected true or no key");
+        }
+    }
     if (const auto viscosity = sph.optional_table("artificial_viscosity")) {
         options.viscosity.alpha = viscosity->number_or("alpha", 0.0);
         options.viscosity.beta = viscosity->number_or("beta", 0.0);
@@ -44,6 +55,11 @@ SphOptions read_sph_options(const io::CaseTable& sph, int dimension, double spac
         }
     }
     if (const auto stress = sph.optional_table("artificial_stress")) {
+        if (options.formulation == Formulation::total_lagrangian) {
+            stress->fail("", "artificial stress counters the tensile instability of the "
+                             "updated-Lagrangian kernel, which total_lagrangian does not have: "
+                             "expected no [sph.artificial_stress] table");
+        }
         options.artificial_stress.epsilon = stress->number_or("epsilon", 0.0);
         options.artificial_stress.exponent = stress->number_or("exponent", 4.0);
         if (options.artificial_stress.epsilon < 0.0 || options.artificial_stress.exponent <= 0.0) {

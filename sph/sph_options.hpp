@@ -43,6 +43,16 @@ struct FrictionPair {
     double mu_kinetic = 0.0;
 };
 
+/// Which configuration the kernel sums of a body's stress run over.
+enum class Formulation {
+    /// Current positions, neighbours found anew (thesis section 4.5): bodies may flow and
+    /// separate, as sand does; tension needs artificial stress.
+    updated_lagrangian,
+    /// Initial positions and neighbours (sph/total_lagrangian.hpp): solids that keep their
+    /// neighbours, free of the tensile instability; contact and viscosity stay current.
+    total_lagrangian,
+};
+
 /// Everything the SPH integrator needs besides particles and materials.
 struct SphOptions {
     int dimension = 3; ///< 2: plane strain (z = 0), 3
@@ -59,6 +69,7 @@ struct SphOptions {
     /// Randles & Libersky (1996) / Bonet & Lok (1999) corrected gradient in the velocity
     /// gradient (thesis section 4.4.1): exact for linear velocity fields also at free surfaces.
     bool kernel_gradient_correction = false;
+    Formulation formulation = Formulation::updated_lagrangian;
     double cfl_safety = 0.3;         ///< dt = safety * h / (c + |v|)
     double verlet_skin_factor = 0.1; ///< Verlet skin as a fraction of h (0: rebuild each step)
 };

@@ -34,6 +34,9 @@ SphSolver::SphSolver(ParticleSet particles, MaterialList materials, SphOptions o
         force_inputs_.sound_speed[i] =
             is_wall_[i] ? 0.0 : materials_[static_cast<std::size_t>(m)]->elastic().p_wave_speed();
     }
+    if (options_.formulation == Formulation::total_lagrangian) {
+        total_lagrangian_.emplace(particles_, kernel_);
+    }
     hold_clamped();
     refresh_neighbours();
 }
@@ -75,6 +78,9 @@ void SphSolver::refresh_neighbours() {
 void SphSolver::compute_forces(double dt) {
     prepare_force_inputs(particles_, options_.artificial_stress, force_inputs_);
     compute_accelerations(particles_, neighbours_, kernel_, options_, force_inputs_, heating_rate_);
+    if (total_lagrangian_) {
+        total_lagrangian_->add_stress_forces(particles_);
+    }
     wall_contact_.apply(particles_, neighbours_, kernel_, options_, walls_, dt, heating_rate_);
     for (RigidWall& wall : walls_) {
         accumulate_wall_load(particles_, wall);
@@ -110,6 +116,10 @@ void SphSolver::kick(double half_dt) {
 }
 
 void SphSolver::compute_kinematics() {
+    if (total_lagrangian_) {
+        total_lagrangian_->compute_kinematics(particles_, velocity_gradient_);
+        return;
+    }
     compute_velocity_gradient(particles_, neighbours_, kernel_, options_.kernel_gradient_correction,
                               velocity_gradient_, force_inputs_.gradient_correction);
 }
@@ -134,10 +144,12 @@ void SphSolver::step(double dt) {
     }
     refresh_neighbours();
     compute_kinematics();
+    if (!total_lagrangian_) { // the total-Lagrangian density is rho0 / det F, already set
 #pragma omp parallel for schedule(static)
-    for (Index i = 0; i < n; ++i) {
-        if (!is_wall_[i]) {
-            p.density[i] += dt * p.density_rate[i];
+        for (Index i = 0; i < n; ++i) {
+            if (!is_wall_[i]) {
+                p.density[i] += dt * p.density_rate[i];
+            }
         }
     }
     update_stresses(p, materials_, dt);
@@ -222,7 +234,8 @@ std::size_t SphSolver::bytes() const {
         held(is_wall_) + held(force_inputs_.stress_over_rho2) +
         held(force_inputs_.artificial_stress) + held(force_inputs_.sound_speed) +
         held(force_inputs_.gradient_correction) + held(velocity_gradient_) + held(heating_rate_);
-    return particle_fields + work + neighbours_.bytes();
+    return particle_fields + work + neighbours_.bytes() +
+           (total_lagrangian_ ? total_lagrangian_->bytes() : 0);
 }
 
 } // namespace grainload::sph

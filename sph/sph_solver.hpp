@@ -7,8 +7,10 @@
 #include "sph/rates.hpp"
 #include "sph/rigid_wall.hpp"
 #include "sph/sph_options.hpp"
+#include "sph/total_lagrangian.hpp"
 #include "sph/wall_contact.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace grainload::sph {
@@ -92,6 +94,9 @@ class SphSolver {
     NeighbourList neighbours_;
     std::vector<RigidWall> walls_;
     WallContact wall_contact_;
+    /// Set with Formulation::total_lagrangian: the reference configuration is the particles
+    /// the solver was built with (a restart rebuilds the solver from the case first).
+    std::optional<TotalLagrangian> total_lagrangian_;
     std::vector<char> is_wall_;
     ForceInputs force_inputs_;
     std::vector<Mat3> velocity_gradient_;

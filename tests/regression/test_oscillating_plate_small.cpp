@@ -1,0 +1,118 @@
+#include "support/cli_runner.hpp"
+#include "support/frame_reader.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <gtest/gtest.h>
+#include <numbers>
+#include <vector>
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
+
+namespace {
+
+using namespace grainload::testing;
+
+constexpr double kLength = 0.2;
+constexpr double kThickness = 0.02;
+constexpr double kSpacing = 0.0025;
+constexpr double kInterval = 0.002; // output_interval of the case
+
+struct TipFrame {
+    double tip = 0.0;         ///< mean y-displacement of the last particle column, m
+    double root_motion = 0.0; ///< largest displacement of a clamped (x < 0) particle, m
+};
+
+TipFrame read_frame(const std::string& vtm) {
+    const auto plate = read_particle_block(vtm, 0);
+    vtkDataArray* displacement = plate->GetPointData()->GetArray("displacement");
+    TipFrame frame;
+    int tip_count = 0;
+    for (vtkIdType k = 0; k < plate->GetNumberOfPoints(); ++k) {
+        double x[3];
+        double u[3];
+        plate->GetPoint(k, x);
+        displacement->GetTuple(k, u);
+        const double start_x = x[0] - u[0];
+        if (start_x > kLength - kSpacing) {
+            frame.tip += u[1];
+            ++tip_count;
+        }
+        if (start_x < 0.0) {
+            frame.root_motion = std::max(frame.root_motion, std::hypot(u[0], u[1]));
+        }
+    }
+    frame.tip /= tip_count;
+    return frame;
+}
+
+/// Times at which `series` (one value per frame) crosses `level` going down.
+std::vector<double> crossings_down(const std::vector<double>& series, double level) {
+    std::vector<double> found;
+    for (std::size_t k = 1; k < series.size(); ++k) {
+        if (series[k - 1] > level && series[k] <= level) {
+            const double s = (series[k - 1] - level) / (series[k - 1] - series[k]);
+            found.push_back((static_cast<double>(k - 1) + s) * kInterval);
+        }
+    }
+    return found;
+}
+
+// The CI version of oscillating_plate: Gray, Monaghan & Swift's cantilever plate in the
+// total-Lagrangian formulation, 8 particles across H, released under sudden gravity g = 1 m/s^2
+// from the case file through the CLI. Thin-plate theory (plane strain): first-mode period
+// T = 0.2540 s, static tip deflection q L^4 / (8 D) = 2.526 mm, the level the tip swings about.
+// At 8 particles across H the SPH plate is too soft in bending by the two first-order deficits
+// of docs/validation/oscillating_plate.md (one-sided surface rows, compliant root): the
+// mode-shape verification test (OscillatingPlate) measures +9.65 % in period with the same
+// spacing. Asserted: the period between the two downward crossings of the swing's mid level
+// within [0, +12 %] of T, as in that test; the mid level (the static deflection) within
+// [0, +25 %] of q L^4 / (8 D): a stiffness deficit s shows as 1/s both in the static deflection
+// and in the period squared (measured here 1.202 and 1.0961^2 = 1.201), so the period's +12 % is
+// +25 % here; and a root that never moves.
+TEST(OscillatingPlateSmall, TotalLagrangianPlateSwingsAtThinPlateFrequencyFromTheCli) {
+    const std::string out = ::testing::TempDir() + "grainload_oscillating_plate_small";
+    std::filesystem::remove_all(out);
+    const auto run =
+        run_cli("run '" + source_path("cases/oscillating_plate/oscillating_plate_small.toml") +
+                    "' --out '" + out + "' --threads 1",
+                out + ".log");
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    std::vector<double> tip;
+    double root_motion = 0.0;
+    for (int k = 0;; ++k) {
+        char name[80];
+        std::snprintf(name, sizeof name, "/frames/oscillating_plate_small_%06d.vtm", k);
+        if (!std::filesystem::exists(out + name)) {
+            break;
+        }
+        const TipFrame frame = read_frame(out + name);
+        tip.push_back(frame.tip);
+        root_motion = std::max(root_motion, frame.root_motion);
+    }
+    ASSERT_EQ(tip.size(), 281u); // 0.56 s at 2 ms
+    const auto [low, high] = std::minmax_element(tip.begin(), tip.end());
+    const double level = 0.5 * (*low + *high);
+    const auto down = crossings_down(tip, level);
+    ASSERT_GE(down.size(), 2u);
+    const double period = down[1] - down[0];
+    const double k = 1.8751040687 / kLength;
+    const double young = 2.0e6;
+    const double poisson = 0.3975;
+    const double rho = 1000.0;
+    const double stiffness = young * std::pow(kThickness, 3) / (12.0 * (1.0 - poisson * poisson));
+    const double reference_period =
+        2.0 * std::numbers::pi / std::sqrt(stiffness * std::pow(k, 4) / (rho * kThickness));
+    const double static_tip = -rho * 1.0 * kThickness * std::pow(kLength, 4) / (8.0 * stiffness);
+    std::cout << "oscillating_plate_small: period " << period << " s ("
+              << 100.0 * (period / reference_period - 1.0) << " %), mid level " << level << " m ("
+              << 100.0 * (level / static_tip - 1.0) << " %), root motion " << root_motion << " m\n";
+    EXPECT_GT(period / reference_period, 1.0);
+    EXPECT_LT(period / reference_period, 1.12);
+    EXPECT_GT(level / static_tip, 1.0);
+    EXPECT_LT(level / static_tip, 1.25);
+    EXPECT_EQ(root_motion, 0.0);
+}
+
+} // namespace
