@@ -4,7 +4,8 @@
 Usage: /usr/bin/python3 cases/tilting_plate/analyse.py OUT [--spacing MM]
 
 The plate's angle at each frame is read from its wall particles (block "wall_plate"): the
-direction of its first layer. The block's slip is its centroid's displacement along the plate,
+direction of its first layer. The body is the frame's one particle block that is not a wall
+(the block, or the heap of tilting_plate_cone_moist_small.toml). The body's slip is its centroid's displacement along the plate,
 measured in the plate's frame (hinge at the origin). Onset: the first frame at which the slip
 speed along the plate exceeds 1 mm/s (a rigid block sliding from rest at the friction angle
 reaches that speed 0.3 deg later at 5 deg/s). Prints angle, slip and slip speed per frame.
@@ -44,7 +45,8 @@ def main():
         far0 = rows[0][4] if rows else far
         angle = math.atan2(far[1], far[0]) - math.atan2(far0[1], far0[0])
         along = np.array([math.cos(angle), math.sin(angle)])
-        centroid = b["block"][:, :2].mean(axis=0)
+        body = next(name for name in b if not name.startswith("wall_"))
+        centroid = b[body][:, :2].mean(axis=0)
         rows.append((t, angle, float(centroid @ along), 0.0, far))
     print("time_s  plate_deg  slip_mm  slip_speed_mm_s")
     onset = None

@@ -49,10 +49,49 @@ PlateFrame read_frame(const std::string& vtm, double angle_zero) {
     return frame;
 }
 
-std::string frame_file(const std::string& out, int k) {
-    char name[64];
-    std::snprintf(name, sizeof name, "/frames/tilting_plate_small_%06d.vtm", k);
-    return out + name;
+std::string frame_file(const std::string& out, const std::string& name, int k) {
+    char file[96];
+    std::snprintf(file, sizeof file, "/frames/%s_%06d.vtm", name.c_str(), k);
+    return out + file;
+}
+
+struct Onset {
+    double angle = std::nan(""); ///< deg: first frame sliding faster than 1 mm/s
+    double held_slip = 0.0;      ///< m: largest slip while more than 1 deg below atan(mu_s)
+};
+
+/// Runs cases/tilting_plate/<name>.toml through the CLI and reads the body's slip along the
+/// plate from its frames (every 0.02 s, 0.1 deg near the onset).
+Onset measure_onset(const std::string& name, double friction_angle) {
+    const std::string out = ::testing::TempDir() + "grainload_" + name;
+    std::filesystem::remove_all(out);
+    const auto run = run_cli("run '" + source_path("cases/tilting_plate/" + name + ".toml") +
+                                 "' --out '" + out + "' --threads 1",
+                             out + ".log");
+    EXPECT_EQ(run.exit_code, 0) << run.output;
+    const double angle_zero = plate_angle(frame_file(out, name, 0));
+    const double interval = 0.02;
+    std::vector<PlateFrame> frames;
+    for (int k = 0; std::filesystem::exists(frame_file(out, name, k)); ++k) {
+        frames.push_back(read_frame(frame_file(out, name, k), angle_zero));
+    }
+    EXPECT_GT(frames.size(), 100u);
+    Onset onset;
+    for (std::size_t k = 1; k < frames.size(); ++k) {
+        const double degrees = frames[k].angle * 180.0 / std::numbers::pi;
+        const double speed = (frames[k - 1].position - frames[k].position) / interval;
+        if (degrees < friction_angle - 1.0) {
+            onset.held_slip =
+                std::max(onset.held_slip, std::abs(frames[k].position - frames[0].position));
+        }
+        if (std::isnan(onset.angle) && speed > 1e-3) {
+            onset.angle = degrees;
+        }
+    }
+    std::cout << name << ": onset of sliding at " << onset.angle
+              << " deg, atan(mu_s) = " << friction_angle << " deg; slip before "
+              << friction_angle - 1.0 << " deg: " << onset.held_slip * 1e3 << " mm\n";
+    return onset;
 }
 
 // The CI version of tilting_plate: a sand block on a plate turned slowly (5 deg/s near the
@@ -62,37 +101,24 @@ std::string frame_file(const std::string& out, int k) {
 // at the friction angle, with a = g (sin - mu cos) growing as the plate turns, reaches that
 // speed 0.3 deg after the onset. The issue asks for 1 deg.
 TEST(TiltingPlateSmall, BlockStartsSlidingAtTheFrictionAngle) {
-    const std::string out = ::testing::TempDir() + "grainload_tilting_plate_small";
-    std::filesystem::remove_all(out);
-    const auto run = run_cli("run '" + source_path("cases/tilting_plate/tilting_plate_small.toml") +
-                                 "' --out '" + out + "'",
-                             out + ".log");
-    ASSERT_EQ(run.exit_code, 0) << run.output;
-    const double angle_zero = plate_angle(frame_file(out, 0));
-    const double interval = 0.02;
-    const double onset = std::atan(0.5) * 180.0 / std::numbers::pi;
-    std::vector<PlateFrame> frames;
-    for (int k = 0; std::filesystem::exists(frame_file(out, k)); ++k) {
-        frames.push_back(read_frame(frame_file(out, k), angle_zero));
-    }
-    ASSERT_GT(frames.size(), 100u);
-    double measured = std::nan("");
-    double held_slip = 0.0; // largest slip while the plate is more than 1 deg below the onset
-    for (std::size_t k = 1; k < frames.size(); ++k) {
-        const double degrees = frames[k].angle * 180.0 / std::numbers::pi;
-        const double speed = (frames[k - 1].position - frames[k].position) / interval;
-        if (degrees < onset - 1.0) {
-            held_slip = std::max(held_slip, std::abs(frames[k].position - frames[0].position));
-        }
-        if (std::isnan(measured) && speed > 1e-3) {
-            measured = degrees;
-        }
-    }
-    std::cout << "onset of sliding at " << measured << " deg, atan(mu_s) = " << onset
-              << " deg; slip before " << onset - 1.0 << " deg: " << held_slip * 1e3 << " mm\n";
-    EXPECT_NEAR(measured, onset, 1.0);
+    const double friction_angle = std::atan(0.5) * 180.0 / std::numbers::pi;
+    const Onset onset = measure_onset("tilting_plate_small", friction_angle);
+    EXPECT_NEAR(onset.angle, friction_angle, 1.0);
     // Held, the block creeps only by the contact layer's elastic shear: under 0.01 mm.
-    EXPECT_LT(held_slip, 1e-5);
+    EXPECT_LT(onset.held_slip, 1e-5);
+}
+
+// The same for a heap of moist sand (c = 500 Pa, flanks at 20 deg, 250 particles), whose
+// cohesion keeps its flanks standing so that it slides as a whole: onset at atan(mu_s) within
+// the issue's 1 deg (measured 26.90 deg). Held below 25.57 deg, the heap's centroid moves
+// only as the heap settles and shears elastically on the contact layer (measured 0.02 mm;
+// bound 0.1 mm, 2.5 % of the spacing). A cohesionless heap avalanches first and its remnant
+// slides late: docs/validation/tilting_plate.md.
+TEST(TiltingPlateSmall, MoistSandHeapStartsSlidingAtTheFrictionAngle) {
+    const double friction_angle = std::atan(0.5) * 180.0 / std::numbers::pi;
+    const Onset onset = measure_onset("tilting_plate_cone_moist_small", friction_angle);
+    EXPECT_NEAR(onset.angle, friction_angle, 1.0);
+    EXPECT_LT(onset.held_slip, 1e-4);
 }
 
 } // namespace
