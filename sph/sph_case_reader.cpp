@@ -1,6 +1,7 @@
 #include "sph/sph_case_reader.hpp"
 
 #include "io/case_table.hpp"
+#include "sph/initial_stress.hpp"
 #include "sph/surface_mesh_wall.hpp"
 
 #include <cmath>
@@ -232,6 +233,25 @@ void read_clamps(const io::CaseTable& body, ParticleSet& particles, Index first,
             table.fail("", "expected a box holding particles of this body (it holds none)");
         }
     }
+}
+
+void read_initial_stress(const io::CaseTable& body, ParticleSet& particles, Index first,
+                         const Vec3& gravity, double spacing) {
+    const auto table = body.optional_table("initial_stress");
+    if (!table) {
+        return;
+    }
+    table->choice("type", {"geostatic"});
+    const double lateral_ratio = table->number("lateral_ratio");
+    if (!(lateral_ratio >= 0.0 && lateral_ratio <= 2.0)) {
+        table->fail("lateral_ratio", "expected the at-rest ratio K0 = sigma_h / sigma_v in [0, 2] "
+                                     "(Jaky: 1 - sin phi)");
+    }
+    if (!(gravity.squaredNorm() > 0.0)) {
+        table->fail("type", "a geostatic stress is the weight of the body: expected a nonzero "
+                            "[case] gravity");
+    }
+    set_geostatic_stress(particles, first, gravity, spacing, lateral_ratio);
 }
 
 std::vector<FrictionPair> read_friction_pairs(const io::CaseTable& sph,

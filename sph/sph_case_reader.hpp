@@ -31,6 +31,11 @@ std::vector<RigidWall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& p
 /// clamped. A box that holds none of the body's particles is refused.
 void read_clamps(const io::CaseTable& body, ParticleSet& particles, Index first, int dimension);
 
+/// The optional [sph.body.initial_stress] of one body (particles[first, size())):
+/// `type = "geostatic"` with `lateral_ratio` K0 in [0, 2] (sph/initial_stress.hpp). Needs gravity.
+void read_initial_stress(const io::CaseTable& body, ParticleSet& particles, Index first,
+                         const Vec3& gravity, double spacing);
+
 /// Index into `body_names` of the [[sph.body]] that `table`'s `key` names; an unknown name fails
 /// with the known ones listed (file:line, exit code 2).
 int body_index(const io::CaseTable& table, const std::string& key,

@@ -189,6 +189,7 @@ void SphModel::add_body(const io::CaseTable& body, int dimension) {
         body.fail("clamp", "clamped particles need the SPH solver: expected interactions = true");
     }
     read_clamps(body, particles_, first, dimension);
+    read_initial_stress(body, particles_, first, gravity_, spacing);
     body_names_.push_back(std::move(name));
 }
 
