@@ -302,6 +302,8 @@ def main():
     ap.add_argument("--csv", help="profile CSV (default OUT_DIR/profile.csv)")
     ap.add_argument("--svg", help="write an SVG sketch of the final profile")
     ap.add_argument("--history", action="store_true", help="kinetic energy per frame")
+    ap.add_argument("--failure-history", action="store_true",
+                    help="failure line per frame, for moved thresholds of 1, 2, 5 and 10 %% of H0")
     args = ap.parse_args()
 
     files = frame_files(args.out_dir)
@@ -372,6 +374,26 @@ def main():
             b = bulk_mask(p, dp)
             print(f"   {times.get(os.path.basename(vf), float('nan')):6.3f}  {ke:12.5g}  "
                   f"{np.sqrt(sp2).max():12.4g}  {p[b, 0].max() + 0.5 * dp - x0:8.4f}")
+    if args.failure_history:
+        print_failure_history(files, times, args.body)
+
+
+def print_failure_history(files, times, body):
+    """The failure line of every frame (same fit as the final one) for several thresholds of
+    displacement: early frames show the first failure surface, before the collapse retrogresses
+    into the column and the line flattens."""
+    fractions = (0.01, 0.02, 0.05, MOVED_FRACTION)
+    print("\n   t_s    failure line (deg) for moved > " +
+          " / ".join(f"{100 * f:g} %" for f in fractions) + " of H0")
+    for vf in files[1:]:
+        d = deposit(vf, body)
+        moved_by = np.linalg.norm(d["fields"]["displacement"].astype(float)[:, :2], axis=1)
+        angles = []
+        for fraction in fractions:
+            fit, _ = failure_line(d["initial"], moved_by > fraction * d["H0"], d["dp"], d["x0"],
+                                  d["y0"])
+            angles.append(f"{fit[0]:6.1f}" if fit else "   nan")
+        print(f"   {times.get(os.path.basename(vf), float('nan')):6.3f}  " + "  ".join(angles))
 
 
 if __name__ == "__main__":
