@@ -76,7 +76,9 @@ void SphSolver::refresh_neighbours() {
 }
 
 void SphSolver::compute_forces(double dt) {
-    prepare_force_inputs(particles_, options_.artificial_stress, force_inputs_);
+    if (!total_lagrangian_) { // its stress terms come from its own pass, not from sigma/rho^2
+        prepare_force_inputs(particles_, options_.artificial_stress, force_inputs_);
+    }
     compute_accelerations(particles_, neighbours_, kernel_, options_, force_inputs_, heating_rate_);
     if (total_lagrangian_) {
         total_lagrangian_->add_stress_forces(particles_);

@@ -49,10 +49,11 @@ TotalLagrangian::TotalLagrangian(const ParticleSet& p, const SmoothingKernel& ke
 
 void TotalLagrangian::compute_kinematics(ParticleSet& p, std::vector<Mat3>& velocity_gradient) {
     const Index n = p.size();
-    velocity_gradient.assign(static_cast<std::size_t>(n), Mat3::Zero());
+    velocity_gradient.resize(static_cast<std::size_t>(n));
 #pragma omp parallel for schedule(dynamic, 128)
     for (Index i = 0; i < n; ++i) {
         if (p.is_wall(i)) {
+            velocity_gradient[i].setZero();
             continue;
         }
         const Vec3 ui = p.position[i] - reference_position_[i];
