@@ -26,6 +26,17 @@ inline double contact_repulsion(const SmoothingKernel& kernel, const ContactPote
            kernel.radial_derivative(r);
 }
 
+/// Energy stored in the contact potential of one pair at distance r: the work of
+/// contact_repulsion from r out to the support radius, where W = 0. With u = W(r)/W(dp),
+/// F dr = -K V_i V_j u^(n-1) W'(r) dr = -K V_i V_j W(dp) u^(n-1) du, so
+///   U(r) = K V_i V_j W(dp) u^n / n   (volumes held fixed).
+inline double contact_energy(const SmoothingKernel& kernel, const ContactPotential& contact,
+                             double w_reference, double volumes, double r) {
+    const double u = kernel.value(r) / w_reference;
+    return contact.stiffness * volumes * w_reference * std::pow(u, contact.exponent) /
+           contact.exponent;
+}
+
 /// Linearised stiffness |dF/dr| of the contact potential at r, by central difference.
 inline double contact_stiffness(const SmoothingKernel& kernel, const ContactPotential& contact,
                                 double w_reference, double volumes, double r) {

@@ -1,5 +1,6 @@
 #include "sph/sph_solver.hpp"
 
+#include "sph/contact_force.hpp"
 #include "sph/stress_update.hpp"
 
 #include <Eigen/Geometry>
@@ -132,15 +133,24 @@ void SphSolver::step(double dt) {
         compute_kinematics();
         compute_forces(last_dt_ > 0.0 ? last_dt_ : dt);
     }
+    if (!energy_.is_open()) {
+        energy_.open(held_energy(), elastic_strain_energy(), contact_energy());
+    }
     ParticleSet& p = particles_;
     const Index n = p.size();
     kick(0.5 * dt);
-#pragma omp parallel for schedule(static)
+    // The drift moves each particle by dt v(n+1/2), so gravity's work over the step is exactly
+    // sum m g . dt v(n+1/2).
+    const Vec3 gravity = options_.gravity;
+    double gravity_power = 0.0;
+#pragma omp parallel for schedule(static) reduction(+ : gravity_power)
     for (Index i = 0; i < n; ++i) {
         if (!is_wall_[i]) {
             p.position[i] += dt * p.velocity[i];
+            gravity_power += p.mass[i] * gravity.dot(p.velocity[i]);
         }
     }
+    energy_.add_gravity_work(dt * gravity_power);
     for (RigidWall& wall : walls_) {
         move_rigid_wall(p, wall, time_, dt);
     }
@@ -156,6 +166,7 @@ void SphSolver::step(double dt) {
     }
     update_stresses(p, materials_, dt);
     compute_forces(dt);
+    energy_.add_wall_work(wall_work(dt));
     kick(0.5 * dt);
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
@@ -164,6 +175,60 @@ void SphSolver::step(double dt) {
     time_ += dt;
     last_dt_ = dt;
     ++steps_;
+}
+
+double SphSolver::wall_work(double dt) const {
+    double power = 0.0;
+    for (const RigidWall& wall : walls_) {
+        if (wall.velocity.squaredNorm() == 0.0 && wall.angular_velocity.squaredNorm() == 0.0) {
+            continue;
+        }
+        for (Index k = wall.first; k < wall.first + wall.count; ++k) {
+            power -= particles_.mass[k] * particles_.acceleration[k].dot(particles_.velocity[k]);
+        }
+    }
+    return dt * power;
+}
+
+double SphSolver::held_energy() const {
+    const ParticleSet& p = particles_;
+    const Index n = p.size();
+    double sum = 0.0;
+#pragma omp parallel for schedule(static) reduction(+ : sum)
+    for (Index i = 0; i < n; ++i) {
+        if (!is_wall_[i]) {
+            sum += p.mass[i] * (0.5 * p.velocity[i].squaredNorm() + p.internal_energy[i]);
+        }
+    }
+    return sum;
+}
+
+double SphSolver::contact_energy() const {
+    if (!(options_.contact.stiffness > 0.0)) {
+        return 0.0;
+    }
+    const ParticleSet& p = particles_;
+    const Index n = p.size();
+    const double support_squared = kernel_.support_radius() * kernel_.support_radius();
+    const double w_reference = kernel_.value(options_.particle_spacing);
+    double sum = 0.0;
+#pragma omp parallel for schedule(dynamic, 256) reduction(+ : sum)
+    for (Index i = 0; i < n; ++i) {
+        for (const Index j : neighbours_.neighbours(i)) {
+            // The list holds each pair twice (i in j's list and j in i's): count it from the
+            // lower index.
+            if (j < i || p.body_id[i] == p.body_id[j]) {
+                continue;
+            }
+            const double r2 = (p.position[i] - p.position[j]).squaredNorm();
+            if (r2 < support_squared && r2 > 0.0) {
+                const double volumes = p.mass[i] / p.density[i] * p.mass[j] / p.density[j];
+                sum += sph::contact_energy(kernel_, options_.contact, w_reference, volumes,
+                                           std::sqrt(r2));
+            }
+        }
+    }
+    return sum;
 }
 
 Vec3 SphSolver::linear_momentum() const {

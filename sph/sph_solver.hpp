@@ -1,6 +1,7 @@
 #pragma once
 
 #include "materials/material.hpp"
+#include "sph/energy_ledger.hpp"
 #include "sph/kernels.hpp"
 #include "sph/neighbour_list.hpp"
 #include "sph/particle_set.hpp"
@@ -76,6 +77,14 @@ class SphSolver {
     double internal_energy() const; ///< sum m e
     /// Sum of V sigma : C^-1 : sigma / 2: the elastic strain energy from the stresses.
     double elastic_strain_energy() const;
+    /// Kinetic plus internal energy of the material particles (EnergyLedger's "held").
+    double held_energy() const;
+    /// Energy stored in the contact potential of all pairs of different bodies and of bodies
+    /// and walls (a pass over the neighbour list: for summaries and the ledger's opening).
+    double contact_energy() const;
+    /// Opened at the first step (or restored from a checkpoint).
+    const EnergyLedger& energy_ledger() const { return energy_; }
+    EnergyLedger& energy_ledger() { return energy_; }
     /// Heap bytes of particles, neighbour list and work arrays.
     std::size_t bytes() const;
 
@@ -86,6 +95,9 @@ class SphSolver {
     void kick(double half_dt);
     /// Zero velocity and acceleration of clamped particles (ParticleSet::clamped).
     void hold_clamped();
+    /// Work of the walls on the particles over a step of length dt: minus the reactions the
+    /// walls' particles carry times their velocity.
+    double wall_work(double dt) const;
 
     ParticleSet particles_;
     MaterialList materials_;
@@ -94,6 +106,7 @@ class SphSolver {
     NeighbourList neighbours_;
     std::vector<RigidWall> walls_;
     WallContact wall_contact_;
+    EnergyLedger energy_;
     /// Set with Formulation::total_lagrangian: the reference configuration is the particles
     /// the solver was built with (a restart rebuilds the solver from the case first).
     std::optional<TotalLagrangian> total_lagrangian_;

@@ -121,4 +121,30 @@ TEST(TiltingPlateSmall, MoistSandHeapStartsSlidingAtTheFrictionAngle) {
     EXPECT_LT(onset.held_slip, 1e-4);
 }
 
+// A contact stiffness far beyond the time step's reach (1e4 GPa, 1e7 times the sand's modulus:
+// the contact layer's frequency is then tens of times what the CFL step, set by the sand's
+// wave speed, integrates stably) makes the leapfrog unstable as soon as the block presses on
+// the plate. Nothing overflows for many steps: the energy ledger must stop the run as soon as
+// the particles hold more energy than gravity and the plate have put in (measured: step 13),
+// with exit code 3, the diagnosis, and the last good frame and its checkpoint.
+TEST(TiltingPlateSmall, ContactTooStiffForTheStepStopsTheRunAsUnstable) {
+    const std::string out = ::testing::TempDir() + "grainload_tilting_plate_unstable";
+    std::filesystem::remove_all(out);
+    const auto run =
+        run_cli("run '" + source_path("cases/tilting_plate/tilting_plate_small.toml") +
+                    "' --set 'sph.contact.stiffness=10000 GPa' --out '" + out + "' --threads 1",
+                out + ".log");
+    EXPECT_EQ(run.exit_code, 3) << run.output;
+    EXPECT_NE(run.output.find("energy is being created"), std::string::npos) << run.output;
+    EXPECT_NE(read_file(out + "/summary.json").find("\"status\": \"unstable\""), std::string::npos);
+    const auto block = read_particle_block(frame_file(out, "tilting_plate_small", 0), 0);
+    ASSERT_GT(block->GetNumberOfPoints(), 0);
+    for (vtkIdType i = 0; i < block->GetNumberOfPoints(); ++i) {
+        double x[3];
+        block->GetPoint(i, x);
+        EXPECT_TRUE(std::isfinite(x[0]) && std::isfinite(x[1]));
+    }
+    EXPECT_TRUE(std::filesystem::exists(out + "/checkpoint.bin"));
+}
+
 } // namespace

@@ -1,0 +1,79 @@
+#include "sph/energy_ledger.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace grainload::sph {
+
+void EnergyLedger::open(double held, double stored_elastic, double contact) {
+    open_ = true;
+    initial_held_ = held;
+    initial_contact_ = contact;
+    initial_scale_ = std::abs(held) + std::abs(stored_elastic) + std::abs(contact);
+    gravity_work_ = 0.0;
+    wall_work_ = 0.0;
+    largest_gravity_work_ = 0.0;
+    largest_wall_work_ = 0.0;
+}
+
+void EnergyLedger::add_gravity_work(double work) {
+    gravity_work_ += work;
+    largest_gravity_work_ = std::max(largest_gravity_work_, std::abs(gravity_work_));
+}
+
+void EnergyLedger::add_wall_work(double work) {
+    wall_work_ += work;
+    largest_wall_work_ = std::max(largest_wall_work_, std::abs(wall_work_));
+}
+
+double EnergyLedger::balance_error(double held, double contact) const {
+    const double scale = throughput();
+    return scale > 0.0 ? (surplus(held) + contact - initial_contact_) / scale : 0.0;
+}
+
+double EnergyLedger::throughput() const {
+    return initial_scale_ + largest_gravity_work_ + largest_wall_work_;
+}
+
+std::optional<std::string> EnergyLedger::check(double held, double fraction) const {
+    if (!open_) {
+        return std::nullopt;
+    }
+    const double excess = surplus(held);
+    const double scale = throughput();
+    if (!(excess > fraction * scale)) {
+        return std::nullopt;
+    }
+    std::ostringstream out;
+    out << "the particles hold " << excess << " J more energy than they started with plus what "
+        << "gravity (" << gravity_work_ << " J) and the walls (" << wall_work_
+        << " J) put in, more than " << fraction
+        << " times all the energy that passed through the run, " << scale
+        << " J: energy is being created, the run is numerically unstable (try a smaller "
+        << "cfl_safety, more artificial viscosity, or a softer contact stiffness)";
+    return out.str();
+}
+
+std::vector<double> EnergyLedger::state() const {
+    return {open_ ? 1.0 : 0.0, initial_held_,         initial_contact_, initial_scale_,
+            gravity_work_,     largest_gravity_work_, wall_work_,       largest_wall_work_};
+}
+
+void EnergyLedger::set_state(const std::vector<double>& state) {
+    if (state.size() != 8) {
+        throw std::runtime_error("checkpoint: expected 8 energy-ledger entries, found " +
+                                 std::to_string(state.size()));
+    }
+    open_ = state[0] != 0.0;
+    initial_held_ = state[1];
+    initial_contact_ = state[2];
+    initial_scale_ = state[3];
+    gravity_work_ = state[4];
+    largest_gravity_work_ = state[5];
+    wall_work_ = state[6];
+    largest_wall_work_ = state[7];
+}
+
+} // namespace grainload::sph

@@ -1,0 +1,57 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace grainload::sph {
+
+/// The material particles' energy account (wall particles excluded).
+///
+/// Held: kinetic plus internal energy, where the internal energy books the stress power
+/// (elastic and plastic), the viscous heating and the heat of wall friction and of the contact
+/// dashpot. Put in: the work of gravity, sum m g . v dt (which also covers a gravity that
+/// turns), and the work of moving walls on the particles. The semi-discrete equations balance
+/// the two up to what the books leave out: the energy stored in the contact potential (held
+/// there, so missing from the particles: a deficit, never a surplus), the kernel gradient
+/// correction's and artificial stress's small departures from a conservative form, and
+/// leapfrog's O(dt^2) error. A numerical instability creates energy, which shows as a surplus
+/// of the same order as all the energy that has passed through the run; that is the check.
+class EnergyLedger {
+  public:
+    /// Starts the account from the particles' energy at t = 0 and the energy stored at t = 0
+    /// in their stresses and in the contact potential (sources the run may release).
+    void open(double held, double stored_elastic, double contact);
+    bool is_open() const { return open_; }
+    void add_gravity_work(double work);
+    void add_wall_work(double work);
+
+    double gravity_work() const { return gravity_work_; }
+    double wall_work() const { return wall_work_; }
+    /// Energy held now minus what was held at t = 0 and what gravity and the walls put in.
+    double surplus(double held) const { return held - initial_held_ - gravity_work_ - wall_work_; }
+    /// (held + contact - everything at t = 0 - work put in) / throughput: what the books miss,
+    /// counting the contact potential's energy both now and at t = 0.
+    double balance_error(double held, double contact) const;
+    /// The scale of the run's energy: the initial kinetic, internal and stored energy plus the
+    /// largest work gravity and the walls have done so far.
+    double throughput() const;
+    /// A diagnosis when the surplus exceeds `fraction` of the throughput.
+    std::optional<std::string> check(double held, double fraction) const;
+
+    /// For checkpoints: a restarted run keeps its account.
+    std::vector<double> state() const;
+    void set_state(const std::vector<double>& state);
+
+  private:
+    bool open_ = false;
+    double initial_held_ = 0.0;
+    double initial_contact_ = 0.0;
+    double initial_scale_ = 0.0;
+    double gravity_work_ = 0.0;
+    double wall_work_ = 0.0;
+    double largest_gravity_work_ = 0.0;
+    double largest_wall_work_ = 0.0;
+};
+
+} // namespace grainload::sph

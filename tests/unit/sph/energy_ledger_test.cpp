@@ -1,0 +1,51 @@
+#include "sph/energy_ledger.hpp"
+
+#include <gtest/gtest.h>
+
+namespace grainload::sph {
+namespace {
+
+// Hand-worked books: held 10 J, 2 J in initial stresses, 3 J in the contact potential at t = 0;
+// gravity puts in 5 J, the walls take 1 J out and later give 0.5 J back.
+EnergyLedger worked_example() {
+    EnergyLedger ledger;
+    ledger.open(10.0, 2.0, 3.0);
+    ledger.add_gravity_work(5.0);
+    ledger.add_wall_work(-1.0);
+    ledger.add_wall_work(0.5);
+    return ledger;
+}
+
+TEST(EnergyLedger, BooksWorkAndScalesByTheLargestWorkSoFar) {
+    const EnergyLedger ledger = worked_example();
+    EXPECT_DOUBLE_EQ(ledger.gravity_work(), 5.0);
+    EXPECT_DOUBLE_EQ(ledger.wall_work(), -0.5);
+    // 10 + 2 + 3 at t = 0, 5 from gravity, and the walls' largest |work| so far, 1 (not 0.5).
+    EXPECT_DOUBLE_EQ(ledger.throughput(), 21.0);
+    // Held 14 J: 10 + 5 - 0.5 = 14.5 expected, 0.5 J short.
+    EXPECT_DOUBLE_EQ(ledger.surplus(14.0), -0.5);
+    // With 2 J now in the contact potential (3 J at t = 0): (14 + 2 - 10 - 3 - 4.5) / 21.
+    EXPECT_DOUBLE_EQ(ledger.balance_error(14.0, 2.0), -1.5 / 21.0);
+}
+
+TEST(EnergyLedger, DiagnosesASurplusAboveTheLimitOnly) {
+    const EnergyLedger ledger = worked_example();
+    // Surplus 21 J = 1.0 times the throughput: not above it.
+    EXPECT_FALSE(ledger.check(14.5 + 21.0, 1.0).has_value());
+    const auto problem = ledger.check(14.5 + 21.1, 1.0);
+    ASSERT_TRUE(problem.has_value());
+    EXPECT_NE(problem->find("energy is being created"), std::string::npos) << *problem;
+    EXPECT_FALSE(EnergyLedger().check(1e9, 1.0).has_value()) << "a ledger not opened";
+}
+
+TEST(EnergyLedger, StateRoundTripsAndRejectsAForeignLayout) {
+    const EnergyLedger ledger = worked_example();
+    EnergyLedger restored;
+    restored.set_state(ledger.state());
+    EXPECT_DOUBLE_EQ(restored.throughput(), ledger.throughput());
+    EXPECT_DOUBLE_EQ(restored.balance_error(14.0, 2.0), ledger.balance_error(14.0, 2.0));
+    EXPECT_THROW(restored.set_state({1.0, 2.0}), std::runtime_error);
+}
+
+} // namespace
+} // namespace grainload::sph
