@@ -103,9 +103,10 @@ Heap measure_heap(vtkPolyData* sand, double spacing) {
 //   friction angle (infinite-slope limit). The flank fit may exceed it by 5 deg (the tops of
 //   20 mm rings are read to +-half a spacing over a flank of about 5 rings); the outer angle
 //   atan(H / R99), which averages over the whole heap, must stay below phi itself. And the
-//   outer angle is above phi / 2: a heap, not a flood spreading over the floor (measured:
-//   18.2 deg here, 19.4 deg at 10 mm in repose.toml; the coarse flank fit reads 13.2 deg, too
-//   noisy at 3-4 particles of height for a lower bound);
+//   outer angle is above phi / 2: a heap, not a flood spreading over the floor (measured with
+//   the compression cone: 22.0 deg here, 26.9 deg at 10 mm in repose.toml, whose flank fit
+//   reads 30.3 deg; the coarse flank fit here reads 20.3 deg, too noisy at 3-4 particles of
+//   height for a tighter bound);
 // - the floor carries the sand's weight, N m g (summary.json's final wall force), to 1 %: once
 //   the heap is at rest and the tube clear of it nothing else holds the sand up (the contact
 //   and friction reactions are spread onto the wall's particles, so this also checks that

@@ -1,6 +1,7 @@
 #include "support/cli_runner.hpp"
 #include "support/frame_reader.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -119,6 +120,154 @@ TEST(TiltingPlateSmall, MoistSandHeapStartsSlidingAtTheFrictionAngle) {
     const Onset onset = measure_onset("tilting_plate_cone_moist_small", friction_angle);
     EXPECT_NEAR(onset.angle, friction_angle, 1.0);
     EXPECT_LT(onset.held_slip, 1e-4);
+}
+
+/// The heap's particles in the plate's frame: s along the plate from the hinge, n normal to it.
+struct HeapFrame {
+    double angle = 0.0; ///< plate rotation since frame 0, rad
+    std::vector<double> s, n;
+};
+
+HeapFrame read_heap(const std::string& vtm, double angle_zero) {
+    HeapFrame frame;
+    frame.angle = plate_angle(vtm) - angle_zero;
+    const double c = std::cos(frame.angle);
+    const double sn = std::sin(frame.angle);
+    const auto heap = read_particle_block(vtm, 0);
+    for (vtkIdType k = 0; k < heap->GetNumberOfPoints(); ++k) {
+        double x[3];
+        heap->GetPoint(k, x);
+        frame.s.push_back(x[0] * c + x[1] * sn);
+        frame.n.push_back(-x[0] * sn + x[1] * c);
+    }
+    return frame;
+}
+
+/// Row of every particle in spacings above the first frame's bottom row; per row from 2 to the
+/// second highest (the toe rests on the plate, the top row is the summit), the particle
+/// nearest the hinge: the downhill flank's surface.
+std::vector<std::size_t> flank_surface(const HeapFrame& f, double bottom, double spacing) {
+    std::vector<long> row(f.n.size());
+    long top = 0;
+    for (std::size_t k = 0; k < f.n.size(); ++k) {
+        row[k] = std::lround((f.n[k] - bottom) / spacing);
+        top = std::max(top, row[k]);
+    }
+    std::vector<std::size_t> surface;
+    for (long r = 2; r < top; ++r) {
+        std::size_t best = f.s.size();
+        for (std::size_t k = 0; k < f.s.size(); ++k) {
+            if (row[k] == r && (best == f.s.size() || f.s[k] < f.s[best])) {
+                best = k;
+            }
+        }
+        if (best < f.s.size()) {
+            surface.push_back(best);
+        }
+    }
+    return surface;
+}
+
+/// Least-squares slope angle of the given particles to the plate, deg; NaN for fewer than 3
+/// (the heap has run out into a layer: no flank left).
+double slope_to_plate(const HeapFrame& f, const std::vector<std::size_t>& points) {
+    if (points.size() < 3) {
+        return std::nan("");
+    }
+    double ms = 0.0, mn = 0.0;
+    for (const std::size_t k : points) {
+        ms += f.s[k] / static_cast<double>(points.size());
+        mn += f.n[k] / static_cast<double>(points.size());
+    }
+    double sxy = 0.0, sxx = 0.0;
+    for (const std::size_t k : points) {
+        sxy += (f.s[k] - ms) * (f.n[k] - mn);
+        sxx += (f.s[k] - ms) * (f.s[k] - ms);
+    }
+    return std::atan(sxy / sxx) * 180.0 / std::numbers::pi;
+}
+
+// The cohesionless heap (phi = 35 deg, flanks at 20 deg, 250 particles at 4 mm) on the turning
+// plate, mu_s = mu_k = 0.5; the events of cases/tilting_plate/analyse_cone.py, from the frames
+// (every 0.1 deg of turning), once the plate has turned 0.5 deg (the heap first settles):
+// - surface avalanching starts when the downhill flank stands at the repose angle: in plane
+//   strain, where the cone fit is exact, an infinite cohesionless slope fails at phi. The flank
+//   is read from its 4 surface particles over about 6 spacings of run, each at +-dp/2: +-5 deg
+//   (measured: first motion, faster than 1 mm/s, with the flank at 33.0 deg to the horizontal);
+// - sand flowing down the flank keeps it below phi (measured 31.6 deg on average);
+// - the uphill half of the base slides near atan(mu_s) = 26.57 deg, not before it, and late
+//   by what holds the uphill remnant (docs/validation/tilting_plate.md: measured 28.1 deg; the
+//   bound +2.5 deg keeps that explained margin, 1.5 deg, from growing unnoticed).
+TEST(TiltingPlateSmall, CohesionlessHeapAvalanchesAtTheFrictionAngleThenSlides) {
+    const std::string name = "tilting_plate_cone_small";
+    const std::string out = ::testing::TempDir() + "grainload_" + name;
+    std::filesystem::remove_all(out);
+    const auto run = run_cli("run '" + source_path("cases/tilting_plate/" + name + ".toml") +
+                                 "' --out '" + out + "' --threads 1",
+                             out + ".log");
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    const double phi = 35.0, spacing = 0.004, interval = 0.02, threshold = 1e-3;
+    const double slide_limit = std::atan(0.5) * 180.0 / std::numbers::pi;
+    const double angle_zero = plate_angle(frame_file(out, name, 0));
+    const HeapFrame first = read_heap(frame_file(out, name, 0), angle_zero);
+    const double bottom = *std::min_element(first.n.begin(), first.n.end());
+    const std::vector<std::size_t> flank = flank_surface(first, bottom, spacing);
+    std::vector<std::size_t> base;
+    for (std::size_t k = 0; k < first.n.size(); ++k) {
+        if (first.n[k] < bottom + 0.5 * spacing) {
+            base.push_back(k);
+        }
+    }
+    std::sort(base.begin(), base.end(), [&](auto a, auto b) { return first.s[a] < first.s[b]; });
+    base.erase(base.begin(), base.begin() + static_cast<long>(base.size() / 2));
+    ASSERT_GE(flank.size(), 3u);
+
+    double motion_flank = std::nan(""), slide = std::nan(""), flowing_sum = 0.0;
+    int flowing_frames = 0;
+    double steepest = -90.0, steepest_at = std::nan("");
+    HeapFrame previous = first;
+    for (int k = 1; std::filesystem::exists(frame_file(out, name, k)); ++k) {
+        const HeapFrame f = read_heap(frame_file(out, name, k), angle_zero);
+        const double degrees = f.angle * 180.0 / std::numbers::pi;
+        const double to_horizontal = slope_to_plate(f, flank_surface(f, bottom, spacing)) + degrees;
+        double flank_speed = 0.0;
+        for (const std::size_t p : flank) {
+            flank_speed -= (f.s[p] - previous.s[p]) / interval / static_cast<double>(flank.size());
+        }
+        std::vector<double> base_speed;
+        for (const std::size_t p : base) {
+            base_speed.push_back(-(f.s[p] - previous.s[p]) / interval);
+        }
+        std::nth_element(base_speed.begin(), base_speed.begin() + base_speed.size() / 2,
+                         base_speed.end());
+        previous = f;
+        if (degrees < 0.5 || !std::isnan(slide)) {
+            continue;
+        }
+        if (std::isnan(motion_flank) && flank_speed > threshold) {
+            motion_flank = to_horizontal;
+        }
+        if (base_speed[base_speed.size() / 2] > threshold) {
+            slide = degrees;
+            continue;
+        }
+        if (to_horizontal > steepest) {
+            steepest = to_horizontal;
+            steepest_at = degrees;
+        } else if (degrees > steepest_at + 1.0 && std::isfinite(to_horizontal)) {
+            flowing_sum += to_horizontal;
+            ++flowing_frames;
+        }
+    }
+    const double flowing = flowing_sum / flowing_frames;
+    std::cout << name << ": flank first moves standing at " << motion_flank << " deg, flows at "
+              << flowing << " deg (phi " << phi << "); base slides at " << slide
+              << " deg, atan(mu_s) = " << slide_limit << " deg\n";
+    EXPECT_NEAR(motion_flank, phi, 5.0);
+    EXPECT_LT(flowing, phi);
+    EXPECT_GT(flowing, phi - 10.0);
+    EXPECT_GT(slide, slide_limit - 0.5);
+    EXPECT_LT(slide, slide_limit + 2.5);
 }
 
 // A contact stiffness far beyond the time step's reach (1e4 GPa, 1e7 times the sand's modulus:
