@@ -1,0 +1,112 @@
+// Stress updates per second of the constitutive models on one thread, with and without the
+// consistent tangent, and where the returns end (elastic, failure surface, cap, corner, apex).
+// The sand is the thesis's generalized cap (section 7.2, X0 = 0: every compressed point sits on
+// the cap, as in the 3D column collapse) at the full stiffness and at K/1000, and the
+// Drucker-Prager sand of the 2D collapse. Each point follows its own random strain path: a
+// compressive volumetric drift plus random shear, scaled so that one increment changes the
+// stress by about `stress_step` (a few per cent of the kPa stresses of a lab-scale column).
+//
+// usage: material_update [points] [steps]   (default 20000 points, 50 steps)
+
+#include "materials/cone_fit.hpp"
+#include "materials/drucker_prager.hpp"
+#include "materials/generalized_cap.hpp"
+
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <numbers>
+#include <random>
+#include <vector>
+
+namespace {
+
+using namespace grainload;
+using namespace grainload::materials;
+
+struct Figures {
+    double updates_per_second = 0.0;
+    std::array<long, 5> regions{};
+};
+
+Figures run(const Material& material, int points, int steps, double stress_step, bool tangent) {
+    const int n_state = material.state_size();
+    std::vector<double> state(static_cast<std::size_t>(points * n_state));
+    std::vector<Voigt6> stress(static_cast<std::size_t>(points), Voigt6::Zero());
+    for (int i = 0; i < points; ++i) {
+        material.initialise_state({state.data() + i * n_state, static_cast<std::size_t>(n_state)});
+    }
+    const double strain_step = stress_step / material.elastic().bulk_modulus;
+    std::mt19937 random(1);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    std::vector<Voigt6> increments(static_cast<std::size_t>(points * steps));
+    for (Voigt6& d : increments) {
+        for (int a = 0; a < 6; ++a) {
+            d[a] = strain_step * normal(random);
+        }
+        d.head<3>().array() -= strain_step; // compaction on average (tension positive)
+    }
+    Figures figures;
+    Matrix6 d_stress;
+    const auto start = std::chrono::steady_clock::now();
+    for (int step = 0; step < steps; ++step) {
+        for (int i = 0; i < points; ++i) {
+            const PlasticRegion region =
+                material.update(increments[static_cast<std::size_t>(step * points + i)],
+                                stress[static_cast<std::size_t>(i)],
+                                {state.data() + i * n_state, static_cast<std::size_t>(n_state)},
+                                tangent ? &d_stress : nullptr);
+            ++figures.regions[static_cast<std::size_t>(region)];
+        }
+    }
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    figures.updates_per_second = static_cast<double>(points) * steps / seconds;
+    return figures;
+}
+
+void report(const char* name, const Material& material, int points, int steps, double stress_step) {
+    for (const bool tangent : {false, true}) {
+        const Figures f = run(material, points, steps, stress_step, tangent);
+        const double total = static_cast<double>(points) * steps;
+        std::array<double, 5> percent{};
+        for (std::size_t r = 0; r < percent.size(); ++r) {
+            percent[r] = 100.0 * static_cast<double>(f.regions[r]) / total;
+        }
+        std::printf("%-34s %-8s %10.3e   %5.1f %5.1f %5.1f %5.1f %5.1f\n", name,
+                    tangent ? "yes" : "no", f.updates_per_second, percent[0], percent[1],
+                    percent[2], percent[3], percent[4]);
+    }
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    const int points = argc > 1 ? std::atoi(argv[1]) : 20000;
+    const int steps = argc > 2 ? std::atoi(argv[2]) : 50;
+    // Thesis section 7.2 (BRIEF.md), stresses in MPa there: SI here.
+    cap::Parameters thesis;
+    thesis.k = 0.03858e6;
+    thesis.theta = 0.03;
+    thesis.gamma = 0.03858e6;
+    thesis.beta = 9.0e-6;
+    thesis.D = 7.25e-6;
+    thesis.W = 0.18;
+    thesis.X0 = 0.0;
+    thesis.R = 2.0;
+    const GeneralizedCap full(ElasticConstants::from_bulk_shear(2099.0, 30.62e9, 8.23e9), thesis);
+    const GeneralizedCap scaled(ElasticConstants::from_bulk_shear(2099.0, 30.62e6, 8.23e6), thesis);
+    const ConeConstants cone =
+        fit_cone(ConeFit::plane_strain, 21.9 * std::numbers::pi / 180.0, 0.0, 0.0);
+    const DruckerPrager sand(ElasticConstants::from_young(2040.0, 5.84e6, 0.3),
+                             {cone.alpha, cone.k, cone.alpha_flow});
+    std::printf("%d points x %d steps, one thread, stress change per increment ~100 Pa\n", points,
+                steps);
+    std::printf("%-34s %-8s %10s   %% elastic/failure/cap/corner/apex\n", "model", "tangent",
+                "updates/s");
+    report("generalized cap, thesis K", full, points, steps, 100.0);
+    report("generalized cap, K/1000", scaled, points, steps, 100.0);
+    report("Drucker-Prager, 2D collapse sand", sand, points, steps, 100.0);
+    return 0;
+}
