@@ -191,16 +191,7 @@ double SphSolver::wall_work(double dt) const {
 }
 
 double SphSolver::held_energy() const {
-    const ParticleSet& p = particles_;
-    const Index n = p.size();
-    double sum = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : sum)
-    for (Index i = 0; i < n; ++i) {
-        if (!is_wall_[i]) {
-            sum += p.mass[i] * (0.5 * p.velocity[i].squaredNorm() + p.internal_energy[i]);
-        }
-    }
-    return sum;
+    return kinetic_energy() + internal_energy();
 }
 
 double SphSolver::contact_energy() const {

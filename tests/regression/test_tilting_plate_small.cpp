@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <numbers>
+#include <numeric>
 #include <vector>
 
 namespace {
@@ -33,21 +34,33 @@ double plate_angle(const std::string& vtm) {
     return std::atan2(far[1], far[0]);
 }
 
+/// The body's particles (block 0) in the plate's frame: s along the plate from the hinge, n
+/// normal to it.
+struct BodyFrame {
+    double angle = 0.0; ///< plate rotation since frame 0, rad
+    std::vector<double> s, n;
+};
+
+BodyFrame read_body(const std::string& vtm, double angle_zero) {
+    BodyFrame frame;
+    frame.angle = plate_angle(vtm) - angle_zero;
+    const double c = std::cos(frame.angle);
+    const double sn = std::sin(frame.angle);
+    const auto body = read_particle_block(vtm, 0);
+    for (vtkIdType k = 0; k < body->GetNumberOfPoints(); ++k) {
+        double x[3];
+        body->GetPoint(k, x);
+        frame.s.push_back(x[0] * c + x[1] * sn);
+        frame.n.push_back(-x[0] * sn + x[1] * c);
+    }
+    return frame;
+}
+
 /// The block's position: its centroid projected on the plate.
 PlateFrame read_frame(const std::string& vtm, double angle_zero) {
-    const auto block = read_particle_block(vtm, 0);
-    PlateFrame frame;
-    frame.angle = plate_angle(vtm) - angle_zero;
-    double cx = 0.0;
-    double cy = 0.0;
-    for (vtkIdType k = 0; k < block->GetNumberOfPoints(); ++k) {
-        double x[3];
-        block->GetPoint(k, x);
-        cx += x[0] / static_cast<double>(block->GetNumberOfPoints());
-        cy += x[1] / static_cast<double>(block->GetNumberOfPoints());
-    }
-    frame.position = cx * std::cos(frame.angle) + cy * std::sin(frame.angle);
-    return frame;
+    const BodyFrame body = read_body(vtm, angle_zero);
+    const double sum = std::accumulate(body.s.begin(), body.s.end(), 0.0);
+    return {body.angle, sum / static_cast<double>(body.s.size())};
 }
 
 std::string frame_file(const std::string& out, const std::string& name, int k) {
@@ -132,31 +145,10 @@ TEST(TiltingPlateSmall, MoistSandHeapStartsSlidingAtTheFrictionAngle) {
     EXPECT_LT(onset.held_slip, 1e-4);
 }
 
-/// The heap's particles in the plate's frame: s along the plate from the hinge, n normal to it.
-struct HeapFrame {
-    double angle = 0.0; ///< plate rotation since frame 0, rad
-    std::vector<double> s, n;
-};
-
-HeapFrame read_heap(const std::string& vtm, double angle_zero) {
-    HeapFrame frame;
-    frame.angle = plate_angle(vtm) - angle_zero;
-    const double c = std::cos(frame.angle);
-    const double sn = std::sin(frame.angle);
-    const auto heap = read_particle_block(vtm, 0);
-    for (vtkIdType k = 0; k < heap->GetNumberOfPoints(); ++k) {
-        double x[3];
-        heap->GetPoint(k, x);
-        frame.s.push_back(x[0] * c + x[1] * sn);
-        frame.n.push_back(-x[0] * sn + x[1] * c);
-    }
-    return frame;
-}
-
 /// Row of every particle in spacings above the first frame's bottom row; per row from 2 to the
 /// second highest (the toe rests on the plate, the top row is the summit), the particle
 /// nearest the hinge: the downhill flank's surface.
-std::vector<std::size_t> flank_surface(const HeapFrame& f, double bottom, double spacing) {
+std::vector<std::size_t> flank_surface(const BodyFrame& f, double bottom, double spacing) {
     std::vector<long> row(f.n.size());
     long top = 0;
     for (std::size_t k = 0; k < f.n.size(); ++k) {
@@ -180,7 +172,7 @@ std::vector<std::size_t> flank_surface(const HeapFrame& f, double bottom, double
 
 /// Least-squares slope angle of the given particles to the plate, deg; NaN for fewer than 3
 /// (the heap has run out into a layer: no flank left).
-double slope_to_plate(const HeapFrame& f, const std::vector<std::size_t>& points) {
+double slope_to_plate(const BodyFrame& f, const std::vector<std::size_t>& points) {
     if (points.size() < 3) {
         return std::nan("");
     }
@@ -215,7 +207,7 @@ TEST(TiltingPlateSmall, CohesionlessHeapAvalanchesAtTheFrictionAngleThenSlides) 
     const double phi = 35.0, spacing = 0.004, interval = 0.02, threshold = 1e-3;
     const double slide_limit = std::atan(0.5) * 180.0 / std::numbers::pi;
     const double angle_zero = plate_angle(frame_file(out, name, 0));
-    const HeapFrame first = read_heap(frame_file(out, name, 0), angle_zero);
+    const BodyFrame first = read_body(frame_file(out, name, 0), angle_zero);
     const double bottom = *std::min_element(first.n.begin(), first.n.end());
     const std::vector<std::size_t> flank = flank_surface(first, bottom, spacing);
     std::vector<std::size_t> base;
@@ -231,9 +223,9 @@ TEST(TiltingPlateSmall, CohesionlessHeapAvalanchesAtTheFrictionAngleThenSlides) 
     double motion_flank = std::nan(""), slide = std::nan(""), flowing_sum = 0.0;
     int flowing_frames = 0;
     double steepest = -90.0, steepest_at = std::nan("");
-    HeapFrame previous = first;
+    BodyFrame previous = first;
     for (int k = 1; std::filesystem::exists(frame_file(out, name, k)); ++k) {
-        const HeapFrame f = read_heap(frame_file(out, name, k), angle_zero);
+        const BodyFrame f = read_body(frame_file(out, name, k), angle_zero);
         const double degrees = f.angle * 180.0 / std::numbers::pi;
         const double to_horizontal = slope_to_plate(f, flank_surface(f, bottom, spacing)) + degrees;
         double flank_speed = 0.0;

@@ -66,7 +66,7 @@ TEST(Contact, DiscsCollideSeparateAndDoNotInterpenetrate) {
         closest = std::min(closest, smallest_neighbour_distance(solver, true));
         const double stored = solver.contact_energy();
         largest_stored = std::max(largest_stored, stored);
-        const double held = solver.kinetic_energy() + solver.internal_energy() + stored;
+        const double held = solver.held_energy() + stored;
         largest_error = std::max(largest_error, std::abs(held - initial) / initial);
     }
     const auto& p = solver.particles();
