@@ -15,6 +15,13 @@ constexpr double kTolerance = 1e-14;
 // cap centre (a few ulps); and how often a step that leaves the admissible box is halved.
 constexpr double kRoundOff = 1e-15;
 constexpr int kMaxStepCuts = 60;
+// How close the reduced cap solve brings its start for the Newton polish (relative to the
+// corner's shift): Newton converges quadratically from there in 2-3 steps.
+constexpr double kStartTolerance = 1e-8;
+// Newton's a carries the round-off of the volumetric balance, about 1e-16 (I1_tr - L_n). An
+// a below this fraction of I1_tr - L_n (a return next to the corner) is left to the nested
+// solve, which treats a as exact: rho = 3a / (3a + G R^2 dv) must not inherit that round-off.
+constexpr double kResolvedGap = 1e-6;
 
 double tolerance_for(const Model& m, double i1_trial, double q_trial, const Hardening& s) {
     return kTolerance * (std::abs(i1_trial) + q_trial + std::abs(s.l) + std::abs(m.p.k) + 1.0);
@@ -239,17 +246,14 @@ Return flat_cap(Return corner, double q_trial, const Parameters& p) {
 }
 
 /// Newton on both cap equations at once, r1 = (I1_tr - L_n) - dL - 3K dv(dL) - a and
-/// r2 = g(a, L_n + dL), from the elastic trial (a = I1_tr - L_n, dL = 0). A step that would
-/// leave the admissible box 0 <= a, dL <= I1_tr - L_n (dv >= 0 bounds dL) is halved until it
-/// stays inside: the first step from the trial overshoots to a < 0 whenever the hardening is
-/// stiff (3K dv'(0) >> 1, e.g. every compressed point of the thesis sand with X0 = 0), which
-/// sent 97 % of its cap returns to the bracketed solve. Returns false when no step inside the
-/// box is found or the iteration does not converge; the bracketed solve then takes over.
+/// r2 = g(a, L_n + dL), from the start (a, dL) passed in. A step that would leave the
+/// admissible box 0 <= a, dL <= I1_tr - L_n (dv >= 0 bounds dL) is halved until it stays
+/// inside: the first step from the trial overshoots to a < 0 whenever the hardening is stiff
+/// (3K dv'(0) >> 1, e.g. every compressed point of the thesis sand with X0 = 0). Returns false
+/// when no step inside the box is found or the iteration does not converge.
 /// Converged: |da| below kTolerance a or the residual's round-off, about 1e-15 (I1_tr - L_n).
 bool cap_newton(const Model& m, double q_trial, const Hardening& s, double a_trial, double& a,
                 double& dl) {
-    a = a_trial;
-    dl = 0.0;
     for (int iteration = 0; iteration < 25; ++iteration) {
         const CapMove c = move_cap(m.p, s, dl);
         const CapResidual r = cap_residual(m, q_trial, a, s.l + dl, c);
@@ -280,20 +284,54 @@ bool cap_newton(const Model& m, double q_trial, const Hardening& s, double a_tri
     return false;
 }
 
+/// A start for cap_newton where the one from the trial fails. The volumetric balance gives a
+/// explicitly, a(dL) = (I1_tr - L_n) - dL - 3K dv(dL), so the cap condition reduces to
+/// h(dL) = g(a(dL), L_n + dL) on [0, dL_corner]: h(0) > 0 (the trial is outside the cap) and
+/// h(dL_corner) = -R B <= 0 (a = 0, rho = 0). For a trial far above the envelope,
+/// R^2 q_tr^2 > (a + R B)^2 makes g decrease with a and h rise from dL = 0, so Newton from
+/// the trial heads out of the box (the thesis sand at full stiffness: 94 % of its cap
+/// returns). The bracketed solve on h does not care; it is needed only near the root, where
+/// cap_newton then resolves a small a to its own precision rather than to the round-off of
+/// a(dL). Returns false when the corner lies below I1_min.
+bool cap_reduced_start(const Model& m, double i1_trial, double q_trial, const Hardening& s,
+                       double& a, double& dl) {
+    const CornerShift corner = corner_shift(m, i1_trial, s);
+    if (!corner.feasible || !(corner.dl > 0.0)) {
+        return false;
+    }
+    const double a_trial = i1_trial - s.l;
+    const auto reduced = [&](double dl_try, double& h, double& dh) {
+        const CapMove c = move_cap(m.p, s, dl_try);
+        const double slope = -1.0 - 3.0 * m.bulk * c.rate; // da/dL
+        const CapResidual r = cap_residual(
+            m, q_trial, std::max(a_trial - dl_try - 3.0 * m.bulk * c.dv, 0.0), s.l + dl_try, c);
+        h = r.g;
+        dh = r.g_a * slope + r.g_l;
+    };
+    dl = solve_bracketed(reduced, 0.0, corner.dl, kStartTolerance * corner.dl).value;
+    a = std::max(a_trial - dl - 3.0 * m.bulk * move_cap(m.p, s, dl).dv, 0.0);
+    return true;
+}
+
 /// Cap return with the unknown a = I1 - L in [0, I1_tr - L_n]; for each a the move dL of the
 /// centre solves the volumetric balance (I1_tr - L_n) - dL - 3K dv(dL) = a, (4.6.3.35)-
 /// (4.6.3.37). Solving for a rather than L resolves returns that end next to the corner
-/// (a ~ R^2, tiny for small R) and trials within round-off of I1_tr = L_n. The nested,
-/// bracketed solve is the safe path; cap_newton is tried first because it is ~5x cheaper.
+/// (a ~ R^2, tiny for small R) and trials within round-off of I1_tr = L_n. cap_newton is tried
+/// from the trial, then from cap_reduced_start; the nested, bracketed solve is the safe path
+/// left when both fail.
 Return cap_return(const Model& m, double i1_trial, double q_trial, const Hardening& s) {
     const Parameters& p = m.p;
     if (p.R == 0.0) {
         return flat_cap(corner_return(m, i1_trial, q_trial, s), q_trial, p);
     }
     const double a_trial = i1_trial - s.l;
-    double a = 0.0;
+    double a = a_trial;
     double dl = 0.0;
-    if (!cap_newton(m, q_trial, s, a_trial, a, dl)) {
+    const bool converged = cap_newton(m, q_trial, s, a_trial, a, dl) ||
+                           (cap_reduced_start(m, i1_trial, q_trial, s, a, dl) &&
+                            cap_newton(m, q_trial, s, a_trial, a, dl));
+    const bool solved = converged && a >= kResolvedGap * a_trial;
+    if (!solved) {
         const double dl_max = corner_shift(m, i1_trial, s).dl; // a = 0 bounds dL
         const double tolerance = kTolerance * dl_max;
         double last_dl = std::numeric_limits<double>::quiet_NaN(); // warm start
