@@ -178,7 +178,7 @@ void SphSolver::step(double dt) {
 }
 
 double SphSolver::wall_work(double dt) const {
-    double power = 0.0;
+    double power = wall_contact_.reaction_power_correction();
     for (const RigidWall& wall : walls_) {
         if (wall.velocity.squaredNorm() == 0.0 && wall.angular_velocity.squaredNorm() == 0.0) {
             continue;

@@ -106,6 +106,7 @@ void WallContact::apply(ParticleSet& p, const NeighbourList& neighbours,
                         std::vector<double>& heating_rate) {
     sticking_ = 0;
     slipping_ = 0;
+    reaction_power_correction_ = 0.0;
     const double zeta = options.contact.damping_ratio;
     if ((options.friction.empty() && !(zeta > 0.0)) || !(dt > 0.0) ||
         !(options.contact.stiffness > 0.0)) {
@@ -178,7 +179,8 @@ void WallContact::apply(ParticleSet& p, const NeighbourList& neighbours,
                 }
                 if (force.squaredNorm() > 0.0) {
                     p.acceleration[i] += force / p.mass[i];
-                    records.push_back({i, touch.wall_index, force, touch.weight_sum});
+                    records.push_back(
+                        {i, touch.wall_index, force, touch.weight_sum, wall_velocity});
                 }
             }
             heating_rate[static_cast<std::size_t>(i)] += heat / p.mass[i];
@@ -198,6 +200,7 @@ void WallContact::distribute_reactions(ParticleSet& p, const NeighbourList& neig
     for (const auto& records : per_thread_) {
         for (const Record& record : records) {
             const Index i = record.particle;
+            Vec3 reaction_velocity = Vec3::Zero(); // share-weighted, the shares sum to 1
             for (const Index j : neighbours.neighbours(i)) {
                 if (p.wall_id[j] != record.wall_index) {
                     continue;
@@ -209,7 +212,10 @@ void WallContact::distribute_reactions(ParticleSet& p, const NeighbourList& neig
                 const double share =
                     p.mass[j] / p.density[j] * kernel.value(std::sqrt(r2)) / record.weight_sum;
                 p.acceleration[j] -= (share / p.mass[j]) * record.force;
+                reaction_velocity += share * p.velocity[j];
             }
+            reaction_power_correction_ +=
+                record.force.dot(record.wall_velocity - reaction_velocity);
         }
     }
 }

@@ -45,6 +45,12 @@ class WallContact {
     /// Work done against wall friction so far (J, or J/m in plane strain), positive.
     double friction_work() const { return friction_work_; }
     void set_friction_work(double value) { friction_work_ = value; }
+    /// The reactions go to wall particles below the surface, whose velocities differ from the
+    /// wall's velocity at the contact point x_i by omega x (x_i - x_j) on a turning wall. The
+    /// power the wall puts into the body through the dashpot and friction is
+    /// F . v_w(x_i), which is what their heat is booked against; this is that power minus the
+    /// power of the distributed reactions at their own velocities (W, last call).
+    double reaction_power_correction() const { return reaction_power_correction_; }
     /// Body-wall particle contacts that stuck and slipped in the last call.
     Index sticking() const { return sticking_; }
     Index slipping() const { return slipping_; }
@@ -55,12 +61,14 @@ class WallContact {
         int wall_index;
         Vec3 force;
         double weight_sum;
+        Vec3 wall_velocity; ///< the wall's rigid-body velocity at the body particle
     };
     void distribute_reactions(ParticleSet& p, const NeighbourList& neighbours,
                               const SmoothingKernel& kernel);
 
     std::vector<std::vector<Record>> per_thread_;
     double friction_work_ = 0.0;
+    double reaction_power_correction_ = 0.0;
     Index sticking_ = 0;
     Index slipping_ = 0;
 };

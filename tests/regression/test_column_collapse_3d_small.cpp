@@ -1,4 +1,4 @@
-#include "support/cli_runner.hpp"
+#include "support/case_runner.hpp"
 #include "support/frame_reader.hpp"
 
 #include <algorithm>
@@ -22,14 +22,6 @@ constexpr double kSpacing = 0.0144;
 constexpr double kDensity = 2099.0;
 constexpr double kGravity = 9.81;
 
-double result_value(const std::string& summary, const std::string& name) {
-    // A figure written as null (an angle that cannot be fitted, a rest not reached) fails here.
-    const std::regex pattern("\"" + name + "\": \\{\"value\": ([-+0-9.eE]+)");
-    std::smatch match;
-    EXPECT_TRUE(std::regex_search(summary, match, pattern)) << name << " missing or null";
-    return match.empty() ? std::nan("") : std::stod(match[1]);
-}
-
 /// Friction angle of the cap envelope F(I1) = k + theta I1 - gamma exp(-B1 I1) at I1 -> 0
 /// (k = gamma: no cohesion), where its slope is steepest: theta + gamma B1 = 0.377, matched to
 /// Mohr-Coulomb on the compression meridian, alpha = 2 sin(phi) / (sqrt(3) (3 - sin(phi))):
@@ -43,13 +35,9 @@ double envelope_friction_angle() {
 }
 
 std::string run_case(const std::string& name) {
-    const std::string out = ::testing::TempDir() + "grainload_" + name;
-    std::filesystem::remove_all(out);
-    const auto run = run_cli("run '" + source_path("cases/column_collapse/" + name + ".toml") +
-                                 "' --out '" + out + "'",
-                             out + ".log");
-    EXPECT_EQ(run.exit_code, 0) << run.output;
-    return out;
+    const CaseRun run = run_case_file("cases/column_collapse/" + name + ".toml", name);
+    EXPECT_EQ(run.cli.exit_code, 0) << run.cli.output;
+    return run.out;
 }
 
 /// What both variants must show: every particle kept, the weight carried by the floor, the

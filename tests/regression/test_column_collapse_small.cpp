@@ -1,4 +1,4 @@
-#include "support/cli_runner.hpp"
+#include "support/case_runner.hpp"
 #include "support/frame_reader.hpp"
 
 #include <algorithm>
@@ -39,13 +39,6 @@ ColumnState read_column(const std::string& vtm) {
     return state;
 }
 
-double result_value(const std::string& summary, const std::string& name) {
-    const std::regex pattern("\"" + name + "\": \\{\"value\": ([-+0-9.eE]+)");
-    std::smatch match;
-    EXPECT_TRUE(std::regex_search(summary, match, pattern)) << name << " missing";
-    return match.empty() ? 0.0 : std::stod(match[1]);
-}
-
 // The CI version of column_collapse_2d (20 x 10 particles, 0.6 s). The walls are static, so they
 // do no work: the potential energy the column loses must reappear as kinetic plus internal
 // energy (stress power, plastic and viscous dissipation, and the heat of wall friction and of
@@ -58,13 +51,10 @@ double result_value(const std::string& summary, const std::string& name) {
 // to rest (issue 4's criterion: kinetic energy below 1e-4 of its peak): on a frictionless floor
 // the back wall's thrust keeps the heap sliding for ever (docs/validation/column_collapse_2d.md).
 TEST(ColumnCollapseSmall, LosesPotentialEnergyToHeatAndComesToRest) {
-    const std::string out = ::testing::TempDir() + "grainload_column_collapse_small";
-    std::filesystem::remove_all(out);
-    const auto run =
-        run_cli("run '" + source_path("cases/column_collapse_2d/column_collapse_2d_small.toml") +
-                    "' --out '" + out + "'",
-                out + ".log");
-    ASSERT_EQ(run.exit_code, 0) << run.output;
+    const CaseRun run = run_case_file("cases/column_collapse_2d/column_collapse_2d_small.toml",
+                                      "column_collapse_small");
+    ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
+    const std::string& out = run.out;
     std::vector<ColumnState> frames;
     for (int frame = 0; frame <= 12; ++frame) {
         char name[64];

@@ -1,5 +1,5 @@
 #include "io/surface_mesh_reader.hpp"
-#include "support/cli_runner.hpp"
+#include "support/case_runner.hpp"
 #include "support/frame_reader.hpp"
 
 #include <Eigen/Geometry>
@@ -51,12 +51,10 @@ std::vector<WallSample> read_wall_forces(const std::string& csv) {
 //   Measured: 0.11 % of m g T; 1 % bounds it while still catching a wall force that is not
 //   the reaction of the sand's contact force.
 TEST(HopperFillSmall, SandStaysInsideTheMeshHopperAndItsImpulseBalances) {
-    const std::string out = ::testing::TempDir() + "grainload_hopper_fill_small";
-    std::filesystem::remove_all(out);
-    const auto run = run_cli("run '" + source_path("cases/hopper_fill/hopper_fill_small.toml") +
-                                 "' --out '" + out + "'",
-                             out + ".log");
-    ASSERT_EQ(run.exit_code, 0) << run.output;
+    const CaseRun run =
+        run_case_file("cases/hopper_fill/hopper_fill_small.toml", "hopper_fill_small");
+    ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
+    const std::string& out = run.out;
     const auto sand = read_particle_block(out + "/frames/hopper_fill_small_000030.vtm");
     ASSERT_EQ(sand->GetNumberOfPoints(), 96);
     const double dx = 0.02, mass = 1600.0 * dx * dx * dx, g = 9.81, end = 0.3;

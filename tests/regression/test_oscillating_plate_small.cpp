@@ -1,4 +1,4 @@
-#include "support/cli_runner.hpp"
+#include "support/case_runner.hpp"
 #include "support/frame_reader.hpp"
 
 #include <cmath>
@@ -72,13 +72,10 @@ std::vector<double> crossings_down(const std::vector<double>& series, double lev
 // and in the period squared (measured here 1.202 and 1.0961^2 = 1.201), so the period's +12 % is
 // +25 % here; and a root that never moves.
 TEST(OscillatingPlateSmall, TotalLagrangianPlateSwingsAtThinPlateFrequencyFromTheCli) {
-    const std::string out = ::testing::TempDir() + "grainload_oscillating_plate_small";
-    std::filesystem::remove_all(out);
-    const auto run =
-        run_cli("run '" + source_path("cases/oscillating_plate/oscillating_plate_small.toml") +
-                    "' --out '" + out + "' --threads 1",
-                out + ".log");
-    ASSERT_EQ(run.exit_code, 0) << run.output;
+    const CaseRun run = run_case_file("cases/oscillating_plate/oscillating_plate_small.toml",
+                                      "oscillating_plate_small", "--threads 1");
+    ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
+    const std::string& out = run.out;
     std::vector<double> tip;
     double root_motion = 0.0;
     for (int k = 0;; ++k) {

@@ -1,4 +1,4 @@
-#include "support/cli_runner.hpp"
+#include "support/case_runner.hpp"
 #include "support/frame_reader.hpp"
 
 #include <algorithm>
@@ -112,12 +112,9 @@ Heap measure_heap(vtkPolyData* sand, double spacing) {
 //   and friction reactions are spread onto the wall's particles, so this also checks that
 //   they are the reactions of what the sand feels).
 TEST(ReposeSmall, LiftedTubeLeavesAHeapAtRestNoSteeperThanTheFrictionAngle) {
-    const std::string out = ::testing::TempDir() + "grainload_repose_small";
-    std::filesystem::remove_all(out);
-    const auto run =
-        run_cli("run '" + source_path("cases/repose/repose_small.toml") + "' --out '" + out + "'",
-                out + ".log");
-    ASSERT_EQ(run.exit_code, 0) << run.output;
+    const CaseRun run = run_case_file("cases/repose/repose_small.toml", "repose_small");
+    ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
+    const std::string& out = run.out;
     const double spacing = 0.02, phi = 30.0, tube_radius = 0.132, floor_half_width = 0.24;
     const double tube_moves = 0.1, interval = 0.05; // s, from the case file
 

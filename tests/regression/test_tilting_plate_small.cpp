@@ -1,4 +1,4 @@
-#include "support/cli_runner.hpp"
+#include "support/case_runner.hpp"
 #include "support/frame_reader.hpp"
 
 #include <algorithm>
@@ -77,13 +77,22 @@ struct Onset {
 /// Runs cases/tilting_plate/<name>.toml through the CLI on one thread; returns the output
 /// directory (empty when the run failed).
 std::string run_case(const std::string& name) {
-    const std::string out = ::testing::TempDir() + "grainload_" + name;
-    std::filesystem::remove_all(out);
-    const auto run = run_cli("run '" + source_path("cases/tilting_plate/" + name + ".toml") +
-                                 "' --out '" + out + "' --threads 1",
-                             out + ".log");
-    EXPECT_EQ(run.exit_code, 0) << run.output;
-    return run.exit_code == 0 ? out : std::string();
+    const CaseRun run = run_case_file("cases/tilting_plate/" + name + ".toml", name, "--threads 1");
+    EXPECT_EQ(run.cli.exit_code, 0) << run.cli.output;
+    return run.cli.exit_code == 0 ? run.out : std::string();
+}
+
+/// The work of the turning plate (through the contact potential, and through the dashpot and
+/// friction at the contact points) and of gravity must reappear as the body's kinetic, internal
+/// (stress power, plastic, viscous, dashpot and friction heat) and contact energy. What is left
+/// is the leapfrog's O(dt^2) error of the work sums: measured 5e-6 (block), 2e-7 (moist heap)
+/// and 3e-5 (cohesionless heap) of the energy throughput. Bound 1e-3: booking the dashpot and
+/// friction reactions at the wall particles' own velocities instead of the plate's velocity at
+/// the contact point (omega x (x_i - x_j) apart on a turning plate) left 0.7-1.9 % unaccounted.
+void expect_energy_closes(const std::string& out) {
+    const std::string summary = read_file(out + "/summary.json");
+    EXPECT_LT(std::abs(result_value(summary, "energy_balance_error")), 1e-3);
+    EXPECT_GT(result_value(summary, "moving_wall_work"), 0.0);
 }
 
 /// Runs the case and reads the body's slip along the plate from its frames (every 0.02 s,
@@ -93,6 +102,7 @@ Onset measure_onset(const std::string& name, double friction_angle) {
     if (out.empty()) {
         return {};
     }
+    expect_energy_closes(out);
     const double angle_zero = plate_angle(frame_file(out, name, 0));
     const double interval = 0.02;
     std::vector<PlateFrame> frames;
@@ -204,6 +214,7 @@ TEST(TiltingPlateSmall, CohesionlessHeapAvalanchesAtTheFrictionAngleThenSlides) 
     const std::string name = "tilting_plate_cone_small";
     const std::string out = run_case(name);
     ASSERT_FALSE(out.empty());
+    expect_energy_closes(out);
     const double phi = 35.0, spacing = 0.004, interval = 0.02, threshold = 1e-3;
     const double slide_limit = std::atan(0.5) * 180.0 / std::numbers::pi;
     const double angle_zero = plate_angle(frame_file(out, name, 0));
@@ -275,14 +286,12 @@ TEST(TiltingPlateSmall, CohesionlessHeapAvalanchesAtTheFrictionAngleThenSlides) 
 // the particles hold more energy than gravity and the plate have put in (measured: step 13),
 // with exit code 3, the diagnosis, and the last good frame and its checkpoint.
 TEST(TiltingPlateSmall, ContactTooStiffForTheStepStopsTheRunAsUnstable) {
-    const std::string out = ::testing::TempDir() + "grainload_tilting_plate_unstable";
-    std::filesystem::remove_all(out);
-    const auto run =
-        run_cli("run '" + source_path("cases/tilting_plate/tilting_plate_small.toml") +
-                    "' --set 'sph.contact.stiffness=10000 GPa' --out '" + out + "' --threads 1",
-                out + ".log");
-    EXPECT_EQ(run.exit_code, 3) << run.output;
-    EXPECT_NE(run.output.find("energy is being created"), std::string::npos) << run.output;
+    const CaseRun run =
+        run_case_file("cases/tilting_plate/tilting_plate_small.toml", "tilting_plate_unstable",
+                      "--set 'sph.contact.stiffness=10000 GPa' --threads 1");
+    const std::string& out = run.out;
+    EXPECT_EQ(run.cli.exit_code, 3) << run.cli.output;
+    EXPECT_NE(run.cli.output.find("energy is being created"), std::string::npos) << run.cli.output;
     EXPECT_NE(read_file(out + "/summary.json").find("\"status\": \"unstable\""), std::string::npos);
     const auto block = read_particle_block(frame_file(out, "tilting_plate_small", 0), 0);
     ASSERT_GT(block->GetNumberOfPoints(), 0);
