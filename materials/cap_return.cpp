@@ -290,9 +290,9 @@ bool cap_newton(const Model& m, double q_trial, const Hardening& s, double a_tri
 /// h(dL_corner) = -R B <= 0 (a = 0, rho = 0). For a trial far above the envelope,
 /// R^2 q_tr^2 > (a + R B)^2 makes g decrease with a and h rise from dL = 0, so Newton from
 /// the trial heads out of the box (the thesis sand at full stiffness: 94 % of its cap
-/// returns). The bracketed solve on h does not care; it is needed only near the root, where
-/// cap_newton then resolves a small a to its own precision rather than to the round-off of
-/// a(dL). Returns false when the corner lies below I1_min.
+/// returns). The bracketed solve on h does not care; it only has to get near the root, from
+/// where cap_newton converges in a few steps to the coupled equations' tolerance. Returns false
+/// when the corner lies below I1_min.
 bool cap_reduced_start(const Model& m, double i1_trial, double q_trial, const Hardening& s,
                        double& a, double& dl) {
     const CornerShift corner = corner_shift(m, i1_trial, s);
