@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 
 namespace grainload::materials::cap {
@@ -293,13 +294,11 @@ bool cap_newton(const Model& m, double q_trial, const Hardening& s, double a_tri
 /// returns). The bracketed solve on h does not care; it only has to get near the root, from
 /// where cap_newton converges in a few steps to the coupled equations' tolerance. Returns false
 /// when the corner lies below I1_min.
-bool cap_reduced_start(const Model& m, double i1_trial, double q_trial, const Hardening& s,
-                       double& a, double& dl) {
-    const CornerShift corner = corner_shift(m, i1_trial, s);
+bool cap_reduced_start(const Model& m, double q_trial, const Hardening& s, double a_trial,
+                       const CornerShift& corner, double& a, double& dl) {
     if (!corner.feasible || !(corner.dl > 0.0)) {
         return false;
     }
-    const double a_trial = i1_trial - s.l;
     const auto reduced = [&](double dl_try, double& h, double& dh) {
         const CapMove c = move_cap(m.p, s, dl_try);
         const double slope = -1.0 - 3.0 * m.bulk * c.rate; // da/dL
@@ -327,12 +326,18 @@ Return cap_return(const Model& m, double i1_trial, double q_trial, const Hardeni
     const double a_trial = i1_trial - s.l;
     double a = a_trial;
     double dl = 0.0;
-    const bool converged = cap_newton(m, q_trial, s, a_trial, a, dl) ||
-                           (cap_reduced_start(m, i1_trial, q_trial, s, a, dl) &&
-                            cap_newton(m, q_trial, s, a_trial, a, dl));
-    const bool solved = converged && a >= kResolvedGap * a_trial;
-    if (!solved) {
-        const double dl_max = corner_shift(m, i1_trial, s).dl; // a = 0 bounds dL
+    bool converged = cap_newton(m, q_trial, s, a_trial, a, dl);
+    std::optional<CornerShift> corner; // solved once, for the reduced start and the nested solve
+    if (!converged) {
+        corner = corner_shift(m, i1_trial, s);
+        converged = cap_reduced_start(m, q_trial, s, a_trial, *corner, a, dl) &&
+                    cap_newton(m, q_trial, s, a_trial, a, dl);
+    }
+    if (!(converged && a >= kResolvedGap * a_trial)) {
+        if (!corner) {
+            corner = corner_shift(m, i1_trial, s);
+        }
+        const double dl_max = corner->dl; // a = 0 bounds dL
         const double tolerance = kTolerance * dl_max;
         double last_dl = std::numeric_limits<double>::quiet_NaN(); // warm start
         const auto centre = [&](double a_try) {
