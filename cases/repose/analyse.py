@@ -1,11 +1,11 @@
 #!/usr/bin/python3
 """Angle of repose of the heap left by the lifted tube, from a run's frames.
 
-Usage: /usr/bin/python3 cases/repose/analyse.py OUT [--phi DEG]
+Usage: /usr/bin/python3 cases/repose/analyse.py OUT [--phi DEG] [--spacing MM]
 
 The friction angle, spacing and body name come from the case file that summary.json names;
---phi gives the friction angle of a run that overrode it with --set, which summary.json does
-not record.
+--phi and --spacing give those of a run that overrode them with --set, which summary.json
+does not record.
 Last frame, particle centres of the sand:
 - free surface: the highest particle centre in each ring of width one spacing about the z
   axis (the tube's axis), heights measured from the bottom layer's centres;
@@ -88,6 +88,8 @@ def main():
     phi = quantity(material["friction_angle"])
     if "--phi" in sys.argv:
         phi = float(sys.argv[sys.argv.index("--phi") + 1])
+    if "--spacing" in sys.argv:  # a run whose spacing was set with --set, in mm
+        spacing = 1e-3 * float(sys.argv[sys.argv.index("--spacing") + 1])
     floor = next(w for w in case["sph"]["wall"] if w["type"] == "plane")
     floor_min = np.array([quantity(f"{v} mm") for v in floor["origin"].split()[:3]])
     floor_size = [quantity(f"{floor[k].split()[i]} mm") for k, i in (("edge_u", 0), ("edge_v", 1))]
