@@ -14,11 +14,14 @@ import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 
 
-def body_positions(vtm):
-    reader = vtk.vtkXMLMultiBlockDataReader()
-    reader.SetFileName(vtm)
+def body_positions(path):
+    """Particle centres (n x 3, m) of a frame: the first block of a .vtm, or a body's .vtp."""
+    vtp = path.endswith(".vtp")
+    reader = vtk.vtkXMLPolyDataReader() if vtp else vtk.vtkXMLMultiBlockDataReader()
+    reader.SetFileName(path)
     reader.Update()
-    return vtk_to_numpy(reader.GetOutput().GetBlock(0).GetPoints().GetData())
+    data = reader.GetOutput() if vtp else reader.GetOutput().GetBlock(0)
+    return vtk_to_numpy(data.GetPoints().GetData())
 
 
 def main():
