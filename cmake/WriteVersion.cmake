@@ -1,6 +1,6 @@
 # cmake -DSOURCE_DIR=... -DOUTPUT=... -DVERSION=... -P WriteVersion.cmake
 execute_process(
-  COMMAND git rev-parse --short=12 HEAD
+  COMMAND git describe --always --dirty --abbrev=12 --exclude=*
   WORKING_DIRECTORY ${SOURCE_DIR}
   OUTPUT_VARIABLE GRAINLOAD_GIT_HASH
   OUTPUT_STRIP_TRAILING_WHITESPACE
