@@ -72,7 +72,7 @@ double stable_step(const Scene& scene) {
     for (const auto& stepper : scene.steppers) {
         dt = std::min(dt, stepper->stable_time_step());
     }
-    return std::isfinite(dt) ? dt : scene.output_interval;
+    return std::isfinite(dt) ? dt : scene.settings.output_interval;
 }
 
 std::optional<std::string> diagnose(const Scene& scene) {
@@ -87,7 +87,7 @@ std::optional<std::string> diagnose(const Scene& scene) {
 io::RunSummary make_summary(const Scene& scene, const CommandLine& line, const RunClock& clock,
                             double wall_time) {
     io::RunSummary summary;
-    summary.case_name = scene.case_name;
+    summary.case_name = scene.settings.name;
     summary.case_file = line.input;
     summary.threads = omp_get_max_threads();
     summary.wall_time = wall_time;
@@ -104,9 +104,10 @@ io::RunSummary make_summary(const Scene& scene, const CommandLine& line, const R
 
 int check_case(const CommandLine& line) {
     const auto scene = Scene::load(line.input, line.overrides);
-    std::cout << line.input << ": ok (case \"" << scene->case_name << "\", " << scene->dimension
-              << "D, " << scene->materials.size() << " materials, " << scene->point_count()
-              << " particles and nodes, end time " << scene->end_time << " s)\n";
+    std::cout << line.input << ": ok (case \"" << scene->settings.name << "\", "
+              << scene->settings.dimension << "D, " << scene->materials.size() << " materials, "
+              << scene->point_count() << " particles and nodes, end time "
+              << scene->settings.end_time << " s)\n";
     return kExitOk;
 }
 
@@ -115,22 +116,23 @@ int run_case(const CommandLine& line) {
         omp_set_num_threads(*line.threads);
     }
     auto scene = Scene::load(line.input, line.overrides);
-    const std::string out = line.out.value_or("out/" + scene->case_name);
+    const std::string out = line.out.value_or("out/" + scene->settings.name);
     std::filesystem::create_directories(out);
     std::ofstream log(out + "/log.txt", line.restart ? std::ios::app : std::ios::trunc);
     for (const auto& stepper : scene->steppers) {
         stepper->set_output_directory(out);
     }
-    io::VtkFrameWriter writer(out, scene->case_name);
+    io::VtkFrameWriter writer(out, scene->settings.name);
     RunClock clock;
     if (line.restart) {
         clock = read_checkpoint(*scene, *line.restart);
         writer.set_history(clock.frame_times);
     }
-    ProgressReporter progress(log, scene->end_time, scene->point_count());
+    ProgressReporter progress(log, scene->settings.end_time, scene->point_count());
     progress.message("grainload " + std::string(kVersion) + " (" + kGitHash + "): case " +
-                     scene->case_name + ", " + std::to_string(scene->point_count()) + " points, " +
-                     std::to_string(omp_get_max_threads()) + " threads, output " + out);
+                     scene->settings.name + ", " + std::to_string(scene->point_count()) +
+                     " points, " + std::to_string(omp_get_max_threads()) + " threads, output " +
+                     out);
     const std::string checkpoint = out + "/checkpoint.bin";
     auto write_output = [&] {
         writer.write(collect_frame(*scene, clock.t));
@@ -147,14 +149,15 @@ int run_case(const CommandLine& line) {
     // restarted run steps through exactly the same instants (and time steps) as a whole run.
     // An end time within round-off of an instant is that instant: "0.15 s" is 2e-17 s short of
     // 3 * 0.05, and a run stopped there and restarted would otherwise take different steps.
-    const double end_tolerance = 1e-12 * scene->end_time;
+    const double end_tolerance = 1e-12 * scene->settings.end_time;
     auto next_output_time = [&] {
         const double instant =
-            scene->output_interval * static_cast<double>(clock.frame_times.size());
-        return instant < scene->end_time + end_tolerance ? instant : scene->end_time;
+            scene->settings.output_interval * static_cast<double>(clock.frame_times.size());
+        return instant < scene->settings.end_time + end_tolerance ? instant
+                                                                  : scene->settings.end_time;
     };
     double dt = 0.0;
-    while (clock.t < scene->end_time - end_tolerance) {
+    while (clock.t < scene->settings.end_time - end_tolerance) {
         const double next_output = next_output_time();
         dt = std::min(stable_step(*scene), next_output - clock.t);
         for (const auto& stepper : scene->steppers) {
@@ -184,7 +187,7 @@ int run_case(const CommandLine& line) {
     io::write_run_summary(summary, out + "/summary.json");
     progress.message("done: " + std::to_string(clock.step) + " steps, " +
                      std::to_string(summary.wall_time) + " s wall time; " + out +
-                     "/summary.json, " + out + "/" + scene->case_name + ".pvd");
+                     "/summary.json, " + out + "/" + scene->settings.name + ".pvd");
     return kExitOk;
 }
 

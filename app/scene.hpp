@@ -1,6 +1,7 @@
 #pragma once
 
 #include "io/case_table.hpp"
+#include "io/scene_settings.hpp"
 #include "io/stepper.hpp"
 #include "materials/material_library.hpp"
 
@@ -15,10 +16,7 @@ namespace grainload::app {
 /// so `grainload check` and `grainload run` refuse exactly the same files.
 struct Scene {
     std::unique_ptr<io::CaseDocument> document;
-    std::string case_name;
-    int dimension = 3;
-    double end_time = 0.0;
-    double output_interval = 0.0;
+    io::SceneSettings settings;
     materials::MaterialLibrary materials;
     std::vector<std::unique_ptr<io::Stepper>> steppers;
 

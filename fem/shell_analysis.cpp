@@ -30,8 +30,19 @@ std::size_t at(Index i) {
 
 ShellAnalysis::ShellAnalysis(ShellMesh mesh, const materials::Material& material,
                              Kinematics kinematics, int thickness_points)
-    : mesh_(std::move(mesh)), material_(&material), kinematics_(kinematics) {
+    : ShellAnalysis(std::move(mesh), {ShellPart{"shell", &material, thickness_points}},
+                    kinematics) {}
+
+ShellAnalysis::ShellAnalysis(ShellMesh mesh, std::vector<ShellPart> parts, Kinematics kinematics)
+    : mesh_(std::move(mesh)), kinematics_(kinematics), parts_(std::move(parts)) {
     mesh_.validate();
+    for (const ShellElement& element : mesh_.elements()) {
+        if (element.part < 0 || element.part >= static_cast<int>(parts_.size())) {
+            throw std::invalid_argument("shell element of part " + std::to_string(element.part) +
+                                        ", but the structure has " + std::to_string(parts_.size()) +
+                                        " parts");
+        }
+    }
     initial_directors_ = element_directors(mesh_);
     const Index n = mesh_.node_count();
     prescribed_.assign(at(kDofs * n), std::numeric_limits<double>::quiet_NaN());
@@ -47,7 +58,9 @@ ShellAnalysis::ShellAnalysis(ShellMesh mesh, const materials::Material& material
     }
     for (std::size_t e = 0; e < mesh_.elements().size(); ++e) {
         const ShellElement& element = mesh_.elements()[e];
-        elements_.emplace_back(element_nodes(e), element.thickness, material, thickness_points);
+        const ShellPart& part = parts_[static_cast<std::size_t>(element.part)];
+        elements_.emplace_back(element_nodes(e), element.thickness, *part.material,
+                               part.thickness_points);
         elements_.back().set_fold_corners({fold[at(element.nodes[0])], fold[at(element.nodes[1])],
                                            fold[at(element.nodes[2])], fold[at(element.nodes[3])]});
     }
@@ -361,7 +374,13 @@ Vec3 ShellAnalysis::rotation(Index node) const {
 
 Vec3 ShellAnalysis::director(Index element, int corner) const {
     const Index node = mesh_.element(element).nodes[at(corner)];
-    return rotations_[at(node)] * initial_directors_[at(element)][at(corner)];
+    const Vec3& initial = initial_directors_[at(element)][at(corner)];
+    if (kinematics_ == Kinematics::linear) {
+        // Linear kinematics: the director moves by theta x V (Bathe FEP eq. 5.111's linear
+        // part), the motion the element's own strains are computed from.
+        return initial + dofs_.segment<3>(kDofs * node + 3).cross(initial);
+    }
+    return rotations_[at(node)] * initial;
 }
 
 Eigen::VectorXd ShellAnalysis::reactions() {

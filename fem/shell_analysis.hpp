@@ -42,13 +42,26 @@ struct StepReport {
     std::vector<int> iterations;      ///< iterations per accepted increment
 };
 
+/// One shell part of a structure (a [[fem.shell]] table): its elements are those of the mesh
+/// with ShellElement::part equal to its index; each part has its own material and through-
+/// thickness integration (its thickness is per element, in the mesh).
+struct ShellPart {
+    std::string name;
+    const materials::Material* material = nullptr;
+    int thickness_points = 2;
+};
+
 /// A shell structure under static loads: MITC4 elements on a ShellMesh, 6 DOF per node
 /// (u_x, u_y, u_z, theta_x, theta_y, theta_z; rotations as global rotation vectors), fixed and
 /// prescribed DOFs, and a reference load vector scaled by the load factor lambda.
 class ShellAnalysis {
   public:
+    /// Several parts (silo wall and hopper, a wagon's sheets): one system of equations.
+    ShellAnalysis(ShellMesh mesh, std::vector<ShellPart> parts, Kinematics kinematics);
+    /// A structure of one part (every element's part 0).
     ShellAnalysis(ShellMesh mesh, const materials::Material& material, Kinematics kinematics,
                   int thickness_points);
+    const std::vector<ShellPart>& parts() const { return parts_; }
 
     const ShellMesh& mesh() const { return mesh_; }
     Kinematics kinematics() const { return kinematics_; }
@@ -63,6 +76,9 @@ class ShellAnalysis {
         histories_.at(static_cast<std::size_t>(index)).scale = std::move(scale);
     }
     void use_history(int index) { active_history_ = index; }
+    /// The part whose elements the distributed loads below (area, pressure, follower pressure,
+    /// gravity) go to; -1 (the default): every element.
+    void use_part(int part) { active_part_ = part; }
     double history_value(int index, double lambda) const {
         return histories_.at(static_cast<std::size_t>(index)).scale(lambda);
     }
@@ -113,7 +129,7 @@ class ShellAnalysis {
     Vec3 rotation(Index node) const;
     /// Current director of corner `corner` (0..3) of element `element`: its initial director
     /// (fem/shell_directors.hpp; its own face's normal at a fold node) rotated by the node's
-    /// rotation.
+    /// rotation (linear kinematics: V + theta x V).
     Vec3 director(Index element, int corner) const;
     /// Internal minus applied force at every DOF (the reactions at constrained DOFs).
     Eigen::VectorXd reactions();
@@ -162,7 +178,6 @@ class ShellAnalysis {
                                    std::vector<Eigen::Triplet<double>>& triplets);
 
     ShellMesh mesh_;
-    const materials::Material* material_;
     Kinematics kinematics_;
     ElementDirectors initial_directors_; ///< per element corner, rotated by the nodal R
     std::vector<Mitc4Shell> elements_;
@@ -183,7 +198,10 @@ class ShellAnalysis {
     struct FollowerPressure {
         double pressure = 0.0;
         int history = 0;
+        int part = -1;
     };
+    std::vector<ShellPart> parts_;
+    int active_part_ = -1;
     std::vector<FollowerPressure> follower_pressures_;
     double assembly_load_factor_ = 0.0;
     std::vector<double> prescribed_;      ///< NaN where free

@@ -4,6 +4,7 @@
 #include "fem/shell_mesh_generators.hpp"
 #include "io/case_table.hpp"
 
+#include <algorithm>
 #include <array>
 #include <numbers>
 #include <stdexcept>
@@ -63,13 +64,28 @@ ShellMesh generate(const io::CaseTable& shell, const std::string& generator, dou
                      element_count(shell, "elements_along"), thickness);
 }
 
-const std::vector<Index>& node_set(const io::CaseTable& table, const ShellMesh& mesh) {
+const std::vector<Index>& node_set(const io::CaseTable& table, const ShellMesh& mesh,
+                                   const PartScope& part) {
     const std::string name = table.string("node_set");
+    const std::string scoped = part.name + "." + name;
     try {
-        return mesh.node_set(name);
+        return mesh.has_node_set(scoped) ? mesh.node_set(scoped) : mesh.node_set(name);
     } catch (const std::invalid_argument& e) {
         table.fail("node_set", e.what());
     }
+}
+
+/// Largest extent of the nodes' bounding box.
+double mesh_size(const ShellMesh& mesh) {
+    if (mesh.node_count() == 0) {
+        return 0.0;
+    }
+    Vec3 lower = mesh.node(0), upper = mesh.node(0);
+    for (const Vec3& x : mesh.nodes()) {
+        lower = lower.cwiseMin(x);
+        upper = upper.cwiseMax(x);
+    }
+    return (upper - lower).maxCoeff();
 }
 
 /// Selects the history of the table's optional `time_function` (else history 0).
@@ -110,6 +126,11 @@ ShellMesh read_shell_mesh(const io::CaseTable& shell) {
     } catch (const std::invalid_argument& e) {
         shell.fail("generator", e.what());
     }
+    // A part placed elsewhere than its generator puts it (a wagon's sheets, a hopper below
+    // its silo): every node moves by `offset`, normals and sets stay.
+    if (shell.has("offset")) {
+        mesh.translate(shell.vector("offset", dim::kLength));
+    }
     // Fold lines (box edges, kinks of an imported mesh): see fem/shell_directors.hpp.
     const double fold_angle =
         shell.quantity_or("fold_angle", dim::kAngle, ShellMesh::kDefaultFoldAngle);
@@ -120,14 +141,73 @@ ShellMesh read_shell_mesh(const io::CaseTable& shell) {
     return mesh;
 }
 
+std::pair<ShellMesh, std::vector<ShellPart>>
+read_shell_parts(const io::CaseTable& fem, const std::vector<io::CaseTable>& shells,
+                 const materials::MaterialLibrary& materials) {
+    std::vector<ShellMesh> meshes;
+    std::vector<ShellPart> parts;
+    double size = 0.0;
+    for (const io::CaseTable& shell : shells) {
+        ShellPart part;
+        part.name = shell.string_or("name", shells.size() == 1 ? "shell" : "");
+        if (part.name.empty()) {
+            shell.fail("name", "a structure of several [[fem.shell]] parts names each of them");
+        }
+        for (const ShellPart& other : parts) {
+            if (other.name == part.name) {
+                shell.fail("name", "a shell part called \"" + part.name + "\" is already defined");
+            }
+        }
+        part.material = &materials[materials.index_of(shell, "material")];
+        const bool elastic = part.material->model() == "linear_elastic";
+        part.thickness_points =
+            static_cast<int>(shell.integer_or("thickness_points", elastic ? 2 : 5));
+        if (part.thickness_points < 2 || part.thickness_points > 15) {
+            shell.fail("thickness_points", "expected 2 to 15 Gauss points through the thickness");
+        }
+        meshes.push_back(read_shell_mesh(shell));
+        size = std::max(size, mesh_size(meshes.back()));
+        parts.push_back(std::move(part));
+    }
+    const double tolerance = fem.positive_quantity_or("seam_tolerance", dim::kLength, 1e-6 * size);
+    ShellMesh structure;
+    structure.set_fold_angle(meshes.front().fold_angle());
+    for (std::size_t k = 0; k < meshes.size(); ++k) {
+        const std::vector<Index> map = structure.append(meshes[k], static_cast<int>(k), tolerance);
+        for (const auto& [name, members] : meshes[k].node_sets()) {
+            std::vector<Index> nodes;
+            for (const Index n : members) {
+                nodes.push_back(map[static_cast<std::size_t>(n)]);
+            }
+            if (!structure.has_node_set(name)) {
+                structure.add_node_set(name, nodes);
+            }
+            structure.add_node_set(parts[k].name + "." + name, std::move(nodes));
+        }
+        const std::vector<Index> elements = structure.part_elements(static_cast<int>(k));
+        for (const auto& [name, members] : meshes[k].element_sets()) {
+            std::vector<Index> selected;
+            for (const Index e : members) {
+                selected.push_back(elements[static_cast<std::size_t>(e)]);
+            }
+            if (!structure.has_element_set(name)) {
+                structure.add_element_set(name, selected);
+            }
+            structure.add_element_set(parts[k].name + "." + name, std::move(selected));
+        }
+        structure.add_element_set(parts[k].name, elements);
+    }
+    return {std::move(structure), std::move(parts)};
+}
+
 void read_shell_boundaries(const io::CaseTable& shell, const HistoryNames& histories,
-                           ShellAnalysis& analysis) {
+                           const PartScope& part, ShellAnalysis& analysis) {
     for (const io::CaseTable& bc : shell.array_of_tables("boundary")) {
         use_time_function(bc, histories, analysis);
         const std::vector<Index> nodes =
             bc.has("point")
                 ? std::vector<Index>{analysis.mesh().nearest_node(bc.vector("point", dim::kLength))}
-                : node_set(bc, analysis.mesh());
+                : node_set(bc, analysis.mesh(), part);
         if (bc.has("symmetry")) {
             // Symmetry plane with normal along the axis: normal translation and the two
             // in-plane rotation components vanish (a rotation vector is an axial vector).
@@ -174,7 +254,9 @@ void read_shell_boundaries(const io::CaseTable& shell, const HistoryNames& histo
 }
 
 void read_shell_loads(const io::CaseTable& shell, const Vec3& case_gravity,
-                      const HistoryNames& histories, ShellAnalysis& analysis) {
+                      const HistoryNames& histories, const PartScope& part,
+                      ShellAnalysis& analysis) {
+    analysis.use_part(part.index);
     for (const io::CaseTable& load : shell.array_of_tables("load")) {
         use_time_function(load, histories, analysis);
         const std::string type = load.choice(
@@ -197,7 +279,7 @@ void read_shell_loads(const io::CaseTable& shell, const Vec3& case_gravity,
             if (load.has("point")) {
                 nodes.push_back(analysis.mesh().nearest_node(load.vector("point", dim::kLength)));
             } else {
-                nodes = node_set(load, analysis.mesh());
+                nodes = node_set(load, analysis.mesh(), part);
             }
             for (const Index n : nodes) {
                 for (int d = 0; d < 3; ++d) {
@@ -207,6 +289,7 @@ void read_shell_loads(const io::CaseTable& shell, const Vec3& case_gravity,
         }
     }
     analysis.use_history(0);
+    analysis.use_part(-1);
 }
 
 std::vector<ShellMonitor> read_shell_monitors(const io::CaseTable& shell, const ShellMesh& mesh) {

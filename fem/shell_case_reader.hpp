@@ -1,10 +1,12 @@
 #pragma once
 
 #include "fem/shell_analysis.hpp"
+#include "materials/material_library.hpp"
 
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace grainload::io {
@@ -25,15 +27,33 @@ struct ShellMonitor {
 
 /// Mesh of one [[fem.shell]] table from its `generator` keys (see docs/user-guide/fem.md).
 ShellMesh read_shell_mesh(const io::CaseTable& shell);
+
+/// The structure of every [[fem.shell]] table of [fem]: one mesh whose elements carry their
+/// part (the table's index), the parts' materials and integration points. Parts meet where
+/// their nodes coincide within [fem] `seam_tolerance` (default 1e-6 of the structure's size).
+/// Each part's node and element sets are named "<part>.<set>" and, when no earlier part has
+/// a set of that name, "<set>". Part names are unique.
+std::pair<ShellMesh, std::vector<ShellPart>>
+read_shell_parts(const io::CaseTable& fem, const std::vector<io::CaseTable>& shells,
+                 const materials::MaterialLibrary& materials);
+
+/// The part whose tables are read: sets are looked up as "<name>.<set>" first.
+struct PartScope {
+    int index = 0;
+    std::string name;
+};
+
 /// Load histories of the analysis by time-function name, for the `time_function` keys.
 using HistoryNames = std::map<std::string, int>;
 /// Applies its [[fem.shell.boundary]] tables to `analysis`.
 void read_shell_boundaries(const io::CaseTable& shell, const HistoryNames& histories,
-                           ShellAnalysis& analysis);
+                           const PartScope& part, ShellAnalysis& analysis);
 /// Adds its [[fem.shell.load]] tables to the loads of their histories (history 0, the load
-/// factor, unless a table names a `time_function`).
+/// factor, unless a table names a `time_function`); distributed loads act on the part's
+/// elements only.
 void read_shell_loads(const io::CaseTable& shell, const Vec3& case_gravity,
-                      const HistoryNames& histories, ShellAnalysis& analysis);
+                      const HistoryNames& histories, const PartScope& part,
+                      ShellAnalysis& analysis);
 std::vector<ShellMonitor> read_shell_monitors(const io::CaseTable& shell, const ShellMesh& mesh);
 /// "ux" .. "rz" -> 0 .. 5; a CaseError names the key otherwise.
 int read_dof(const io::CaseTable& table, std::string_view key, const std::string& name);

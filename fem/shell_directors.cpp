@@ -72,14 +72,11 @@ Vec3 fold_director(Index e, const std::vector<Index>& around, const std::vector<
 
 std::vector<Index> fold_nodes(const ShellMesh& mesh) {
     std::vector<Index> folds;
-    if (mesh.has_exact_normals()) {
-        return folds;
-    }
     const double cos_fold = std::cos(mesh.fold_angle());
     const std::vector<Vec3> normals = element_normals(mesh);
     const std::vector<std::vector<Index>> around = elements_around(mesh);
     for (Index n = 0; n < mesh.node_count(); ++n) {
-        if (is_fold(around[at(n)], normals, cos_fold)) {
+        if (!mesh.has_exact_normal(n) && is_fold(around[at(n)], normals, cos_fold)) {
             folds.push_back(n);
         }
     }

@@ -113,6 +113,9 @@ void ShellAnalysis::add_surface_load(const SurfaceTraction& traction) {
     const double g = 1.0 / std::sqrt(3.0);
     Eigen::VectorXd& load = active_load();
     for (const auto& e : mesh_.elements()) {
+        if (active_part_ >= 0 && e.part != active_part_) {
+            continue;
+        }
         for (const double s : {-g, g}) {
             for (const double r : {-g, g}) {
                 Vec3 gr = Vec3::Zero();
@@ -143,7 +146,7 @@ void ShellAnalysis::add_pressure(double pressure) {
 }
 
 void ShellAnalysis::add_follower_pressure(double pressure) {
-    follower_pressures_.push_back({pressure, active_history_});
+    follower_pressures_.push_back({pressure, active_history_, active_part_});
 }
 
 void ShellAnalysis::add_follower_loads(Eigen::VectorXd& internal,
@@ -168,6 +171,9 @@ void ShellAnalysis::add_follower_loads(Eigen::VectorXd& internal,
             continue;
         }
         for (const auto& e : mesh_.elements()) {
+            if (follower.part >= 0 && e.part != follower.part) {
+                continue;
+            }
             std::array<Vec3, 4> x;
             for (std::size_t k = 0; k < 4; ++k) {
                 x[k] = mesh_.node(e.nodes[k]) + dofs_.segment<3>(kDofs * e.nodes[k]);
@@ -212,9 +218,10 @@ void ShellAnalysis::add_follower_loads(Eigen::VectorXd& internal,
 }
 
 void ShellAnalysis::add_gravity(const Vec3& acceleration) {
-    const double rho = material_->density();
-    add_surface_load(
-        [&](const ShellElement& e, const Vec3&) { return Vec3(rho * e.thickness * acceleration); });
+    add_surface_load([&](const ShellElement& e, const Vec3&) {
+        const double rho = parts_[at(e.part)].material->density();
+        return Vec3(rho * e.thickness * acceleration);
+    });
 }
 
 } // namespace grainload::fem

@@ -12,14 +12,64 @@ Index ShellMesh::add_node(const Vec3& x) {
     return node_count() - 1;
 }
 
-Index ShellMesh::add_element(const std::array<Index, 4>& nodes, double thickness) {
-    elements_.push_back({nodes, thickness});
+Index ShellMesh::add_element(const std::array<Index, 4>& nodes, double thickness, int part) {
+    elements_.push_back({nodes, thickness, part});
     return element_count() - 1;
+}
+
+std::vector<Index> ShellMesh::append(const ShellMesh& part_mesh, int part, double tolerance) {
+    const std::size_t existing = nodes_.size();
+    const std::vector<Vec3> part_normals = part_mesh.normals_;
+    normals_.resize(existing, Vec3::Zero());
+    std::vector<Index> map(static_cast<std::size_t>(part_mesh.node_count()), -1);
+    for (Index n = 0; n < part_mesh.node_count(); ++n) {
+        const Vec3& x = part_mesh.node(n);
+        // Seams are few: a linear search over the existing nodes is cheap next to the solve.
+        Index found = -1;
+        for (std::size_t m = 0; m < existing && found < 0; ++m) {
+            if ((nodes_[m] - x).norm() <= tolerance) {
+                found = static_cast<Index>(m);
+            }
+        }
+        if (found >= 0) {
+            normals_[static_cast<std::size_t>(found)] = Vec3::Zero();
+        } else {
+            found = add_node(x);
+            normals_.push_back(part_mesh.has_exact_normal(n)
+                                   ? part_normals[static_cast<std::size_t>(n)]
+                                   : Vec3::Zero());
+        }
+        map[static_cast<std::size_t>(n)] = found;
+    }
+    for (const ShellElement& e : part_mesh.elements()) {
+        std::array<Index, 4> nodes{};
+        for (std::size_t k = 0; k < 4; ++k) {
+            nodes[k] = map[static_cast<std::size_t>(e.nodes[k])];
+        }
+        add_element(nodes, e.thickness, part);
+    }
+    return map;
+}
+
+std::vector<Index> ShellMesh::part_elements(int part) const {
+    std::vector<Index> selected;
+    for (Index e = 0; e < element_count(); ++e) {
+        if (element(e).part == part) {
+            selected.push_back(e);
+        }
+    }
+    return selected;
 }
 
 void ShellMesh::set_thickness(double thickness) {
     for (auto& e : elements_) {
         e.thickness = thickness;
+    }
+}
+
+void ShellMesh::translate(const Vec3& offset) {
+    for (Vec3& x : nodes_) {
+        x += offset;
     }
 }
 
@@ -84,9 +134,6 @@ Vec3 element_normal(const ShellMesh& mesh, const ShellElement& element) {
 }
 
 std::vector<Vec3> ShellMesh::nodal_normals() const {
-    if (normals_.size() == nodes_.size()) {
-        return normals_;
-    }
     std::vector<Vec3> normals(nodes_.size(), Vec3::Zero());
     for (const auto& e : elements_) {
         const Vec3 n = element_normal(*this, e);
@@ -94,10 +141,14 @@ std::vector<Vec3> ShellMesh::nodal_normals() const {
             normals[static_cast<std::size_t>(e.nodes[static_cast<std::size_t>(k)])] += n;
         }
     }
-    for (auto& n : normals) {
-        const double length = n.norm();
+    for (std::size_t n = 0; n < normals.size(); ++n) {
+        if (has_exact_normal(static_cast<Index>(n))) {
+            normals[n] = normals_[n];
+            continue;
+        }
+        const double length = normals[n].norm();
         if (length > 0.0) {
-            n /= length;
+            normals[n] /= length;
         }
     }
     return normals;

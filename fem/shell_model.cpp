@@ -41,9 +41,9 @@ std::string solver_identifier(const std::string& solver) {
 } // namespace
 
 std::unique_ptr<ShellModel> ShellModel::from_case(const io::CaseTable& root,
+                                                  const io::SceneSettings& scene,
                                                   const materials::MaterialLibrary& materials) {
     const io::CaseTable fem = root.table("fem");
-    const io::CaseTable settings = root.table("case");
     std::unique_ptr<ShellModel> model(new ShellModel());
     model->dynamic_ = fem.choice_or("analysis", {"static", "dynamic"}, "static") == "dynamic";
     if (model->dynamic_) {
@@ -52,25 +52,19 @@ std::unique_ptr<ShellModel> ShellModel::from_case(const io::CaseTable& root,
     const std::string kinematics =
         fem.choice_or("kinematics", {"linear", "total_lagrangian"}, "linear");
     model->settings_ = read_settings(fem);
-    model->load_time_ = fem.positive_quantity_or(
-        "load_time", dim::kTime, settings.positive_quantity("end_time", dim::kTime));
+    model->load_time_ = fem.positive_quantity_or("load_time", dim::kTime, scene.end_time);
     model->increments_per_step_ = static_cast<int>(fem.integer_or("increments_per_step", 1));
     const std::vector<io::CaseTable> shells = fem.array_of_tables("shell");
-    if (shells.size() != 1) {
-        fem.fail("shell", "expected exactly one [[fem.shell]] table (several shell parts are "
-                          "not supported yet)");
+    if (shells.empty()) {
+        fem.fail("shell", "expected at least one [[fem.shell]] table");
     }
-    const io::CaseTable& shell = shells.front();
-    model->shell_name_ = shell.string_or("name", "shell");
-    const materials::Material& material = materials[materials.index_of(shell, "material")];
-    const bool elastic = material.model() == "linear_elastic";
-    const int points = static_cast<int>(shell.integer_or("thickness_points", elastic ? 2 : 5));
-    if (points < 2 || points > 15) {
-        shell.fail("thickness_points", "expected 2 to 15 Gauss points through the thickness");
+    auto [mesh, parts] = read_shell_parts(fem, shells, materials);
+    for (const ShellPart& part : parts) {
+        model->part_names_.push_back(part.name);
     }
     model->analysis_ = std::make_unique<ShellAnalysis>(
-        read_shell_mesh(shell), material,
-        kinematics == "linear" ? Kinematics::linear : Kinematics::total_lagrangian, points);
+        std::move(mesh), std::move(parts),
+        kinematics == "linear" ? Kinematics::linear : Kinematics::total_lagrangian);
     // The analysis' load factor is the time: history 0 (loads without a time_function) ramps
     // to 1 at load_time and holds; every [[fem.time_function]] becomes a history of its own.
     const double load_time = model->load_time_;
@@ -80,10 +74,14 @@ std::unique_ptr<ShellModel> ShellModel::from_case(const io::CaseTable& root,
     for (auto& [name, function] : read_time_functions(fem)) {
         histories[name] = model->analysis_->add_history(function);
     }
-    read_shell_boundaries(shell, histories, *model->analysis_);
-    read_shell_loads(shell, settings.vector_or("gravity", dim::kAcceleration, Vec3::Zero()),
-                     histories, *model->analysis_);
-    model->monitors_ = read_shell_monitors(shell, model->analysis_->mesh());
+    for (std::size_t k = 0; k < shells.size(); ++k) {
+        const PartScope scope{static_cast<int>(k), model->part_names_[k]};
+        read_shell_boundaries(shells[k], histories, scope, *model->analysis_);
+        read_shell_loads(shells[k], scene.gravity, histories, scope, *model->analysis_);
+        for (ShellMonitor& monitor : read_shell_monitors(shells[k], model->analysis_->mesh())) {
+            model->monitors_.push_back(std::move(monitor));
+        }
+    }
     model->reactions_ = Eigen::VectorXd::Zero(6 * model->analysis_->mesh().node_count());
     if (model->dynamic_) {
         const bool hht = fem.choice_or("integrator", {"newmark", "hht"}, "newmark") == "hht";
@@ -120,14 +118,30 @@ double ShellModel::stable_time_step() const {
 }
 
 void ShellModel::advance(double t, double dt) {
-    const double target = t + dt;
     if (failure_) {
         return;
     }
-    if (!dynamic_ && !analysis_->loads_change(analysis_->load_factor(), target)) {
-        analysis_->set_load_factor(target); // nothing to solve: every history is constant
+    if (!dynamic_ && !analysis_->loads_change(analysis_->load_factor(), t + dt)) {
+        analysis_->set_load_factor(t + dt); // nothing to solve: every history is constant
         return;
     }
+    solve_step(t, dt);
+}
+
+void ShellModel::advance_with_forces(double t, double dt, const Eigen::VectorXd& forces) {
+    if (failure_) {
+        return;
+    }
+    analysis_->set_additional_forces(forces);
+    solve_step(t, dt);
+}
+
+double ShellModel::kinetic_energy() const {
+    return dynamic_ ? newmark_->kinetic_energy() : 0.0;
+}
+
+void ShellModel::solve_step(double t, double dt) {
+    const double target = t + dt;
     ShellStepLog entry;
     entry.time = t + dt;
     entry.report = dynamic_ ? newmark_->step(dt, target, settings_)
@@ -135,8 +149,9 @@ void ShellModel::advance(double t, double dt) {
     entry.load_factor = analysis_->history_value(0, analysis_->load_factor());
     if (!entry.report.converged) {
         std::ostringstream why;
-        why << "shell '" << shell_name_ << "': Newton-Raphson did not converge at t = " << target
-            << " s after " << entry.report.cutbacks
+        why << "shell structure (" << part_list()
+            << "): Newton-Raphson did not converge at t = " << target << " s after "
+            << entry.report.cutbacks
             << " cut-backs; last converged t = " << analysis_->load_factor() << " s (load factor "
             << entry.load_factor << ")";
         failure_ = why.str();
@@ -151,25 +166,97 @@ std::optional<std::string> ShellModel::diagnose() const {
     }
     for (Index n = 0; n < analysis_->mesh().node_count(); ++n) {
         if (!analysis_->displacement(n).allFinite()) {
-            return "shell '" + shell_name_ + "' node " + std::to_string(n) +
-                   ": displacement is not finite";
+            return "shell node " + std::to_string(n) + " (part " + part_of_node(n) +
+                   "): displacement is not finite";
         }
     }
     return std::nullopt;
 }
 
+std::string ShellModel::part_list() const {
+    std::string list;
+    for (const std::string& name : part_names_) {
+        list += (list.empty() ? "" : ", ") + name;
+    }
+    return list;
+}
+
+std::string ShellModel::part_of_node(Index node) const {
+    for (const ShellElement& element : analysis_->mesh().elements()) {
+        for (const Index n : element.nodes) {
+            if (n == node) {
+                return part_names_[static_cast<std::size_t>(element.part)];
+            }
+        }
+    }
+    return "none";
+}
+
 void ShellModel::append_blocks(io::Frame& frame) const {
+    append_blocks(frame, {}, {});
+}
+
+void ShellModel::append_blocks(io::Frame& frame, const std::vector<io::FieldArray>& node_fields,
+                               const std::vector<io::FieldArray>& element_fields) const {
     const ShellAnalysis& a = *analysis_;
     const ShellMesh& mesh = a.mesh();
-    io::Block block;
-    block.name = shell_name_;
-    block.kind = io::Block::Kind::shell;
+    for (std::size_t part = 0; part < part_names_.size(); ++part) {
+        // Each part is a block of its own: its elements and the nodes they use, renumbered.
+        const std::vector<Index> elements = mesh.part_elements(static_cast<int>(part));
+        std::vector<Index> local(static_cast<std::size_t>(mesh.node_count()), -1);
+        std::vector<Index> nodes;
+        for (const Index e : elements) {
+            for (const Index n : mesh.element(e).nodes) {
+                if (local[static_cast<std::size_t>(n)] < 0) {
+                    local[static_cast<std::size_t>(n)] = static_cast<Index>(nodes.size());
+                    nodes.push_back(n);
+                }
+            }
+        }
+        io::Block block;
+        block.name = part_names_[part];
+        block.kind = io::Block::Kind::shell;
+        append_node_fields(block, nodes, node_fields);
+        for (const Index e : elements) {
+            auto cell = mesh.element(e).nodes;
+            for (Index& n : cell) {
+                n = local[static_cast<std::size_t>(n)];
+            }
+            if (mesh.element(e).is_triangle()) {
+                cell[3] = -1;
+            }
+            block.cells.push_back(cell);
+        }
+        append_element_fields(block, elements, element_fields);
+        frame.blocks.push_back(std::move(block));
+    }
+}
+
+namespace {
+
+/// The entries of `field` (a value per node or element of the whole mesh) at `indices`.
+io::FieldArray slice(const io::FieldArray& field, const std::vector<Index>& indices) {
+    io::FieldArray part{field.name, field.components, {}};
+    const auto c = static_cast<std::size_t>(field.components);
+    for (const Index i : indices) {
+        for (std::size_t k = 0; k < c; ++k) {
+            part.values.push_back(field.values[c * static_cast<std::size_t>(i) + k]);
+        }
+    }
+    return part;
+}
+
+} // namespace
+
+void ShellModel::append_node_fields(io::Block& block, const std::vector<Index>& nodes,
+                                    const std::vector<io::FieldArray>& extra) const {
+    const ShellAnalysis& a = *analysis_;
     io::FieldArray displacement{"displacement", 3, {}}, rotation{"rotation", 3, {}};
     io::FieldArray reaction{"reaction_force", 3, {}}, moment{"reaction_moment", 3, {}};
-    for (Index n = 0; n < mesh.node_count(); ++n) {
+    for (const Index n : nodes) {
         const Vec3 u = a.displacement(n);
         const Vec3 r = a.rotation(n);
-        block.points.push_back(mesh.node(n) + u);
+        block.points.push_back(a.mesh().node(n) + u);
         displacement.values.insert(displacement.values.end(), u.begin(), u.end());
         rotation.values.insert(rotation.values.end(), r.begin(), r.end());
         for (int d = 0; d < 3; ++d) {
@@ -177,29 +264,33 @@ void ShellModel::append_blocks(io::Frame& frame) const {
             moment.values.push_back(reactions_(6 * n + 3 + d));
         }
     }
+    block.point_arrays = {displacement, rotation, reaction, moment};
+    for (const io::FieldArray& field : extra) {
+        block.point_arrays.push_back(slice(field, nodes));
+    }
+}
+
+void ShellModel::append_element_fields(io::Block& block, const std::vector<Index>& elements,
+                                       const std::vector<io::FieldArray>& extra) const {
+    const ShellAnalysis& a = *analysis_;
     io::FieldArray membrane{"membrane_force", 3, {}}, bending{"bending_moment", 3, {}};
     io::FieldArray top{"von_mises_top", 1, {}}, middle{"von_mises_middle", 1, {}};
     io::FieldArray bottom{"von_mises_bottom", 1, {}}, plastic{"plastic_strain", 1, {}};
     io::FieldArray thickness{"thickness", 1, {}};
-    for (std::size_t e = 0; e < a.elements().size(); ++e) {
-        const ShellElement& element = mesh.elements()[e];
-        auto cell = element.nodes;
-        if (element.is_triangle()) {
-            cell[3] = -1;
-        }
-        block.cells.push_back(cell);
-        const ShellResultants r = a.elements()[e].resultants();
+    for (const Index e : elements) {
+        const ShellResultants r = a.elements()[static_cast<std::size_t>(e)].resultants();
         membrane.values.insert(membrane.values.end(), r.membrane.begin(), r.membrane.end());
         bending.values.insert(bending.values.end(), r.bending.begin(), r.bending.end());
         top.values.push_back(r.von_mises_top);
         middle.values.push_back(r.von_mises_middle);
         bottom.values.push_back(r.von_mises_bottom);
         plastic.values.push_back(r.plastic_strain);
-        thickness.values.push_back(element.thickness);
+        thickness.values.push_back(a.mesh().element(e).thickness);
     }
-    block.point_arrays = {displacement, rotation, reaction, moment};
     block.cell_arrays = {membrane, bending, top, middle, bottom, plastic, thickness};
-    frame.blocks.push_back(std::move(block));
+    for (const io::FieldArray& field : extra) {
+        block.cell_arrays.push_back(slice(field, elements));
+    }
 }
 
 void ShellModel::append_results(double, std::vector<io::ResultFigure>& results) const {

@@ -2,6 +2,7 @@
 
 #include "fem/newmark_integrator.hpp"
 #include "fem/shell_case_reader.hpp"
+#include "io/scene_settings.hpp"
 #include "io/stepper.hpp"
 #include "materials/material_library.hpp"
 
@@ -24,10 +25,11 @@ struct ShellStepLog {
 /// advance() solves the incremental-iterative equilibrium problem of thesis Table 5.2.2 at
 /// t + dt (cut-backs halve the time increment), so "time" only orders the load steps. Dynamic
 /// analysis: implicit Newmark or HHT-alpha steps of at most [fem].time_step. Built from the case's
-/// [fem] table and its one [[fem.shell]] table.
+/// [fem] table and its [[fem.shell]] tables, one per shell part.
 class ShellModel final : public io::Stepper {
   public:
     static std::unique_ptr<ShellModel> from_case(const io::CaseTable& root,
+                                                 const io::SceneSettings& scene,
                                                  const materials::MaterialLibrary& materials);
 
     std::string_view name() const override { return "fem"; }
@@ -35,12 +37,26 @@ class ShellModel final : public io::Stepper {
     void advance(double t, double dt) override;
     Index point_count() const override { return analysis_->mesh().node_count(); }
     std::optional<std::string> diagnose() const override;
+    /// One block per shell part, named after it.
     void append_blocks(io::Frame& frame) const override;
+    /// The same with extra arrays given on the whole mesh (a value per node or per element,
+    /// e.g. the contact pressure the coupling puts on the shell), sliced per part.
+    void append_blocks(io::Frame& frame, const std::vector<io::FieldArray>& node_fields,
+                       const std::vector<io::FieldArray>& element_fields) const;
+    const std::vector<std::string>& part_names() const { return part_names_; }
     void append_results(double t, std::vector<io::ResultFigure>& results) const override;
     /// DIRECTORY/fem_convergence.csv: one row per Newton iteration of every step.
     void write_logs(const std::string& directory) const override;
     void write_checkpoint(std::ostream& out) const override;
     void read_checkpoint(std::istream& in) override;
+
+    /// Advance from t to t + dt under `forces` (6 per node: forces and moments, applied in full,
+    /// e.g. the sand's load on the walls) besides the case's own loads; solves even when the
+    /// case's loads stay constant, since the forces change.
+    void advance_with_forces(double t, double dt, const Eigen::VectorXd& forces);
+    bool dynamic() const { return dynamic_; }
+    /// Kinetic energy of the shell (dynamic analysis; 0 for a static one).
+    double kinetic_energy() const;
 
     const ShellAnalysis& analysis() const { return *analysis_; }
     /// For the coupling: wall node positions, set_additional_forces(), equilibrate().
@@ -49,8 +65,15 @@ class ShellModel final : public io::Stepper {
 
   private:
     ShellModel() = default;
+    std::string part_list() const;
+    void solve_step(double t, double dt);
+    std::string part_of_node(Index node) const;
+    void append_node_fields(io::Block& block, const std::vector<Index>& nodes,
+                            const std::vector<io::FieldArray>& extra) const;
+    void append_element_fields(io::Block& block, const std::vector<Index>& elements,
+                               const std::vector<io::FieldArray>& extra) const;
 
-    std::string shell_name_;
+    std::vector<std::string> part_names_;
     std::unique_ptr<ShellAnalysis> analysis_;
     std::vector<ShellMonitor> monitors_;
     NewtonSettings settings_;

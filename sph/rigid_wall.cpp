@@ -1,5 +1,7 @@
 #include "sph/rigid_wall.hpp"
 
+#include "io/binary_stream.hpp"
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -71,24 +73,6 @@ std::vector<Vec3> box_wall_points(const Vec3& lower, const Vec3& upper, double s
     return points;
 }
 
-RigidWall add_rigid_wall(ParticleSet& particles, std::string name, int wall_index, int body_id,
-                         const std::vector<Vec3>& points, double spacing, double density,
-                         int dimension) {
-    RigidWall wall;
-    wall.name = std::move(name);
-    wall.body_id = body_id;
-    wall.first = particles.size();
-    wall.count = static_cast<Index>(points.size());
-    const double mass = density * std::pow(spacing, dimension);
-    Vec3 centre = Vec3::Zero();
-    for (const Vec3& x : points) {
-        particles.add_wall_particle(x, Vec3::Zero(), mass, density, body_id, wall_index);
-        centre += x;
-    }
-    wall.centre = points.empty() ? centre : Vec3(centre / static_cast<double>(points.size()));
-    return wall;
-}
-
 Vec3 history_value(const std::vector<std::pair<double, Vec3>>& history, double time) {
     if (time <= history.front().first) {
         return history.front().second;
@@ -130,30 +114,69 @@ Vec3 history_integral(const std::vector<std::pair<double, Vec3>>& history, doubl
     return history_antiderivative(history, to) - history_antiderivative(history, from);
 }
 
-void move_rigid_wall(ParticleSet& particles, RigidWall& wall, double time, double dt) {
-    Vec3 displacement = dt * wall.velocity;
-    if (!wall.velocity_history.empty()) {
-        displacement = history_integral(wall.velocity_history, time, time + dt);
-        wall.velocity = history_value(wall.velocity_history, time + dt);
+void RigidMotion::move(ParticleSet& particles, Wall& wall, double time, double dt) {
+    Vec3 displacement = dt * velocity;
+    if (!velocity_history.empty()) {
+        displacement = history_integral(velocity_history, time, time + dt);
+        velocity = history_value(velocity_history, time + dt);
     }
-    Vec3 rotation_vector = dt * wall.angular_velocity;
-    if (!wall.angular_velocity_history.empty()) {
-        rotation_vector = history_integral(wall.angular_velocity_history, time, time + dt);
-        wall.angular_velocity = history_value(wall.angular_velocity_history, time + dt);
+    Vec3 rotation_vector = dt * angular_velocity;
+    if (!angular_velocity_history.empty()) {
+        rotation_vector = history_integral(angular_velocity_history, time, time + dt);
+        angular_velocity = history_value(angular_velocity_history, time + dt);
     }
     const double angle = rotation_vector.norm();
     const Mat3 rotation =
         angle > 0.0 ? Eigen::AngleAxisd(angle, rotation_vector / angle).matrix() : Mat3::Identity();
-    const Vec3 new_centre = wall.centre + displacement;
+    const Vec3 new_centre = centre + displacement;
     for (Vec3& normal : wall.normals) {
         normal = rotation * normal;
     }
+    wall.angular_velocities.assign(static_cast<std::size_t>(wall.count), angular_velocity);
     for (Index k = wall.first; k < wall.first + wall.count; ++k) {
-        const Vec3 arm = rotation * (particles.position[k] - wall.centre);
+        const Vec3 arm = rotation * (particles.position[k] - centre);
         particles.position[k] = new_centre + arm;
-        particles.velocity[k] = wall.velocity + wall.angular_velocity.cross(arm);
+        particles.velocity[k] = velocity + angular_velocity.cross(arm);
     }
-    wall.centre = new_centre;
+    centre = new_centre;
+    wall.centre = centre;
+}
+
+bool RigidMotion::at_rest() const {
+    return velocity_history.empty() && angular_velocity_history.empty() &&
+           velocity.squaredNorm() == 0.0 && angular_velocity.squaredNorm() == 0.0;
+}
+
+void RigidMotion::write_state(std::ostream& out) const {
+    io::write_array(out, std::vector<Vec3>{centre, velocity, angular_velocity});
+}
+
+void RigidMotion::read_state(std::istream& in) {
+    std::vector<Vec3> state;
+    io::read_array(in, state);
+    if (state.size() != 3) {
+        throw std::runtime_error("checkpoint: a rigid wall motion holds 3 vectors, found " +
+                                 std::to_string(state.size()));
+    }
+    centre = state[0];
+    velocity = state[1];
+    angular_velocity = state[2];
+}
+
+RigidMotion& attach_rigid_motion(ParticleSet& particles, Wall& wall, const Vec3& velocity,
+                                 const Vec3& angular_velocity) {
+    auto motion = std::make_shared<RigidMotion>();
+    motion->centre = wall.centre;
+    motion->velocity = velocity;
+    motion->angular_velocity = angular_velocity;
+    wall.angular_velocities.assign(static_cast<std::size_t>(wall.count), angular_velocity);
+    for (Index k = wall.first; k < wall.first + wall.count; ++k) {
+        particles.velocity[k] =
+            velocity + angular_velocity.cross(particles.position[k] - wall.centre);
+    }
+    RigidMotion& reference = *motion;
+    wall.driver = std::move(motion);
+    return reference;
 }
 
 std::vector<Vec3> box_wall_normals(const std::vector<Vec3>& points, const Vec3& lower,
@@ -171,16 +194,6 @@ std::vector<Vec3> box_wall_normals(const std::vector<Vec3>& points, const Vec3& 
     return normals;
 }
 
-void accumulate_wall_load(const ParticleSet& particles, RigidWall& wall) {
-    wall.force.setZero();
-    wall.moment.setZero();
-    for (Index k = wall.first; k < wall.first + wall.count; ++k) {
-        const Vec3 f = particles.mass[k] * particles.acceleration[k];
-        wall.force += f;
-        wall.moment += (particles.position[k] - wall.centre).cross(f);
-    }
-}
-
 WallForceWriter::WallForceWriter(const std::string& directory) {
     std::filesystem::create_directories(directory);
     const std::string file = (std::filesystem::path(directory) / "wall_forces.csv").string();
@@ -191,8 +204,8 @@ WallForceWriter::WallForceWriter(const std::string& directory) {
     out_ << "time_s,wall,force_x_N,force_y_N,force_z_N,moment_x_Nm,moment_y_Nm,moment_z_Nm\n";
 }
 
-void WallForceWriter::write(double time, const std::vector<RigidWall>& walls) {
-    for (const RigidWall& w : walls) {
+void WallForceWriter::write(double time, const std::vector<Wall>& walls) {
+    for (const Wall& w : walls) {
         out_ << time << ',' << w.name << ',' << w.force.x() << ',' << w.force.y() << ','
              << w.force.z() << ',' << w.moment.x() << ',' << w.moment.y() << ',' << w.moment.z()
              << '\n';

@@ -12,27 +12,30 @@ namespace dim = io::dimension;
 
 SphOptions read_sph_options(const io::CaseTable& sph, int dimension, double spacing,
                             const Vec3& gravity) {
-    SphOptions options;
+    SphOptions options; // its defaults are the case file's
     options.dimension = dimension;
     options.gravity = gravity;
     options.particle_spacing = spacing;
     const std::string kernel =
-        sph.choice_or("kernel", {"cubic_spline", "quintic_spline", "wendland_c2"}, "cubic_spline");
+        sph.choice_or("kernel", {"cubic_spline", "quintic_spline", "wendland_c2"},
+                      std::string(kernel_name(options.kernel)));
     options.kernel = kernel_type_from_name(kernel);
-    const double ratio = sph.number_or("smoothing_length_ratio", 1.3);
+    const double ratio = sph.number_or("smoothing_length_ratio", options.smoothing_length_ratio);
     if (!(ratio >= 0.8 && ratio <= 3.0)) {
         sph.fail("smoothing_length_ratio", "expected h / spacing in [0.8, 3]");
     }
+    options.smoothing_length_ratio = ratio;
     options.smoothing_length = ratio * spacing;
-    options.cfl_safety = sph.number_or("cfl_safety", 0.3);
+    options.cfl_safety = sph.number_or("cfl_safety", options.cfl_safety);
     if (!(options.cfl_safety > 0.0 && options.cfl_safety <= 1.0)) {
         sph.fail("cfl_safety", "expected a safety factor in (0, 1]");
     }
-    options.verlet_skin_factor = sph.number_or("verlet_skin", 0.1);
+    options.verlet_skin_factor = sph.number_or("verlet_skin", options.verlet_skin_factor);
     if (!(options.verlet_skin_factor >= 0.0 && options.verlet_skin_factor <= 1.0)) {
         sph.fail("verlet_skin", "expected the Verlet skin as a fraction of h in [0, 1]");
     }
-    options.kernel_gradient_correction = sph.boolean_or("kernel_gradient_correction", true);
+    options.kernel_gradient_correction =
+        sph.boolean_or("kernel_gradient_correction", options.kernel_gradient_correction);
     const std::string formulation = sph.choice_or(
         "formulation", {"updated_lagrangian", "total_lagrangian"}, "updated_lagrangian");
     if (formulation == "total_lagrangian") {
@@ -62,14 +65,15 @@ SphOptions read_sph_options(const io::CaseTable& sph, int dimension, double spac
                              "expected no [sph.artificial_stress] table");
         }
         options.artificial_stress.epsilon = stress->number_or("epsilon", 0.0);
-        options.artificial_stress.exponent = stress->number_or("exponent", 4.0);
+        options.artificial_stress.exponent =
+            stress->number_or("exponent", options.artificial_stress.exponent);
         if (options.artificial_stress.epsilon < 0.0 || options.artificial_stress.exponent <= 0.0) {
             stress->fail("", "expected epsilon >= 0 and exponent > 0");
         }
     }
     if (const auto contact = sph.optional_table("contact")) {
         options.contact.stiffness = contact->positive_quantity("stiffness", dim::kPressure);
-        options.contact.exponent = contact->number_or("exponent", 1.0);
+        options.contact.exponent = contact->number_or("exponent", options.contact.exponent);
         if (!(options.contact.exponent >= 1.0)) {
             contact->fail("exponent", "expected n >= 1");
         }
@@ -90,12 +94,14 @@ namespace {
 struct WallSurface {
     std::vector<Vec3> points;
     std::vector<Vec3> normals;
+    std::vector<WallSample> samples;
 };
 
 WallSurface wall_surface(const io::CaseTable& wall, int dimension, double spacing, int layers) {
     const std::string type = wall.choice("type", {"plane", "box", "mesh"});
     if (type == "mesh") {
-        return {read_mesh_wall_points(wall, dimension, spacing, layers), {}};
+        MeshWallSamples mesh = read_mesh_wall_points(wall, dimension, spacing, layers);
+        return {std::move(mesh.points), {}, std::move(mesh.samples)};
     }
     if (type == "box") {
         const Vec3 lower = wall.vector("min", dim::kLength);
@@ -103,7 +109,7 @@ WallSurface wall_surface(const io::CaseTable& wall, int dimension, double spacin
         auto points = box_wall_points(lower, upper, spacing, layers, dimension,
                                       wall.boolean_or("open_top", true));
         auto normals = box_wall_normals(points, lower, upper, dimension);
-        return {std::move(points), std::move(normals)};
+        return {std::move(points), std::move(normals), {}};
     }
     const Vec3 origin = wall.vector("origin", dim::kLength);
     const Vec3 u = wall.vector("edge_u", dim::kLength);
@@ -114,7 +120,7 @@ WallSurface wall_surface(const io::CaseTable& wall, int dimension, double spacin
     }
     auto points = plane_wall_points(origin, u, v, normal, spacing, layers, dimension);
     std::vector<Vec3> normals(points.size(), normal.normalized());
-    return {std::move(points), std::move(normals)};
+    return {std::move(points), std::move(normals), {}};
 }
 
 /// `<key>_history` of a wall: [[time, vector], ...] with non-decreasing times, an alternative
@@ -139,10 +145,9 @@ std::vector<std::pair<double, Vec3>> motion_history(const io::CaseTable& wall,
 
 } // namespace
 
-std::vector<RigidWall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& particles,
-                                        int dimension, double spacing, double support_radius,
-                                        int first_body_id) {
-    std::vector<RigidWall> walls;
+std::vector<Wall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& particles, int dimension,
+                                   double spacing, double support_radius, int first_body_id) {
+    std::vector<Wall> walls;
     for (const auto& table : sph.array_of_tables("wall")) {
         // A finer wall is smoother: see docs/theory/sph.md, "Wall contact".
         const double wall_spacing = table.positive_quantity_or("spacing", dim::kLength, spacing);
@@ -158,23 +163,23 @@ std::vector<RigidWall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& p
         WallSurface surface =
             wall_surface(table, dimension, wall_spacing, static_cast<int>(layers));
         const int index = static_cast<int>(walls.size());
-        RigidWall wall =
-            add_rigid_wall(particles, table.string("name"), index, first_body_id + index,
-                           surface.points, wall_spacing, 1.0, dimension);
+        Wall wall = add_wall(particles, table.string("name"), index, first_body_id + index,
+                             surface.points, wall_spacing, 1.0, dimension);
         wall.normals = std::move(surface.normals);
+        wall.samples = std::move(surface.samples);
         wall.centre = table.vector_or("centre", dim::kLength, wall.centre);
-        wall.velocity = table.vector_or("velocity", dim::kVelocity, Vec3::Zero());
-        wall.angular_velocity =
-            table.vector_or("angular_velocity", dim::kAngularVelocity, Vec3::Zero());
-        wall.velocity_history = motion_history(table, "velocity", dim::kVelocity);
-        wall.angular_velocity_history =
-            motion_history(table, "angular_velocity", dim::kAngularVelocity);
-        if (!wall.velocity_history.empty()) {
-            wall.velocity = history_value(wall.velocity_history, 0.0);
-        }
-        if (!wall.angular_velocity_history.empty()) {
-            wall.angular_velocity = history_value(wall.angular_velocity_history, 0.0);
-        }
+        auto velocity_history = motion_history(table, "velocity", dim::kVelocity);
+        auto angular_history = motion_history(table, "angular_velocity", dim::kAngularVelocity);
+        const Vec3 velocity = velocity_history.empty()
+                                  ? table.vector_or("velocity", dim::kVelocity, Vec3::Zero())
+                                  : history_value(velocity_history, 0.0);
+        const Vec3 angular_velocity =
+            angular_history.empty()
+                ? table.vector_or("angular_velocity", dim::kAngularVelocity, Vec3::Zero())
+                : history_value(angular_history, 0.0);
+        RigidMotion& motion = attach_rigid_motion(particles, wall, velocity, angular_velocity);
+        motion.velocity_history = std::move(velocity_history);
+        motion.angular_velocity_history = std::move(angular_history);
         walls.push_back(std::move(wall));
     }
     return walls;
@@ -256,13 +261,13 @@ void read_initial_stress(const io::CaseTable& body, ParticleSet& particles, Inde
 
 std::vector<FrictionPair> read_friction_pairs(const io::CaseTable& sph,
                                               const std::vector<std::string>& body_names,
-                                              const std::vector<RigidWall>& walls) {
+                                              const std::vector<Wall>& walls) {
     std::vector<FrictionPair> pairs;
     for (const auto& table : sph.array_of_tables("friction")) {
         FrictionPair pair;
         pair.body_id = body_index(table, "body", body_names);
         const int wall = index_by_name(
-            table, "wall", walls, [](const RigidWall& w) { return w.name; }, "[[sph.wall]]");
+            table, "wall", walls, [](const Wall& w) { return w.name; }, "[[sph.wall]]");
         pair.wall_body_id = walls[static_cast<std::size_t>(wall)].body_id;
         pair.mu_static = table.number("mu_static");
         pair.mu_kinetic = table.number_or("mu_kinetic", pair.mu_static);

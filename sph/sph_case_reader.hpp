@@ -22,7 +22,7 @@ SphOptions read_sph_options(const io::CaseTable& sph, int dimension, double spac
 
 /// Append the particles of every [[sph.wall]] to `particles` and return the walls. Wall body
 /// ids follow `first_body_id`; `support_radius` sets the default number of layers.
-std::vector<RigidWall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& particles,
+std::vector<Wall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& particles,
                                         int dimension, double spacing, double support_radius,
                                         int first_body_id);
 
@@ -45,6 +45,6 @@ int body_index(const io::CaseTable& table, const std::string& key,
 /// Body ids are indices into `body_names`; walls carry their own.
 std::vector<FrictionPair> read_friction_pairs(const io::CaseTable& sph,
                                               const std::vector<std::string>& body_names,
-                                              const std::vector<RigidWall>& walls);
+                                              const std::vector<Wall>& walls);
 
 } // namespace grainload::sph

@@ -37,11 +37,20 @@ double von_mises_of(const Voigt6& s) {
 } // namespace
 
 std::unique_ptr<SphModel> SphModel::from_case(const io::CaseTable& root,
+                                              const io::SceneSettings& scene,
                                               const materials::MaterialLibrary& materials) {
+    auto model = read_bodies(root, scene, materials);
+    model->build(root);
+    return model;
+}
+
+std::unique_ptr<SphModel> SphModel::read_bodies(const io::CaseTable& root,
+                                                const io::SceneSettings& scene,
+                                                const materials::MaterialLibrary& materials) {
     std::unique_ptr<SphModel> model(new SphModel(materials));
     const io::CaseTable sph = root.table("sph");
-    model->gravity_ =
-        root.table("case").vector_or("gravity", dim::kAcceleration, Vec3(0.0, 0.0, -9.81));
+    model->gravity_ = scene.gravity;
+    model->dimension_ = scene.dimension;
     model->time_step_ = sph.positive_quantity_or("time_step", dim::kTime, 0.0);
     model->interactions_ = sph.boolean_or("interactions", true);
     if (!model->interactions_ && model->time_step_ == 0.0) {
@@ -53,30 +62,87 @@ std::unique_ptr<SphModel> SphModel::from_case(const io::CaseTable& root,
         sph.fail("", "expected at least one [[sph.body]]");
     }
     for (const auto& body : bodies) {
-        model->add_body(body, root.spatial_dimension());
-    }
-    if (model->interactions_) {
-        model->build_solver(sph, model->gravity_, root.spatial_dimension());
-        model->read_probes(sph);
-    }
-    if (const auto heap = sph.optional_table("heap")) {
-        model->heap_.emplace(*heap, model->body_names_, model->particles(), model->spacing_,
-                             model->gravity_, root.spatial_dimension());
-    }
-    model->initial_position_ = model->particles().position;
-    model->initial_velocity_ = model->particles().velocity;
-    if (!model->interactions_) {
-        model->compute_accelerations();
+        model->add_body(body, scene.dimension);
     }
     return model;
 }
 
-void SphModel::build_solver(const io::CaseTable& sph, const Vec3& gravity, int dimension) {
-    SphOptions options = read_sph_options(sph, dimension, spacing_, gravity);
-    SmoothingKernel kernel(options.kernel, options.smoothing_length, dimension);
-    auto walls = read_rigid_walls(sph, particles_, dimension, spacing_, kernel.support_radius(),
+void SphModel::add_wall(WallDefinition wall) {
+    if (solver_) {
+        throw std::logic_error("SphModel::add_wall after build()");
+    }
+    added_walls_.push_back(std::move(wall));
+}
+
+double SphModel::support_radius(const io::CaseTable& root) const {
+    const SphOptions options = read_sph_options(root.table("sph"), dimension_, spacing_, gravity_);
+    return SmoothingKernel(options.kernel, options.smoothing_length, dimension_).support_radius();
+}
+
+int SphModel::body_id(const std::string& name) const {
+    for (std::size_t b = 0; b < body_names_.size(); ++b) {
+        if (body_names_[b] == name) {
+            return static_cast<int>(b);
+        }
+    }
+    return -1;
+}
+
+void SphModel::build(const io::CaseTable& root) {
+    const io::CaseTable sph = root.table("sph");
+    if (!added_walls_.empty() && !interactions_) {
+        sph.fail("interactions", "walls coupled to shells need the SPH solver: expected "
+                                 "interactions = true");
+    }
+    if (interactions_) {
+        build_solver(sph);
+        read_probes(sph);
+    }
+    if (const auto heap = sph.optional_table("heap")) {
+        heap_.emplace(*heap, body_names_, particles(), spacing_, gravity_, dimension_);
+    }
+    initial_position_ = particles().position;
+    initial_velocity_ = particles().velocity;
+    if (!interactions_) {
+        compute_accelerations();
+    }
+}
+
+std::vector<FrictionPair> SphModel::added_wall_friction(const std::vector<Wall>& walls) const {
+    std::vector<FrictionPair> pairs;
+    const std::size_t first_added = walls.size() - added_walls_.size();
+    for (std::size_t k = 0; k < added_walls_.size(); ++k) {
+        for (const auto& f : added_walls_[k].friction) {
+            pairs.push_back(
+                {body_id(f.body), walls[first_added + k].body_id, f.mu_static, f.mu_kinetic});
+        }
+    }
+    return pairs;
+}
+
+void SphModel::build_solver(const io::CaseTable& sph) {
+    SphOptions options = read_sph_options(sph, dimension_, spacing_, gravity_);
+    SmoothingKernel kernel(options.kernel, options.smoothing_length, dimension_);
+    auto walls = read_rigid_walls(sph, particles_, dimension_, spacing_, kernel.support_radius(),
                                   static_cast<int>(body_names_.size()));
+    for (WallDefinition& added : added_walls_) {
+        const int index = static_cast<int>(walls.size());
+        Wall wall = sph::add_wall(particles_, added.name, index,
+                                  static_cast<int>(body_names_.size()) + index, added.points,
+                                  added.spacing, 1.0, dimension_);
+        wall.normals = std::move(added.normals);
+        wall.samples = std::move(added.samples);
+        for (std::size_t k = 0; k < added.velocities.size(); ++k) {
+            particles_.velocity[static_cast<std::size_t>(wall.first) + k] = added.velocities[k];
+        }
+        wall.centre = added.centre;
+        wall.driver = std::move(added.driver);
+        walls.push_back(std::move(wall));
+    }
     options.friction = read_friction_pairs(sph, body_names_, walls);
+    for (const FrictionPair& pair : added_wall_friction(walls)) {
+        options.friction.push_back(pair);
+    }
     if (!options.friction.empty() && !(options.contact.stiffness > 0.0)) {
         sph.fail("friction", "wall friction acts through the contact force: expected an "
                              "[sph.contact] table with a stiffness");
@@ -305,7 +371,7 @@ void SphModel::append_wall_blocks(io::Frame& frame) const {
         return;
     }
     const auto& p = solver_->particles();
-    for (const RigidWall& wall : solver_->walls()) {
+    for (const Wall& wall : solver_->walls()) {
         io::Block block;
         block.name = "wall_" + wall.name;
         io::FieldArray velocity{"velocity", 3, {}}, body{"body_id", 1, {}};
@@ -339,7 +405,7 @@ void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) 
             results.push_back({"wall_friction_work", solver_->wall_contact().friction_work(), "J",
                                std::nullopt, ""});
         }
-        for (const RigidWall& wall : solver_->walls()) {
+        for (const Wall& wall : solver_->walls()) {
             for (int a = 0; a < 3; ++a) {
                 const std::string axis(1, static_cast<char>('x' + a));
                 results.push_back(
@@ -376,12 +442,14 @@ void SphModel::write_checkpoint(std::ostream& out) const {
     io::write_array(out, p.state);
     io::write_array(out, p.clamped);
     if (solver_) {
-        std::vector<Vec3> centres;
-        for (const RigidWall& wall : solver_->walls()) {
-            centres.push_back(wall.centre);
+        for (const Wall& wall : solver_->walls()) {
+            io::write_array(out, std::vector<Vec3>{wall.centre});
             io::write_array(out, wall.normals);
+            io::write_array(out, wall.angular_velocities);
+            if (wall.driver) {
+                wall.driver->write_state(out);
+            }
         }
-        io::write_array(out, centres);
         const std::vector<double> scalars{solver_->last_time_step(),
                                           solver_->wall_contact().friction_work(),
                                           solver_->forces_valid() ? 1.0 : 0.0};
@@ -412,14 +480,18 @@ void SphModel::read_checkpoint(std::istream& in) {
     io::read_array(in, p.state);
     io::read_array(in, p.clamped);
     if (solver_) {
-        auto& walls = solver_->walls();
-        for (RigidWall& wall : walls) {
+        for (Wall& wall : solver_->walls()) {
+            std::vector<Vec3> centre;
+            io::read_array(in, centre);
+            if (centre.size() != 1) {
+                throw std::runtime_error("checkpoint: wall '" + wall.name + "' has no centre");
+            }
+            wall.centre = centre.front();
             io::read_array(in, wall.normals);
-        }
-        std::vector<Vec3> centres;
-        io::read_array(in, centres);
-        for (std::size_t k = 0; k < walls.size() && k < centres.size(); ++k) {
-            walls[k].centre = centres[k];
+            io::read_array(in, wall.angular_velocities);
+            if (wall.driver) {
+                wall.driver->read_state(in);
+            }
         }
         std::vector<double> scalars;
         io::read_array(in, scalars);

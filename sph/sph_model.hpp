@@ -1,5 +1,6 @@
 #pragma once
 
+#include "io/scene_settings.hpp"
 #include "io/stepper.hpp"
 #include "materials/material_library.hpp"
 #include "sph/heap_monitor.hpp"
@@ -23,8 +24,46 @@ namespace grainload::sph {
 /// Built from the case's [sph] tables; the time loop lives in the app's driver.
 class SphModel final : public io::Stepper {
   public:
+    /// A wall built outside the [sph] tables (the coupling's shell walls): its particles,
+    /// their normals into the material and origins, the driver that moves them, and the
+    /// Coulomb coefficients of the bodies that touch it by body name.
+    struct WallDefinition {
+        std::string name;
+        std::vector<Vec3> points;
+        std::vector<Vec3> normals;
+        std::vector<Vec3> velocities; ///< initial velocities of its particles (empty: at rest)
+        std::vector<WallSample> samples;
+        double spacing = 0.0;
+        Vec3 centre = Vec3::Zero(); ///< moment reference
+        std::shared_ptr<WallDriver> driver;
+        struct Friction {
+            std::string body;
+            double mu_static = 0.0;
+            double mu_kinetic = 0.0;
+        };
+        std::vector<Friction> friction;
+    };
+
+    /// The whole [sph] table: bodies, walls, solver.
     static std::unique_ptr<SphModel> from_case(const io::CaseTable& root,
+                                               const io::SceneSettings& scene,
                                                const materials::MaterialLibrary& materials);
+    /// Bodies only, for a caller that adds walls of its own (add_wall) before build().
+    static std::unique_ptr<SphModel> read_bodies(const io::CaseTable& root,
+                                                 const io::SceneSettings& scene,
+                                                 const materials::MaterialLibrary& materials);
+    /// Queue a wall built outside the case reader; it follows the [[sph.wall]] walls. Only
+    /// before build().
+    void add_wall(WallDefinition wall);
+    /// The [[sph.wall]] walls, then the added ones; friction, probes, heap, solver.
+    void build(const io::CaseTable& root);
+    /// The bodies' particle spacing and the kernel's support radius 2h (3h quintic), which the
+    /// layers of an added wall must fill. Valid after read_bodies().
+    double spacing() const { return spacing_; }
+    double support_radius(const io::CaseTable& root) const;
+    /// Index of a body by name, -1 when there is none.
+    int body_id(const std::string& name) const;
+    int dimension() const { return dimension_; }
 
     std::string_view name() const override { return "sph"; }
     double stable_time_step() const override;
@@ -44,9 +83,10 @@ class SphModel final : public io::Stepper {
 
   private:
     SphModel(const materials::MaterialLibrary& materials) : materials_(&materials) {}
+    std::vector<FrictionPair> added_wall_friction(const std::vector<Wall>& walls) const;
     void add_body(const io::CaseTable& body, int dimension);
     void compute_accelerations();
-    void build_solver(const io::CaseTable& sph, const Vec3& gravity, int dimension);
+    void build_solver(const io::CaseTable& sph);
     const std::string& body_name(int body_id) const;
     void append_wall_blocks(io::Frame& frame) const;
     void read_probes(const io::CaseTable& sph);
@@ -61,6 +101,8 @@ class SphModel final : public io::Stepper {
     double time_step_ = 0.0; ///< fixed by the case; 0 means "from the CFL condition"
     bool interactions_ = true;
     double spacing_ = 0.0;
+    int dimension_ = 3;
+    std::vector<WallDefinition> added_walls_;
     std::unique_ptr<SphSolver> solver_;
     std::string output_directory_;
     /// [[sph.probe]]: a name and the particle nearest to the probe's initial position.

@@ -30,7 +30,7 @@ struct ArtificialStress {
 /// K here is a pressure; the thesis' K (unit depending on the dimension) is K * W(dp).
 struct ContactPotential {
     double stiffness = 0.0; ///< K, Pa; 0 disables contact
-    double exponent = 2.0;  ///< n
+    double exponent = 1.0;  ///< n
     /// zeta: normal damping as a fraction of each pair's critical damping (contact_force.hpp).
     double damping_ratio = 0.0;
 };
@@ -53,10 +53,13 @@ enum class Formulation {
     total_lagrangian,
 };
 
-/// Everything the SPH integrator needs besides particles and materials.
+/// Everything the SPH integrator needs besides particles and materials. The defaults here are
+/// the case file's defaults (read_sph_options falls back to them; docs/user-guide/sph.md).
 struct SphOptions {
     int dimension = 3; ///< 2: plane strain (z = 0), 3
-    KernelType kernel = KernelType::wendland_c2;
+    KernelType kernel = KernelType::cubic_spline;
+    /// h / dp, from which read_sph_options sets smoothing_length.
+    double smoothing_length_ratio = 1.3;
     double smoothing_length = 0.0; ///< h, m
     double particle_spacing =
         0.0; ///< dp, m: the reference distance of artificial stress and contact
@@ -68,7 +71,7 @@ struct SphOptions {
     std::vector<FrictionPair> friction;
     /// Randles & Libersky (1996) / Bonet & Lok (1999) corrected gradient in the velocity
     /// gradient (thesis section 4.4.1): exact for linear velocity fields also at free surfaces.
-    bool kernel_gradient_correction = false;
+    bool kernel_gradient_correction = true;
     Formulation formulation = Formulation::updated_lagrangian;
     double cfl_safety = 0.3;         ///< dt = safety * h / (c + |v|)
     double verlet_skin_factor = 0.1; ///< Verlet skin as a fraction of h (0: rebuild each step)

@@ -14,7 +14,7 @@
 namespace grainload::sph {
 
 SphSolver::SphSolver(ParticleSet particles, MaterialList materials, SphOptions options,
-                     std::vector<RigidWall> walls)
+                     std::vector<Wall> walls)
     : particles_(std::move(particles)), materials_(std::move(materials)), options_(options),
       kernel_(options.kernel, options.smoothing_length, options.dimension),
       neighbours_(kernel_.support_radius(), options.verlet_skin_factor * options.smoothing_length,
@@ -85,7 +85,7 @@ void SphSolver::compute_forces(double dt) {
         total_lagrangian_->add_stress_forces(particles_);
     }
     wall_contact_.apply(particles_, neighbours_, kernel_, options_, walls_, dt, heating_rate_);
-    for (RigidWall& wall : walls_) {
+    for (Wall& wall : walls_) {
         accumulate_wall_load(particles_, wall);
     }
     hold_clamped();
@@ -151,8 +151,10 @@ void SphSolver::step(double dt) {
         }
     }
     energy_.add_gravity_work(dt * gravity_power);
-    for (RigidWall& wall : walls_) {
-        move_rigid_wall(p, wall, time_, dt);
+    for (Wall& wall : walls_) {
+        if (wall.moves()) {
+            wall.driver->move(p, wall, time_, dt);
+        }
     }
     refresh_neighbours();
     compute_kinematics();
@@ -178,11 +180,10 @@ void SphSolver::step(double dt) {
 }
 
 double SphSolver::wall_work(double dt) const {
+    // Every wall is booked, whatever moves it: a wall at rest has zero velocities and adds
+    // nothing, and a driven wall (a shell) need not say how it moves.
     double power = wall_contact_.reaction_power_correction();
-    for (const RigidWall& wall : walls_) {
-        if (wall.velocity.squaredNorm() == 0.0 && wall.angular_velocity.squaredNorm() == 0.0) {
-            continue;
-        }
+    for (const Wall& wall : walls_) {
         for (Index k = wall.first; k < wall.first + wall.count; ++k) {
             power -= particles_.mass[k] * particles_.acceleration[k].dot(particles_.velocity[k]);
         }

@@ -6,7 +6,7 @@
 #include "sph/neighbour_list.hpp"
 #include "sph/particle_set.hpp"
 #include "sph/rates.hpp"
-#include "sph/rigid_wall.hpp"
+#include "sph/wall.hpp"
 #include "sph/sph_options.hpp"
 #include "sph/total_lagrangian.hpp"
 #include "sph/wall_contact.hpp"
@@ -30,7 +30,7 @@ class SphSolver {
 
     /// materials[k] is the material of particles with material_id k.
     SphSolver(ParticleSet particles, MaterialList materials, SphOptions options,
-              std::vector<RigidWall> walls = {});
+              std::vector<Wall> walls = {});
 
     /// CFL limit (Monaghan 1992): safety * h / max_i (c_i + |v_i|), c = sqrt((K + 4G/3)/rho).
     double stable_time_step() const;
@@ -66,8 +66,8 @@ class SphSolver {
     const SphOptions& options() const { return options_; }
     const SmoothingKernel& kernel() const { return kernel_; }
     const NeighbourList& neighbours() const { return neighbours_; }
-    std::vector<RigidWall>& walls() { return walls_; }
-    const std::vector<RigidWall>& walls() const { return walls_; }
+    std::vector<Wall>& walls() { return walls_; }
+    const std::vector<Wall>& walls() const { return walls_; }
     const MaterialList& materials() const { return materials_; }
 
     /// Sums over material particles (walls excluded), for conservation checks.
@@ -104,7 +104,7 @@ class SphSolver {
     SphOptions options_;
     SmoothingKernel kernel_;
     NeighbourList neighbours_;
-    std::vector<RigidWall> walls_;
+    std::vector<Wall> walls_;
     WallContact wall_contact_;
     EnergyLedger energy_;
     /// Set with Formulation::total_lagrangian: the reference configuration is the particles

@@ -13,10 +13,14 @@ namespace grainload::sph {
 
 namespace {
 
-/// A surface sample and the unit normal of its face, pointing into the material.
+/// A surface sample, the unit normal of its face (right-hand rule) and where it lies on the
+/// face (WallSample's face and parametric point).
 struct Sample {
     Vec3 x;
     Vec3 normal;
+    Index face;
+    double r;
+    double s;
 };
 
 int parts(double length, double spacing) {
@@ -30,7 +34,7 @@ int parts(double length, double spacing) {
 /// spacing / sqrt(2) of a sample (the right isosceles case), and a right triangle gets the
 /// square lattice density 1 / spacing^2 rather than the 2 / spacing^2 that subdividing by
 /// the longest edge would give.
-void sample_triangle(const Vec3& x0, const Vec3& x1, const Vec3& x2, double spacing,
+void sample_triangle(const Vec3& x0, const Vec3& x1, const Vec3& x2, double spacing, Index face,
                      std::vector<Sample>& out) {
     std::array<Vec3, 3> x{x0, x1, x2};
     const std::array<double, 3> opposite{(x2 - x1).norm(), (x0 - x2).norm(), (x1 - x0).norm()};
@@ -42,9 +46,14 @@ void sample_triangle(const Vec3& x0, const Vec3& x1, const Vec3& x2, double spac
     const Vec3 normal = ab.cross(ac).normalized();
     for (int i = 0; i <= n; ++i) {
         for (int j = 0; i + j <= n; ++j) {
-            out.push_back(
-                {x[0] + (static_cast<double>(i) / n) * ab + (static_cast<double>(j) / n) * ac,
-                 normal});
+            const double a = static_cast<double>(i) / n;
+            const double b = static_cast<double>(j) / n;
+            // Barycentric weights of the rotated vertices, back in the face's own order.
+            std::array<double, 3> weight{};
+            weight[first] = 1.0 - a - b;
+            weight[(first + 1) % 3] = a;
+            weight[(first + 2) % 3] = b;
+            out.push_back({x[0] + a * ab + b * ac, normal, face, weight[1], weight[2]});
         }
     }
 }
@@ -52,7 +61,7 @@ void sample_triangle(const Vec3& x0, const Vec3& x1, const Vec3& x2, double spac
 /// Bilinear patch x(s, t) = (1-s)(1-t) a + s(1-t) b + s t c + (1-s) t d; its normal is
 /// x_s x x_t, constant for a planar parallelogram.
 void sample_quad(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, double spacing,
-                 std::vector<Sample>& out) {
+                 Index face, std::vector<Sample>& out) {
     const int nu = parts(std::max((b - a).norm(), (c - d).norm()), spacing);
     const int nv = parts(std::max((d - a).norm(), (c - b).norm()), spacing);
     for (int j = 0; j <= nv; ++j) {
@@ -62,34 +71,37 @@ void sample_quad(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, dou
             const Vec3 x = (1 - s) * (1 - t) * a + s * (1 - t) * b + s * t * c + (1 - s) * t * d;
             const Vec3 xs = (1 - t) * (b - a) + t * (c - d);
             const Vec3 xt = (1 - s) * (d - a) + s * (c - b);
-            out.push_back({x, xs.cross(xt).normalized()});
+            out.push_back({x, xs.cross(xt).normalized(), face, s, t});
         }
     }
 }
 
-void sample_segment(const Vec3& a, const Vec3& b, double spacing, std::vector<Sample>& out) {
+void sample_segment(const Vec3& a, const Vec3& b, double spacing, Index face,
+                    std::vector<Sample>& out) {
     const Vec3 t = b - a;
     const int n = parts(t.norm(), spacing);
     const Vec3 normal = Vec3(-t.y(), t.x(), 0.0).normalized();
     for (int i = 0; i <= n; ++i) {
-        out.push_back({a + (static_cast<double>(i) / n) * t, normal});
+        const double r = static_cast<double>(i) / n;
+        out.push_back({a + r * t, normal, face, r, 0.0});
     }
 }
 
 std::vector<Sample> surface_samples(const io::SurfaceMesh& mesh, double spacing, int dimension) {
     const auto& v = mesh.vertices;
     std::vector<Sample> samples;
+    Index face = 0;
     if (dimension == 2) {
         for (const auto& [a, b] : mesh.segments) {
-            sample_segment(v[a], v[b], spacing, samples);
+            sample_segment(v[a], v[b], spacing, face++, samples);
         }
         return samples;
     }
     for (const auto& [a, b, c] : mesh.triangles) {
-        sample_triangle(v[a], v[b], v[c], spacing, samples);
+        sample_triangle(v[a], v[b], v[c], spacing, face++, samples);
     }
     for (const auto& [a, b, c, d] : mesh.quads) {
-        sample_quad(v[a], v[b], v[c], v[d], spacing, samples);
+        sample_quad(v[a], v[b], v[c], v[d], spacing, face++, samples);
     }
     return samples;
 }
@@ -100,7 +112,8 @@ class PointMerger {
   public:
     explicit PointMerger(double radius) : radius_(radius) {}
 
-    void add(const Vec3& x) {
+    /// True when x was kept.
+    bool add(const Vec3& x) {
         const Key key = key_of(x);
         for (std::int64_t di = -1; di <= 1; ++di) {
             for (std::int64_t dj = -1; dj <= 1; ++dj) {
@@ -111,7 +124,7 @@ class PointMerger {
                     }
                     for (const std::size_t k : cell->second) {
                         if ((points_[k] - x).norm() < radius_) {
-                            return;
+                            return false;
                         }
                     }
                 }
@@ -119,6 +132,7 @@ class PointMerger {
         }
         cells_[key].push_back(points_.size());
         points_.push_back(x);
+        return true;
     }
 
     std::vector<Vec3> take() { return std::move(points_); }
@@ -145,21 +159,26 @@ class PointMerger {
 
 } // namespace
 
-std::vector<Vec3> mesh_wall_points(const io::SurfaceMesh& mesh, double spacing, int layers,
-                                   int dimension, bool flip_normals) {
+MeshWallSamples mesh_wall_points(const io::SurfaceMesh& mesh, double spacing, int layers,
+                                 int dimension, bool flip_normals) {
     const std::vector<Sample> samples = surface_samples(mesh, spacing, dimension);
-    const double sense = flip_normals ? -1.0 : 1.0;
+    const int side = flip_normals ? -1 : 1;
     PointMerger merger(0.3 * spacing);
+    MeshWallSamples wall;
     for (int layer = 0; layer < layers; ++layer) {
+        const double offset = -side * layer * spacing;
         for (const Sample& s : samples) {
-            merger.add(s.x - sense * layer * spacing * s.normal);
+            if (merger.add(s.x + offset * s.normal)) {
+                wall.samples.push_back({s.face, s.r, s.s, side, offset, layer});
+            }
         }
     }
-    return merger.take();
+    wall.points = merger.take();
+    return wall;
 }
 
-std::vector<Vec3> read_mesh_wall_points(const io::CaseTable& wall, int dimension, double spacing,
-                                        int layers) {
+MeshWallSamples read_mesh_wall_points(const io::CaseTable& wall, int dimension, double spacing,
+                                      int layers) {
     const io::SurfaceMesh mesh = io::read_surface_mesh(wall);
     const auto faces = mesh.triangles.size() + mesh.quads.size();
     if (dimension == 2 && mesh.segments.empty()) {

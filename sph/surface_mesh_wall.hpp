@@ -1,6 +1,7 @@
 #pragma once
 
 #include "io/surface_mesh.hpp"
+#include "sph/wall.hpp"
 
 #include <vector>
 
@@ -22,13 +23,19 @@ namespace grainload::sph {
 /// that coincide (shared edges and vertices) are merged: a sample closer than 0.3 spacing to
 /// an earlier one is dropped, layer 0 first, so the surface keeps its samples and the layers
 /// overlapping behind a convex edge are thinned.
-std::vector<Vec3> mesh_wall_points(const io::SurfaceMesh& mesh, double spacing, int layers,
-                                   int dimension, bool flip_normals);
+/// The samples' origins (WallSample: face index counts the mesh's triangles, then its
+/// quadrangles, or its segments in plane strain) come with the points.
+struct MeshWallSamples {
+    std::vector<Vec3> points;
+    std::vector<WallSample> samples; ///< one per point
+};
+MeshWallSamples mesh_wall_points(const io::SurfaceMesh& mesh, double spacing, int layers,
+                                 int dimension, bool flip_normals);
 
 /// mesh_wall_points for a [[sph.wall]] of type = "mesh": the mesh of its `file` (see
 /// io::read_surface_mesh) and `flip_normals` (default false). Refused when the mesh has no
 /// faces (3D) or no line segments (plane strain).
-std::vector<Vec3> read_mesh_wall_points(const io::CaseTable& wall, int dimension, double spacing,
-                                        int layers);
+MeshWallSamples read_mesh_wall_points(const io::CaseTable& wall, int dimension, double spacing,
+                                      int layers);
 
 } // namespace grainload::sph

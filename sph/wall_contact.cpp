@@ -21,7 +21,9 @@ struct WallTouch {
     Vec3 colour_gradient = Vec3::Zero(); ///< sum_j V_j grad_i W_ij, eq. (5.4.2)
     Mat3 stiffness = Mat3::Zero();       ///< sum_j k_ij e_ij e_ij^T
     Vec3 weighted_normal = Vec3::Zero(); ///< sum_j V_j W_ij n_j, walls that know their normals
-    double weight_sum = 0.0;             ///< sum_j V_j W_ij
+    /// sum_j V_j W_ij (v_j + omega_j x (x_i - x_j)): the wall's velocity field at x_i
+    Vec3 weighted_velocity = Vec3::Zero();
+    double weight_sum = 0.0; ///< sum_j V_j W_ij
 };
 
 /// A particle rarely touches more than a floor and a side wall; a corner of a box touches three.
@@ -53,8 +55,7 @@ WallTouch& touch_of(std::array<WallTouch, kMaxWalls>& walls, int& count, int wal
 
 int gather_walls(const ParticleSet& p, Index i, const NeighbourList& neighbours,
                  const SmoothingKernel& kernel, const SphOptions& options,
-                 const std::vector<RigidWall>& rigid_walls,
-                 std::array<WallTouch, kMaxWalls>& walls) {
+                 const std::vector<Wall>& rigid_walls, std::array<WallTouch, kMaxWalls>& walls) {
     const double support_squared = kernel.support_radius() * kernel.support_radius();
     const double w_reference = kernel.value(options.particle_spacing);
     const double volume_i = p.mass[i] / p.density[i];
@@ -78,11 +79,12 @@ int gather_walls(const ParticleSet& p, Index i, const NeighbourList& neighbours,
         touch.colour_gradient += volume_j * kernel.gradient(x_ij, r);
         touch.stiffness.noalias() +=
             contact_stiffness(kernel, options.contact, w_reference, volumes, r) * e * e.transpose();
-        const RigidWall& wall = rigid_walls[static_cast<std::size_t>(p.wall_id[j])];
+        const Wall& wall = rigid_walls[static_cast<std::size_t>(p.wall_id[j])];
         if (!wall.normals.empty()) {
             touch.weighted_normal +=
                 volume_j * w * wall.normals[static_cast<std::size_t>(j - wall.first)];
         }
+        touch.weighted_velocity += volume_j * w * wall.velocity_at(p, j, p.position[i]);
         touch.weight_sum += volume_j * w;
     }
     return count;
@@ -102,7 +104,7 @@ Vec3 coulomb_force(const FrictionPair& pair, double load, double mass, const Vec
 
 void WallContact::apply(ParticleSet& p, const NeighbourList& neighbours,
                         const SmoothingKernel& kernel, const SphOptions& options,
-                        const std::vector<RigidWall>& rigid_walls, double dt,
+                        const std::vector<Wall>& rigid_walls, double dt,
                         std::vector<double>& heating_rate) {
     sticking_ = 0;
     slipping_ = 0;
@@ -147,12 +149,12 @@ void WallContact::apply(ParticleSet& p, const NeighbourList& neighbours,
                     continue;
                 }
                 const Vec3 normal = direction / direction_norm;
-                // The wall's rigid-body velocity at x_i: what a particle stuck to it moves
-                // with. (Its particles' mean velocity would be the velocity below the surface,
-                // wrong by omega x (x_i - x_j) on a turning wall.)
-                const RigidWall& wall = rigid_walls[static_cast<std::size_t>(touch.wall_index)];
-                const Vec3 wall_velocity =
-                    wall.velocity + wall.angular_velocity.cross(p.position[i] - wall.centre);
+                // The wall's velocity at x_i, what a particle stuck to it moves with: the kernel
+                // average of v_j + omega_j x (x_i - x_j) over its particles, exact for a rigid
+                // motion. (Their plain mean would be the velocity below the surface, wrong by
+                // omega x (x_i - x_j) on a turning wall.)
+                const Wall& wall = rigid_walls[static_cast<std::size_t>(touch.wall_index)];
+                const Vec3 wall_velocity = touch.weighted_velocity / touch.weight_sum;
                 const Vec3 relative = p.velocity[i] - wall_velocity;
                 const double normal_speed = relative.dot(normal);
                 double load = touch.repulsion.dot(normal);

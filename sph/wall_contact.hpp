@@ -3,8 +3,8 @@
 #include "sph/kernels.hpp"
 #include "sph/neighbour_list.hpp"
 #include "sph/particle_set.hpp"
-#include "sph/rigid_wall.hpp"
 #include "sph/sph_options.hpp"
+#include "sph/wall.hpp"
 
 #include <vector>
 
@@ -22,7 +22,10 @@ namespace grainload::sph {
 ///   by a few degrees as a particle slides past them, and a normal dashpot on that tilted n
 ///   would resist sliding: a spurious friction;
 ///   repulsion load N_c = F_c . n, F_c the contact-potential force of w on i (eq. 5.3.12);
-///   relative velocity u = v_i - v_w(x_i), v_w the wall's rigid-body velocity field;
+///   relative velocity u = v_i - v_w(x_i), v_w(x_i) = sum_j V_j W_ij (v_j + omega_j x (x_i -
+///   x_j)) / sum_j V_j W_ij from the wall particles' own velocities and angular velocities
+///   (Wall::velocity_at), whatever drives them: exact for a rigid motion, the shell's motion
+///   at the contact point for a coupled shell;
 ///   normal dashpot D = -2 zeta sqrt(k_n m_i) (u . n) >= -N_c, k_n = sum_j k_ij (e_ij . n)^2
 ///   (k_ij the pair stiffness |dF/dr|), so the load N = N_c + D is never a pull;
 ///   sliding velocity u_t = u - (u . n) n and the tangential force that makes it vanish at the
@@ -39,7 +42,7 @@ class WallContact {
     /// heating_rate, and the reaction to wall particles. Call after the contact-potential
     /// force pass, with the step about to be taken.
     void apply(ParticleSet& p, const NeighbourList& neighbours, const SmoothingKernel& kernel,
-               const SphOptions& options, const std::vector<RigidWall>& walls, double dt,
+               const SphOptions& options, const std::vector<Wall>& walls, double dt,
                std::vector<double>& heating_rate);
 
     /// Work done against wall friction so far (J, or J/m in plane strain), positive.
@@ -61,7 +64,7 @@ class WallContact {
         int wall_index;
         Vec3 force;
         double weight_sum;
-        Vec3 wall_velocity; ///< the wall's rigid-body velocity at the body particle
+        Vec3 wall_velocity; ///< the wall's velocity at the body particle
     };
     void distribute_reactions(ParticleSet& p, const NeighbourList& neighbours,
                               const SmoothingKernel& kernel);

@@ -36,16 +36,21 @@ TEST(RigidWall, OpenBoxLeavesTheTopFree) {
 
 TEST(RigidWall, RigidMotionRotatesExactlyAboutTheMovingCentre) {
     ParticleSet particles;
-    RigidWall wall =
-        add_rigid_wall(particles, "plate", 0, 5, {Vec3(1, 0, 0), Vec3(-1, 0, 0)}, 0.1, 1.0, 3);
+    Wall wall = add_wall(particles, "plate", 0, 5, {Vec3(1, 0, 0), Vec3(-1, 0, 0)}, 0.1, 1.0, 3);
     EXPECT_TRUE(particles.is_wall(0));
-    wall.velocity = Vec3(0.0, 0.0, 2.0);
-    wall.angular_velocity = Vec3(0.0, 0.0, 0.5 * std::numbers::pi);
+    const Vec3 omega(0.0, 0.0, 0.5 * std::numbers::pi);
+    attach_rigid_motion(particles, wall, Vec3(0.0, 0.0, 2.0), omega);
+    ASSERT_TRUE(wall.moves());
     for (int k = 0; k < 10; ++k) {
-        move_rigid_wall(particles, wall, 0.1 * k, 0.1);
+        wall.driver->move(particles, wall, 0.1 * k, 0.1);
     }
     EXPECT_LT((particles.position[0] - Vec3(0.0, 1.0, 2.0)).norm(), 1e-12);
     EXPECT_LT((particles.velocity[0] - Vec3(-0.5 * std::numbers::pi, 0.0, 2.0)).norm(), 1e-12);
+    // The wall's velocity anywhere from one particle's velocity and angular velocity: the rigid
+    // field v + omega x (x - centre), here at the centre itself (0, 0, 2).
+    const Vec3 at_centre = wall.velocity_at(particles, 0, Vec3(0.0, 0.0, 2.0));
+    EXPECT_LT((at_centre - Vec3(0.0, 0.0, 2.0)).norm(), 1e-12);
+    EXPECT_LT((wall.centre - Vec3(0.0, 0.0, 2.0)).norm(), 1e-12);
 }
 
 // A piecewise-linear history has a piecewise-quadratic integral; the wall moves by the exact
@@ -68,13 +73,14 @@ angular_velocity_history = [["0.2 s", "0 0 0 rad/s"], ["0.6 s", "0 0 2 rad/s"]]
     ParticleSet particles;
     auto walls = read_rigid_walls(document->root().table("sph"), particles, 3, 0.5, 0.5, 1);
     ASSERT_EQ(walls.size(), 1u);
-    RigidWall& wall = walls[0];
+    Wall& wall = walls[0];
+    auto& motion = dynamic_cast<RigidMotion&>(*wall.driver);
     const Vec3 start = wall.centre;
     const Vec3 arm0 = particles.position[0] - start;
     const double dt = 0.0123; // not a divisor of the breakpoints
     double t = 0.0;
     while (t < 1.2) {
-        move_rigid_wall(particles, wall, t, dt);
+        wall.driver->move(particles, wall, t, dt);
         t += dt;
     }
     // Integral of the velocity up to t: 0.025 (ramp) + 0.3 * 0.1 + (t - 0.8) * 0.1 in z;
@@ -83,20 +89,22 @@ angular_velocity_history = [["0.2 s", "0 0 0 rad/s"], ["0.6 s", "0 0 2 rad/s"]]
     EXPECT_LT((wall.centre - start - travelled).norm(), 1e-13);
     const Mat3 turned = Eigen::AngleAxisd(0.4 + 2.0 * (t - 0.6), Vec3::UnitZ()).matrix();
     EXPECT_LT((particles.position[0] - wall.centre - turned * arm0).norm(), 1e-12);
-    EXPECT_LT((wall.velocity - Vec3(0.2, 0.0, 0.1)).norm(), 1e-15);
-    EXPECT_LT((history_integral(wall.velocity_history, 0.0, 0.5) - Vec3(0, 0, 0.025)).norm(),
+    EXPECT_LT((motion.velocity - Vec3(0.2, 0.0, 0.1)).norm(), 1e-15);
+    EXPECT_LT((history_integral(motion.velocity_history, 0.0, 0.5) - Vec3(0, 0, 0.025)).norm(),
               1e-15);
-    EXPECT_LT((history_value(wall.velocity_history, 0.25) - Vec3(0, 0, 0.05)).norm(), 1e-15);
+    EXPECT_LT((history_value(motion.velocity_history, 0.25) - Vec3(0, 0, 0.05)).norm(), 1e-15);
 }
 
 TEST(RigidWall, WallForcesFileHasOneRowPerWallAndInstant) {
     const auto directory = std::filesystem::temp_directory_path() / "grainload_wall_test";
-    RigidWall wall;
+    Wall wall;
     wall.name = "floor";
     wall.force = Vec3(1.0, 2.0, 3.0);
     {
         WallForceWriter writer(directory.string());
-        writer.write(0.5, {wall});
+        std::vector<Wall> walls;
+        walls.push_back(wall);
+        writer.write(0.5, walls);
     }
     std::ifstream in(directory / "wall_forces.csv");
     std::string header;

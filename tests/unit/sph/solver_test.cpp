@@ -24,6 +24,8 @@ SphSolver make_solver(int dimension, Vec3 gravity) {
     fill_box_lattice(particles, body, dimension);
     SphOptions options;
     options.dimension = dimension;
+    options.kernel = KernelType::wendland_c2;
+    options.kernel_gradient_correction = false;
     options.smoothing_length = 0.013;
     options.particle_spacing = 0.01;
     options.gravity = gravity;

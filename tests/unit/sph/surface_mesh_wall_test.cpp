@@ -77,7 +77,7 @@ double nearest(const Vec3& p, const std::vector<Vec3>& points) {
 TEST(SurfaceMeshWall, CubeLayerZeroLiesOnAndCoversTheSurface) {
     const io::SurfaceMesh cube = io::read_surface_mesh_file(mesh_path("cube_ascii.stl"));
     const double dx = 0.07;
-    const auto points = mesh_wall_points(cube, dx, 1, 3, false);
+    const auto points = mesh_wall_points(cube, dx, 1, 3, false).points;
     EXPECT_EQ(points.size(), 6u * 15u * 15u + 2u);
     double off_surface = 0.0;
     for (const Vec3& p : points) {
@@ -113,8 +113,8 @@ TEST(SurfaceMeshWall, LayersLieBehindTheFacesAtWholeSpacings) {
     const auto depth_of = [&](const Vec3& p) { // signed: > 0 inside the cube
         return std::min((p - lower).minCoeff(), (upper - p).minCoeff());
     };
-    const auto inner = mesh_wall_points(cube, dx, 3, 3, false);
-    const auto outer = mesh_wall_points(cube, dx, 3, 3, true);
+    const auto inner = mesh_wall_points(cube, dx, 3, 3, false).points;
+    const auto outer = mesh_wall_points(cube, dx, 3, 3, true).points;
     std::array<int, 3> inner_count{}, outer_count{};
     for (const Vec3& p : inner) {
         const double layer = depth_of(p) / dx;
@@ -143,7 +143,7 @@ TEST(SurfaceMeshWall, LayersLieBehindTheFacesAtWholeSpacings) {
 // quad edge, an 11 x 11 grid per layer, the second layer at z = -0.1.
 TEST(SurfaceMeshWall, GmshQuadWallIsAGridPerLayer) {
     const io::SurfaceMesh square = io::read_surface_mesh_file(mesh_path("square_quads.msh"));
-    const auto points = mesh_wall_points(square, 0.1, 2, 3, false);
+    const auto points = mesh_wall_points(square, 0.1, 2, 3, false).points;
     ASSERT_EQ(points.size(), 2u * 11u * 11u);
     for (std::size_t k = 0; k < points.size(); ++k) {
         EXPECT_NEAR(points[k].z(), k < 121 ? 0.0 : -0.1, 1e-15);
@@ -158,17 +158,81 @@ TEST(SurfaceMeshWall, GmshQuadWallIsAGridPerLayer) {
 // less the shared corner. Layer 1 lies 0.1 below each segment.
 TEST(SurfaceMeshWall, PolylineWallInPlaneStrain) {
     const io::SurfaceMesh v = io::read_surface_mesh_file(mesh_path("polyline.msh"));
-    const auto surface = mesh_wall_points(v, 0.1, 1, 2, false);
+    const auto surface = mesh_wall_points(v, 0.1, 1, 2, false).points;
     EXPECT_EQ(surface.size(), 31u);
     for (const Vec3& p : surface) {
         EXPECT_NEAR(p.y(), std::abs(p.x() - 1.0), 1e-15);
         EXPECT_EQ(p.z(), 0.0);
     }
-    const auto two = mesh_wall_points(v, 0.1, 2, 2, false);
+    const auto two = mesh_wall_points(v, 0.1, 2, 2, false).points;
     for (std::size_t k = surface.size(); k < two.size(); ++k) {
         // Below the V by one spacing, measured along the segment normal (1 / sqrt 2 per axis).
         const Vec3& p = two[k];
         EXPECT_NEAR((std::abs(p.x() - 1.0) - p.y()) / std::sqrt(2.0), 0.1, 1e-12) << p.transpose();
+    }
+}
+
+/// Position of a sample from its record alone: the face's vertices weighted by face_weights,
+/// moved by the offset along the face normal (right-hand rule; the left side of a segment).
+Vec3 sample_position(const io::SurfaceMesh& mesh, const WallSample& sample, int dimension) {
+    std::vector<Index> face;
+    const auto triangles = static_cast<Index>(mesh.triangles.size());
+    if (dimension == 2) {
+        const auto& seg = mesh.segments[static_cast<std::size_t>(sample.face)];
+        face = {seg[0], seg[1]};
+    } else if (sample.face < triangles) {
+        const auto& tri = mesh.triangles[static_cast<std::size_t>(sample.face)];
+        face = {tri[0], tri[1], tri[2]};
+    } else {
+        const auto& quad = mesh.quads[static_cast<std::size_t>(sample.face - triangles)];
+        face = {quad[0], quad[1], quad[2], quad[3]};
+    }
+    const auto weights = face_weights(sample, static_cast<int>(face.size()));
+    Vec3 x = Vec3::Zero();
+    for (std::size_t a = 0; a < face.size(); ++a) {
+        x += weights[a] * mesh.vertices[static_cast<std::size_t>(face[a])];
+    }
+    const auto& v = mesh.vertices;
+    Vec3 normal;
+    if (face.size() == 2) {
+        const Vec3 t = v[face[1]] - v[face[0]];
+        normal = Vec3(-t.y(), t.x(), 0.0).normalized();
+    } else if (face.size() == 3) {
+        normal = (v[face[1]] - v[face[0]]).cross(v[face[2]] - v[face[0]]).normalized();
+    } else { // the bilinear patch's normal x_r x x_s at (r, s)
+        const double r = sample.r, s = sample.s;
+        const Vec3 xr = (1 - s) * (v[face[1]] - v[face[0]]) + s * (v[face[2]] - v[face[3]]);
+        const Vec3 xs = (1 - r) * (v[face[3]] - v[face[0]]) + r * (v[face[2]] - v[face[1]]);
+        normal = xr.cross(xs).normalized();
+    }
+    return x + sample.offset * normal;
+}
+
+// Every wall particle keeps its origin (face, parametric point, side, layer offset), from which
+// the face's geometry alone gives back its position: the record the coupling uses both ways.
+// Checked on triangles (the STL cube, rotated barycentric grids), quadrangles (Gmsh) and
+// segments (plane strain), with layers and flipped normals; round-off only.
+TEST(SurfaceMeshWall, EveryParticleKnowsWhereItWasSampled) {
+    struct Mesh {
+        const char* file;
+        int dimension;
+    };
+    for (const Mesh m :
+         {Mesh{"cube_ascii.stl", 3}, Mesh{"square_quads.msh", 3}, Mesh{"polyline.msh", 2}}) {
+        const io::SurfaceMesh mesh = io::read_surface_mesh_file(mesh_path(m.file));
+        for (const bool flip : {false, true}) {
+            const MeshWallSamples wall = mesh_wall_points(mesh, 0.07, 3, m.dimension, flip);
+            ASSERT_EQ(wall.samples.size(), wall.points.size());
+            double worst = 0.0;
+            for (std::size_t k = 0; k < wall.points.size(); ++k) {
+                const WallSample& sample = wall.samples[k];
+                EXPECT_EQ(sample.side, flip ? -1 : 1);
+                EXPECT_NEAR(sample.offset, -sample.side * sample.layer * 0.07, 1e-15);
+                worst = std::max(
+                    worst, (sample_position(mesh, sample, m.dimension) - wall.points[k]).norm());
+            }
+            EXPECT_LT(worst, 1e-12) << m.file << (flip ? " flipped" : "");
+        }
     }
 }
 
@@ -187,8 +251,9 @@ TEST(SurfaceMeshWall, CaseKeysAndRefusals) {
     auto document = io::CaseDocument::from_string(
         "[wall]\nfile = \"cube_ascii.stl\"\nflip_normals = true\n", mesh_path("case.toml"));
     EXPECT_EQ(
-        read_mesh_wall_points(document->root().table("wall"), 3, 0.1, 3),
-        mesh_wall_points(io::read_surface_mesh_file(mesh_path("cube_ascii.stl")), 0.1, 3, 3, true));
+        read_mesh_wall_points(document->root().table("wall"), 3, 0.1, 3).points,
+        mesh_wall_points(io::read_surface_mesh_file(mesh_path("cube_ascii.stl")), 0.1, 3, 3, true)
+            .points);
     const std::string stl_in_2d = wall_error("file = \"square_quads.msh\"\n", 2);
     EXPECT_NE(stl_in_2d.find("key 'wall.file'"), std::string::npos) << stl_in_2d;
     EXPECT_NE(stl_in_2d.find("a mesh wall is a polyline"), std::string::npos) << stl_in_2d;

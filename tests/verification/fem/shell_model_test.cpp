@@ -25,15 +25,10 @@ LoadedCase load(const std::vector<std::string>& overrides = {}) {
     for (const auto& o : overrides) {
         c.document->set(o);
     }
+    const io::SceneSettings scene = io::read_scene_settings(*c.document, "scordelis_lo");
     io::CaseTable root = c.document->root();
-    // The keys of [case] that the app's Scene reads, so that reject_unknown_keys() below
-    // judges the [fem] tables only.
-    const io::CaseTable settings = root.table("case");
-    (void)settings.string_or("name", "");
-    (void)settings.integer_or("dimension", 3);
-    (void)settings.positive_quantity("output_interval", io::dimension::kTime);
     c.materials = materials::MaterialLibrary::from_case(root);
-    c.model = ShellModel::from_case(root, c.materials);
+    c.model = ShellModel::from_case(root, scene, c.materials);
     c.document->reject_unknown_keys();
     return c;
 }
@@ -164,12 +159,12 @@ TEST(ShellModel, EveryBenchmarkCaseMeetsItsReference) {
                              "tipping_plate", "box_under_pressure"}) {
         auto document = io::CaseDocument::from_file(std::string(GRAINLOAD_SOURCE_DIR) +
                                                     "/cases/shell_benchmarks/" + name + ".toml");
+        const io::SceneSettings scene = io::read_scene_settings(*document, name);
         io::CaseTable root = document->root();
-        const io::CaseTable settings = root.table("case");
-        const double end = settings.positive_quantity("end_time", io::dimension::kTime);
-        const double interval = settings.positive_quantity("output_interval", io::dimension::kTime);
+        const double end = scene.end_time;
+        const double interval = scene.output_interval;
         const auto materials = materials::MaterialLibrary::from_case(root);
-        auto model = ShellModel::from_case(root, materials);
+        auto model = ShellModel::from_case(root, scene, materials);
         for (double t = 0.0; t < end - 1e-12; t += interval) {
             model->advance(t, std::min(interval, end - t));
             ASSERT_FALSE(model->diagnose().has_value()) << name << ": " << *model->diagnose();

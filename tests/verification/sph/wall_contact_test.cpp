@@ -1,3 +1,4 @@
+#include "sph/rigid_wall.hpp"
 #include "sph_test_scene.hpp"
 
 #include <gtest/gtest.h>
@@ -28,7 +29,8 @@ TEST(WallContact, BlockReboundsFromFixedWallAndWallImpulseMatchesMomentum) {
     fill_box_lattice(particles, block, 2);
     const auto points = plane_wall_points(Vec3(0.0, -0.01, 0.0), Vec3(0.0, 0.04, 0.0), Vec3::Zero(),
                                           Vec3(1.0, 0.0, 0.0), spacing, 3, 2);
-    std::vector<RigidWall> walls{add_rigid_wall(particles, "wall", 0, 1, points, spacing, 1.0, 2)};
+    std::vector<Wall> walls;
+    walls.push_back(add_wall(particles, "wall", 0, 1, points, spacing, 1.0, 2));
     SphSolver solver(std::move(particles), {&aluminium}, options, std::move(walls));
     const Vec3 p0 = solver.linear_momentum();
     const double c = aluminium.elastic().p_wave_speed();

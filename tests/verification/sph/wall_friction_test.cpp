@@ -1,3 +1,4 @@
+#include "sph/rigid_wall.hpp"
 #include "sph_test_scene.hpp"
 
 #include <cmath>
@@ -50,8 +51,8 @@ FrictionScene make_scene(double theta, const Vec3& floor_velocity, double mu_kin
     const int layers = static_cast<int>(std::ceil(2.6 * kSpacing / ws));
     const auto floor_points = plane_wall_points(Vec3(-0.2, 0.0, 0.0), Vec3(0.5, 0.0, 0.0),
                                                 Vec3::Zero(), Vec3(0.0, 1.0, 0.0), ws, layers, 2);
-    RigidWall floor = add_rigid_wall(particles, "floor", 0, 1, floor_points, ws, 1.0, 2);
-    floor.velocity = floor_velocity;
+    Wall floor = add_wall(particles, "floor", 0, 1, floor_points, ws, 1.0, 2);
+    attach_rigid_motion(particles, floor, floor_velocity, Vec3::Zero());
     floor.normals.assign(floor_points.size(), Vec3(0.0, 1.0, 0.0));
     SphOptions options = plane_strain_options(kSpacing);
     options.gravity = tilted_gravity(theta);
@@ -59,7 +60,11 @@ FrictionScene make_scene(double theta, const Vec3& floor_velocity, double mu_kin
     options.viscosity = {0.5, 0.5};
     options.friction = {FrictionPair{0, 1, kMuStatic, mu_kinetic}};
     scene.solver = std::make_unique<SphSolver>(std::move(particles), SphSolver::MaterialList{&soil},
-                                               options, std::vector<RigidWall>{floor});
+                                               options, [&] {
+                                                   std::vector<Wall> walls;
+                                                   walls.push_back(std::move(floor));
+                                                   return walls;
+                                               }());
     return scene;
 }
 
@@ -156,7 +161,7 @@ TEST(WallFriction, ConveyorBeltAcceleratesTheBlockAtMuKineticGUntilItSticks) {
     EXPECT_NEAR(v_half, 0.5 * belt, 0.05 * 0.5 * belt);
     EXPECT_NEAR(v_end, belt, 1e-3 * belt);
     // The belt carries the block's weight and, once stuck, no tangential force.
-    const RigidWall& floor = solver.walls()[0];
+    const Wall& floor = solver.walls()[0];
     EXPECT_NEAR(floor.force.y(), -scene.mass * kGravity, 0.02 * scene.mass * kGravity);
     EXPECT_LT(std::abs(floor.force.x()), 0.02 * scene.mass * kGravity);
 }

@@ -1,0 +1,277 @@
+#include "coupling/coupled_model.hpp"
+
+#include "io/binary_stream.hpp"
+
+#include <Eigen/Geometry>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+namespace grainload::coupling {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+/// Relative size of a load change; zero when both loads vanish.
+double relative_change(const Eigen::VectorXd& next, const Eigen::VectorXd& previous) {
+    const double scale = next.norm();
+    return scale > 0.0 ? (next - previous).norm() / scale : (previous.norm() > 0.0 ? 1.0 : 0.0);
+}
+
+Vec3 force_sum(const Eigen::VectorXd& load) {
+    Vec3 sum = Vec3::Zero();
+    for (Eigen::Index n = 0; n + 5 < load.size(); n += 6) {
+        sum += load.segment<3>(n);
+    }
+    return sum;
+}
+
+} // namespace
+
+CoupledModel::CoupledModel(std::unique_ptr<sph::SphModel> sph, std::unique_ptr<fem::ShellModel> fem,
+                           std::vector<CoupledPart> parts, CouplingSettings settings)
+    : sph_(std::move(sph)), fem_(std::move(fem)), parts_(std::move(parts)), settings_(settings),
+      load_(Eigen::VectorXd::Zero(6 * fem_->analysis().mesh().node_count())) {
+    const fem::ShellMesh& mesh = fem_->analysis().mesh();
+    node_area_.assign(static_cast<std::size_t>(mesh.node_count()), 0.0);
+    node_normal_.assign(static_cast<std::size_t>(mesh.node_count()), Vec3::Zero());
+    for (const CoupledPart& part : parts_) {
+        for (const Index e : part.elements) {
+            const fem::ShellElement& element = mesh.element(e);
+            const auto& n = element.nodes;
+            const int corners = element.is_triangle() ? 3 : 4;
+            // Area of the (planar-projected) quadrangle or triangle from its diagonals.
+            const Vec3 diagonals = element.is_triangle()
+                                       ? Vec3((mesh.node(n[1]) - mesh.node(n[0]))
+                                                  .cross(mesh.node(n[2]) - mesh.node(n[0])))
+                                       : Vec3((mesh.node(n[2]) - mesh.node(n[0]))
+                                                  .cross(mesh.node(n[3]) - mesh.node(n[1])));
+            const double area = 0.5 * diagonals.norm();
+            const Vec3 normal = static_cast<double>(part.side) * fem::element_normal(mesh, element);
+            for (int a = 0; a < corners; ++a) {
+                node_area_[static_cast<std::size_t>(n[static_cast<std::size_t>(a)])] +=
+                    area / corners;
+                node_normal_[static_cast<std::size_t>(n[static_cast<std::size_t>(a)])] +=
+                    area * normal;
+            }
+        }
+    }
+    for (Vec3& normal : node_normal_) {
+        if (normal.squaredNorm() > 0.0) {
+            normal.normalize();
+        }
+    }
+}
+
+std::vector<io::FieldArray> CoupledModel::interface_fields() const {
+    io::FieldArray pressure{"contact_pressure", 1, {}}, traction{"friction_traction", 3, {}};
+    for (std::size_t n = 0; n < node_area_.size(); ++n) {
+        Vec3 tangential = Vec3::Zero();
+        double normal_stress = 0.0;
+        if (node_area_[n] > 0.0) {
+            const Vec3 force = load_.segment<3>(static_cast<Eigen::Index>(6 * n));
+            // The sand pushes against its own side's normal: compression is -f . n.
+            normal_stress = -force.dot(node_normal_[n]) / node_area_[n];
+            tangential = (force - force.dot(node_normal_[n]) * node_normal_[n]) / node_area_[n];
+        }
+        pressure.values.push_back(normal_stress);
+        traction.values.insert(traction.values.end(), tangential.begin(), tangential.end());
+    }
+    return {pressure, traction};
+}
+
+double CoupledModel::stable_time_step() const {
+    double window = settings_.window;
+    if (settings_.max_subcycles > 0) {
+        window = std::min(window, settings_.max_subcycles * sph_->stable_time_step());
+    }
+    return window;
+}
+
+int CoupledModel::subcycle(double t, double dt) {
+    // Uniform sub-steps that land on the window's end; counted anew whenever the CFL limit
+    // drops below the step (the sand speeds up within the window).
+    const double end = t + dt;
+    double time = t;
+    int steps = 0;
+    while (time < end) {
+        const double limit = sph_->stable_time_step();
+        const double remaining = end - time;
+        const auto n = static_cast<long long>(std::ceil(remaining / limit * (1.0 - 1e-12)));
+        const double step = n <= 1 ? remaining : remaining / static_cast<double>(n);
+        sph_->advance(time, step);
+        for (const CoupledPart& part : parts_) {
+            const auto& walls = sph_->solver()->walls();
+            part.wall->accumulate(sph_->particles(),
+                                  walls[static_cast<std::size_t>(part.wall_index)], step);
+        }
+        time = n <= 1 ? end : time + step;
+        ++steps;
+    }
+    return steps;
+}
+
+Eigen::VectorXd CoupledModel::collect_load(double dt) {
+    Eigen::VectorXd load = Eigen::VectorXd::Zero(load_.size());
+    for (const CoupledPart& part : parts_) {
+        part.wall->add_nodal_loads(fem_->analysis(), dt, load);
+    }
+    return load;
+}
+
+void CoupledModel::run_window(double t, double dt, const Eigen::VectorXd& applied) {
+    const Eigen::VectorXd before = fem_->analysis().dofs();
+    Vec3 wall_impulse = Vec3::Zero();
+    double sand_work = 0.0;
+    for (const CoupledPart& part : parts_) {
+        wall_impulse -= part.wall->impulse();
+        sand_work -= part.wall->work();
+    }
+    WindowRecord record;
+    record.time = t + dt;
+    record.length = dt;
+    auto start = Clock::now();
+    fem_->advance_with_forces(t, dt, applied);
+    record.fem_seconds = seconds_since(start);
+    start = Clock::now();
+    for (const CoupledPart& part : parts_) {
+        part.wall->begin_window(fem_->analysis(), t, t + dt);
+    }
+    record.map_seconds = seconds_since(start);
+    start = Clock::now();
+    record.subcycles = subcycle(t, dt);
+    record.sph_seconds = seconds_since(start);
+    for (const CoupledPart& part : parts_) {
+        wall_impulse += part.wall->impulse();
+        sand_work += part.wall->work();
+    }
+    record.sand_work = sand_work;
+    record.wall_impulse = wall_impulse;
+    record.shell_work = applied.dot(fem_->analysis().dofs() - before);
+    record.shell_impulse = dt * force_sum(applied);
+    pending_ = record;
+}
+
+void CoupledModel::advance(double t, double dt) {
+    if (settings_.max_iterations <= 1) {
+        run_window(t, dt, load_);
+        const auto start = Clock::now();
+        load_ = collect_load(dt);
+        pending_.map_seconds += seconds_since(start);
+        monitor_.add(pending_);
+        return;
+    }
+    // Fixed-point iteration on the interface load: every pass starts the window afresh from
+    // the state saved here, under the relaxed load of the pass before.
+    std::stringstream saved;
+    sph_->write_checkpoint(saved);
+    fem_->write_checkpoint(saved);
+    const std::string start_state = saved.str();
+    Eigen::VectorXd applied = load_;
+    double seconds = 0.0;
+    for (int pass = 1;; ++pass) {
+        if (pass > 1) {
+            std::istringstream in(start_state);
+            sph_->read_checkpoint(in);
+            fem_->read_checkpoint(in);
+        }
+        run_window(t, dt, applied);
+        const auto start = Clock::now();
+        const Eigen::VectorXd produced = collect_load(dt);
+        pending_.map_seconds += seconds_since(start);
+        pending_.iterations = pass;
+        pending_.load_change = relative_change(produced, applied);
+        seconds += pending_.sph_seconds + pending_.fem_seconds;
+        if (pending_.load_change <= settings_.iteration_tolerance ||
+            pass >= settings_.max_iterations) {
+            load_ = produced;
+            break;
+        }
+        applied = settings_.relaxation * produced + (1.0 - settings_.relaxation) * applied;
+    }
+    monitor_.add(pending_);
+}
+
+std::optional<std::string> CoupledModel::diagnose() const {
+    if (auto problem = sph_->diagnose()) {
+        return "sph: " + *problem;
+    }
+    if (auto problem = fem_->diagnose()) {
+        return "fem: " + *problem;
+    }
+    if (!load_.allFinite()) {
+        return std::string("interface load is not finite");
+    }
+    const double scale = sph_->solver()->energy_ledger().throughput();
+    return monitor_.check(settings_.energy_error_limit, scale);
+}
+
+void CoupledModel::append_blocks(io::Frame& frame) const {
+    sph_->append_blocks(frame);
+    fem_->append_blocks(frame, interface_fields(), {});
+}
+
+void CoupledModel::append_results(double t, std::vector<io::ResultFigure>& results) const {
+    sph_->append_results(t, results);
+    fem_->append_results(t, results);
+    const double scale = sph_->solver()->energy_ledger().throughput();
+    results.push_back({"coupling_windows",
+                       static_cast<double>(monitor_.windows().size() + windows_before_restart_), "",
+                       std::nullopt, ""});
+    results.push_back({"coupling_sand_work", monitor_.sand_work(), "J", std::nullopt, ""});
+    results.push_back({"coupling_shell_work", monitor_.shell_work(), "J", std::nullopt, ""});
+    results.push_back(
+        {"coupling_energy_error", monitor_.relative_energy_error(scale), "", std::nullopt, ""});
+    results.push_back({"coupling_largest_subcycles",
+                       static_cast<double>(monitor_.largest_subcycles()), "", std::nullopt, ""});
+    const Vec3 load = force_sum(load_);
+    for (int a = 0; a < 3; ++a) {
+        const std::string axis(1, static_cast<char>('x' + a));
+        results.push_back({"interface_force_" + axis, load[a], "N", std::nullopt, ""});
+    }
+}
+
+void CoupledModel::write_logs(const std::string& directory) const {
+    sph_->write_logs(directory);
+    fem_->write_logs(directory);
+    monitor_.write_csv(directory, restarted_);
+}
+
+void CoupledModel::set_output_directory(const std::string& directory) {
+    sph_->set_output_directory(directory);
+    fem_->set_output_directory(directory);
+}
+
+void CoupledModel::write_checkpoint(std::ostream& out) const {
+    sph_->write_checkpoint(out);
+    fem_->write_checkpoint(out);
+    io::write_array(out, std::vector<double>(load_.begin(), load_.end()));
+    io::write_array(out, monitor_.state());
+    io::write_array(out, std::vector<double>{static_cast<double>(monitor_.windows().size() +
+                                                                 windows_before_restart_)});
+}
+
+void CoupledModel::read_checkpoint(std::istream& in) {
+    sph_->read_checkpoint(in);
+    fem_->read_checkpoint(in);
+    std::vector<double> load;
+    io::read_array(in, load);
+    if (static_cast<Eigen::Index>(load.size()) != load_.size()) {
+        throw std::runtime_error("checkpoint: the interface load does not match the shell mesh");
+    }
+    load_ = Eigen::Map<const Eigen::VectorXd>(load.data(), load_.size());
+    std::vector<double> state;
+    io::read_array(in, state);
+    monitor_.set_state(state);
+    std::vector<double> windows;
+    io::read_array(in, windows);
+    windows_before_restart_ = windows.empty() ? 0 : static_cast<std::size_t>(windows.front());
+    restarted_ = true;
+}
+
+} // namespace grainload::coupling

@@ -1,0 +1,96 @@
+#pragma once
+
+#include "coupling/coupling_monitor.hpp"
+#include "coupling/shell_wall.hpp"
+#include "fem/shell_model.hpp"
+#include "io/stepper.hpp"
+#include "sph/sph_model.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace grainload::coupling {
+
+/// How each window is solved (docs/theory/coupling.md).
+struct CouplingSettings {
+    double window = 0.0;     ///< FEM step: the coupling window [s]
+    int max_subcycles = 0;   ///< SPH steps a window may take; 0: no limit
+    int max_iterations = 1;  ///< 1: staggered with a one-window lag; > 1: fixed-point iteration
+    double relaxation = 1.0; ///< omega of the iteration's load update
+    double iteration_tolerance = 0.0; ///< ||F(k+1) - F(k)|| / ||F(k+1)|| that ends the iteration
+    /// Run stopped (exit 3) when |interface energy error| exceeds this fraction of the interface
+    /// work (with an absolute floor, coupling_monitor.hpp).
+    double energy_error_limit = 0.05;
+};
+
+/// A coupled shell part: the walls' driver and where its particles are in the SPH model.
+struct CoupledPart {
+    std::string name;    ///< the shell part's name (the SPH wall has the same)
+    int wall_index = -1; ///< in the SPH solver's wall list
+    std::shared_ptr<ShellWall> wall;
+    std::vector<Index> elements; ///< the part's shell elements
+    ContactSide side = ContactSide::positive;
+};
+
+/// The SPH-shell coupling as the time loop sees it (thesis sections 5.3 and 9.1): the FEM is
+/// master, SPH its slave. advance(t, dt) is one window:
+///  1. the shell is solved from t to t + dt under the sand's mean load of the previous window
+///     (Kratos' DEM-structure order: structure first, one-window lag);
+///  2. the walls of the coupled parts follow the shell from its state at t to that at t + dt,
+///     linearly in time;
+///  3. SPH sub-cycles through the window at its own CFL step (uniform steps, the last landing
+///     on t + dt), adding up every wall particle's impulse;
+///  4. the impulses divided by dt, mapped to the nodes by the transpose of the wall's
+///     interpolation, are the shell's load for the next window.
+/// With max_iterations > 1 the window is repeated from its start with the load it produced,
+/// relaxed, until the load stops changing (a fixed-point iteration on the interface load).
+class CoupledModel final : public io::Stepper {
+  public:
+    CoupledModel(std::unique_ptr<sph::SphModel> sph, std::unique_ptr<fem::ShellModel> fem,
+                 std::vector<CoupledPart> parts, CouplingSettings settings);
+
+    std::string_view name() const override { return "coupling"; }
+    /// The window, cut to max_subcycles SPH steps when it would need more.
+    double stable_time_step() const override;
+    void advance(double t, double dt) override;
+    Index point_count() const override { return sph_->point_count() + fem_->point_count(); }
+    std::optional<std::string> diagnose() const override;
+    void append_blocks(io::Frame& frame) const override;
+    void append_results(double t, std::vector<io::ResultFigure>& results) const override;
+    void write_logs(const std::string& directory) const override;
+    void set_output_directory(const std::string& directory) override;
+    void write_checkpoint(std::ostream& out) const override;
+    void read_checkpoint(std::istream& in) override;
+
+    const sph::SphModel& sph() const { return *sph_; }
+    const fem::ShellModel& fem() const { return *fem_; }
+    const CouplingMonitor& monitor() const { return monitor_; }
+    /// The shell load of the next window (6 per node).
+    const Eigen::VectorXd& interface_load() const { return load_; }
+
+  private:
+    /// SPH sub-steps from t to t + dt, walls accumulating; returns their number.
+    int subcycle(double t, double dt);
+    /// The window's mean load of every coupled part, mapped to the nodes.
+    Eigen::VectorXd collect_load(double dt);
+    void run_window(double t, double dt, const Eigen::VectorXd& applied);
+    /// Per node of the shell mesh: the interface load as contact pressure (compression
+    /// positive) and friction traction (tangential force per area), from the load over the
+    /// lumped area of the coupled elements around the node.
+    std::vector<io::FieldArray> interface_fields() const;
+
+    std::unique_ptr<sph::SphModel> sph_;
+    std::unique_ptr<fem::ShellModel> fem_;
+    std::vector<CoupledPart> parts_;
+    CouplingSettings settings_;
+    Eigen::VectorXd load_;
+    CouplingMonitor monitor_;
+    WindowRecord pending_;
+    bool restarted_ = false;
+    std::size_t windows_before_restart_ = 0;
+    std::vector<double> node_area_; ///< coupled area around each node (0: not coupled)
+    std::vector<Vec3> node_normal_; ///< unit normal towards the sand at each coupled node
+};
+
+} // namespace grainload::coupling

@@ -1,0 +1,174 @@
+#include "coupling/coupling_case_reader.hpp"
+
+#include "io/case_table.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace grainload::coupling {
+
+namespace dim = io::dimension;
+
+namespace {
+
+CouplingSettings read_settings(const io::CaseTable& table, const fem::ShellModel& fem) {
+    CouplingSettings settings;
+    if (table.has("window") || !fem.dynamic()) {
+        settings.window = table.positive_quantity("window", dim::kTime);
+    } else {
+        settings.window = fem.stable_time_step();
+    }
+    const auto subcycles = table.integer_or("max_subcycles", 0);
+    if (subcycles < 0) {
+        table.fail("max_subcycles", "expected 0 (no limit) or a positive number of SPH steps");
+    }
+    settings.max_subcycles = static_cast<int>(subcycles);
+    const auto iterations = table.integer_or("max_iterations", 1);
+    if (iterations < 1 || iterations > 1000) {
+        table.fail("max_iterations", "expected 1 (staggered) to 1000 passes per window");
+    }
+    settings.max_iterations = static_cast<int>(iterations);
+    settings.relaxation = table.number_or("relaxation", 0.5);
+    if (!(settings.relaxation > 0.0 && settings.relaxation <= 1.0)) {
+        table.fail("relaxation", "expected a relaxation factor in (0, 1]");
+    }
+    settings.iteration_tolerance = table.number_or("iteration_tolerance", 1e-3);
+    if (!(settings.iteration_tolerance >= 0.0)) {
+        table.fail("iteration_tolerance", "expected a tolerance >= 0");
+    }
+    settings.energy_error_limit = table.number_or("energy_error_limit", 0.05);
+    if (!(settings.energy_error_limit > 0.0)) {
+        table.fail("energy_error_limit", "expected a positive fraction of the interface work");
+    }
+    return settings;
+}
+
+int part_index(const io::CaseTable& table, const std::string& key,
+               const std::vector<std::string>& parts) {
+    const std::string name = table.string(key);
+    std::string known;
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+        if (parts[k] == name) {
+            return static_cast<int>(k);
+        }
+        known += (known.empty() ? "\"" : ", \"") + parts[k] + "\"";
+    }
+    table.fail(key, "expected the name of a [[fem.shell]] part (" + known + ")");
+}
+
+void read_friction(const io::CaseTable& coupling, const std::vector<std::string>& parts,
+                   const sph::SphModel& sph, std::vector<sph::SphModel::WallDefinition>& walls) {
+    for (const io::CaseTable& table : coupling.array_of_tables("friction")) {
+        const std::string body = table.string("body");
+        if (sph.body_id(body) < 0) {
+            table.fail("body", "expected the name of an [[sph.body]]");
+        }
+        const std::string part = parts[static_cast<std::size_t>(part_index(table, "part", parts))];
+        sph::SphModel::WallDefinition* wall = nullptr;
+        for (auto& w : walls) {
+            wall = w.name == part ? &w : wall;
+        }
+        if (wall == nullptr) {
+            table.fail("part", "the part has no [[coupling.interface]]");
+        }
+        sph::SphModel::WallDefinition::Friction friction{body, table.number("mu_static"), 0.0};
+        friction.mu_kinetic = table.number_or("mu_kinetic", friction.mu_static);
+        if (!(friction.mu_static >= 0.0)) {
+            table.fail("mu_static", "expected a friction coefficient >= 0");
+        }
+        if (!(friction.mu_kinetic >= 0.0 && friction.mu_kinetic <= friction.mu_static)) {
+            table.fail("mu_kinetic", "expected 0 <= mu_kinetic <= mu_static");
+        }
+        for (const auto& other : wall->friction) {
+            if (other.body == body) {
+                table.fail("part", "this body-part pair already has friction coefficients");
+            }
+        }
+        wall->friction.push_back(friction);
+    }
+}
+
+} // namespace
+
+std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
+                                                 const io::SceneSettings& scene,
+                                                 const materials::MaterialLibrary& materials) {
+    const io::CaseTable coupling = root.table("coupling");
+    if (!root.has("sph") || !root.has("fem")) {
+        coupling.fail("", "a coupling joins SPH bodies and shells: expected [sph] with "
+                          "[[sph.body]] and [fem] with [[fem.shell]] tables");
+    }
+    auto sph = sph::SphModel::read_bodies(root, scene, materials);
+    auto fem = fem::ShellModel::from_case(root, scene, materials);
+    const CouplingSettings settings = read_settings(coupling, *fem);
+    const double support = sph->support_radius(root);
+    const auto& names = fem->part_names();
+    std::vector<CoupledPart> parts;
+    std::vector<sph::SphModel::WallDefinition> walls;
+    const auto interfaces = coupling.array_of_tables("interface");
+    if (interfaces.empty()) {
+        coupling.fail("interface", "expected at least one [[coupling.interface]] table");
+    }
+    for (const io::CaseTable& table : interfaces) {
+        CoupledPart part;
+        const int index = part_index(table, "part", names);
+        part.name = names[static_cast<std::size_t>(index)];
+        for (const CoupledPart& other : parts) {
+            if (other.name == part.name) {
+                table.fail("part", "the part \"" + part.name + "\" is coupled twice");
+            }
+        }
+        ShellWallLayout layout;
+        layout.side = table.choice("side", {"positive", "negative"}) == "positive"
+                          ? ContactSide::positive
+                          : ContactSide::negative;
+        layout.spacing = table.positive_quantity_or("spacing", dim::kLength, sph->spacing());
+        if (layout.spacing > sph->spacing() * (1.0 + 1e-9) ||
+            layout.spacing < 0.2 * sph->spacing()) {
+            table.fail("spacing", "expected a wall particle spacing between 0.2 and 1 times the "
+                                  "bodies' spacing");
+        }
+        const auto layers =
+            table.integer_or("layers", static_cast<int>(std::ceil(support / layout.spacing)));
+        if (layers < 1 || layers > 20) {
+            table.fail("layers", "expected 1 to 20 layers of wall particles");
+        }
+        layout.layers = static_cast<int>(layers);
+        part.side = layout.side;
+        part.elements = fem->analysis().mesh().part_elements(index);
+        part.wall = std::make_shared<ShellWall>(fem->analysis(), part.elements, layout);
+        sph::SphModel::WallDefinition wall;
+        wall.name = part.name;
+        wall.points = part.wall->points();
+        wall.normals = part.wall->normals();
+        wall.samples = part.wall->samples();
+        wall.spacing = layout.spacing;
+        wall.driver = part.wall;
+        walls.push_back(std::move(wall));
+        parts.push_back(std::move(part));
+    }
+    read_friction(coupling, names, *sph, walls);
+    for (auto& wall : walls) {
+        sph->add_wall(std::move(wall));
+    }
+    sph->build(root);
+    const auto& sph_walls = sph->solver()->walls();
+    for (CoupledPart& part : parts) {
+        for (std::size_t k = 0; k < sph_walls.size(); ++k) {
+            if (sph_walls[k].name == part.name) {
+                part.wall_index = static_cast<int>(k);
+            }
+        }
+    }
+    const double sph_step = sph->stable_time_step();
+    if (settings.window < sph_step * (1.0 - 1e-9)) {
+        std::ostringstream message;
+        message << "the coupling window " << settings.window << " s is shorter than the SPH step "
+                << sph_step << " s: expected a window of at least one SPH step";
+        coupling.fail("window", message.str());
+    }
+    return std::make_unique<CoupledModel>(std::move(sph), std::move(fem), std::move(parts),
+                                          settings);
+}
+
+} // namespace grainload::coupling

@@ -1,0 +1,49 @@
+#pragma once
+
+#include "coupling/coupled_model.hpp"
+#include "io/key_spec.hpp"
+#include "io/scene_settings.hpp"
+#include "materials/material_library.hpp"
+
+#include <array>
+#include <memory>
+
+namespace grainload::io {
+class CaseTable;
+}
+
+namespace grainload::coupling {
+
+/// The [coupling] table's own keys (docs/user-guide/coupling.md).
+inline constexpr std::array<io::KeySpec, 6> kCouplingKeys{{
+    {"window", "time", "the dynamic shell's `fem.time_step`; required for a static shell",
+     "FEM step Δt_F: the shell is solved once per window, SPH sub-cycles through it"},
+    {"max_subcycles", "integer", "0 (no limit)",
+     "a window needing more SPH steps is cut to max_subcycles SPH steps"},
+    {"max_iterations", "integer", "1",
+     "1: staggered with a one-window lag; > 1: fixed-point iteration per window"},
+    {"relaxation", "number in (0, 1]", "0.5", "ω of the iteration: F ← ω F_new + (1 − ω) F"},
+    {"iteration_tolerance", "number", "1e-3",
+     "the iteration stops when ‖F_new − F‖ / ‖F_new‖ is below it"},
+    {"energy_error_limit", "number", "0.05",
+     "exit 3 when the interface energy error exceeds this fraction of the interface work"},
+}};
+
+/// The keys of each [[coupling.interface]] table.
+inline constexpr std::array<io::KeySpec, 4> kInterfaceKeys{{
+    {"part", "string", "", "a [[fem.shell]] part name"},
+    {"side", "`positive` or `negative`", "",
+     "the side of the part's element normals (right-hand rule of the node order) the sand is on"},
+    {"spacing", "length", "the bodies' spacing", "wall particle spacing on the shell"},
+    {"layers", "integer", "enough to fill the kernel support: ⌈2h / spacing⌉ (3h quintic)",
+     "layers of wall particles behind the contact face"},
+}};
+
+/// A scene with [sph], [fem] and [coupling]: the bodies, the shell parts, one wall per
+/// [[coupling.interface]] on the shell (named after its part), friction from
+/// [[coupling.friction]] (body, part, mu_static, mu_kinetic), joined in one CoupledModel.
+std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
+                                                 const io::SceneSettings& scene,
+                                                 const materials::MaterialLibrary& materials);
+
+} // namespace grainload::coupling

@@ -1,0 +1,110 @@
+#include "coupling/coupling_monitor.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace grainload::coupling {
+
+void CouplingMonitor::add(const WindowRecord& record) {
+    windows_.push_back(record);
+    sand_work_ += record.sand_work;
+    shell_work_ += record.shell_work;
+    largest_work_ = std::max(largest_work_, std::abs(sand_work_));
+    wall_impulse_ += record.wall_impulse;
+    shell_impulse_ += record.shell_impulse;
+    subcycles_ += record.subcycles * record.iterations;
+    largest_subcycles_ = std::max(largest_subcycles_, record.subcycles);
+    sph_seconds_ += record.sph_seconds;
+    fem_seconds_ += record.fem_seconds;
+    map_seconds_ += record.map_seconds;
+}
+
+double CouplingMonitor::relative_energy_error(double scale) const {
+    const double reference = std::max(largest_work_, scale);
+    return reference > 0.0 ? std::abs(energy_error()) / reference : 0.0;
+}
+
+std::optional<std::string> CouplingMonitor::check(double limit, double scale) const {
+    const double error = relative_energy_error(scale);
+    if (!(error > limit) && std::isfinite(error)) {
+        return std::nullopt;
+    }
+    std::ostringstream out;
+    out << "coupling window " << windows_.size()
+        << " ending at t = " << (windows_.empty() ? 0.0 : windows_.back().time)
+        << " s: interface energy error (sand work on the walls " << sand_work_
+        << " J minus shell work " << shell_work_ << " J) is " << error
+        << " of the interface work, above the limit " << limit
+        << "; the staggered exchange is unstable: shorten [coupling] window, or iterate "
+           "(max_iterations > 1, relaxation < 1)";
+    return out.str();
+}
+
+void CouplingMonitor::write_csv(const std::string& directory, bool restarted) const {
+    const std::string path = (std::filesystem::path(directory) / "coupling.csv").string();
+    const bool fresh = (written_ == 0 && !restarted) || !std::filesystem::exists(path);
+    std::ofstream csv(path, fresh ? std::ios::trunc : std::ios::app);
+    if (fresh) {
+        csv << "time_s,window_s,subcycles,iterations,load_change,sand_work_J,shell_work_J,"
+               "energy_error_J,wall_impulse_x_Ns,wall_impulse_y_Ns,wall_impulse_z_Ns,"
+               "shell_impulse_x_Ns,shell_impulse_y_Ns,shell_impulse_z_Ns,sph_s,fem_s,map_s\n";
+    }
+    csv.precision(12);
+    double sand = sand_work_, shell = shell_work_;
+    for (std::size_t k = windows_.size(); k-- > written_;) {
+        sand -= windows_[k].sand_work;
+        shell -= windows_[k].shell_work;
+    }
+    for (; written_ < windows_.size(); ++written_) {
+        const WindowRecord& w = windows_[written_];
+        sand += w.sand_work;
+        shell += w.shell_work;
+        csv << w.time << ',' << w.length << ',' << w.subcycles << ',' << w.iterations << ','
+            << w.load_change << ',' << w.sand_work << ',' << w.shell_work << ',' << sand - shell
+            << ',' << w.wall_impulse.x() << ',' << w.wall_impulse.y() << ',' << w.wall_impulse.z()
+            << ',' << w.shell_impulse.x() << ',' << w.shell_impulse.y() << ','
+            << w.shell_impulse.z() << ',' << w.sph_seconds << ',' << w.fem_seconds << ','
+            << w.map_seconds << '\n';
+    }
+}
+
+std::vector<double> CouplingMonitor::state() const {
+    return {sand_work_,
+            shell_work_,
+            largest_work_,
+            wall_impulse_.x(),
+            wall_impulse_.y(),
+            wall_impulse_.z(),
+            shell_impulse_.x(),
+            shell_impulse_.y(),
+            shell_impulse_.z(),
+            static_cast<double>(subcycles_),
+            static_cast<double>(largest_subcycles_),
+            sph_seconds_,
+            fem_seconds_,
+            map_seconds_};
+}
+
+void CouplingMonitor::set_state(const std::vector<double>& state) {
+    if (state.size() != 14) {
+        throw std::runtime_error("checkpoint: the coupling monitor holds 14 values, found " +
+                                 std::to_string(state.size()));
+    }
+    sand_work_ = state[0];
+    shell_work_ = state[1];
+    largest_work_ = state[2];
+    wall_impulse_ = Vec3(state[3], state[4], state[5]);
+    shell_impulse_ = Vec3(state[6], state[7], state[8]);
+    subcycles_ = static_cast<long long>(state[9]);
+    largest_subcycles_ = static_cast<int>(state[10]);
+    sph_seconds_ = state[11];
+    fem_seconds_ = state[12];
+    map_seconds_ = state[13];
+    windows_.clear();
+    written_ = 0;
+}
+
+} // namespace grainload::coupling

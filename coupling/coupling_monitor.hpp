@@ -1,0 +1,76 @@
+#pragma once
+
+#include "io/types.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace grainload::coupling {
+
+/// One coupling window as the monitor books it.
+struct WindowRecord {
+    double time = 0.0;                ///< end of the window [s]
+    double length = 0.0;              ///< [s]
+    int subcycles = 0;                ///< SPH steps of the (last) pass through the window
+    int iterations = 1;               ///< passes through the window
+    double load_change = 0.0;         ///< ||F(k+1) - F(k)|| / ||F(k+1)|| of the last pass (0: none)
+    double sand_work = 0.0;           ///< work of the sand on the coupled walls in the window [J]
+    double shell_work = 0.0;          ///< work of the applied interface load on the shell [J]
+    Vec3 wall_impulse = Vec3::Zero(); ///< impulse of the sand on the coupled walls [N s]
+    Vec3 shell_impulse = Vec3::Zero(); ///< impulse of the interface load on the shell [N s]
+    double sph_seconds = 0.0;          ///< wall time of the SPH sub-steps
+    double fem_seconds = 0.0;          ///< wall time of the shell solve(s)
+    double map_seconds = 0.0;          ///< wall time of interpolation and force mapping
+};
+
+/// The coupling's books (issue: interface energy error, momentum balance, sub-cycles, FEM solve
+/// time per window). The interface energy error is the work the sand did on the wall particles
+/// minus the work the shell received from the mapped loads, summed over the windows: zero for
+/// an exact transfer; the one-window lag of the staggered scheme makes it
+/// sum_n (F(n) - F(n-1)) . dU(n), which grows when the exchange goes unstable.
+class CouplingMonitor {
+  public:
+    void add(const WindowRecord& record);
+    const std::vector<WindowRecord>& windows() const { return windows_; }
+
+    double sand_work() const { return sand_work_; }
+    double shell_work() const { return shell_work_; }
+    double energy_error() const { return sand_work_ - shell_work_; }
+    /// |energy_error| / max(largest |sand work| so far, `scale`).
+    double relative_energy_error(double scale) const;
+    const Vec3& wall_impulse() const { return wall_impulse_; }
+    const Vec3& shell_impulse() const { return shell_impulse_; }
+    long long subcycles() const { return subcycles_; }
+    int largest_subcycles() const { return largest_subcycles_; }
+    double sph_seconds() const { return sph_seconds_; }
+    double fem_seconds() const { return fem_seconds_; }
+    double map_seconds() const { return map_seconds_; }
+
+    /// A diagnosis naming the window and the quantity when the relative energy error exceeds
+    /// `limit` (scale as in relative_energy_error).
+    std::optional<std::string> check(double limit, double scale) const;
+
+    /// Appends the windows not yet written to DIRECTORY/coupling.csv (a fresh file at the
+    /// first call of a fresh run).
+    void write_csv(const std::string& directory, bool restarted) const;
+
+    std::vector<double> state() const;
+    void set_state(const std::vector<double>& state);
+
+  private:
+    std::vector<WindowRecord> windows_;
+    double sand_work_ = 0.0;
+    double shell_work_ = 0.0;
+    double largest_work_ = 0.0;
+    Vec3 wall_impulse_ = Vec3::Zero();
+    Vec3 shell_impulse_ = Vec3::Zero();
+    long long subcycles_ = 0;
+    int largest_subcycles_ = 0;
+    double sph_seconds_ = 0.0;
+    double fem_seconds_ = 0.0;
+    double map_seconds_ = 0.0;
+    mutable std::size_t written_ = 0;
+};
+
+} // namespace grainload::coupling

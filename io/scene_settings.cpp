@@ -1,0 +1,26 @@
+#include "io/scene_settings.hpp"
+
+#include "io/case_table.hpp"
+
+namespace grainload::io {
+
+SceneSettings read_scene_settings(CaseDocument& document, const std::string& file_stem) {
+    const CaseTable settings = document.root().table("case");
+    SceneSettings scene;
+    scene.name = settings.string_or("name", file_stem);
+    const auto spatial = settings.integer_or("dimension", 3);
+    if (spatial != 2 && spatial != 3) {
+        settings.fail("dimension", "expected 2 (plane strain) or 3");
+    }
+    scene.dimension = static_cast<int>(spatial);
+    document.spatial_dimension = scene.dimension;
+    scene.end_time = settings.positive_quantity("end_time", dimension::kTime);
+    scene.output_interval =
+        settings.positive_quantity_or("output_interval", dimension::kTime, scene.end_time / 20.0);
+    Vec3 gravity = Vec3::Zero();
+    gravity[scene.up_axis()] = -kDefaultGravity;
+    scene.gravity = settings.vector_or("gravity", dimension::kAcceleration, gravity);
+    return scene;
+}
+
+} // namespace grainload::io
