@@ -43,8 +43,10 @@ struct CoupledPart {
 ///     on t + dt), adding up every wall particle's impulse;
 ///  4. the impulses divided by dt, mapped to the nodes by the transpose of the wall's
 ///     interpolation, are the shell's load for the next window.
-/// With max_iterations > 1 the window is repeated from its start with the load it produced,
-/// relaxed, until the load stops changing (a fixed-point iteration on the interface load).
+/// The next window's load is this window's moved towards the produced one by a relaxation
+/// factor. With max_iterations > 1 the window is instead repeated from its start with the
+/// load it produced, relaxed by Aitken's method, until the load stops changing (a fixed-point
+/// iteration on the interface load).
 class CoupledModel final : public io::Stepper {
   public:
     CoupledModel(std::unique_ptr<sph::SphModel> sph, std::unique_ptr<fem::ShellModel> fem,
@@ -75,6 +77,7 @@ class CoupledModel final : public io::Stepper {
     /// The window's mean load of every coupled part, mapped to the nodes.
     Eigen::VectorXd collect_load(double dt);
     void run_window(double t, double dt, const Eigen::VectorXd& applied);
+    void iterate_window(double t, double dt);
     /// Per node of the shell mesh: the interface load as contact pressure (compression
     /// positive) and friction traction (tangential force per area), from the load over the
     /// lumped area of the coupled elements around the node.

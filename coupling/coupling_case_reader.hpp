@@ -22,7 +22,9 @@ inline constexpr std::array<io::KeySpec, 6> kCouplingKeys{{
      "a window needing more SPH steps is cut to max_subcycles SPH steps"},
     {"max_iterations", "integer", "1",
      "1: staggered with a one-window lag; > 1: fixed-point iteration per window"},
-    {"relaxation", "number in (0, 1]", "0.5", "ω of the iteration: F ← ω F_new + (1 − ω) F"},
+    {"relaxation", "number in (0, 1]", "0.5",
+     "ω of the load update F ← F + ω (F_sand − F): every window (staggered), or the iteration's "
+     "first step (then Aitken)"},
     {"iteration_tolerance", "number", "1e-3",
      "the iteration stops when ‖F_new − F‖ / ‖F_new‖ is below it"},
     {"energy_error_limit", "number", "0.05",

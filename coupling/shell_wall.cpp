@@ -149,7 +149,12 @@ void ShellWall::add_nodal_loads(const fem::ShellAnalysis& analysis, double windo
                 continue;
             }
             const Index node = sample.nodes[at(a)];
-            const Vec3 arm = sample.offset * analysis.director(sample.element, a);
+            // The moment arm is the director's derivative with respect to the node's rotation:
+            // the initial director under linear kinematics (d = V + theta x V), the current one
+            // under large rotations, so that the mapped loads do the particles' work.
+            const Vec3 arm = sample.offset * (analysis.kinematics() == fem::Kinematics::linear
+                                                  ? analysis.initial_director(sample.element, a)
+                                                  : analysis.director(sample.element, a));
             loads.segment<3>(6 * node) += w * force;
             loads.segment<3>(6 * node + 3) += w * arm.cross(force);
         }

@@ -35,8 +35,9 @@ struct ShellWallLayout {
 /// window's end. The virtual work F . delta x_j = sum_a N_a (F . delta u_a + o (d_a x F) .
 /// delta theta_a) gives the nodal loads of a force F on particle j:
 ///   f_a = N_a F,  m_a = N_a o (d_a x F)
-/// so the work the sand does on the wall particles is the work the shell receives (to first
-/// order in the window's rotation; the coupling's monitor measures the rest).
+/// so the work the sand does on the wall particles is the work the shell receives: exactly under
+/// linear kinematics (d_a = V_a + theta_a x V_a is linear in the DOFs; d_a in m_a is then the
+/// initial V_a), to first order in a window's rotation under large rotations (d_a current).
 class ShellWall final : public sph::WallDriver {
   public:
     /// Particles of the part made of `elements` of `analysis`' mesh, at its initial state.

@@ -131,6 +131,11 @@ class ShellAnalysis {
     /// (fem/shell_directors.hpp; its own face's normal at a fold node) rotated by the node's
     /// rotation (linear kinematics: V + theta x V).
     Vec3 director(Index element, int corner) const;
+    /// The initial director of the corner (fem/shell_directors.hpp).
+    const Vec3& initial_director(Index element, int corner) const {
+        return initial_directors_[static_cast<std::size_t>(element)]
+                                 [static_cast<std::size_t>(corner)];
+    }
     /// Internal minus applied force at every DOF (the reactions at constrained DOFs).
     Eigen::VectorXd reactions();
     Index free_dof_count() const { return free_count_; }
