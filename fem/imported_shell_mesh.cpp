@@ -42,7 +42,7 @@ ShellMesh read_gmsh_shell(const io::CaseTable& shell) {
     try {
         return read_gmsh_file(msh, thickness, groups);
     } catch (const std::invalid_argument& e) {
-        shell.fail(groups.empty() ? "file" : "group", e.what());
+        shell.fail("file", e.what());
     }
 }
 
