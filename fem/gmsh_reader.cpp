@@ -2,6 +2,7 @@
 
 #include "io/gmsh_file.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <set>
@@ -46,8 +47,48 @@ void add_physical_groups(const io::GmshFile& file, const std::vector<Index>& she
     }
 }
 
-ShellMesh read_named_gmsh(std::istream& in, const std::string& name, double thickness) {
+/// Thickness of each surface entity in a group of `by_group` (entities in none: absent).
+std::map<int, double> entity_thickness(const io::GmshFile& file, const std::string& name,
+                                       const GroupThickness& by_group) {
+    std::map<std::string, int> surface_groups; // physical surface name -> tag
+    for (const auto& [group, group_name] : file.physical_names) {
+        if (group.first == 2) {
+            surface_groups[group_name] = group.second;
+        }
+    }
+    std::map<int, double> thickness;
+    for (const auto& [group_name, t] : by_group) {
+        const auto tag = surface_groups.find(group_name);
+        if (tag == surface_groups.end()) {
+            std::string known;
+            for (const auto& [surface, ignored] : surface_groups) {
+                known += (known.empty() ? "" : ", ") + surface;
+            }
+            throw std::invalid_argument(
+                name + ": no physical surface named \"" + group_name +
+                "\" (physical surfaces: " + (known.empty() ? "none" : known) + ")");
+        }
+        for (const auto& [entity, groups] : file.entity_groups) {
+            if (entity.first != 2 ||
+                std::find(groups.begin(), groups.end(), tag->second) == groups.end()) {
+                continue;
+            }
+            const auto [it, fresh] = thickness.emplace(entity.second, t);
+            if (!fresh && it->second != t) {
+                throw std::invalid_argument(name + ": surface " + std::to_string(entity.second) +
+                                            " lies in two groups with different thicknesses, "
+                                            "one of them \"" +
+                                            group_name + "\"");
+            }
+        }
+    }
+    return thickness;
+}
+
+ShellMesh read_named_gmsh(std::istream& in, const std::string& name, double thickness,
+                          const GroupThickness& by_group) {
     const io::GmshFile file = io::read_gmsh_file_content(in, name);
+    const std::map<int, double> listed = entity_thickness(file, name, by_group);
     ShellMesh mesh;
     for (const Vec3& x : file.nodes) {
         mesh.add_node(x);
@@ -55,12 +96,20 @@ ShellMesh read_named_gmsh(std::istream& in, const std::string& name, double thic
     // The shell element made of each file element (-1: a point or a line).
     std::vector<Index> shell_element(file.elements.size(), -1);
     for (std::size_t e = 0; e < file.elements.size(); ++e) {
-        const auto& n = file.elements[e].nodes;
-        if (file.elements[e].node_count == 3) {
-            shell_element[e] = mesh.add_element({n[0], n[1], n[2], n[2]}, thickness);
-        } else if (file.elements[e].node_count == 4) {
-            shell_element[e] = mesh.add_element({n[0], n[1], n[2], n[3]}, thickness);
+        const io::GmshElement& element = file.elements[e];
+        if (element.node_count < 3) {
+            continue;
         }
+        const auto found = listed.find(element.entity);
+        const double t = found != listed.end() ? found->second : thickness;
+        if (!(t > 0.0)) {
+            throw std::invalid_argument(name + ": surface " + std::to_string(element.entity) +
+                                        " is in no physical group with a thickness, and no "
+                                        "default thickness is given");
+        }
+        const auto& n = element.nodes;
+        shell_element[e] =
+            mesh.add_element({n[0], n[1], n[2], element.node_count == 3 ? n[2] : n[3]}, t);
     }
     add_physical_groups(file, shell_element, mesh);
     return mesh;
@@ -68,16 +117,17 @@ ShellMesh read_named_gmsh(std::istream& in, const std::string& name, double thic
 
 } // namespace
 
-ShellMesh read_gmsh(std::istream& in, double thickness) {
-    return read_named_gmsh(in, "Gmsh file", thickness);
+ShellMesh read_gmsh(std::istream& in, double thickness, const GroupThickness& by_group) {
+    return read_named_gmsh(in, "Gmsh file", thickness, by_group);
 }
 
-ShellMesh read_gmsh_file(const std::string& path, double thickness) {
+ShellMesh read_gmsh_file(const std::string& path, double thickness,
+                         const GroupThickness& by_group) {
     std::ifstream in(path);
     if (!in) {
         throw std::invalid_argument("cannot open Gmsh file '" + path + "'");
     }
-    return read_named_gmsh(in, path, thickness);
+    return read_named_gmsh(in, path, thickness, by_group);
 }
 
 } // namespace grainload::fem

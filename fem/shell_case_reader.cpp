@@ -1,6 +1,6 @@
 #include "fem/shell_case_reader.hpp"
 
-#include "fem/gmsh_reader.hpp"
+#include "fem/imported_shell_mesh.hpp"
 #include "fem/shell_mesh_generators.hpp"
 #include "io/case_table.hpp"
 
@@ -115,13 +115,14 @@ int read_dof(const io::CaseTable& table, std::string_view key, const std::string
 }
 
 ShellMesh read_shell_mesh(const io::CaseTable& shell) {
-    const std::string generator =
-        shell.choice("generator", {"plate", "cylinder", "sphere_zone", "cone", "box", "gmsh"});
-    const double thickness = shell.positive_quantity("thickness", dim::kLength);
-    ShellMesh mesh;
+    const std::string generator = shell.choice(
+        "generator", {"plate", "cylinder", "sphere_zone", "cone", "box", "gmsh", "lsdyna"});
+    const bool imported = generator == "gmsh" || generator == "lsdyna";
+    ShellMesh mesh = imported ? read_imported_shell_mesh(shell, generator) : ShellMesh();
     try {
-        mesh = generator == "gmsh" ? read_gmsh_file(shell.file_path("file"), thickness)
-                                   : generate(shell, generator, thickness);
+        if (!imported) {
+            mesh = generate(shell, generator, shell.positive_quantity("thickness", dim::kLength));
+        }
         mesh.validate();
     } catch (const std::invalid_argument& e) {
         shell.fail("generator", e.what());

@@ -288,6 +288,38 @@ std::string CaseTable::string_or(std::string_view key, std::string fallback) con
     return has(key) ? string(key) : fallback;
 }
 
+std::vector<std::string> CaseTable::name_list(std::string_view key) const {
+    const toml::node& node = require(key);
+    const std::string wanted = "expected a name, an id or a list of them ([\"door\", 3])";
+    auto name_of = [&](const toml::node& entry) {
+        if (const auto text = entry.value_exact<std::string>()) {
+            return *text;
+        }
+        if (const auto id = entry.value_exact<std::int64_t>()) {
+            return std::to_string(*id);
+        }
+        fail_at(&entry, key, wanted + ", got " + shown(entry));
+    };
+    const auto* array = node.as_array();
+    if (array == nullptr) {
+        return {name_of(node)};
+    }
+    std::vector<std::string> names;
+    for (const auto& entry : *array) {
+        names.push_back(name_of(entry));
+    }
+    if (names.empty()) {
+        fail_at(&node, key, wanted + ", got an empty list");
+    }
+    return names;
+}
+
+std::string CaseTable::resolved_path(std::string_view key) const {
+    const std::filesystem::path name = string(key);
+    return (name.is_absolute() ? name : std::filesystem::path(document_->directory()) / name)
+        .string();
+}
+
 std::string CaseTable::file_path(std::string_view key) const {
     const std::filesystem::path name = string(key);
     const auto path =

@@ -70,6 +70,10 @@ class CaseTable {
     /// A file name, resolved relative to the case file's directory unless absolute; the file
     /// must exist.
     std::string file_path(std::string_view key) const;
+    /// A file name resolved like file_path(), which need not exist yet (a file to be made).
+    std::string resolved_path(std::string_view key) const;
+    /// Names or integer ids, alone or in a list: "door", 3 or ["door", 3] (ids as decimal text).
+    std::vector<std::string> name_list(std::string_view key) const;
     /// A string that must be one of `allowed`.
     std::string choice(std::string_view key, std::initializer_list<std::string_view> allowed) const;
     std::string choice_or(std::string_view key, std::initializer_list<std::string_view> allowed,

@@ -7,6 +7,9 @@ GRAINLOAD_PACKAGES=(
   build-essential cmake pkg-config git
   libeigen3-dev libsuitesparse-dev libmetis-dev libopenblas-dev
   libvtk9-dev libgtest-dev libtomlplusplus-dev
+  # Meshing of .geo geometry scripts (io/gmsh_runner); python3 runs the case scripts that
+  # tests call (cases/hopper_wagon/export_k.py).
+  gmsh python3
 )
 
 missing=()

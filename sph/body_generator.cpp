@@ -2,6 +2,7 @@
 
 #include "io/case_table.hpp"
 #include "sph/closed_mesh_fill.hpp"
+#include "sph/keyword_body.hpp"
 
 #include <cmath>
 #include <functional>
@@ -113,11 +114,14 @@ void jitter_points(std::vector<Vec3>& points, double spacing, double fraction, s
     }
 }
 
-std::vector<Vec3> generate_body_points(const io::CaseTable& shape, double spacing, int dimension) {
+std::vector<Vec3> generate_body_points(const io::CaseTable& shape, double spacing, int dimension,
+                                       double density) {
     namespace dim = io::dimension;
-    const std::string type = shape.choice("type", {"box", "cylinder", "cone", "mesh"});
+    const std::string type = shape.choice("type", {"box", "cylinder", "cone", "mesh", "lsdyna"});
     std::vector<Vec3> points;
-    if (type == "mesh") {
+    if (type == "lsdyna") {
+        points = read_keyword_particles(shape, spacing, dimension, density);
+    } else if (type == "mesh") {
         points = fill_mesh_shape(shape, spacing, dimension);
     } else if (type == "box") {
         const Vec3 min = shape.vector("min", dim::kLength);

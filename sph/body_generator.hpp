@@ -13,9 +13,12 @@ namespace grainload::sph {
 
 /// Particle centres filling one shape of a [[sph.body]] ([sph.body.shape] table: type = "box",
 /// "cylinder", "cone" or "mesh" (a closed surface mesh, see closed_mesh_fill.hpp),
-/// lattice = "regular" or "jittered") on a lattice of the body's spacing.
+/// lattice = "regular" or "jittered") on a lattice of the body's spacing, or type = "lsdyna":
+/// the *ELEMENT_SPH particles of a deck (keyword_body.hpp), whose masses are checked against
+/// the body's `density` [kg/m^3] * spacing^dimension.
 /// In 2D (plane strain) the lattice lies in the x-y plane with z = 0.
-std::vector<Vec3> generate_body_points(const io::CaseTable& shape, double spacing, int dimension);
+std::vector<Vec3> generate_body_points(const io::CaseTable& shape, double spacing, int dimension,
+                                       double density);
 
 /// Points of a box [min, max] on a lattice whose cells have their centres inside the box.
 std::vector<Vec3> fill_box(const Vec3& min, const Vec3& max, double spacing, int dimension);

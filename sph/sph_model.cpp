@@ -243,8 +243,9 @@ void SphModel::add_body(const io::CaseTable& body, int dimension) {
     }
     spacing_ = spacing;
     const Vec3 velocity = body.vector_or("velocity", dim::kVelocity, Vec3::Zero());
-    const auto points = generate_body_points(body.table("shape"), spacing, dimension);
     const auto& law = (*materials_)[material];
+    const auto points =
+        generate_body_points(body.table("shape"), spacing, dimension, law.density());
     const double particle_mass = law.density() * std::pow(spacing, dimension);
     const int body_index = static_cast<int>(body_names_.size());
     const Index first = particles_.size();

@@ -83,6 +83,30 @@ TEST(FreeFall, RestartFromCheckpointReproducesTheUninterruptedRun) {
     EXPECT_EQ(read_file(whole + "/free_fall_small.pvd"), read_file(split + "/free_fall_small.pvd"));
 }
 
+// The same block read from an LS-DYNA deck (tests/data/keyword/free_fall_block.k, mm-t-s,
+// written by make_free_fall_block.py): the particles start where the box generator puts them
+// (mm to m and the generator's min + spacing (i + 1/2) differ by a rounding, below 1e-15 m
+// at 1.2 m) with the deck's masses accepted, and fall the same way (1e-12 m as above).
+TEST(FreeFall, BodyFromAnLsDynaDeckMatchesTheBoxBody) {
+    const std::string box = out_dir("box_body");
+    ASSERT_EQ(run_cli("run " + kCase + " --out '" + box + "'", box + ".log").exit_code, 0);
+    const std::string deck = out_dir("deck_body");
+    const auto result = run_cli("run '" + source_path("tests/data/keyword/free_fall_lsdyna.toml") +
+                                    "' --out '" + deck + "'",
+                                deck + ".log");
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    for (const char* frame : {"000000", "000020"}) {
+        const Cloud a = read_frame(box + "/frames/free_fall_small_" + frame + ".vtm");
+        const Cloud b = read_frame(deck + "/frames/free_fall_lsdyna_" + frame + ".vtm");
+        ASSERT_EQ(a.position.size(), b.position.size());
+        for (std::size_t i = 0; i < a.position.size(); ++i) {
+            EXPECT_LT((a.position[i] - b.position[i]).norm(),
+                      std::string(frame) == "000000" ? 1e-15 : 1e-12)
+                << "particle " << i << " at frame " << frame;
+        }
+    }
+}
+
 // Gravity of 1e308 m/s^2 overflows the position near t = 1.4 s (x = g t^2/2 > 1.8e308): the run
 // must stop with a diagnosis, exit code 3, and keep a readable last good frame and its checkpoint.
 TEST(FreeFall, UnstableRunStopsWithDiagnosisAndKeepsLastGoodFrame) {

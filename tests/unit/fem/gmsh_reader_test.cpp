@@ -81,5 +81,35 @@ TEST(GmshReader, RejectsOtherVersionsAndUnknownNodes) {
     }
 }
 
+std::string invalid_argument_of(const std::string& text, double thickness,
+                                const GroupThickness& by_group) {
+    std::istringstream in(text);
+    try {
+        read_gmsh(in, thickness, by_group);
+    } catch (const std::invalid_argument& e) {
+        return e.what();
+    }
+    return "no std::invalid_argument";
+}
+
+TEST(GmshReader, ThicknessByPhysicalSurface) {
+    std::istringstream in(kSquare);
+    const ShellMesh mesh = read_gmsh(in, 0.0, {{"plate", 0.02}});
+    for (const ShellElement& element : mesh.elements()) {
+        EXPECT_EQ(element.thickness, 0.02);
+    }
+    EXPECT_NE(invalid_argument_of(kSquare, 0.01, {{"roof", 0.02}})
+                  .find("no physical surface named \"roof\" (physical surfaces: plate)"),
+              std::string::npos);
+    // The surface taken out of "plate": its elements have no thickness unless a default is given.
+    std::string loose = kSquare;
+    loose.replace(loose.find("1 0 0 0 1 1 0 1 2 0"), 19, "1 0 0 0 1 1 0 0 0");
+    EXPECT_NE(invalid_argument_of(loose, 0.0, {{"plate", 0.02}})
+                  .find("surface 1 is in no physical group with a thickness"),
+              std::string::npos);
+    std::istringstream fallback(loose);
+    EXPECT_EQ(read_gmsh(fallback, 0.01, {{"plate", 0.02}}).element(0).thickness, 0.01);
+}
+
 } // namespace
 } // namespace grainload::fem

@@ -133,16 +133,16 @@ jitter = 0.7
                                                         "shapes.toml");
     auto root = document->root();
     const double dx = 0.25e-3; // R / dx = 40
-    const auto cylinder = generate_body_points(root.table("cylinder"), dx, 3);
-    EXPECT_EQ(cylinder, generate_body_points(root.table("cylinder"), dx, 3));
+    const auto cylinder = generate_body_points(root.table("cylinder"), dx, 3, 1000.0);
+    EXPECT_EQ(cylinder, generate_body_points(root.table("cylinder"), dx, 3, 1000.0));
     EXPECT_NEAR(static_cast<double>(cylinder.size()) * std::pow(dx, 3) / (kPi * 1e-4 * 5e-3), 1.0,
                 0.02);
-    const auto cone = generate_body_points(root.table("cone"), dx, 3);
+    const auto cone = generate_body_points(root.table("cone"), dx, 3, 1000.0);
     EXPECT_NEAR(static_cast<double>(cone.size()) * std::pow(dx, 3) / (kPi * 1e-4 * 1e-2 / 3.0), 1.0,
                 0.02);
-    const auto disc = generate_body_points(root.table("disc"), dx, 2);
+    const auto disc = generate_body_points(root.table("disc"), dx, 2, 1000.0);
     EXPECT_NEAR(static_cast<double>(disc.size()) * dx * dx / (kPi * 1e-4), 1.0, 0.01);
-    EXPECT_THROW(generate_body_points(root.table("bad"), dx, 3), io::CaseError);
+    EXPECT_THROW(generate_body_points(root.table("bad"), dx, 3, 1000.0), io::CaseError);
 }
 
 } // namespace

@@ -141,9 +141,9 @@ Vec3 upper_corner(const io::SurfaceMesh& mesh) {
 // the diagonals that split the STL's faces into triangles (ties the parity must break).
 TEST(ClosedMeshFill, StlAndGmshCubesAreFilledExactly) {
     auto stl = shape_case("file = \"cube_ascii.stl\"\n");
-    EXPECT_EQ(generate_body_points(stl->root().table("shape"), 0.05, 3).size(), 8000u);
+    EXPECT_EQ(generate_body_points(stl->root().table("shape"), 0.05, 3, 1000.0).size(), 8000u);
     auto msh = shape_case("file = \"cube_quads.msh\"\nunit = \"mm\"\n");
-    const auto points = generate_body_points(msh->root().table("shape"), 1e-4, 3);
+    const auto points = generate_body_points(msh->root().table("shape"), 1e-4, 3, 1000.0);
     ASSERT_EQ(points.size(), 1000u);
     EXPECT_NEAR(points.front().x(), 0.5e-4, 1e-18);
 }
@@ -224,7 +224,7 @@ std::string shape_error(const std::string& body, int dimension = 3) {
     auto document = shape_case(body);
     document->spatial_dimension = dimension;
     try {
-        generate_body_points(document->root().table("shape"), 0.1, dimension);
+        generate_body_points(document->root().table("shape"), 0.1, dimension, 1000.0);
     } catch (const io::CaseError& error) {
         return error.what();
     }

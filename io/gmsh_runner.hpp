@@ -1,0 +1,18 @@
+#pragma once
+
+#include <string>
+
+namespace grainload::io {
+
+/// True when the mesh `msh` is missing or older than its geometry script `geo`.
+bool gmsh_mesh_outdated(const std::string& geo, const std::string& msh);
+
+/// Makes `msh` from the Gmsh geometry script `geo` when gmsh_mesh_outdated(): runs
+/// `gmsh GEO -2 -format msh41 -o TMP` (the `gmsh` Debian package; the script sets its own mesh
+/// options) and renames TMP onto `msh`, so a reader, a crash or a second run meshing the same
+/// file at once never sees half a mesh. Gmsh's own failure (its exit status, an "Error" line,
+/// no output) throws std::invalid_argument quoting Gmsh's error lines; so does a missing gmsh.
+/// Returns true when it meshed.
+bool ensure_gmsh_mesh(const std::string& geo, const std::string& msh);
+
+} // namespace grainload::io

@@ -1,0 +1,30 @@
+#pragma once
+
+#include "io/types.hpp"
+
+#include <vector>
+
+namespace grainload::io {
+class CaseTable;
+}
+
+namespace grainload::sph {
+
+/// Default of [sph.body.shape] `mass_tolerance`: the largest relative difference allowed between
+/// a deck's particle mass and density * spacing^d. 1 %: a deck written for the same material
+/// and spacing agrees to its printed digits (1e-6 and better), while a deck for another spacing
+/// (a factor 1.25^3 = 1.95 in mass for 4 mm instead of 5 mm) or another density (dry sand
+/// 1500-1700 kg/m^3 against saturated 2000) is off by far more.
+inline constexpr double kDefaultMassTolerance = 0.01;
+
+/// generate_body_points for [sph.body.shape] type = "lsdyna": the positions of the
+/// *ELEMENT_SPH particles of the table's `parts` (titles or ids; default every part with
+/// particles) in the deck `file`, whose units the table's `units` states (see
+/// io::parse_keyword_units). The body keeps its own spacing and mass density * spacing^d per
+/// particle; a deck mass (or volume, with _VOLUME or a negative MASS) that differs from that
+/// (or from spacing^d) by more than `mass_tolerance` is refused, naming the first particle and
+/// how many disagree; zero masses are not checked. In 2D the particles must lie in z = 0.
+std::vector<Vec3> read_keyword_particles(const io::CaseTable& shape, double spacing, int dimension,
+                                         double density);
+
+} // namespace grainload::sph
