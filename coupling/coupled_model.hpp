@@ -12,7 +12,8 @@
 
 namespace grainload::coupling {
 
-/// How each window is solved (docs/theory/coupling.md).
+/// How each window is solved (docs/theory/coupling.md). The case file's defaults are declared
+/// with its keys (coupling_case_reader.hpp, kCouplingKeys).
 struct CouplingSettings {
     double window = 0.0;     ///< FEM step: the coupling window [s]
     int max_subcycles = 0;   ///< SPH steps a window may take; 0: no limit
@@ -88,6 +89,7 @@ class CoupledModel final : public io::Stepper {
     std::vector<CoupledPart> parts_;
     CouplingSettings settings_;
     Eigen::VectorXd load_;
+    Eigen::VectorXd previous_applied_; ///< the load the shell had over the last window
     CouplingMonitor monitor_;
     WindowRecord pending_;
     bool restarted_ = false;

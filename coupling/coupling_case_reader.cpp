@@ -18,25 +18,30 @@ CouplingSettings read_settings(const io::CaseTable& table, const fem::ShellModel
     } else {
         settings.window = fem.stable_time_step();
     }
-    const auto subcycles = table.integer_or("max_subcycles", 0);
+    const auto fallback = [](std::string_view key) {
+        return io::default_value(kCouplingKeys, key);
+    };
+    const auto subcycles =
+        table.integer_or("max_subcycles", static_cast<std::int64_t>(fallback("max_subcycles")));
     if (subcycles < 0) {
         table.fail("max_subcycles", "expected 0 (no limit) or a positive number of SPH steps");
     }
     settings.max_subcycles = static_cast<int>(subcycles);
-    const auto iterations = table.integer_or("max_iterations", 1);
+    const auto iterations =
+        table.integer_or("max_iterations", static_cast<std::int64_t>(fallback("max_iterations")));
     if (iterations < 1 || iterations > 1000) {
         table.fail("max_iterations", "expected 1 (staggered) to 1000 passes per window");
     }
     settings.max_iterations = static_cast<int>(iterations);
-    settings.relaxation = table.number_or("relaxation", 0.5);
+    settings.relaxation = table.number_or("relaxation", fallback("relaxation"));
     if (!(settings.relaxation > 0.0 && settings.relaxation <= 1.0)) {
         table.fail("relaxation", "expected a relaxation factor in (0, 1]");
     }
-    settings.iteration_tolerance = table.number_or("iteration_tolerance", 1e-3);
+    settings.iteration_tolerance = table.number_or("iteration_tolerance", fallback("iteration_tolerance"));
     if (!(settings.iteration_tolerance >= 0.0)) {
         table.fail("iteration_tolerance", "expected a tolerance >= 0");
     }
-    settings.energy_error_limit = table.number_or("energy_error_limit", 0.05);
+    settings.energy_error_limit = table.number_or("energy_error_limit", fallback("energy_error_limit"));
     if (!(settings.energy_error_limit > 0.0)) {
         table.fail("energy_error_limit", "expected a positive fraction of the interface work");
     }

@@ -19,16 +19,17 @@ inline constexpr std::array<io::KeySpec, 6> kCouplingKeys{{
     {"window", "time", "the dynamic shell's `fem.time_step`; required for a static shell",
      "FEM step Δt_F: the shell is solved once per window, SPH sub-cycles through it"},
     {"max_subcycles", "integer", "0 (no limit)",
-     "a window needing more SPH steps is cut to max_subcycles SPH steps"},
+     "a window needing more SPH steps is cut to max_subcycles SPH steps", 0.0},
     {"max_iterations", "integer", "1",
-     "1: staggered with a one-window lag; > 1: fixed-point iteration per window"},
+     "1: staggered with a one-window lag; > 1: fixed-point iteration per window", 1.0},
     {"relaxation", "number in (0, 1]", "0.5",
      "ω of the load update F ← F + ω (F_sand − F): every window (staggered), or the iteration's "
-     "first step (then Aitken)"},
+     "first step (then Aitken)",
+     0.5},
     {"iteration_tolerance", "number", "1e-3",
-     "the iteration stops when ‖F_new − F‖ / ‖F_new‖ is below it"},
+     "the iteration stops when ‖F_new − F‖ / ‖F_new‖ is below it", 1e-3},
     {"energy_error_limit", "number", "0.05",
-     "exit 3 when the interface energy error exceeds this fraction of the interface work"},
+     "exit 3 when the interface energy error exceeds this fraction of the interface work", 0.05},
 }};
 
 /// The keys of each [[coupling.interface]] table.

@@ -140,6 +140,14 @@ double ShellModel::kinetic_energy() const {
     return dynamic_ ? newmark_->kinetic_energy() : 0.0;
 }
 
+double ShellModel::strain_energy() const {
+    // Assembling touches the elements' trial states, which the committed state restores.
+    Eigen::VectorXd internal;
+    analysis_->assemble(nullptr, internal);
+    analysis_->revert_to_committed();
+    return 0.5 * analysis_->dofs().dot(internal);
+}
+
 void ShellModel::solve_step(double t, double dt) {
     const double target = t + dt;
     ShellStepLog entry;

@@ -57,6 +57,8 @@ class ShellModel final : public io::Stepper {
     bool dynamic() const { return dynamic_; }
     /// Kinetic energy of the shell (dynamic analysis; 0 for a static one).
     double kinetic_energy() const;
+    /// u . Fu(u) / 2: the strain energy of a linear elastic shell (for the energy books).
+    double strain_energy() const;
 
     const ShellAnalysis& analysis() const { return *analysis_; }
     /// For the coupling: wall node positions, set_additional_forces(), equilibrate().

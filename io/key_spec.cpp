@@ -1,5 +1,8 @@
 #include "io/key_spec.hpp"
 
+#include <stdexcept>
+#include <string>
+
 namespace grainload::io {
 
 const KeySpec* find_key_spec(std::span<const KeySpec> specs, std::string_view name) {
@@ -9,6 +12,14 @@ const KeySpec* find_key_spec(std::span<const KeySpec> specs, std::string_view na
         }
     }
     return nullptr;
+}
+
+double default_value(std::span<const KeySpec> specs, std::string_view name) {
+    const KeySpec* spec = find_key_spec(specs, name);
+    if (spec == nullptr) {
+        throw std::logic_error("no declared key '" + std::string(name) + "'");
+    }
+    return spec->value;
 }
 
 } // namespace grainload::io

@@ -14,9 +14,12 @@ struct KeySpec {
     std::string_view type;
     std::string_view default_text;
     std::string_view doc;
+    double value = 0.0; ///< the default as a number (SI), for keys whose default is one
 };
 
 /// The spec of `name` in `specs`; nullptr when there is none.
 const KeySpec* find_key_spec(std::span<const KeySpec> specs, std::string_view name);
+/// The numeric default of `name` (KeySpec::value); throws std::logic_error for an undeclared key.
+double default_value(std::span<const KeySpec> specs, std::string_view name);
 
 } // namespace grainload::io
