@@ -36,8 +36,8 @@ Vec3 force_sum(const Eigen::VectorXd& load) {
 CoupledModel::CoupledModel(std::unique_ptr<sph::SphModel> sph, std::unique_ptr<fem::ShellModel> fem,
                            std::vector<CoupledPart> parts, CouplingSettings settings)
     : sph_(std::move(sph)), fem_(std::move(fem)), parts_(std::move(parts)), settings_(settings),
-      load_(Eigen::VectorXd::Zero(6 * fem_->analysis().mesh().node_count())),
-      previous_applied_(load_) {
+      load_(Eigen::VectorXd::Zero(6 * fem_->analysis().mesh().node_count())), start_load_(load_),
+      end_load_(load_) {
     const fem::ShellMesh& mesh = fem_->analysis().mesh();
     node_area_.assign(static_cast<std::size_t>(mesh.node_count()), 0.0);
     node_normal_.assign(static_cast<std::size_t>(mesh.node_count()), Vec3::Zero());
@@ -137,7 +137,15 @@ void CoupledModel::run_window(double t, double dt, const Eigen::VectorXd& applie
     record.time = t + dt;
     record.length = dt;
     auto start = Clock::now();
-    fem_->advance_with_forces(t, dt, applied);
+    // The sand's load is the window's mean, constant over it. A static shell takes it as its
+    // load at the window's end. Newmark's trapezoidal rule integrates a load linearly between
+    // the step's ends, so a dynamic shell gets the end load 2 F - F(start): the mean of the
+    // two is F, and the rule is then the implicit midpoint rule under F, whose energy identity
+    // makes the shell receive exactly F . dU, the sand's work (same u and v as Newmark for a
+    // linear shell; the accelerations, which only this identity uses, alternate about their
+    // mean).
+    end_load_ = fem_->dynamic() ? Eigen::VectorXd(2.0 * applied - start_load_) : applied;
+    fem_->advance_with_forces(t, dt, end_load_);
     record.fem_seconds = seconds_since(start);
     start = Clock::now();
     for (const CoupledPart& part : parts_) {
@@ -153,11 +161,9 @@ void CoupledModel::run_window(double t, double dt, const Eigen::VectorXd& applie
     }
     record.sand_work = sand_work;
     record.wall_impulse = wall_impulse;
-    // The shell integrates its loads with the trapezoidal rule between the load at the window's
-    // start (the last window's) and at its end (Newmark's energy identity; exact for a linear
-    // static shell): that is the work it receives.
-    record.shell_work =
-        0.5 * (previous_applied_ + applied).dot(fem_->analysis().dofs() - before);
+    // The work the shell receives: its loads at the window's ends, trapezoidal (Newmark's energy
+    // identity; for a static linear shell the change of its strain energy).
+    record.shell_work = 0.5 * (start_load_ + end_load_).dot(fem_->analysis().dofs() - before);
     record.shell_impulse = dt * force_sum(applied);
     pending_ = record;
 }
@@ -169,7 +175,7 @@ void CoupledModel::advance(double t, double dt) {
         // relaxation damps the exchange's period-two oscillation of a compliant shell, and a
         // sand at rest is unaffected: there the produced load is the applied one.
         run_window(t, dt, load_);
-        previous_applied_ = load_;
+        start_load_ = end_load_;
         const auto start = Clock::now();
         const Eigen::VectorXd produced = collect_load(dt);
         pending_.load_change = relative_change(produced, load_);
@@ -210,7 +216,7 @@ void CoupledModel::iterate_window(double t, double dt) {
         pending_.load_change = relative_change(produced, applied);
         if (pending_.load_change <= settings_.iteration_tolerance ||
             pass >= settings_.max_iterations) {
-            previous_applied_ = applied;
+            start_load_ = end_load_;
             load_ = produced;
             pending_.map_seconds += seconds_since(start);
             return;
@@ -268,10 +274,10 @@ void CoupledModel::append_results(double t, std::vector<io::ResultFigure>& resul
         // The impulse balance of the exchange: what the sand put into the coupled walls (SPH
         // side, trapezoidal like the leapfrog's own momentum update) and what the shell
         // received (the applied loads times the windows), with the sand's momentum.
-        results.push_back({"interface_impulse_" + axis, monitor_.wall_impulse()[a], "N s",
-                           std::nullopt, ""});
-        results.push_back({"shell_impulse_" + axis, monitor_.shell_impulse()[a], "N s",
-                           std::nullopt, ""});
+        results.push_back(
+            {"interface_impulse_" + axis, monitor_.wall_impulse()[a], "N s", std::nullopt, ""});
+        results.push_back(
+            {"shell_impulse_" + axis, monitor_.shell_impulse()[a], "N s", std::nullopt, ""});
         results.push_back({"sand_momentum_" + axis, momentum[a], "kg m/s", std::nullopt, ""});
     }
     results.push_back({"shell_kinetic_energy", fem_->kinetic_energy(), "J", std::nullopt, ""});
@@ -293,7 +299,7 @@ void CoupledModel::write_checkpoint(std::ostream& out) const {
     sph_->write_checkpoint(out);
     fem_->write_checkpoint(out);
     io::write_array(out, std::vector<double>(load_.begin(), load_.end()));
-    io::write_array(out, std::vector<double>(previous_applied_.begin(), previous_applied_.end()));
+    io::write_array(out, std::vector<double>(start_load_.begin(), start_load_.end()));
     io::write_array(out, monitor_.state());
     io::write_array(out, std::vector<double>{static_cast<double>(monitor_.windows().size() +
                                                                  windows_before_restart_)});
@@ -312,7 +318,7 @@ void CoupledModel::read_checkpoint(std::istream& in) {
     if (static_cast<Eigen::Index>(load.size()) != load_.size()) {
         throw std::runtime_error("checkpoint: the interface load does not match the shell mesh");
     }
-    previous_applied_ = Eigen::Map<const Eigen::VectorXd>(load.data(), load_.size());
+    start_load_ = Eigen::Map<const Eigen::VectorXd>(load.data(), load_.size());
     std::vector<double> state;
     io::read_array(in, state);
     monitor_.set_state(state);

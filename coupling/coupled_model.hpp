@@ -89,7 +89,9 @@ class CoupledModel final : public io::Stepper {
     std::vector<CoupledPart> parts_;
     CouplingSettings settings_;
     Eigen::VectorXd load_;
-    Eigen::VectorXd previous_applied_; ///< the load the shell had over the last window
+    /// The shell's load at the window's start and end (its integrator's view; see run_window).
+    Eigen::VectorXd start_load_;
+    Eigen::VectorXd end_load_;
     CouplingMonitor monitor_;
     WindowRecord pending_;
     bool restarted_ = false;

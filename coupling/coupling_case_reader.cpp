@@ -37,11 +37,13 @@ CouplingSettings read_settings(const io::CaseTable& table, const fem::ShellModel
     if (!(settings.relaxation > 0.0 && settings.relaxation <= 1.0)) {
         table.fail("relaxation", "expected a relaxation factor in (0, 1]");
     }
-    settings.iteration_tolerance = table.number_or("iteration_tolerance", fallback("iteration_tolerance"));
+    settings.iteration_tolerance =
+        table.number_or("iteration_tolerance", fallback("iteration_tolerance"));
     if (!(settings.iteration_tolerance >= 0.0)) {
         table.fail("iteration_tolerance", "expected a tolerance >= 0");
     }
-    settings.energy_error_limit = table.number_or("energy_error_limit", fallback("energy_error_limit"));
+    settings.energy_error_limit =
+        table.number_or("energy_error_limit", fallback("energy_error_limit"));
     if (!(settings.energy_error_limit > 0.0)) {
         table.fail("energy_error_limit", "expected a positive fraction of the interface work");
     }

@@ -141,18 +141,26 @@ StepReport NewmarkIntegrator::step(double dt, double load_factor, const NewtonSe
             }
             break;
         }
-        // Effective tangent (1 + alpha) K + c0 M. The consistent M couples only DOFs that K
-        // couples too, so the sum keeps the pattern (and the reused symbolic analysis).
-        k *= 1.0 + alpha_;
-        if (consistent_) {
-            k += c0 * mass_free_;
-        }
-        for (std::size_t d = 0; d < eq.size() && !consistent_; ++d) {
-            if (eq[d] >= 0) {
-                k.coeffRef(eq[d], eq[d]) += c0 * mass_(static_cast<Eigen::Index>(d));
+        // A linear shell's effective tangent does not change while dt does not: its
+        // factorisation from an earlier step solves this one exactly (the coupling's many
+        // short windows would otherwise refactorise the same matrix every window).
+        const bool reuse = analysis_->constant_tangent() && factorized_step_ == dt &&
+                           solver_.method() != SparseSolver::Method::none;
+        if (!reuse) {
+            // Effective tangent (1 + alpha) K + c0 M. The consistent M couples only DOFs that
+            // K couples too, so the sum keeps the pattern (and the reused symbolic analysis).
+            k *= 1.0 + alpha_;
+            if (consistent_) {
+                k += c0 * mass_free_;
             }
+            for (std::size_t d = 0; d < eq.size() && !consistent_; ++d) {
+                if (eq[d] >= 0) {
+                    k.coeffRef(eq[d], eq[d]) += c0 * mass_(static_cast<Eigen::Index>(d));
+                }
+            }
+            solver_.factorize(k, analysis_->tangent_symmetric());
+            factorized_step_ = dt;
         }
-        solver_.factorize(k, analysis_->tangent_symmetric());
         report.solver = SparseSolver::name(solver_.method());
         step = solver_.solve(residual);
         if (i == 0) {

@@ -65,6 +65,7 @@ class NewmarkIntegrator {
     Eigen::VectorXd velocity_;
     Eigen::VectorXd acceleration_;
     SparseSolver solver_;
+    double factorized_step_ = 0.0; ///< the dt of the factorised effective tangent
 };
 
 } // namespace grainload::fem

@@ -3,6 +3,7 @@
 #include "io/binary_stream.hpp"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -66,6 +67,15 @@ ShellAnalysis::ShellAnalysis(ShellMesh mesh, std::vector<ShellPart> parts, Kinem
     }
     committed_dofs_ = dofs_;
     committed_rotations_ = rotations_;
+}
+
+bool ShellAnalysis::constant_tangent() const {
+    if (kinematics_ != Kinematics::linear || has_moment_loads_ || !follower_pressures_.empty()) {
+        return false;
+    }
+    return std::all_of(parts_.begin(), parts_.end(), [](const ShellPart& part) {
+        return part.material->model() == "linear_elastic";
+    });
 }
 
 ShellNodes ShellAnalysis::element_nodes(std::size_t element) const {

@@ -152,6 +152,9 @@ class ShellAnalysis {
     /// Load factor at which assemble() evaluates the follower loads (they depend on the state,
     /// so they are assembled with the internal forces, with their load stiffness).
     void set_assembly_load_factor(double lambda) { assembly_load_factor_ = lambda; }
+    /// True when the tangent never changes: linear kinematics, linear elastic parts and no
+    /// follower or moment loads (a factorisation can then be reused from step to step).
+    bool constant_tangent() const;
     /// False when the tangent has a non-symmetric part (moment or follower loads).
     bool tangent_symmetric() const { return !has_moment_loads_ && follower_pressures_.empty(); }
     /// Add a full-size DOF increment to the state (translations add; rotations compose).
