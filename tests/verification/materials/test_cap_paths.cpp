@@ -148,7 +148,7 @@ TEST(CapShear, PlateauAtTheEnvelopeWithAssociatedDilatancyUntilTheCapArrives) {
     // At the end the cap has contracted onto the stress point: L = I1 and the recorded plastic
     // volumetric strain is the law's value at X = I1 + R F(I1).
     const double x_end = i1 + p.R * strength;
-    EXPECT_NEAR(state[GeneralizedCap::kCapCenter], i1, 1e-9 * i1);
+    EXPECT_NEAR(state[GeneralizedCap::kHardeningParameter], i1, 1e-9 * i1);
     EXPECT_NEAR(state[GeneralizedCap::kPlasticVolumetricStrain],
                 p.W * (1.0 - std::exp(-p.D * (x_end - p.X0))), 1e-10);
     RecordProperty("dilatancy_ratio_error", figure(worst_ratio));
@@ -175,6 +175,9 @@ TEST(CapTension, CutoffPlaneKeepsTheDeviatorAndItsCornerLimitsIt) {
     p.gamma = 0.0;
     p.theta = 0.1;
     p.tension = 0.01 * kMPa; // F(-T) = k - theta T = 0.03758 MPa > 0
+    // F(0) = k > 0: with MAT_025's X0 = 0 the cap would close the domain to q = 0 (tested in
+    // CapTension.ClampedCapLimitsTheCutoffToItsTop); a cap at 1 MPa leaves the cutoff alone.
+    p.X0 = 1.0 * kMPa;
     const GeneralizedCap m(thesis_elastic(), p);
     const double f_cut = p.k - p.theta * p.tension;
     for (double shear : {0.0, 1e-6, 1e-5}) {
