@@ -370,10 +370,11 @@ TEST(GeneralizedCap, StateNamesAndInitialCap) {
     const std::vector<std::string> names = m.state_names();
     ASSERT_EQ(static_cast<int>(names.size()), m.state_size());
     EXPECT_EQ(names[GeneralizedCap::kCapPosition], "cap_position");
+    EXPECT_EQ(names[GeneralizedCap::kHardeningParameter], "hardening_parameter");
     EXPECT_EQ(names[GeneralizedCap::kPlasticVolumetricStrain], "plastic_volumetric_strain");
     EXPECT_EQ(names[GeneralizedCap::kEquivalentPlasticStrain], "equivalent_plastic_strain");
     const std::vector<double> state = initial_state(m);
-    // Thesis set: k = gamma makes F(0) = 0, so X0 = 0 puts L0 = 0 at the apex.
+    // Thesis set: k = gamma makes F(0) = 0, so X0 = 0 puts kappa0 = L0 = 0 at the apex.
     EXPECT_EQ(state[GeneralizedCap::kCapPosition], 0.0);
     EXPECT_NEAR(state[GeneralizedCap::kHardeningParameter], 0.0, 1e-9);
     EXPECT_EQ(state[GeneralizedCap::kPlasticVolumetricStrain], 0.0);
