@@ -60,9 +60,8 @@ inline constexpr double kKsi = 6.894757293168361e6;
 /// A sand of the McCormick Ranch form used by Sandler & Rubin (1979) and Simo et al. (1988),
 /// in ksi (constants as they are commonly quoted, not checked against the papers here): k =
 /// 0.25 ksi, theta = 0, gamma = 0.18 ksi, B1 = 0.67 1/ksi, R = 2.5, D = 0.67 1/ksi, W = 0.066,
-/// K = 66.7 ksi, G = 40 ksi. X0 is lowered to 0.1 ksi < X(0) = 0.175 ksi so that kappa0 < 0
-/// (about -0.057 ksi), and a tension cutoff T = 0.3 ksi with F(-T) = 0.030 ksi < B(kappa0) =
-/// 0.04 ksi leaves a piece of envelope between the cutoff and the cap's flat top.
+/// K = 66.7 ksi, G = 40 ksi, T = 0. X0 is lowered to 0.1 ksi < X(0) = 0.175 ksi so that
+/// kappa0 < 0 (about -0.057 ksi).
 inline cap::Parameters sand_cap() {
     cap::Parameters p;
     p.k = 0.25 * kKsi;
@@ -73,6 +72,14 @@ inline cap::Parameters sand_cap() {
     p.W = 0.066;
     p.X0 = 0.1 * kKsi;
     p.R = 2.5;
+    return p;
+}
+
+/// The same sand with a tension cutoff T = 0.3 ksi: F(-T) = 0.030 ksi < B(kappa0) = 0.04 ksi
+/// leaves a piece of envelope between the cutoff and the clamped cap's flat top, so that every
+/// region of a clamped centre is reachable.
+inline cap::Parameters cemented_sand_cap() {
+    cap::Parameters p = sand_cap();
     p.tension = 0.3 * kKsi;
     return p;
 }
@@ -93,7 +100,8 @@ struct CapSet {
 inline std::vector<CapSet> cap_sets() {
     return {{"thesis", thesis_cap(), thesis_elastic(), 1.0 * kMPa},
             {"wagon", wagon_cap(), thesis_elastic(), 0.01 * kMPa},
-            {"sand", sand_cap(), sand_elastic(), 1.0 * kKsi}};
+            {"sand", sand_cap(), sand_elastic(), 1.0 * kKsi},
+            {"cemented_sand", cemented_sand_cap(), sand_elastic(), 1.0 * kKsi}};
 }
 
 /// The cap geometry restated from the MAT_025 definitions (LS-DYNA keyword manual,

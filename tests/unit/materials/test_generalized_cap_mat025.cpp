@@ -1,7 +1,7 @@
 // Unit tests of the generalized cap with MAT_025 semantics on parameter sets whose envelope
 // does not pass through the origin (cap_test_support.hpp: the thesis wagon set, F(0) = k > 0
-// with kappa0 < 0 and a zero-size initial cap; a sand in ksi with kappa0 < 0 and a tension
-// cutoff), next to the thesis set (F(0) = 0): initial state, consistent tangent and continuity
+// with kappa0 < 0 and a zero-size initial cap; a sand in ksi with kappa0 < 0, without and
+// with a tension cutoff), next to the thesis set (F(0) = 0): initial state, consistent tangent and continuity
 // in every region including the clamped-centre ones (flat top, its corner with the envelope,
 // the cutoff limited by the cap's top), admissibility under random increments, and the
 // lifted_x0 semantics kept for old cases.
@@ -273,10 +273,10 @@ TEST(GeneralizedCapMat025, RandomIncrementsStayFiniteAndAdmissible) {
     }
 }
 
-/// Sand, virgin state: kappa0 < 0, L = 0, B = X0 / R; the corner c0 with F(c0) = B lies above
-/// the cutoff -T. Closed forms restated here, not taken from the library.
+/// Cemented sand, virgin state: kappa0 < 0, L = 0, B = X0 / R; the corner c0 with F(c0) = B
+/// lies above the cutoff -T. Closed forms restated here, not taken from the library.
 TEST(GeneralizedCapMat025, FlatTopAndCutoffOfAClampedCap) {
-    const CapSet set = cap_sets()[2];
+    const CapSet set = cap_sets()[3];
     const cap::Parameters& p = set.p;
     const GeneralizedCap m(set.elastic, p);
     const double bulk = set.elastic.bulk_modulus;
@@ -321,7 +321,7 @@ std::unique_ptr<Material> from_case(const std::string& keys) {
     return material;
 }
 
-/// The sand of cap_test_support as a deck would give it: MAT_025 names (ALPHA, TOFF <= 0,
+/// The cemented sand of cap_test_support as a deck would give it: MAT_025 names (ALPHA, TOFF <= 0,
 /// FTYPE), ksi, and a density in the lbf-s-in system.
 std::string sand_deck(const std::string& extra = "", const std::string& x0 = "\"0.1 ksi\"") {
     return "density = \"1.684e-4 lbf*s^2/in^4\"\nbulk_modulus = \"66.7 ksi\"\n"
@@ -334,7 +334,7 @@ std::string sand_deck(const std::string& extra = "", const std::string& x0 = "\"
 TEST(GeneralizedCapMat025, ReadsMat025NamesAndUsUnits) {
     const auto m = from_case(sand_deck());
     const auto& cap = dynamic_cast<const GeneralizedCap&>(*m);
-    const cap::Parameters expected = sand_cap();
+    const cap::Parameters expected = cemented_sand_cap();
     // One or two products of exact factors: a few ulps.
     EXPECT_DOUBLE_EQ(cap.parameters().k, expected.k);
     EXPECT_DOUBLE_EQ(cap.parameters().gamma, expected.gamma);
