@@ -89,7 +89,7 @@ TEST(CapTriaxial, PeakLiesOnTheFailureEnvelopeAtEveryConfiningPressure) {
             // control converges to 1e-11 of the stress; 1e-9 relative is safely above both.
             EXPECT_NEAR(peak, expected, 1e-9 * expected) << set.name << " p = " << pressure;
             RecordProperty("peak_error_" + set.name + "_at_" +
-                               std::to_string(static_cast<int>(pressure / set.scale * 100)) +
+                               std::to_string(std::lround(pressure / set.scale * 100)) +
                                "_percent_of_scale",
                            figure(std::abs(peak - expected) / expected));
         }
