@@ -1,5 +1,7 @@
 #include "materials/cap_return.hpp"
 
+#include "materials/cap_moves.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -10,9 +12,6 @@
 namespace grainload::materials::cap {
 namespace {
 
-// Relative tolerance of the scalar solves; far below the 1e-8 step-independence and 1e-5
-// tangent checks, and a few ulps above round-off of the residuals.
-constexpr double kTolerance = 1e-14;
 // What round-off leaves of a Newton step on the cap, relative to the trial's distance from the
 // cap centre (a few ulps); and how often a step that leaves the admissible box is halved.
 constexpr double kRoundOff = 1e-15;
@@ -29,59 +28,6 @@ double tolerance_for(const Model& m, double i1_trial, double q_trial, const Hard
     return kTolerance * (std::abs(i1_trial) + q_trial + std::abs(s.kappa) + std::abs(m.p.k) + 1.0);
 }
 
-/// The cap moved from the state (kappa_n, X_n) by dk: its shift dX, the plastic volumetric
-/// strain dv of the hardening law (4.6.3.4) and d(dv)/d(dk) (4.6.3.5), all written as increments
-/// (expm1) so that moves far below the ulp of kappa stay resolved and a locked state
-/// (exp(-D (X_n - X0)) = 0) gives dv = 0 without a logarithm.
-struct CapMove {
-    double dx = 0.0;
-    double dv = 0.0;
-    double rate = 0.0;
-};
-
-CapMove move_cap(const Parameters& p, const Hardening& s, double dk) {
-    const double decay_n = hardening_decay(p, s.x);
-    // F(k_n + dk) - F(k_n) = theta dk - gamma (exp(-B1 (k_n + dk)) - exp(-B1 k_n)); expm1 keeps
-    // small moves exact, the plain difference avoids inf * 0 for large contractions.
-    const double shifted = p.gamma * std::exp(-p.beta * s.kappa);
-    const double arg = -p.beta * dk;
-    const double exp_change = arg < 1.0 ? shifted * std::expm1(arg)
-                                        : p.gamma * std::exp(-p.beta * (s.kappa + dk)) - shifted;
-    CapMove c;
-    c.dx = dk + p.R * (p.theta * dk - exp_change);
-    // exp(-D (X_n + dX - X0)) in one exponent: finite even when decay_n has underflowed.
-    const double decay = std::exp(-p.D * (s.x + c.dx - p.X0));
-    c.dv = decay_n > 0.0 ? -p.W * decay_n * std::expm1(-p.D * c.dx) : -p.W * decay;
-    c.rate = p.W * p.D * decay * cap_position_slope(p, s.kappa + dk);
-    return c;
-}
-
-/// Change of the cap centre L(kappa) = max(kappa, 0) (MAT_025) or kappa when kappa moves by dk,
-/// and dL/dkappa at the end. Where the centre is kappa on both ends the change is dk itself,
-/// so moves far below the ulp of L stay resolved.
-struct Change {
-    double d = 0.0;
-    double slope = 1.0;
-};
-
-Change centre_change(const Parameters& p, const Hardening& s, double dk) {
-    const double kappa = s.kappa + dk;
-    if (!centre_clamped(p, s.kappa) && !centre_clamped(p, kappa)) {
-        return {dk, 1.0};
-    }
-    return {cap_center(p, kappa) - cap_center(p, s.kappa), cap_center_slope(p, kappa)};
-}
-
-/// Change of the corner I1, c(kappa), when kappa moves by dk (dk itself where c = kappa).
-Change corner_change(const Model& m, const Hardening& s, double corner_n, double dk) {
-    const double kappa = s.kappa + dk;
-    if (!centre_clamped(m.p, s.kappa) && !centre_clamped(m.p, kappa)) {
-        return {dk, 1.0};
-    }
-    const CornerPoint c = corner_point(m.p, kappa, m.i1_min);
-    return {c.i1 - corner_n, c.slope};
-}
-
 /// A locked point has exhausted its compaction (eps_v^p = W, exp(-D (X - X0)) = 0): its cap
 /// sits at infinity and only dilatancy can bring it back.
 bool locked(const Parameters& p, const Hardening& s) {
@@ -96,31 +42,6 @@ Return finish(PlasticRegion region, double i1, double rho, const Hardening& afte
     r.hardening = after;
     r.hardening_strain = dv;
     return r;
-}
-
-/// Hardening after a dilatant flow (volumetric plastic strain dv < 0): the cap contracts by
-/// inverting (4.6.3.4), thesis (4.6.3.8), but kappa not below `floor` (the hardening whose corner
-/// is the stress point, or the lowest one); returns the new state, the plastic volumetric
-/// strain the hardening law records and whether the floor stopped it.
-struct Contraction {
-    Hardening after;
-    double dv = 0.0;
-    bool floored = false;
-};
-
-Contraction contract_cap(const Model& m, const Hardening& s, double dv, double floor) {
-    const Parameters& p = m.p;
-    const double decay_n = hardening_decay(p, s.x);
-    const double decay = decay_n - dv / p.W;
-    if (!(decay > 0.0)) {
-        return {s, 0.0, false}; // locked (decay_n == 0) and no flow: the cap stays where it is
-    }
-    const double x = p.X0 - std::log(decay) / p.D;
-    const double x_min = cap_position(p, floor);
-    if (x <= x_min) {
-        return {{x_min, floor}, p.W * (decay_n - hardening_decay(p, x_min)), true};
-    }
-    return {{x, hardening_for(p, x, s.kappa, m.kappa_min)}, dv, false};
 }
 
 /// Tension cutoff / apex: I1 = I1_min, with sqrt(J2) limited to F(I1_min) (the corner of the
@@ -146,58 +67,6 @@ Return tension_return(const Model& m, double i1_trial, double q_trial, const Har
         r.drho_di1 = half_height_slope(m.p, c.after.kappa) * dkappa / q_trial;
     }
     return r;
-}
-
-/// Shift dk of kappa that puts the stress at I1 = P(kappa), where P is the corner c(kappa)
-/// (failure-surface side) or the centre L(kappa) (a = 0, the end of the cap's bracket); both
-/// are kappa where the centre is not clamped. The volumetric balance (4.6.3.43) reads
-/// g(dk) = (I1_tr - P_n) - dP(dk) - 3K dv(dk) = 0, decreasing in dk. Infeasible when that point
-/// lies below I1_min (kappa below `floor`).
-struct Shift {
-    bool feasible = false;
-    double dk = 0.0;
-    double slope = -1.0; ///< g'(dk)
-};
-
-enum class Target { corner, centre };
-
-Shift shift_to(const Model& m, double i1_trial, const Hardening& s, Target target) {
-    const bool corner = target == Target::corner;
-    const double p_n = corner ? corner_point(m.p, s.kappa, m.i1_min).i1 : cap_center(m.p, s.kappa);
-    const double a_trial = i1_trial - p_n;
-    const auto fn = [&](double dk, double& g, double& dg) {
-        const CapMove c = move_cap(m.p, s, dk);
-        const Change d = corner ? corner_change(m, s, p_n, dk) : centre_change(m.p, s, dk);
-        g = a_trial - d.d - 3.0 * m.bulk * c.dv;
-        dg = -d.slope - 3.0 * m.bulk * c.rate;
-    };
-    const double floor =
-        (corner ? hardening_for_corner(m.p, m.i1_min, m.kappa_min) : m.kappa_min) - s.kappa;
-    double lo = std::max(std::min(a_trial, 0.0), floor);
-    double hi = std::max(std::max(a_trial, 0.0), floor);
-    double g = 0.0;
-    double dg = 0.0;
-    fn(lo, g, dg);
-    // Where P moves slower than kappa (clamped centre) the root may lie beyond a_trial.
-    for (int i = 0; i < 200 && g < 0.0 && lo > floor; ++i) {
-        lo = std::max(floor, lo - (hi - lo));
-        fn(lo, g, dg);
-    }
-    if (g < 0.0) {
-        return {};
-    }
-    fn(hi, g, dg);
-    if (g > 0.0) {
-        hi += 3.0 * m.bulk * m.p.W; // dilatancy from a locked cap: 3K |dv| <= 3K W
-        fn(hi, g, dg);
-    }
-    for (int i = 0; i < 200 && g > 0.0; ++i) {
-        hi += hi - lo;
-        fn(hi, g, dg);
-    }
-    // dk may be far below the ulp of kappa: the tolerance scales with the bracket, not kappa.
-    const Root root = solve_bracketed(fn, lo, hi, kTolerance * (hi - lo));
-    return {true, root.value, root.slope};
 }
 
 /// Corner: the stress sits where the cap meets the envelope, I1 = L and sqrt(J2) = F(L)
