@@ -3,6 +3,7 @@
 #include "io/case_table.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -50,6 +51,16 @@ GeneralizedCap::GeneralizedCap(ElasticConstants elastic, cap::Parameters paramet
     model_.kappa_min = cap::lowest_hardening(parameters, model_.i1_min);
 }
 
+namespace {
+
+std::string pascals(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g Pa", value);
+    return text;
+}
+
+} // namespace
+
 std::pair<std::string, std::string> GeneralizedCap::check(const cap::Parameters& p) {
     if (!(p.theta >= 0.0)) {
         return {"cap_theta", "expected theta >= 0"};
@@ -82,8 +93,8 @@ std::pair<std::string, std::string> GeneralizedCap::check(const cap::Parameters&
         const double lowest = cap::lowest_cap_position(p, cap::minimum_pressure(p));
         if (!(p.X0 >= lowest)) {
             return {"cap_X0",
-                    "expected X0 >= " + std::to_string(lowest) +
-                        " Pa: with MAT_025 semantics X0 is the initial cap intercept, and the "
+                    "expected X0 >= " + pascals(lowest) +
+                        ": with MAT_025 semantics X0 is the initial cap intercept, and the "
                         "cap (centre L = max(kappa, 0), half-width X - L) needs X0 >= 0 and X0 "
                         "at or above the envelope's apex (a flat cap, R = 0: X0 >= -T); "
                         "cap_semantics = \"lifted_x0\" lifts a lower X0 instead"};
