@@ -18,6 +18,15 @@ struct UnitSymbol {
 
 namespace dim = dimension;
 
+// US customary units (exact by definition: 1 in = 0.0254 m, 1 ft = 0.3048 m, 1 lb = 0.45359237
+// kg, 1 lbf = 1 lb x 9.80665 m/s^2), so that parameter sets ported from papers and LS-DYNA
+// decks in the lbf-s-in and slug-ft-s systems can be written as given.
+constexpr double kInch = 0.0254;
+constexpr double kFoot = 0.3048;
+constexpr double kPoundMass = 0.45359237;
+constexpr double kPoundForce = kPoundMass * 9.80665;
+constexpr double kPsi = kPoundForce / (kInch * kInch);
+
 // Units a case file may use. SI prefixes apply to the ones marked; "kg" is kilo + "g".
 constexpr std::array kUnits{
     UnitSymbol{"m", 1.0, dim::kLength, true},
@@ -33,7 +42,18 @@ constexpr std::array kUnits{
     UnitSymbol{"min", 60.0, dim::kTime, false},
     UnitSymbol{"h", 3600.0, dim::kTime, false},
     UnitSymbol{"t", 1e3, dim::kMass, false},
-    UnitSymbol{"bar", 1e5, dim::kPressure, false},
+    // bar takes prefixes for the Mbar of the g-cm-us system of LS-DYNA decks.
+    UnitSymbol{"bar", 1e5, dim::kPressure, true},
+    UnitSymbol{"dyn", 1e-5, dim::kForce, false},
+    UnitSymbol{"in", kInch, dim::kLength, false},
+    UnitSymbol{"ft", kFoot, dim::kLength, false},
+    UnitSymbol{"lb", kPoundMass, dim::kMass, false},
+    UnitSymbol{"slug", kPoundForce / kFoot, dim::kMass, false},
+    UnitSymbol{"lbf", kPoundForce, dim::kForce, false},
+    UnitSymbol{"kip", 1e3 * kPoundForce, dim::kForce, false},
+    UnitSymbol{"psi", kPsi, dim::kPressure, false},
+    UnitSymbol{"ksi", 1e3 * kPsi, dim::kPressure, false},
+    UnitSymbol{"psf", kPoundForce / (kFoot * kFoot), dim::kPressure, false},
 };
 
 struct Prefix {

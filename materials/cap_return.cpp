@@ -1,17 +1,17 @@
 #include "materials/cap_return.hpp"
 
+#include "materials/cap_moves.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <tuple>
 #include <utility>
 
 namespace grainload::materials::cap {
 namespace {
 
-// Relative tolerance of the scalar solves; far below the 1e-8 step-independence and 1e-5
-// tangent checks, and a few ulps above round-off of the residuals.
-constexpr double kTolerance = 1e-14;
 // What round-off leaves of a Newton step on the cap, relative to the trial's distance from the
 // cap centre (a few ulps); and how often a step that leaves the admissible box is halved.
 constexpr double kRoundOff = 1e-15;
@@ -25,34 +25,7 @@ constexpr double kStartTolerance = 1e-8;
 constexpr double kResolvedGap = 1e-6;
 
 double tolerance_for(const Model& m, double i1_trial, double q_trial, const Hardening& s) {
-    return kTolerance * (std::abs(i1_trial) + q_trial + std::abs(s.l) + std::abs(m.p.k) + 1.0);
-}
-
-/// The cap moved from the state (L_n, X_n) by dL: its shift dX, the plastic volumetric strain
-/// dv of the hardening law (4.6.3.4) and d(dv)/d(dL) (4.6.3.5), all written as increments
-/// (expm1) so that moves far below the ulp of L stay resolved and a locked state
-/// (exp(-D (X_n - X0)) = 0) gives dv = 0 without a logarithm.
-struct CapMove {
-    double dx = 0.0;
-    double dv = 0.0;
-    double rate = 0.0;
-};
-
-CapMove move_cap(const Parameters& p, const Hardening& s, double dl) {
-    const double decay_n = hardening_decay(p, s.x);
-    // F(L_n + dL) - F(L_n) = theta dL - gamma (exp(-B1 (L_n + dL)) - exp(-B1 L_n)); expm1 keeps
-    // small moves exact, the plain difference avoids inf * 0 for large contractions.
-    const double shifted = p.gamma * std::exp(-p.beta * s.l);
-    const double arg = -p.beta * dl;
-    const double exp_change =
-        arg < 1.0 ? shifted * std::expm1(arg) : p.gamma * std::exp(-p.beta * (s.l + dl)) - shifted;
-    CapMove c;
-    c.dx = dl + p.R * (p.theta * dl - exp_change);
-    // exp(-D (X_n + dX - X0)) in one exponent: finite even when decay_n has underflowed.
-    const double decay = std::exp(-p.D * (s.x + c.dx - p.X0));
-    c.dv = decay_n > 0.0 ? -p.W * decay_n * std::expm1(-p.D * c.dx) : -p.W * decay;
-    c.rate = p.W * p.D * decay * cap_position_slope(p, s.l + dl);
-    return c;
+    return kTolerance * (std::abs(i1_trial) + q_trial + std::abs(s.kappa) + std::abs(m.p.k) + 1.0);
 }
 
 /// A locked point has exhausted its compaction (eps_v^p = W, exp(-D (X - X0)) = 0): its cap
@@ -71,86 +44,48 @@ Return finish(PlasticRegion region, double i1, double rho, const Hardening& afte
     return r;
 }
 
-/// Hardening after a dilatant flow (volumetric plastic strain dv < 0): the cap contracts by
-/// inverting (4.6.3.4), thesis (4.6.3.8), but never past the stress point i1; returns the new
-/// state and the plastic volumetric strain the hardening law records.
-std::pair<Hardening, double> contract_cap(const Parameters& p, const Hardening& s, double dv,
-                                          double i1) {
-    const double decay_n = hardening_decay(p, s.x);
-    const double decay = decay_n - dv / p.W;
-    if (!(decay > 0.0)) {
-        return {s, 0.0}; // locked (decay_n == 0) and no flow: the cap stays where it is
-    }
-    const double x = p.X0 - std::log(decay) / p.D;
-    if (x <= cap_position(p, i1)) {
-        const double x_min = cap_position(p, i1);
-        return {{x_min, i1}, p.W * (decay_n - hardening_decay(p, x_min))};
-    }
-    return {{x, cap_center_for(p, x, s.l)}, dv};
-}
-
 /// Tension cutoff / apex: I1 = I1_min, with sqrt(J2) limited to F(I1_min) (the corner of the
-/// cutoff plane and the envelope; the apex itself when F(I1_min) = 0).
+/// cutoff plane and the envelope; the apex itself when F(I1_min) = 0), or to the half-height B
+/// of a cap whose clamped centre puts its flat top below F(I1_min). The cutoff's flow is
+/// volumetric: it alone sets the new kappa, whose B then limits sqrt(J2) explicitly.
 Return tension_return(const Model& m, double i1_trial, double q_trial, const Hardening& s) {
     const double f_min = envelope(m.p, m.i1_min);
-    const bool sheared = q_trial > f_min;
     const double flow = (i1_trial - m.i1_min) / (3.0 * m.bulk);
-    const auto [after, dv] = contract_cap(m.p, s, std::min(flow, 0.0), m.i1_min);
-    Return r = finish(PlasticRegion::apex, m.i1_min, sheared ? f_min / q_trial : 1.0, after, dv);
+    const Contraction c = contract_cap(m, s, std::min(flow, 0.0), m.kappa_min);
+    const double b = half_height(m.p, c.after.kappa);
+    const double limit = std::min(f_min, b);
+    const bool sheared = q_trial > limit;
+    Return r =
+        finish(PlasticRegion::apex, m.i1_min, sheared ? limit / q_trial : 1.0, c.after, c.dv);
     r.di1_di1 = 0.0;
-    r.drho_dq = sheared ? -f_min / (q_trial * q_trial) : 0.0;
+    r.drho_dq = sheared ? -limit / (q_trial * q_trial) : 0.0;
+    if (sheared && b < f_min && flow < 0.0 && !c.floored) {
+        // rho = B(kappa(I1_tr)) / q_tr: dkappa/dI1_tr = 1 / (3K W D exp(-D (X - X0)) X'(kappa)).
+        const double decay = hardening_decay(m.p, c.after.x);
+        const double dkappa =
+            1.0 / (3.0 * m.bulk * m.p.W * m.p.D * decay * cap_position_slope(m.p, c.after.kappa));
+        r.drho_di1 = half_height_slope(m.p, c.after.kappa) * dkappa / q_trial;
+    }
     return r;
-}
-
-/// Shift dL of the cap centre that puts the stress at the corner, I1 = L: with L = L_n + dL the
-/// volumetric balance (4.6.3.43) reads g(dL) = (I1_tr - L_n) - dL - 3K dv(dL) = 0, decreasing
-/// in dL. Infeasible when that point lies below I1_min.
-struct CornerShift {
-    bool feasible = false;
-    double dl = 0.0;
-    double slope = -1.0; ///< g'(dL)
-};
-
-CornerShift corner_shift(const Model& m, double i1_trial, const Hardening& s) {
-    const double a_trial = i1_trial - s.l;
-    const auto fn = [&](double dl, double& g, double& dg) {
-        const CapMove c = move_cap(m.p, s, dl);
-        g = a_trial - dl - 3.0 * m.bulk * c.dv;
-        dg = -1.0 - 3.0 * m.bulk * c.rate;
-    };
-    const double floor = m.i1_min - s.l;
-    const double lo = std::max(std::min(a_trial, 0.0), floor);
-    double hi = std::max(std::max(a_trial, 0.0), floor);
-    double g = 0.0;
-    double dg = 0.0;
-    fn(lo, g, dg);
-    if (g < 0.0) {
-        return {};
-    }
-    fn(hi, g, dg);
-    if (g > 0.0) {
-        hi += 3.0 * m.bulk * m.p.W; // dilatancy from a locked cap: 3K |dv| <= 3K W
-    }
-    // dL may be far below the ulp of L: the tolerance scales with the bracket, not with L.
-    const Root root = solve_bracketed(fn, lo, hi, kTolerance * (hi - lo));
-    return {true, root.value, root.slope};
 }
 
 /// Corner: the stress sits where the cap meets the envelope, I1 = L and sqrt(J2) = F(L)
 /// (the thesis writes J2 = B there, an erratum).
 Return corner_return(const Model& m, double i1_trial, double q_trial, const Hardening& s) {
-    const CornerShift shift = corner_shift(m, i1_trial, s);
+    const Shift shift = shift_to(m, i1_trial, s, Target::corner);
     if (!shift.feasible) {
         return tension_return(m, i1_trial, q_trial, s); // the corner lies below I1_min
     }
-    const CapMove c = move_cap(m.p, s, shift.dl);
-    const double l = s.l + shift.dl;
-    const double f = envelope(m.p, l);
-    Return r =
-        finish(PlasticRegion::corner, l, q_trial > 0.0 ? f / q_trial : 1.0, {s.x + c.dx, l}, c.dv);
-    r.di1_di1 = -1.0 / shift.slope;
+    const CapMove c = move_cap(m.p, s, shift.dk);
+    const double corner_n = corner_point(m.p, s.kappa, m.i1_min).i1;
+    const Change d = corner_change(m, s, corner_n, shift.dk);
+    const double i1 = corner_n + d.d;
+    const double f = envelope(m.p, i1);
+    Return r = finish(PlasticRegion::corner, i1, q_trial > 0.0 ? f / q_trial : 1.0,
+                      {s.x + c.dx, s.kappa + shift.dk}, c.dv);
+    r.di1_di1 = -d.slope / shift.slope;
     if (q_trial > 0.0) {
-        r.drho_di1 = envelope_slope(m.p, l) * r.di1_di1 / q_trial;
+        r.drho_di1 = envelope_slope(m.p, i1) * r.di1_di1 / q_trial;
         r.drho_dq = -f / (q_trial * q_trial);
     }
     return r;
@@ -185,13 +120,14 @@ Return failure_return(const Model& m, double i1_trial, double q_trial, const Har
     const double hi = lo + envelope_slope(p, lo) * (q_trial - envelope(p, lo)) / ratio;
     const Root root = solve_bracketed(fn, lo, hi, tolerance_for(m, i1_trial, q_trial, s));
     const double i1 = root.value;
-    const auto [after, dv] = contract_cap(p, s, (i1_trial - i1) / (3.0 * m.bulk), i1);
-    if (after.l <= i1) {
+    const double floor = hardening_for_corner(p, i1, m.kappa_min);
+    const Contraction c = contract_cap(m, s, (i1_trial - i1) / (3.0 * m.bulk), floor);
+    if (c.floored || c.after.kappa <= floor) {
         return corner_return(m, i1_trial, q_trial, s); // the cap would pass the stress point
     }
     const double slope = envelope_slope(p, i1);
     const double f = envelope(p, i1);
-    Return r = finish(PlasticRegion::failure_surface, i1, f / q_trial, after, dv);
+    Return r = finish(PlasticRegion::failure_surface, i1, f / q_trial, c.after, c.dv);
     r.di1_di1 = -ratio / root.slope;
     r.di1_dq = -slope / root.slope;
     r.drho_di1 = slope * r.di1_di1 / q_trial;
@@ -199,17 +135,18 @@ Return failure_return(const Model& m, double i1_trial, double q_trial, const Har
     return r;
 }
 
-/// Cap residual in the unknowns a = I1 - L >= 0 and L, with its partial derivatives.
+/// Cap residual in the unknowns a = I1 - L >= 0 and kappa, with its partial derivatives.
 struct CapResidual {
-    double g, g_a, g_l, g_q;
-    double rho, rho_a, rho_l;
+    double g, g_a, g_k, g_q;
+    double rho, rho_a, rho_k;
 };
 
 /// Elliptical cap fc = (I1 - L)^2 + R^2 (J2 - B^2), thesis (4.6.3.9), with associated flow
 /// (4.6.3.31)-(4.6.3.33): dv = 6 dlambda a and s = s_tr / (1 + 2 G R^2 dlambda), hence
 /// rho = 3a / (3a + G R^2 dv). fc is divided by (a + R B) > 0 so that the residual stays
 /// linear-like as R -> 0: g = a - R B + R^2 rho^2 q_tr^2 / (a + R B); R = 0 gives g = a.
-CapResidual cap_residual(const Model& m, double q_trial, double a, double l, const CapMove& c) {
+/// B = B(kappa) is the half-height (X - L) / R, F(kappa) unless the centre is clamped.
+CapResidual cap_residual(const Model& m, double q_trial, double a, double kappa, const CapMove& c) {
     const Parameters& p = m.p;
     const double soft = m.shear * p.R * p.R;
     const double den = 3.0 * a + soft * c.dv;
@@ -218,10 +155,10 @@ CapResidual cap_residual(const Model& m, double q_trial, double a, double l, con
     if (den > 0.0) {
         r.rho = 3.0 * a / den;
         r.rho_a = 3.0 * soft * c.dv / (den * den);
-        r.rho_l = -3.0 * a * soft * c.rate / (den * den);
+        r.rho_k = -3.0 * a * soft * c.rate / (den * den);
     }
-    const double b = envelope(p, l);
-    const double b_l = envelope_slope(p, l);
+    const double b = half_height(p, kappa);
+    const double b_k = half_height_slope(p, kappa);
     const double sum = a + p.R * b;
     const double rq2 = p.R * p.R * q_trial * q_trial;
     const double tail = sum > 0.0 ? rq2 * r.rho * r.rho / sum : 0.0;
@@ -229,7 +166,7 @@ CapResidual cap_residual(const Model& m, double q_trial, double a, double l, con
     const double tail_sum = sum > 0.0 ? -tail / sum : 0.0;
     r.g = a - p.R * b + tail;
     r.g_a = 1.0 + tail_rho * r.rho_a + tail_sum;
-    r.g_l = -p.R * b_l + tail_rho * r.rho_l + tail_sum * p.R * b_l;
+    r.g_k = -p.R * b_k + tail_rho * r.rho_k + tail_sum * p.R * b_k;
     r.g_q = sum > 0.0 ? 2.0 * p.R * p.R * q_trial * r.rho * r.rho / sum : 0.0;
     return r;
 }
@@ -246,144 +183,186 @@ Return flat_cap(Return corner, double q_trial, const Parameters& p) {
     return corner;
 }
 
-/// Newton on both cap equations at once, r1 = (I1_tr - L_n) - dL - 3K dv(dL) - a and
-/// r2 = g(a, L_n + dL), from the start (a, dL) passed in. A step that would leave the
-/// admissible box 0 <= a, dL <= I1_tr - L_n (dv >= 0 bounds dL) is halved until it stays
-/// inside: the first step from the trial overshoots to a < 0 whenever the hardening is stiff
+/// What the cap solves share: the trial's distance from the centre and the box for kappa.
+struct CapBox {
+    double a_trial = 0.0; ///< I1_tr - L_n
+    double dk_max = 0.0;  ///< a >= 0 bounds the move: L(kappa) <= I1_tr
+};
+
+/// Newton on both cap equations at once, r1 = (I1_tr - L_n) - dL(dk) - 3K dv(dk) - a and
+/// r2 = g(a, kappa_n + dk), from the start (a, dk) passed in. A step that would leave the
+/// admissible box 0 <= a <= I1_tr - L_n, 0 <= dk <= dk_max is halved until it stays inside:
+/// the first step from the trial overshoots to a < 0 whenever the hardening is stiff
 /// (3K dv'(0) >> 1, e.g. every compressed point of the thesis sand with X0 = 0). Returns false
 /// when no step inside the box is found or the iteration does not converge.
 /// Converged: |da| below kTolerance a or the residual's round-off, about 1e-15 (I1_tr - L_n).
-bool cap_newton(const Model& m, double q_trial, const Hardening& s, double a_trial, double& a,
-                double& dl) {
+bool cap_newton(const Model& m, double q_trial, const Hardening& s, const CapBox& box, double& a,
+                double& dk) {
+    const double a_trial = box.a_trial;
     for (int iteration = 0; iteration < 25; ++iteration) {
-        const CapMove c = move_cap(m.p, s, dl);
-        const CapResidual r = cap_residual(m, q_trial, a, s.l + dl, c);
-        const double r1 = a_trial - dl - 3.0 * m.bulk * c.dv - a;
-        const double j12 = -1.0 - 3.0 * m.bulk * c.rate; // dr1/da = -1
-        const double det = -r.g_l - j12 * r.g_a;
+        const CapMove c = move_cap(m.p, s, dk);
+        const Change d = centre_change(m.p, s, dk);
+        const CapResidual r = cap_residual(m, q_trial, a, s.kappa + dk, c);
+        const double r1 = a_trial - d.d - 3.0 * m.bulk * c.dv - a;
+        const double j12 = -d.slope - 3.0 * m.bulk * c.rate; // dr1/da = -1
+        const double det = -r.g_k - j12 * r.g_a;
         if (!(det != 0.0)) {
             return false;
         }
-        double da = (r1 * r.g_l - j12 * r.g) / det;
-        double ddl = (-r.g - r.g_a * r1) / det;
+        double da = (r1 * r.g_k - j12 * r.g) / det;
+        double ddk = (-r.g - r.g_a * r1) / det;
         for (int cuts = 0;
-             !(a - da >= 0.0 && a - da <= a_trial && dl - ddl >= 0.0 && dl - ddl <= a_trial);
+             !(a - da >= 0.0 && a - da <= a_trial && dk - ddk >= 0.0 && dk - ddk <= box.dk_max);
              ++cuts) {
             if (cuts == kMaxStepCuts) {
                 return false;
             }
             da *= 0.5;
-            ddl *= 0.5;
+            ddk *= 0.5;
         }
         a -= da;
-        dl -= ddl;
+        dk -= ddk;
         if (std::abs(da) <= kTolerance * a + kRoundOff * a_trial &&
-            std::abs(ddl) <= kTolerance * a_trial) {
+            std::abs(ddk) <= kTolerance * box.dk_max) {
             return true;
         }
     }
     return false;
 }
 
+/// a(dk) = (I1_tr - L_n) - dL(dk) - 3K dv(dk): the volumetric balance solved for a.
+double balance_gap(const Model& m, const Hardening& s, double a_trial, double dk) {
+    return a_trial - centre_change(m.p, s, dk).d - 3.0 * m.bulk * move_cap(m.p, s, dk).dv;
+}
+
 /// A start for cap_newton where the one from the trial fails. The volumetric balance gives a
-/// explicitly, a(dL) = (I1_tr - L_n) - dL - 3K dv(dL), so the cap condition reduces to
-/// h(dL) = g(a(dL), L_n + dL) on [0, dL_corner]: h(0) > 0 (the trial is outside the cap) and
-/// h(dL_corner) = -R B <= 0 (a = 0, rho = 0). For a trial far above the envelope,
-/// R^2 q_tr^2 > (a + R B)^2 makes g decrease with a and h rise from dL = 0, so Newton from
-/// the trial heads out of the box (the thesis sand at full stiffness: 94 % of its cap
-/// returns). The bracketed solve on h does not care; it only has to get near the root, from
-/// where cap_newton converges in a few steps to the coupled equations' tolerance. Returns false
-/// when the corner lies below I1_min.
+/// explicitly, a(dk), so the cap condition reduces to h(dk) = g(a(dk), kappa_n + dk) on
+/// [0, dk_centre]: h(0) > 0 (the trial is outside the cap) and h(dk_centre) = -R B <= 0 (a = 0,
+/// rho = 0). For a trial far above the envelope, R^2 q_tr^2 > (a + R B)^2 makes g decrease with
+/// a and h rise from dk = 0, so Newton from the trial heads out of the box (the thesis sand at
+/// full stiffness: 94 % of its cap returns). The bracketed solve on h does not care; it only
+/// has to get near the root, from where cap_newton converges in a few steps to the coupled
+/// equations' tolerance. Returns false when the centre shift is infeasible.
 bool cap_reduced_start(const Model& m, double q_trial, const Hardening& s, double a_trial,
-                       const CornerShift& corner, double& a, double& dl) {
-    if (!corner.feasible || !(corner.dl > 0.0)) {
+                       const Shift& centre, double& a, double& dk) {
+    if (!centre.feasible || !(centre.dk > 0.0)) {
         return false;
     }
-    const auto reduced = [&](double dl_try, double& h, double& dh) {
-        const CapMove c = move_cap(m.p, s, dl_try);
-        const double slope = -1.0 - 3.0 * m.bulk * c.rate; // da/dL
+    const auto reduced = [&](double dk_try, double& h, double& dh) {
+        const CapMove c = move_cap(m.p, s, dk_try);
+        const Change d = centre_change(m.p, s, dk_try);
+        const double slope = -d.slope - 3.0 * m.bulk * c.rate; // da/dkappa
         const CapResidual r = cap_residual(
-            m, q_trial, std::max(a_trial - dl_try - 3.0 * m.bulk * c.dv, 0.0), s.l + dl_try, c);
+            m, q_trial, std::max(a_trial - d.d - 3.0 * m.bulk * c.dv, 0.0), s.kappa + dk_try, c);
         h = r.g;
-        dh = r.g_a * slope + r.g_l;
+        dh = r.g_a * slope + r.g_k;
     };
-    dl = solve_bracketed(reduced, 0.0, corner.dl, kStartTolerance * corner.dl).value;
-    a = std::max(a_trial - dl - 3.0 * m.bulk * move_cap(m.p, s, dl).dv, 0.0);
+    dk = solve_bracketed(reduced, 0.0, centre.dk, kStartTolerance * centre.dk).value;
+    a = std::max(balance_gap(m, s, a_trial, dk), 0.0);
     return true;
 }
 
-/// Cap return with the unknown a = I1 - L in [0, I1_tr - L_n]; for each a the move dL of the
-/// centre solves the volumetric balance (I1_tr - L_n) - dL - 3K dv(dL) = a, (4.6.3.35)-
-/// (4.6.3.37). Solving for a rather than L resolves returns that end next to the corner
-/// (a ~ R^2, tiny for small R) and trials within round-off of I1_tr = L_n. cap_newton is tried
-/// from the trial, then from cap_reduced_start; the nested, bracketed solve is the safe path
-/// left when both fail.
+/// The nested, bracketed cap solve (the safe path): the unknown a in [0, I1_tr - L_n]; for each
+/// a the move dk solves the volumetric balance a(dk) = a on [0, dk_centre]. Returns (a, dk).
+std::pair<double, double> cap_nested(const Model& m, double q_trial, const Hardening& s,
+                                     double a_trial, const Shift& centre) {
+    const double dk_max = centre.dk; // a = 0 bounds dk
+    const double tolerance = kTolerance * dk_max;
+    double last_dk = std::numeric_limits<double>::quiet_NaN(); // warm start
+    const auto move_for = [&](double a_try) {
+        const auto balance = [&](double dk_try, double& g, double& dg) {
+            const CapMove c = move_cap(m.p, s, dk_try);
+            const Change d = centre_change(m.p, s, dk_try);
+            g = a_trial - d.d - 3.0 * m.bulk * c.dv - a_try;
+            dg = -d.slope - 3.0 * m.bulk * c.rate;
+        };
+        last_dk = solve_bracketed(balance, 0.0, dk_max, tolerance, 0.0, last_dk).value;
+        return last_dk;
+    };
+    const auto fn = [&](double a_try, double& g, double& dg) {
+        const double dk_try = move_for(a_try);
+        const CapMove c = move_cap(m.p, s, dk_try);
+        const Change d = centre_change(m.p, s, dk_try);
+        const CapResidual r = cap_residual(m, q_trial, a_try, s.kappa + dk_try, c);
+        g = r.g;
+        dg = r.g_a - r.g_k / (d.slope + 3.0 * m.bulk * c.rate);
+    };
+    const double a = solve_bracketed(fn, 0.0, a_trial, 0.0, kTolerance).value;
+    return {a, move_for(a)};
+}
+
+/// Cap return with the unknown a = I1 - L in [0, I1_tr - L_n]; for each a the move dk of kappa
+/// solves the volumetric balance (I1_tr - L_n) - dL(dk) - 3K dv(dk) = a, (4.6.3.35)-(4.6.3.37).
+/// Solving for a rather than L resolves returns that end next to the corner (a ~ R^2, tiny for
+/// small R) and trials within round-off of I1_tr = L_n. cap_newton is tried from the trial,
+/// then from cap_reduced_start; the nested, bracketed solve is the safe path left when both
+/// fail.
 Return cap_return(const Model& m, double i1_trial, double q_trial, const Hardening& s) {
     const Parameters& p = m.p;
     if (p.R == 0.0) {
         return flat_cap(corner_return(m, i1_trial, q_trial, s), q_trial, p);
     }
-    const double a_trial = i1_trial - s.l;
-    double a = a_trial;
-    double dl = 0.0;
-    bool converged = cap_newton(m, q_trial, s, a_trial, a, dl);
-    std::optional<CornerShift> corner; // solved once, for the reduced start and the nested solve
+    const double l_n = cap_center(p, s.kappa);
+    // L(kappa) <= I1_tr bounds kappa by I1_tr, i.e. dk <= a_trial + (L_n - kappa_n).
+    const CapBox box{i1_trial - l_n, i1_trial - l_n + (l_n - s.kappa)};
+    double a = box.a_trial;
+    double dk = 0.0;
+    bool converged = cap_newton(m, q_trial, s, box, a, dk);
+    std::optional<Shift> centre; // solved once, for the reduced start and the nested solve
     if (!converged) {
-        corner = corner_shift(m, i1_trial, s);
-        converged = cap_reduced_start(m, q_trial, s, a_trial, *corner, a, dl) &&
-                    cap_newton(m, q_trial, s, a_trial, a, dl);
+        centre = shift_to(m, i1_trial, s, Target::centre);
+        converged = cap_reduced_start(m, q_trial, s, box.a_trial, *centre, a, dk) &&
+                    cap_newton(m, q_trial, s, box, a, dk);
     }
-    if (!(converged && a >= kResolvedGap * a_trial)) {
-        if (!corner) {
-            corner = corner_shift(m, i1_trial, s);
+    if (!(converged && a >= kResolvedGap * box.a_trial)) {
+        if (!centre) {
+            centre = shift_to(m, i1_trial, s, Target::centre);
         }
-        const double dl_max = corner->dl; // a = 0 bounds dL
-        const double tolerance = kTolerance * dl_max;
-        double last_dl = std::numeric_limits<double>::quiet_NaN(); // warm start
-        const auto centre = [&](double a_try) {
-            const auto balance = [&](double dl_try, double& g, double& dg) {
-                const CapMove c = move_cap(p, s, dl_try);
-                g = a_trial - dl_try - 3.0 * m.bulk * c.dv - a_try;
-                dg = -1.0 - 3.0 * m.bulk * c.rate;
-            };
-            last_dl = solve_bracketed(balance, 0.0, dl_max, tolerance, 0.0, last_dl).value;
-            return last_dl;
-        };
-        const auto fn = [&](double a_try, double& g, double& dg) {
-            const double dl_try = centre(a_try);
-            const CapMove c = move_cap(p, s, dl_try);
-            const CapResidual r = cap_residual(m, q_trial, a_try, s.l + dl_try, c);
-            g = r.g;
-            dg = r.g_a - r.g_l / (1.0 + 3.0 * m.bulk * c.rate);
-        };
-        a = solve_bracketed(fn, 0.0, a_trial, 0.0, kTolerance).value;
-        dl = centre(a);
+        std::tie(a, dk) = cap_nested(m, q_trial, s, box.a_trial, *centre);
     }
-    const CapMove c = move_cap(p, s, dl);
-    const double l = s.l + dl;
-    const CapResidual res = cap_residual(m, q_trial, a, l, c);
-    Return r = finish(PlasticRegion::cap, l + a, res.rho, {s.x + c.dx, l}, c.dv);
-    // Implicit differentiation of g(a, L(a, I1_tr), q_tr) = 0 with dL = (dI1_tr - da) slope.
-    const double slope = 1.0 / (1.0 + 3.0 * m.bulk * c.rate);
-    const double g_a = res.g_a - res.g_l * slope;
-    const double a_i1 = -res.g_l * slope / g_a;
+    const CapMove c = move_cap(p, s, dk);
+    const Change d = centre_change(p, s, dk);
+    const double kappa = s.kappa + dk;
+    const CapResidual res = cap_residual(m, q_trial, a, kappa, c);
+    Return r = finish(PlasticRegion::cap, l_n + d.d + a, res.rho, {s.x + c.dx, kappa}, c.dv);
+    // Implicit differentiation of g(a, kappa(a, I1_tr), q_tr) = 0 with
+    // dkappa = (dI1_tr - da) / (L' + 3K dv').
+    const double slope = 1.0 / (d.slope + 3.0 * m.bulk * c.rate);
+    const double g_a = res.g_a - res.g_k * slope;
+    const double a_i1 = -res.g_k * slope / g_a;
     const double a_q = -res.g_q / g_a;
-    const double l_i1 = slope * (1.0 - a_i1);
-    const double l_q = -slope * a_q;
-    r.di1_di1 = l_i1 + a_i1;
-    r.di1_dq = l_q + a_q;
-    r.drho_di1 = res.rho_a * a_i1 + res.rho_l * l_i1;
-    r.drho_dq = res.rho_a * a_q + res.rho_l * l_q;
+    const double k_i1 = slope * (1.0 - a_i1);
+    const double k_q = -slope * a_q;
+    r.di1_di1 = d.slope * k_i1 + a_i1;
+    r.di1_dq = d.slope * k_q + a_q;
+    r.drho_di1 = res.rho_a * a_i1 + res.rho_k * k_i1;
+    r.drho_dq = res.rho_a * a_q + res.rho_k * k_q;
     return r;
 }
 
-bool in_tension_region(const Model& m, double i1_trial, double q_trial) {
+/// Flat top of a cap whose centre is clamped at L = 0 (MAT_025, kappa < 0): between the corner
+/// c(kappa) and L the elastic domain is bounded by sqrt(J2) = B(kappa), the ellipse's top value
+/// (docs "Initial cap": the reading of MAT_025's Tmises that keeps the domain convex). The
+/// normal is deviatoric: no volumetric flow, kappa unchanged, the deviator scaled to B.
+Return flat_top_return(const Model& m, double i1_trial, double q_trial, const Hardening& s) {
+    const double b = half_height(m.p, s.kappa);
+    Return r = finish(PlasticRegion::failure_surface, i1_trial, b / q_trial, s, 0.0);
+    r.drho_dq = -b / (q_trial * q_trial);
+    return r;
+}
+
+bool in_tension_region(const Model& m, double i1_trial, double q_trial, const Hardening& s) {
     if (i1_trial >= m.i1_min) {
         return false;
     }
+    // A clamped cap's flat top below F(I1_min) meets the cutoff itself: that corner's normal
+    // cone holds every trial below I1_min.
+    const double f_min = envelope(m.p, m.i1_min);
+    if (centre_clamped(m.p, s.kappa) && half_height(m.p, s.kappa) < f_min) {
+        return true;
+    }
     // Below I1_min the return goes to the cutoff unless the trial lies inside the failure
     // surface's normal cone at (I1_min, F(I1_min)): I1 = I1_min - 9K F' (q - F) / G.
-    const double f_min = envelope(m.p, m.i1_min);
     const double excess = q_trial - f_min;
     return excess <= 0.0 ||
            i1_trial <= m.i1_min - 9.0 * m.bulk * envelope_slope(m.p, m.i1_min) * excess / m.shear;
@@ -392,12 +371,13 @@ bool in_tension_region(const Model& m, double i1_trial, double q_trial) {
 } // namespace
 
 Return return_map(const Model& m, double i1_trial, double q_trial, const Hardening& state) {
-    if (in_tension_region(m, i1_trial, q_trial)) {
+    if (in_tension_region(m, i1_trial, q_trial, state)) {
         return tension_return(m, i1_trial, q_trial, state);
     }
-    if (i1_trial > state.l) {
-        const double b = envelope(m.p, state.l);
-        const double a = i1_trial - state.l;
+    const double l = cap_center(m.p, state.kappa);
+    if (i1_trial > l) {
+        const double b = half_height(m.p, state.kappa);
+        const double a = i1_trial - l;
         const double fc = a * a + m.p.R * m.p.R * (q_trial * q_trial - b * b);
         // A locked cap follows the stress elastically (dv = 0); above the envelope only the
         // failure surface can flow.
@@ -407,6 +387,9 @@ Return return_map(const Model& m, double i1_trial, double q_trial, const Hardeni
         if (fc > 0.0) {
             return cap_return(m, i1_trial, q_trial, state);
         }
+    } else if (centre_clamped(m.p, state.kappa) && q_trial > half_height(m.p, state.kappa) &&
+               i1_trial >= corner_point(m.p, state.kappa, m.i1_min).i1) {
+        return flat_top_return(m, i1_trial, q_trial, state);
     } else if (q_trial > envelope(m.p, i1_trial)) {
         return failure_return(m, i1_trial, q_trial, state);
     }

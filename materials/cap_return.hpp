@@ -14,13 +14,15 @@ struct Model {
     Parameters p;
     double bulk = 0.0;
     double shear = 0.0;
-    double i1_min = 0.0; ///< minimum_pressure(p), cached
+    double i1_min = 0.0;    ///< minimum_pressure(p), cached
+    double kappa_min = 0.0; ///< lowest_hardening(p, i1_min): the cap contracts no further
 };
 
-/// Hardening state of one point: cap position X and cap centre L (X = L + R F(L)).
+/// Hardening state of one point: cap position X and hardening parameter kappa,
+/// X = kappa + R F(kappa); the centre L(kappa) and half-height B(kappa) follow from kappa.
 struct Hardening {
     double x = 0.0;
-    double l = 0.0;
+    double kappa = 0.0;
 };
 
 /// Outcome of a return: final I1, radial factor rho, the Jacobian of (I1, rho) with respect to

@@ -5,20 +5,32 @@
 
 // Scalar building blocks of the generalized cap model (Sandler-DiMaggio-Baladi), written
 // COMPRESSION POSITIVE as in its sources (thesis section 4.6.3; Kojic & Bathe, "Inelastic
-// Analysis of Solids and Structures", cap model after Sandler & Rubin). All stresses in Pa.
+// Analysis of Solids and Structures", cap model after Sandler & Rubin; LS-DYNA
+// *MAT_GEOLOGIC_CAP_MODEL, MAT_025). All stresses in Pa.
 namespace grainload::materials::cap {
+
+/// How X0 and the cap centre are read (docs/theory/generalized_cap.md, "Initial cap").
+enum class Semantics {
+    /// LS-DYNA MAT_025: X0 is the initial cap intercept, kappa0 solves X(kappa0) = X0 (it may be
+    /// negative), the cap centre is L = max(kappa, 0) and eps_v^p starts at 0.
+    mat025,
+    /// grainload before issue 19: the centre never goes below the lowest admissible I1, so an
+    /// X0 below X(I1_min) is lifted to it and eps_v^p starts at the law's value there.
+    lifted_x0,
+};
 
 /// Material constants of the cap model, SI (Pa, 1/Pa). See docs/theory/generalized_cap.md.
 struct Parameters {
-    double k = 0.0;       ///< cohesion-like constant of the envelope [Pa]
+    double k = 0.0;       ///< cohesion-like constant of the envelope (MAT_025 ALPHA) [Pa]
     double theta = 0.0;   ///< slope of the envelope in (I1, sqrt(J2)) [-]
     double gamma = 0.0;   ///< amplitude of the exponential term [Pa]
     double beta = 0.0;    ///< B1, decay of the exponential term [1/Pa]
     double D = 0.0;       ///< hardening rate [1/Pa]
     double W = 0.0;       ///< maximum plastic volumetric compaction [-]
-    double X0 = 0.0;      ///< initial cap position on the I1 axis [Pa]
+    double X0 = 0.0;      ///< initial cap intercept with the I1 axis [Pa]
     double R = 0.0;       ///< ellipse aspect ratio (X - L) / B; 0 gives a flat cap [-]
-    double tension = 0.0; ///< tension cutoff T >= 0: I1 >= -T [Pa]
+    double tension = 0.0; ///< tension cutoff T >= 0: I1 >= -T (MAT_025 TOFF = -T) [Pa]
+    Semantics semantics = Semantics::mat025;
 };
 
 /// Failure envelope F(I1) = k + theta I1 - gamma exp(-B1 I1), thesis (4.6.3.15): the failure
@@ -27,21 +39,54 @@ double envelope(const Parameters& p, double i1);
 double envelope_slope(const Parameters& p, double i1);
 double envelope_curvature(const Parameters& p, double i1);
 
-/// Cap position X(L) = L + R F(L), thesis (4.6.3.10) with B = F(L) (4.6.3.35).
-double cap_position(const Parameters& p, double l);
-double cap_position_slope(const Parameters& p, double l);
+/// Lowest admissible I1: the tension cutoff -T or the apex of the envelope (F = 0), whichever
+/// is larger.
+double minimum_pressure(const Parameters& p);
+
+// The hardening state is the parameter kappa of MAT_025 (the thesis' L when the centre is not
+// clamped): the cap meets the I1 axis at X(kappa), its centre is L(kappa) and its half-height
+// B(kappa) = (X - L) / R.
+
+/// Cap position X(kappa) = kappa + R F(kappa), thesis (4.6.3.10) with B = F(L) (4.6.3.35).
+double cap_position(const Parameters& p, double kappa);
+double cap_position_slope(const Parameters& p, double kappa);
+
+/// True where the centre is held at L = 0 while kappa < 0 (MAT_025 with R > 0).
+bool centre_clamped(const Parameters& p, double kappa);
+/// Cap centre L(kappa): max(kappa, 0) for MAT_025 with R > 0, kappa otherwise.
+double cap_center(const Parameters& p, double kappa);
+double cap_center_slope(const Parameters& p, double kappa);
+/// Half-height B(kappa) = (X - L) / R of the ellipse: F(kappa) where L = kappa.
+double half_height(const Parameters& p, double kappa);
+double half_height_slope(const Parameters& p, double kappa);
 
 /// exp(-D (X - X0)): the hardening law (4.6.3.4) reads eps_v^p = W (1 - hardening_decay(X)).
 /// Volumetric plastic strain is always formed as a difference W (decay_n - decay(X)), so that a
 /// locked state (decay -> 0) needs no logarithm.
 double hardening_decay(const Parameters& p, double x);
 
-/// Lowest admissible I1: the tension cutoff -T or the apex of the envelope (F = 0), whichever
-/// is larger; the cap centre L never goes below it.
-double minimum_pressure(const Parameters& p);
+/// kappa such that X(kappa) = x, searched from `guess` but not below `floor` (the caller knows
+/// the root lies above it); Newton on the monotone X(kappa), (4.6.3.19).
+double hardening_for(const Parameters& p, double x, double guess, double floor);
 
-/// L such that X(L) = x, never below minimum_pressure; Newton on the monotone X(L), (4.6.3.19).
-double cap_center_for(const Parameters& p, double x, double guess);
+/// Smallest kappa the cap may contract to: I1_min when the centre is kappa; for MAT_025 with
+/// R > 0 the kappa where X = max(0, apex), below which the ellipse (X - L >= 0) would vanish.
+double lowest_hardening(const Parameters& p, double i1_min);
+
+/// Smallest X0 the semantics accept: the cap of the lowest hardening state.
+double lowest_cap_position(const Parameters& p, double i1_min);
+
+/// The corner where the envelope meets the cap's top, or its flat continuation at height B to
+/// the left of a clamped centre (docs "Initial cap"): I1 = kappa where L = kappa; for a clamped
+/// centre the c with F(c) = B(kappa), not below i1_min (there the top meets the cutoff).
+struct CornerPoint {
+    double i1 = 0.0;
+    double slope = 1.0; ///< dc/dkappa, 0 where the corner sits on the cutoff
+};
+CornerPoint corner_point(const Parameters& p, double kappa, double i1_min);
+/// kappa whose corner lies at i1 (the inverse of corner_point above i1_min), not below
+/// kappa_min.
+double hardening_for_corner(const Parameters& p, double i1, double kappa_min);
 
 /// Result of a bracketed Newton solve.
 struct Root {

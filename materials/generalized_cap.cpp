@@ -3,7 +3,9 @@
 #include "io/case_table.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
+#include <string>
 
 namespace grainload::materials {
 namespace {
@@ -46,7 +48,18 @@ GeneralizedCap::GeneralizedCap(ElasticConstants elastic, cap::Parameters paramet
         throw std::invalid_argument("generalized_cap: " + key + ": " + message);
     }
     model_.i1_min = cap::minimum_pressure(parameters);
+    model_.kappa_min = cap::lowest_hardening(parameters, model_.i1_min);
 }
+
+namespace {
+
+std::string pascals(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g Pa", value);
+    return text;
+}
+
+} // namespace
 
 std::pair<std::string, std::string> GeneralizedCap::check(const cap::Parameters& p) {
     if (!(p.theta >= 0.0)) {
@@ -76,13 +89,83 @@ std::pair<std::string, std::string> GeneralizedCap::check(const cap::Parameters&
         return {"cap_k", "the failure envelope k + theta I1 - gamma exp(-B1 I1) never becomes "
                          "positive: no elastic region"};
     }
+    if (p.semantics == cap::Semantics::mat025) {
+        const double lowest = cap::lowest_cap_position(p, cap::minimum_pressure(p));
+        if (!(p.X0 >= lowest)) {
+            return {"cap_X0",
+                    "expected X0 >= " + pascals(lowest) +
+                        ": with MAT_025 semantics X0 is the initial cap intercept, and the "
+                        "cap (centre L = max(kappa, 0), half-width X - L) needs X0 >= 0 and X0 "
+                        "at or above the envelope's apex (a flat cap, R = 0: X0 >= -T); "
+                        "cap_semantics = \"lifted_x0\" lifts a lower X0 instead"};
+        }
+    }
     return {};
 }
 
+namespace {
+
+/// MAT_025 inputs grainload does not implement: giving one is an error, never silently ignored.
+void refuse_unsupported(const io::CaseTable& table) {
+    struct Unsupported {
+        const char* key;
+        const char* message;
+    };
+    static constexpr Unsupported kUnsupported[] = {
+        {"cap_c", "MAT_025's C and N drive kinematic hardening of the failure envelope, which "
+                  "grainload does not implement; remove the key (C = 0 in a deck means none)"},
+        {"cap_n", "MAT_025's C and N drive kinematic hardening of the failure envelope, which "
+                  "grainload does not implement; remove the key (C = 0 in a deck means none)"},
+        {"cap_plot", "MAT_025's PLOT chooses the one history variable LS-DYNA writes; grainload "
+                     "keeps all of them (cap_position, hardening_parameter, "
+                     "plastic_volumetric_strain): remove the key"},
+        {"cap_vec", "MAT_025's VEC chooses a fixed iteration count (0) or a fully iterative "
+                    "return (1); grainload always iterates to convergence: remove the key"},
+        {"cap_ivec", "MAT_025's VEC chooses a fixed iteration count (0) or a fully iterative "
+                     "return (1); grainload always iterates to convergence: remove the key"},
+    };
+    for (const auto& [key, message] : kUnsupported) {
+        if (table.has(key)) {
+            table.fail(key, message);
+        }
+    }
+    if (table.has("cap_ftype") && table.integer("cap_ftype") != 1) {
+        table.fail("cap_ftype", "only FTYPE = 1 (soil/concrete: the cap contracts with "
+                                "dilatancy) is implemented; FTYPE = 2 (rock: the cap never "
+                                "contracts) is not");
+    }
+}
+
+/// Exactly one of two names for one input (grainload's and MAT_025's).
+std::string one_of(const io::CaseTable& table, const char* ours, const char* theirs) {
+    if (table.has(ours) && table.has(theirs)) {
+        table.fail(theirs, std::string("give either '") + ours + "' or '" + theirs +
+                               "' (the same input), not both");
+    }
+    return table.has(theirs) ? theirs : ours;
+}
+
+/// T >= 0 from tension_cutoff, or from MAT_025's TOFF <= 0 (compression positive): T = -TOFF.
+double tension_cutoff(const io::CaseTable& table) {
+    const std::string key = one_of(table, "tension_cutoff", "cap_toff");
+    if (key == "tension_cutoff") {
+        return table.positive_quantity_or(key, io::dimension::kPressure, 0.0, true);
+    }
+    const double toff = table.quantity(key, io::dimension::kPressure);
+    if (!(toff <= 0.0)) {
+        table.fail(key, "expected TOFF <= 0: MAT_025 gives the tension cutoff as the lowest I1, "
+                        "compression positive (tension_cutoff = -TOFF)");
+    }
+    return -toff;
+}
+
+} // namespace
+
 std::unique_ptr<GeneralizedCap> GeneralizedCap::from_case(const io::CaseTable& table) {
     namespace dim = io::dimension;
+    refuse_unsupported(table);
     cap::Parameters p;
-    p.k = table.quantity("cap_k", dim::kPressure);
+    p.k = table.quantity(one_of(table, "cap_k", "cap_alpha"), dim::kPressure);
     p.theta = table.number("cap_theta");
     p.gamma = table.quantity("cap_gamma", dim::kPressure);
     p.beta = table.quantity("cap_beta", dim::kInversePressure);
@@ -90,7 +173,10 @@ std::unique_ptr<GeneralizedCap> GeneralizedCap::from_case(const io::CaseTable& t
     p.W = table.number("cap_W");
     p.X0 = table.quantity("cap_X0", dim::kPressure);
     p.R = table.number("cap_R");
-    p.tension = table.positive_quantity_or("tension_cutoff", dim::kPressure, 0.0, true);
+    p.tension = tension_cutoff(table);
+    p.semantics = table.choice_or("cap_semantics", {"mat025", "lifted_x0"}, "mat025") == "mat025"
+                      ? cap::Semantics::mat025
+                      : cap::Semantics::lifted_x0;
     const auto [key, message] = check(p);
     if (!key.empty()) {
         table.fail(key, message);
@@ -99,18 +185,30 @@ std::unique_ptr<GeneralizedCap> GeneralizedCap::from_case(const io::CaseTable& t
 }
 
 std::vector<std::string> GeneralizedCap::state_names() const {
-    return {"cap_position", "cap_center", "plastic_volumetric_strain", "equivalent_plastic_strain"};
+    return {"cap_position", "hardening_parameter", "plastic_volumetric_strain",
+            "equivalent_plastic_strain"};
 }
 
 void GeneralizedCap::initialise_state(std::span<double> state) const {
-    // X0 below the apex / tension cutoff is lifted to it, so that L >= I1_min always holds.
     const cap::Parameters& p = model_.p;
-    const double l = cap::cap_center_for(p, p.X0, p.X0);
-    const double x = cap::cap_position(p, l);
-    state[kCapPosition] = x;
-    state[kCapCenter] = l;
-    state[kPlasticVolumetricStrain] = p.W * (1.0 - cap::hardening_decay(p, x));
     state[kEquivalentPlasticStrain] = 0.0;
+    if (p.semantics == cap::Semantics::mat025) {
+        // MAT_025: X0 is the initial intercept, X(kappa0) = X0 (kappa0 < 0 when F(0) > 0 and X0
+        // is small), and eps_v^p starts at 0 (check() guaranteed X0 >= X(kappa_min)).
+        state[kCapPosition] = p.X0;
+        state[kHardeningParameter] = cap::hardening_for(p, p.X0, p.X0, model_.kappa_min);
+        state[kPlasticVolumetricStrain] = 0.0;
+        return;
+    }
+    // lifted_x0: X0 below X(I1_min) (apex / tension cutoff) is lifted to it, so that
+    // L = kappa >= I1_min always holds, and eps_v^p starts at the law's value there.
+    const double floor = model_.i1_min;
+    const double kappa =
+        cap::cap_position(p, floor) >= p.X0 ? floor : cap::hardening_for(p, p.X0, p.X0, floor);
+    const double x = cap::cap_position(p, kappa);
+    state[kCapPosition] = x;
+    state[kHardeningParameter] = kappa;
+    state[kPlasticVolumetricStrain] = p.W * (1.0 - cap::hardening_decay(p, x));
 }
 
 PlasticRegion GeneralizedCap::update(const Voigt6& strain_increment, Voigt6& stress,
@@ -123,14 +221,14 @@ PlasticRegion GeneralizedCap::update(const Voigt6& strain_increment, Voigt6& str
     s_tr.head<3>().array() -= i1_tr / 3.0;
     const double q_tr = root_j2(s_tr);
 
-    const cap::Hardening before{state[kCapPosition], state[kCapCenter]};
+    const cap::Hardening before{state[kCapPosition], state[kHardeningParameter]};
     const cap::Return r = cap::return_map(model_, i1_tr, q_tr, before);
 
     Voigt6 sigma = r.rho * s_tr;
     sigma.head<3>().array() += r.i1 / 3.0;
     stress = -sigma;
     state[kCapPosition] = r.hardening.x;
-    state[kCapCenter] = r.hardening.l;
+    state[kHardeningParameter] = r.hardening.kappa;
     state[kPlasticVolumetricStrain] += r.hardening_strain;
     state[kEquivalentPlasticStrain] += equivalent_increment(elastic_, i1_tr, q_tr, r);
     if (tangent != nullptr) {

@@ -10,29 +10,33 @@
 namespace grainload::materials {
 
 /// Generalized cap model (Sandler-DiMaggio-Baladi; algorithm after Sandler & Rubin as given
-/// by Kojic & Bathe; thesis section 4.6.3), integrated fully implicitly (backward Euler) with
-/// the cap hardening coupled and an analytic consistent tangent in every region.
+/// by Kojic & Bathe; thesis section 4.6.3; initial cap and centre as LS-DYNA's MAT_025 unless
+/// cap_semantics = "lifted_x0"), integrated fully implicitly (backward Euler) with the cap
+/// hardening coupled and an analytic consistent tangent in every region.
 ///
 /// The model is written compression positive (I1 = tr sigma > 0 in compression, sqrt(J2) of the
 /// deviator) as in its sources; update() converts from the tension-positive convention of
 /// io/types.hpp at entry and back at exit. State per point (names as in state_names()):
-///   0 cap_position              X [Pa], where the cap meets the I1 axis
-///   1 cap_center                L [Pa], I1 of the ellipse centre, X = L + R F(L)
-///   2 plastic_volumetric_strain eps_v^p of the hardening law, COMPACTION positive
+///   0 cap_position              X [Pa], where the cap meets the I1 axis (MAT_025 PLOT = 2)
+///   1 hardening_parameter       kappa [Pa], X = kappa + R F(kappa); the centre is
+///                               L = max(kappa, 0) (MAT_025) or kappa (MAT_025 PLOT = 1)
+///   2 plastic_volumetric_strain eps_v^p of the hardening law, COMPACTION positive (PLOT = 3)
 ///   3 equivalent_plastic_strain sqrt(2/3 deps^p : deps^p), accumulated
 class GeneralizedCap final : public Material {
   public:
     enum StateIndex : int {
         kCapPosition = 0,
-        kCapCenter = 1,
+        kHardeningParameter = 1,
         kPlasticVolumetricStrain = 2,
         kEquivalentPlasticStrain = 3,
     };
 
     /// Throws std::invalid_argument when the parameters admit no elastic region.
     GeneralizedCap(ElasticConstants elastic, cap::Parameters parameters);
-    /// Reads the elastic keys and cap_k, cap_theta, cap_gamma, cap_beta, cap_D, cap_W, cap_X0,
-    /// cap_R and tension_cutoff (optional, default 0 MPa), each with explicit units.
+    /// Reads the elastic keys and cap_k (or cap_alpha), cap_theta, cap_gamma, cap_beta, cap_D,
+    /// cap_W, cap_X0, cap_R, tension_cutoff (or cap_toff; optional, default 0 MPa) and
+    /// cap_semantics, each dimensional one with explicit units; MAT_025 inputs grainload does
+    /// not support are refused with a message (docs/theory/generalized_cap.md).
     static std::unique_ptr<GeneralizedCap> from_case(const io::CaseTable& table);
 
     /// Key and message of the first inadmissible parameter; empty key when all are valid.

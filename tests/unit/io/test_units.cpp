@@ -58,6 +58,41 @@ TEST(Units, AcceptsEveryDocumentedForm) {
     expect_quantity("+1e-3 m", 1e-3, dim::kLength);
 }
 
+// US customary units, against their definitions (1 in = 0.0254 m, 1 lbf = 0.45359237 kg x
+// 9.80665 m/s^2: 1 psi = 6894.757293168361 Pa, NIST SP 811 appendix B), and the stress, mass
+// and density units of the consistent unit systems LS-DYNA decks are written in.
+TEST(Units, AcceptsUsCustomaryAndLsDynaDeckUnits) {
+    const double psi = 6894.757293168361;
+    expect_quantity("2 in", 0.0508, dim::kLength);
+    expect_quantity("3 ft", 0.9144, dim::kLength);
+    expect_quantity("1 lbf", 4.4482216152605, dim::kForce);
+    expect_quantity("2 kip", 8896.443230521, dim::kForce);
+    expect_quantity("1 lb", 0.45359237, dim::kMass);
+    expect_quantity("1 slug", 14.593902937206364, dim::kMass);
+    expect_quantity("300 psi", 300.0 * psi, dim::kPressure);
+    expect_quantity("1 lbf/in^2", psi, dim::kPressure);
+    expect_quantity("0.25 ksi", 250.0 * psi, dim::kPressure);
+    expect_quantity("0.67 1/ksi", 0.67 / (1e3 * psi), dim::kInversePressure);
+    expect_quantity("2.5e-6 psi^-1", 2.5e-6 / psi, dim::kInversePressure);
+    expect_quantity("1 psf", 47.88025898033584, dim::kPressure);
+    expect_quantity("1 lbf/ft^2", 47.88025898033584, dim::kPressure);
+    // lbf-s-in system: density in lbf s^2 / in^4 (steel 7.33e-4).
+    expect_quantity("7.33e-4 lbf*s^2/in^4", 7.33e-4 * 4.4482216152605 / std::pow(0.0254, 4),
+                    dim::kDensity);
+    // g-cm-us system: stress in Mbar, force in 10 MN.
+    expect_quantity("0.0206 Mbar", 2.06e9, dim::kPressure);
+    expect_quantity("1 g*cm/us^2", 1e7, dim::kForce);
+    expect_quantity("1 kbar", 1e8, dim::kPressure);
+    // kg-mm-ms: GPa; t-mm-s: MPa; density of sand in t/mm^3 and kg/mm^3.
+    expect_quantity("1 kg*mm/ms^2", 1e3, dim::kForce);
+    expect_quantity("2.099e-9 t/mm^3", 2099.0, dim::kDensity);
+    expect_quantity("2.099e-6 kg/mm^3", 2099.0, dim::kDensity);
+    expect_quantity("1 dyn/cm^2", 0.1, dim::kPressure);
+    // "min" is still the minute, "mbar" the millibar.
+    expect_quantity("2 min", 120.0, dim::kTime);
+    expect_quantity("5 mbar", 500.0, dim::kPressure);
+}
+
 TEST(Units, ListsShareOneUnit) {
     std::string error;
     const auto list = parse_quantity_list("0, 0, -9.81 m/s^2", &error);

@@ -7,6 +7,7 @@
 #include "tests/unit/materials/material_test_support.hpp"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -36,6 +37,87 @@ inline cap::Parameters thesis_cap() {
 
 inline ElasticConstants thesis_elastic() {
     return ElasticConstants::from_bulk_shear(2099.0, 30.62e9, 8.23e9);
+}
+
+/// Thesis section 7.4 wagon sand/gravel: F(0) = k > 0 and gamma = 0, so with MAT_025's X0 = 0
+/// the hardening parameter starts at kappa0 = -R k / (1 + R theta) < 0 and the initial cap is
+/// the single point I1 = 0 (X = L = 0, B = 0).
+inline cap::Parameters wagon_cap() {
+    cap::Parameters p;
+    p.k = 0.00106 * kMPa;
+    p.theta = 0.004;
+    p.gamma = 0.0;
+    p.beta = 1.0 / kMPa;
+    p.D = 7.25 / kMPa;
+    p.W = 2.58;
+    p.X0 = 0.0;
+    p.R = 2.0;
+    return p;
+}
+
+inline constexpr double kKsi = 6.894757293168361e6;
+
+/// A sand of the McCormick Ranch form used by Sandler & Rubin (1979) and Simo et al. (1988),
+/// in ksi (constants as they are commonly quoted, not checked against the papers here): k =
+/// 0.25 ksi, theta = 0, gamma = 0.18 ksi, B1 = 0.67 1/ksi, R = 2.5, D = 0.67 1/ksi, W = 0.066,
+/// K = 66.7 ksi, G = 40 ksi, T = 0. X0 is lowered to 0.1 ksi < X(0) = 0.175 ksi so that
+/// kappa0 < 0 (about -0.057 ksi).
+inline cap::Parameters sand_cap() {
+    cap::Parameters p;
+    p.k = 0.25 * kKsi;
+    p.theta = 0.0;
+    p.gamma = 0.18 * kKsi;
+    p.beta = 0.67 / kKsi;
+    p.D = 0.67 / kKsi;
+    p.W = 0.066;
+    p.X0 = 0.1 * kKsi;
+    p.R = 2.5;
+    return p;
+}
+
+/// The same sand with a tension cutoff T = 0.3 ksi: F(-T) = 0.030 ksi < B(kappa0) = 0.04 ksi
+/// leaves a piece of envelope between the cutoff and the clamped cap's flat top, so that every
+/// region of a clamped centre is reachable.
+inline cap::Parameters cemented_sand_cap() {
+    cap::Parameters p = sand_cap();
+    p.tension = 0.3 * kKsi;
+    return p;
+}
+
+inline ElasticConstants sand_elastic() {
+    return ElasticConstants::from_bulk_shear(1800.0, 66.7 * kKsi, 40.0 * kKsi);
+}
+
+/// A parameter set with its elasticity and a stress scale (about the cap position where the
+/// tests probe it).
+struct CapSet {
+    std::string name;
+    cap::Parameters p;
+    ElasticConstants elastic;
+    double scale = 0.0;
+};
+
+inline std::vector<CapSet> cap_sets() {
+    return {{"thesis", thesis_cap(), thesis_elastic(), 1.0 * kMPa},
+            {"wagon", wagon_cap(), thesis_elastic(), 0.01 * kMPa},
+            {"sand", sand_cap(), sand_elastic(), 1.0 * kKsi},
+            {"cemented_sand", cemented_sand_cap(), sand_elastic(), 1.0 * kKsi}};
+}
+
+/// The cap geometry restated from the MAT_025 definitions (LS-DYNA keyword manual,
+/// *MAT_GEOLOGIC_CAP_MODEL), independently of materials/cap_surfaces: X(kappa) = kappa +
+/// R F(kappa), L(kappa) = max(kappa, 0), half-height B = (X - L) / R.
+inline double x_of(const cap::Parameters& p, double kappa) {
+    return kappa + p.R * (p.k + p.theta * kappa - p.gamma * std::exp(-p.beta * kappa));
+}
+
+inline double l_of(const cap::Parameters& p, double kappa) {
+    return p.semantics == cap::Semantics::mat025 && p.R > 0.0 ? std::max(kappa, 0.0) : kappa;
+}
+
+inline double b_of(const cap::Parameters& p, double kappa) {
+    return p.R > 0.0 ? std::max((x_of(p, kappa) - l_of(p, kappa)) / p.R, 0.0)
+                     : p.k + p.theta * kappa - p.gamma * std::exp(-p.beta * kappa);
 }
 
 /// Failure envelope written from the brief, not from the library: sqrt(J2) = k + theta I1 -

@@ -305,7 +305,7 @@ TEST(GeneralizedCap, VanishingRatioGivesTheFlatCapWithoutNaN) {
     std::vector<double> st = initial_state(m_flat);
     s = drive(m_flat, s, st, hydrostatic_strain(0.05), 3);
     EXPECT_NEAR(st[GeneralizedCap::kCapPosition], invariants(s)[0], 1e-9 * invariants(s)[0]);
-    EXPECT_EQ(st[GeneralizedCap::kCapPosition], st[GeneralizedCap::kCapCenter]);
+    EXPECT_EQ(st[GeneralizedCap::kCapPosition], st[GeneralizedCap::kHardeningParameter]);
 }
 
 TEST(GeneralizedCap, LockedStateStaysFiniteAndElastic) {
@@ -351,7 +351,7 @@ TEST(GeneralizedCap, RandomExtremeIncrementsStayFiniteAndAdmissible) {
         visited.insert(m.update(de, stress, state, &tangent));
         ASSERT_TRUE(stress.allFinite() && tangent.allFinite()) << "increment " << i;
         const auto [i1, q] = invariants(stress);
-        const double l = state[GeneralizedCap::kCapCenter];
+        const double l = state[GeneralizedCap::kHardeningParameter];
         const double b = envelope_of(p, l);
         // Admissible to round-off of the trial stress (up to 3K * 1e-3 ~ 1e8 Pa, 1e-16 each).
         const double slack = 1e-12 * (std::abs(i1) + q) + 1e-9 * p.k;
@@ -370,12 +370,13 @@ TEST(GeneralizedCap, StateNamesAndInitialCap) {
     const std::vector<std::string> names = m.state_names();
     ASSERT_EQ(static_cast<int>(names.size()), m.state_size());
     EXPECT_EQ(names[GeneralizedCap::kCapPosition], "cap_position");
+    EXPECT_EQ(names[GeneralizedCap::kHardeningParameter], "hardening_parameter");
     EXPECT_EQ(names[GeneralizedCap::kPlasticVolumetricStrain], "plastic_volumetric_strain");
     EXPECT_EQ(names[GeneralizedCap::kEquivalentPlasticStrain], "equivalent_plastic_strain");
     const std::vector<double> state = initial_state(m);
-    // Thesis set: k = gamma makes F(0) = 0, so X0 = 0 puts L0 = 0 at the apex.
+    // Thesis set: k = gamma makes F(0) = 0, so X0 = 0 puts kappa0 = L0 = 0 at the apex.
     EXPECT_EQ(state[GeneralizedCap::kCapPosition], 0.0);
-    EXPECT_NEAR(state[GeneralizedCap::kCapCenter], 0.0, 1e-9);
+    EXPECT_NEAR(state[GeneralizedCap::kHardeningParameter], 0.0, 1e-9);
     EXPECT_EQ(state[GeneralizedCap::kPlasticVolumetricStrain], 0.0);
 }
 

@@ -1,7 +1,9 @@
 // Verification of the generalized cap model along laboratory paths with closed-form answers:
 // conventional triaxial compression (peak on the failure envelope), drained simple shear
 // (plateau, associated dilatancy until the cap reaches the stress point), and tension paths
-// (apex and tension cutoff). Parameters: thesis section 7.2 sand unless noted.
+// (apex and tension cutoff). Parameter sets of cap_test_support.hpp: the thesis section 7.2
+// sand (F(0) = 0) and two whose envelope misses the origin (wagon, sand in ksi; MAT_025
+// semantics, kappa0 < 0), unless noted.
 
 #include "tests/unit/materials/cap_test_support.hpp"
 
@@ -11,8 +13,6 @@
 
 namespace grainload::materials::testing {
 namespace {
-
-constexpr double kBulk = 30.62e9;
 
 Voigt6 all_normal(double value) {
     Voigt6 v = Voigt6::Zero();
@@ -31,23 +31,38 @@ Voigt6 consolidate(const GeneralizedCap& m, std::vector<double>& state, double p
     return stress;
 }
 
+/// The triaxial peak sigma_1 at confinement p: (s1 - p) / sqrt(3) = F(s1 + 2p), solved here.
+double expected_peak(const cap::Parameters& p, double pressure, double scale) {
+    return solve_scalar(
+        [&](double s1) {
+            return (s1 - pressure) / std::sqrt(3.0) - envelope_of(p, s1 + 2.0 * pressure);
+        },
+        pressure, scale);
+}
+
 /// Axial compression with the lateral stresses held at -p, on a sample consolidated to
-/// 2p + 1/3 MPa and unloaded to p, so that the cap centre L lies beyond the peak's I1 and the
-/// path meets the failure surface itself; returns the largest axial compression reached and
-/// the last region. (A normally consolidated sample rides the hardening cap and approaches the
-/// envelope only asymptotically, as the cap's flow turns deviatoric near its top.)
-std::pair<double, PlasticRegion> triaxial_peak(const GeneralizedCap& m, double pressure) {
+/// 2p + scale/3 and unloaded to p, so that the cap centre L lies beyond the peak's I1 and the
+/// path meets the failure surface itself; 200 axial steps reach 1.5 times the elastic strain
+/// to the peak. Returns the largest axial compression reached and the last region. (A normally
+/// consolidated sample rides the hardening cap and approaches the envelope only
+/// asymptotically, as the cap's flow turns deviatoric near its top.)
+std::pair<double, PlasticRegion> triaxial_peak(const GeneralizedCap& m, const CapSet& set,
+                                               double pressure) {
     std::vector<double> state = initial_state(m);
-    Voigt6 stress = consolidate(m, state, 2.0 * pressure + kMPa / 3.0);
+    const double top = 2.0 * pressure + set.scale / 3.0;
+    Voigt6 stress = consolidate(m, state, top);
     for (int i = 1; i <= 10; ++i) {
         Voigt6 zero = Voigt6::Zero();
         mixed_step(m, stress, state, zero, {true, true, true, false, false, false},
-                   all_normal(-(2.0 * pressure + kMPa / 3.0) + (pressure + kMPa / 3.0) * i / 10.0));
+                   all_normal(-top + (top - pressure) * i / 10.0));
     }
+    const double young = 9.0 * set.elastic.bulk_modulus * set.elastic.shear_modulus /
+                         (3.0 * set.elastic.bulk_modulus + set.elastic.shear_modulus);
+    const double to_peak = (expected_peak(set.p, pressure, set.scale) - pressure) / young;
     double peak = 0.0;
     PlasticRegion region = PlasticRegion::elastic;
     Voigt6 increment = Voigt6::Zero();
-    increment(0) = -2e-6;
+    increment(0) = -1.5 * to_peak / 200.0;
     for (int i = 0; i < 200; ++i) {
         Voigt6 step = increment;
         region = mixed_step(m, stress, state, step, {false, true, true, false, false, false},
@@ -57,24 +72,27 @@ std::pair<double, PlasticRegion> triaxial_peak(const GeneralizedCap& m, double p
     return {peak, region};
 }
 
+/// Confining pressures per set: from well below to above the envelope's scale.
+std::vector<double> pressures(const CapSet& set) {
+    return {0.01 * set.scale, 0.1 * set.scale, 1.0 * set.scale};
+}
+
 TEST(CapTriaxial, PeakLiesOnTheFailureEnvelopeAtEveryConfiningPressure) {
-    const cap::Parameters p = thesis_cap();
-    const GeneralizedCap m(thesis_elastic(), p);
-    for (double pressure : {0.01 * kMPa, 0.1 * kMPa, 1.0 * kMPa}) {
-        // sigma_2 = sigma_3 = p: I1 = s1 + 2p and sqrt(J2) = (s1 - p) / sqrt(3); the peak
-        // solves sqrt(J2) = k + theta I1 - gamma exp(-B1 I1).
-        const double expected = solve_scalar(
-            [&](double s1) {
-                return (s1 - pressure) / std::sqrt(3.0) - envelope_of(p, s1 + 2.0 * pressure);
-            },
-            pressure, kMPa);
-        const auto [peak, region] = triaxial_peak(m, pressure);
-        EXPECT_TRUE(region == PlasticRegion::failure_surface || region == PlasticRegion::corner);
-        // The return satisfies f1 = 0 to the 1e-14 solver tolerance; the lateral stress
-        // control converges to 1e-11 of the stress; 1e-9 relative is safely above both.
-        EXPECT_NEAR(peak, expected, 1e-9 * expected) << "p = " << pressure;
-        RecordProperty("peak_error_at_kPa_" + std::to_string(static_cast<int>(pressure / 1e3)),
-                       figure(std::abs(peak - expected) / expected));
+    for (const CapSet& set : cap_sets()) {
+        const GeneralizedCap m(set.elastic, set.p);
+        for (double pressure : pressures(set)) {
+            const double expected = expected_peak(set.p, pressure, set.scale);
+            const auto [peak, region] = triaxial_peak(m, set, pressure);
+            EXPECT_TRUE(region == PlasticRegion::failure_surface || region == PlasticRegion::corner)
+                << set.name;
+            // The return satisfies f1 = 0 to the 1e-14 solver tolerance; the lateral stress
+            // control converges to 1e-11 of the stress; 1e-9 relative is safely above both.
+            EXPECT_NEAR(peak, expected, 1e-9 * expected) << set.name << " p = " << pressure;
+            RecordProperty("peak_error_" + set.name + "_at_" +
+                               std::to_string(std::lround(pressure / set.scale * 100)) +
+                               "_percent_of_scale",
+                           figure(std::abs(peak - expected) / expected));
+        }
     }
 }
 
@@ -82,76 +100,84 @@ TEST(CapTriaxial, GammaZeroPeakIsTheDruckerPragerClosedForm) {
     cap::Parameters p = thesis_cap();
     p.gamma = 0.0;
     p.theta = 0.1;
+    const CapSet set{"dp", p, thesis_elastic(), 1.0 * kMPa};
     const GeneralizedCap m(thesis_elastic(), p);
     for (double pressure : {0.05 * kMPa, 0.5 * kMPa}) {
         // (s1 - p) / sqrt(3) = k + theta (s1 + 2p), linear in s1.
         const double r3 = 1.0 / std::sqrt(3.0);
         const double expected = (pressure * r3 + p.k + 2.0 * p.theta * pressure) / (r3 - p.theta);
-        const auto [peak, region] = triaxial_peak(m, pressure);
+        const auto [peak, region] = triaxial_peak(m, set, pressure);
         EXPECT_NEAR(peak, expected, 1e-9 * expected);
     }
 }
 
 /// Drained simple shear: normal stresses held at -p, gamma_xy prescribed.
 TEST(CapShear, PlateauAtTheEnvelopeWithAssociatedDilatancyUntilTheCapArrives) {
-    const cap::Parameters p = thesis_cap();
-    const GeneralizedCap m(thesis_elastic(), p);
-    std::vector<double> state = initial_state(m);
-    Voigt6 stress = consolidate(m, state, 1.0 / 3.0 * kMPa); // X = 1 MPa, L ~ 0.87 MPa
-    const double pressure = 0.2 * kMPa;                      // I1 = 0.6 MPa < L
-    stress =
-        drive(m, stress, state, hydrostatic_strain((0.6 * kMPa - 1.0 * kMPa) / (3.0 * kBulk)), 1);
-    const double i1 = 3.0 * pressure;
-    const double strength = envelope_of(p, i1);
-    const double dilatancy = 3.0 * (p.theta + p.gamma * p.beta * std::exp(-p.beta * i1));
-    Voigt6 increment = Voigt6::Zero();
-    increment(3) = 1e-5;
-    Voigt6 strain = Voigt6::Zero();
-    int failure_steps = 0;
-    int corner_steps = 0;
-    double worst_ratio = 0.0;
-    PlasticRegion previous = PlasticRegion::elastic;
-    for (int i = 0; i < 2000; ++i) {
-        const Voigt6 before = stress;
-        std::vector<double> start = state;
-        Voigt6 step = increment;
-        const PlasticRegion region = mixed_step(
-            m, stress, state, step, {true, true, true, false, false, false}, all_normal(-pressure));
-        // Recover the strain increment the control found: elastic part from the stress change,
-        // the rest plastic. Total volumetric strain change = d(tr eps).
-        const Voigt6 d_eps = strain_for_stress(m, stress - before);
-        const double dv_elastic = d_eps.head<3>().sum();
-        const double dv_plastic = -(state[GeneralizedCap::kPlasticVolumetricStrain] -
-                                    start[GeneralizedCap::kPlasticVolumetricStrain]);
-        if (region == PlasticRegion::failure_surface && previous == region) {
-            // Plateau: sqrt(J2) = F(I1); flow normal to f1 gives d(tr eps^p) / d(gamma^p) =
-            // 3 F'(I1) > 0 (dilation, tension positive), with gamma^p = gamma on the plateau.
-            EXPECT_NEAR(invariants(stress)[1], strength, 1e-9 * strength);
-            EXPECT_LT(std::abs(dv_elastic), 1e-15);
-            worst_ratio =
-                std::max(worst_ratio, std::abs(dv_plastic / 1e-5 - dilatancy) / dilatancy);
-            ++failure_steps;
+    for (const CapSet& set : cap_sets()) {
+        const cap::Parameters& p = set.p;
+        const double bulk = set.elastic.bulk_modulus;
+        const GeneralizedCap m(set.elastic, p);
+        std::vector<double> state = initial_state(m);
+        // Consolidated to X = scale, unloaded to I1 = 0.6 scale < L.
+        Voigt6 stress = consolidate(m, state, set.scale / 3.0);
+        stress = drive(m, stress, state, hydrostatic_strain(-0.4 * set.scale / (3.0 * bulk)), 1);
+        const double pressure = 0.2 * set.scale;
+        const double i1 = 3.0 * pressure;
+        const double strength = envelope_of(p, i1);
+        const double dilatancy = 3.0 * (p.theta + p.gamma * p.beta * std::exp(-p.beta * i1));
+        // The dilatancy that brings the cap from X = scale onto the stress point, X = I1 +
+        // R F(I1), at 3 F' per unit of plastic shear: cover it in about 500 steps.
+        const auto law = [&](double x) { return p.W * (1.0 - std::exp(-p.D * (x - p.X0))); };
+        const double needed = (law(set.scale) - law(i1 + p.R * strength)) / dilatancy;
+        const double dgamma = needed / 500.0;
+        Voigt6 increment = Voigt6::Zero();
+        increment(3) = dgamma;
+        int failure_steps = 0;
+        int corner_steps = 0;
+        double worst_ratio = 0.0;
+        PlasticRegion previous = PlasticRegion::elastic;
+        for (int i = 0; i < 2000 && corner_steps <= 10; ++i) {
+            const Voigt6 before = stress;
+            std::vector<double> start = state;
+            Voigt6 step = increment;
+            const PlasticRegion region =
+                mixed_step(m, stress, state, step, {true, true, true, false, false, false},
+                           all_normal(-pressure));
+            // The elastic part of the volumetric strain from the stress change, the plastic
+            // part recorded by the state.
+            const double dv_elastic = strain_for_stress(m, stress - before).head<3>().sum();
+            const double dv_plastic = -(state[GeneralizedCap::kPlasticVolumetricStrain] -
+                                        start[GeneralizedCap::kPlasticVolumetricStrain]);
+            if (region == PlasticRegion::failure_surface && previous == region) {
+                // Plateau: sqrt(J2) = F(I1); flow normal to f1 gives d(tr eps^p) / d(gamma^p) =
+                // 3 F'(I1) > 0 (dilation, tension positive), with gamma^p = gamma there.
+                EXPECT_NEAR(invariants(stress)[1], strength, 1e-9 * strength) << set.name;
+                EXPECT_LT(std::abs(dv_elastic), 1e-6 * dgamma) << set.name;
+                worst_ratio =
+                    std::max(worst_ratio, std::abs(dv_plastic / dgamma - dilatancy) / dilatancy);
+                ++failure_steps;
+            }
+            if (region == PlasticRegion::corner && previous == region) {
+                EXPECT_NEAR(invariants(stress)[1], strength, 1e-9 * strength) << set.name;
+                EXPECT_LT(std::abs(dv_plastic), 1e-6 * dgamma) << set.name; // the cap stops it
+                ++corner_steps;
+            }
+            previous = region;
         }
-        if (region == PlasticRegion::corner && previous == region) {
-            EXPECT_NEAR(invariants(stress)[1], strength, 1e-9 * strength);
-            EXPECT_LT(std::abs(dv_plastic), 1e-15); // the cap stops the dilatancy
-            ++corner_steps;
-        }
-        previous = region;
-        strain += step;
+        EXPECT_GT(failure_steps, 10) << set.name;
+        EXPECT_GT(corner_steps, 10) << set.name;
+        // 3 F' from the closed form vs the recorded plastic strain: round-off of the strain
+        // increments and the 1e-11 stress control, far below 1e-6.
+        EXPECT_LT(worst_ratio, 1e-6) << set.name;
+        // At the end the cap has contracted onto the stress point: kappa = L = I1 and the
+        // recorded plastic volumetric strain is the law's value at X = I1 + R F(I1).
+        const double x_end = i1 + p.R * strength;
+        EXPECT_NEAR(state[GeneralizedCap::kHardeningParameter], i1, 1e-9 * i1) << set.name;
+        EXPECT_NEAR(state[GeneralizedCap::kPlasticVolumetricStrain],
+                    p.W * (1.0 - std::exp(-p.D * (x_end - p.X0))), 1e-10)
+            << set.name;
+        RecordProperty("dilatancy_ratio_error_" + set.name, figure(worst_ratio));
     }
-    EXPECT_GT(failure_steps, 10);
-    EXPECT_GT(corner_steps, 10);
-    // 3 F' from the closed form vs the recorded plastic strain: round-off of the 1e-9 strain
-    // increments and the 1e-11 stress control, far below 1e-6.
-    EXPECT_LT(worst_ratio, 1e-6);
-    // At the end the cap has contracted onto the stress point: L = I1 and the recorded plastic
-    // volumetric strain is the law's value at X = I1 + R F(I1).
-    const double x_end = i1 + p.R * strength;
-    EXPECT_NEAR(state[GeneralizedCap::kCapCenter], i1, 1e-9 * i1);
-    EXPECT_NEAR(state[GeneralizedCap::kPlasticVolumetricStrain],
-                p.W * (1.0 - std::exp(-p.D * (x_end - p.X0))), 1e-10);
-    RecordProperty("dilatancy_ratio_error", figure(worst_ratio));
 }
 
 TEST(CapTension, ExtensionOfSandEndsAtTheApexWithZeroStress) {
@@ -175,6 +201,9 @@ TEST(CapTension, CutoffPlaneKeepsTheDeviatorAndItsCornerLimitsIt) {
     p.gamma = 0.0;
     p.theta = 0.1;
     p.tension = 0.01 * kMPa; // F(-T) = k - theta T = 0.03758 MPa > 0
+    // F(0) = k > 0: with MAT_025's X0 = 0 the cap would close the domain to q = 0 (tested in
+    // CapTension.ClampedCapLimitsTheCutoffToItsTop); a cap at 1 MPa leaves the cutoff alone.
+    p.X0 = 1.0 * kMPa;
     const GeneralizedCap m(thesis_elastic(), p);
     const double f_cut = p.k - p.theta * p.tension;
     for (double shear : {0.0, 1e-6, 1e-5}) {

@@ -150,7 +150,8 @@ TEST(DruckerPragerHydrostatic, CompressionIsElasticAndExtensionStopsAtTheApex) {
 
 TEST(MatpointCases, ExampleDriversRunAndTriaxialPeakIsMohrCoulomb) {
     const std::string dir = std::string(GRAINLOAD_SOURCE_DIR) + "/cases/matpoint/";
-    for (const char* name : {"triaxial_dp", "hydrostatic_dp", "uniaxial_vm_cycle"}) {
+    for (const char* name : {"triaxial_dp", "hydrostatic_dp", "uniaxial_vm_cycle", "triaxial_cap",
+                             "hydrostatic_cap", "oedometer_cap_wagon"}) {
         EXPECT_EQ(run_material_point(dir + name + ".toml", ::testing::TempDir() + name + ".csv"), 0)
             << name;
     }

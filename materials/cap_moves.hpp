@@ -1,0 +1,61 @@
+#pragma once
+
+#include "materials/cap_return.hpp"
+
+// Moves of the cap's hardening parameter kappa shared by the returns of cap_return.cpp: the
+// shift of X and the plastic volumetric strain of the hardening law for a move dk, the moves of
+// the centre L(kappa) and of the corner c(kappa), the contraction after dilatant flow, and the
+// move that puts the stress at the corner or at the centre. Compression positive.
+namespace grainload::materials::cap {
+
+// Relative tolerance of the scalar solves; far below the 1e-8 step-independence and 1e-5
+// tangent checks, and a few ulps above round-off of the residuals.
+inline constexpr double kTolerance = 1e-14;
+
+/// The cap moved from the state (kappa_n, X_n) by dk: its shift dX, the plastic volumetric
+/// strain dv of the hardening law (4.6.3.4) and d(dv)/d(dk) (4.6.3.5), all written as increments
+/// (expm1) so that moves far below the ulp of kappa stay resolved and a locked state
+/// (exp(-D (X_n - X0)) = 0) gives dv = 0 without a logarithm.
+struct CapMove {
+    double dx = 0.0;
+    double dv = 0.0;
+    double rate = 0.0;
+};
+CapMove move_cap(const Parameters& p, const Hardening& s, double dk);
+
+/// Change of the cap centre L(kappa) = max(kappa, 0) (MAT_025) or kappa when kappa moves by dk,
+/// and dL/dkappa at the end. Where the centre is kappa on both ends the change is dk itself,
+/// so moves far below the ulp of L stay resolved.
+struct Change {
+    double d = 0.0;
+    double slope = 1.0;
+};
+Change centre_change(const Parameters& p, const Hardening& s, double dk);
+/// Change of the corner I1, c(kappa), when kappa moves by dk (dk itself where c = kappa).
+Change corner_change(const Model& m, const Hardening& s, double corner_n, double dk);
+
+/// Hardening after a dilatant flow (volumetric plastic strain dv < 0): the cap contracts by
+/// inverting (4.6.3.4), thesis (4.6.3.8), but kappa not below `floor` (the hardening whose corner
+/// is the stress point, or the lowest one); the new state, the plastic volumetric strain the
+/// hardening law records and whether the floor stopped it.
+struct Contraction {
+    Hardening after;
+    double dv = 0.0;
+    bool floored = false;
+};
+Contraction contract_cap(const Model& m, const Hardening& s, double dv, double floor);
+
+/// Shift dk of kappa that puts the stress at I1 = P(kappa), where P is the corner c(kappa)
+/// (failure-surface side) or the centre L(kappa) (a = 0, the end of the cap's bracket); both
+/// are kappa where the centre is not clamped. The volumetric balance (4.6.3.43) reads
+/// g(dk) = (I1_tr - P_n) - dP(dk) - 3K dv(dk) = 0, decreasing in dk. Infeasible when that point
+/// lies below I1_min.
+struct Shift {
+    bool feasible = false;
+    double dk = 0.0;
+    double slope = -1.0; ///< g'(dk)
+};
+enum class Target { corner, centre };
+Shift shift_to(const Model& m, double i1_trial, const Hardening& s, Target target);
+
+} // namespace grainload::materials::cap
