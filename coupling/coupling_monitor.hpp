@@ -48,8 +48,12 @@ class CouplingMonitor {
     double map_seconds() const { return map_seconds_; }
 
     /// A diagnosis naming the window and the quantity when the relative energy error exceeds
-    /// `limit` (scale as in relative_energy_error).
+    /// `limit` (scale as in relative_energy_error) and its magnitude has grown in each of the
+    /// last kGrowthWindows windows: an unstable exchange pumps energy window after window,
+    /// while the lag's error during a transient (sand landing on a static plate) stops growing
+    /// when the transient ends. A non-finite error is always a diagnosis.
     std::optional<std::string> check(double limit, double scale) const;
+    static constexpr int kGrowthWindows = 10;
 
     /// Appends the windows not yet written to DIRECTORY/coupling.csv (a fresh file at the
     /// first call of a fresh run).
@@ -63,6 +67,7 @@ class CouplingMonitor {
     double sand_work_ = 0.0;
     double shell_work_ = 0.0;
     double largest_work_ = 0.0;
+    int growing_windows_ = 0;
     Vec3 wall_impulse_ = Vec3::Zero();
     Vec3 shell_impulse_ = Vec3::Zero();
     long long subcycles_ = 0;
