@@ -78,6 +78,7 @@ std::vector<double> CouplingMonitor::state() const {
     return {sand_work_,
             shell_work_,
             largest_work_,
+            static_cast<double>(growing_windows_),
             wall_impulse_.x(),
             wall_impulse_.y(),
             wall_impulse_.z(),
