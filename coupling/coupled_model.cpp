@@ -1,5 +1,6 @@
 #include "coupling/coupled_model.hpp"
 
+#include "coupling/window_limits.hpp"
 #include "io/binary_stream.hpp"
 
 #include <Eigen/Geometry>
@@ -46,13 +47,7 @@ CoupledModel::CoupledModel(std::unique_ptr<sph::SphModel> sph, std::unique_ptr<f
             const fem::ShellElement& element = mesh.element(e);
             const auto& n = element.nodes;
             const int corners = element.is_triangle() ? 3 : 4;
-            // Area of the (planar-projected) quadrangle or triangle from its diagonals.
-            const Vec3 diagonals = element.is_triangle()
-                                       ? Vec3((mesh.node(n[1]) - mesh.node(n[0]))
-                                                  .cross(mesh.node(n[2]) - mesh.node(n[0])))
-                                       : Vec3((mesh.node(n[2]) - mesh.node(n[0]))
-                                                  .cross(mesh.node(n[3]) - mesh.node(n[1])));
-            const double area = 0.5 * diagonals.norm();
+            const double area = fem::element_area(mesh, element);
             const Vec3 normal = static_cast<double>(part.side) * fem::element_normal(mesh, element);
             for (int a = 0; a < corners; ++a) {
                 node_area_[static_cast<std::size_t>(n[static_cast<std::size_t>(a)])] +=
@@ -67,6 +62,11 @@ CoupledModel::CoupledModel(std::unique_ptr<sph::SphModel> sph, std::unique_ptr<f
             normal.normalize();
         }
     }
+}
+
+void CoupledModel::set_window_limits(const WindowLimits& limits) {
+    stable_window_max_ = limits.dynamic_max;
+    stable_window_min_ = limits.static_min;
 }
 
 std::vector<io::FieldArray> CoupledModel::interface_fields() const {
@@ -94,7 +94,7 @@ double CoupledModel::stable_time_step() const {
     return window;
 }
 
-int CoupledModel::subcycle(double t, double dt) {
+int CoupledModel::subcycle(double t, double dt, WindowRecord& record) {
     // Uniform sub-steps that land on the window's end; counted anew whenever the CFL limit
     // drops below the step (the sand speeds up within the window).
     const double end = t + dt;
@@ -105,12 +105,16 @@ int CoupledModel::subcycle(double t, double dt) {
         const double remaining = end - time;
         const auto n = static_cast<long long>(std::ceil(remaining / limit * (1.0 - 1e-12)));
         const double step = n <= 1 ? remaining : remaining / static_cast<double>(n);
+        auto start = Clock::now();
         sph_->advance(time, step);
+        record.sph_seconds += seconds_since(start);
+        start = Clock::now();
         for (const CoupledPart& part : parts_) {
             const auto& walls = sph_->solver()->walls();
             part.wall->accumulate(sph_->particles(),
                                   walls[static_cast<std::size_t>(part.wall_index)], step);
         }
+        record.map_seconds += seconds_since(start);
         time = n <= 1 ? end : time + step;
         ++steps;
     }
@@ -152,9 +156,7 @@ void CoupledModel::run_window(double t, double dt, const Eigen::VectorXd& applie
         part.wall->begin_window(fem_->analysis(), t, t + dt);
     }
     record.map_seconds = seconds_since(start);
-    start = Clock::now();
-    record.subcycles = subcycle(t, dt);
-    record.sph_seconds = seconds_since(start);
+    record.subcycles = subcycle(t, dt, record);
     for (const CoupledPart& part : parts_) {
         wall_impulse += part.wall->impulse();
         sand_work += part.wall->work();
@@ -264,6 +266,13 @@ void CoupledModel::append_results(double t, std::vector<io::ResultFigure>& resul
     results.push_back({"coupling_shell_work", monitor_.shell_work(), "J", std::nullopt, ""});
     results.push_back(
         {"coupling_energy_error", monitor_.relative_energy_error(scale), "", std::nullopt, ""});
+    if (fem_->dynamic()) {
+        results.push_back({"coupling_window_limit", stable_window_max_, "s", std::nullopt,
+                           "staggered, dynamic shell: longest stable window (estimate)"});
+    } else {
+        results.push_back({"coupling_window_limit", stable_window_min_, "s", std::nullopt,
+                           "staggered, static shell: shortest stable window (estimate)"});
+    }
     results.push_back({"coupling_largest_subcycles",
                        static_cast<double>(monitor_.largest_subcycles()), "", std::nullopt, ""});
     const Vec3 load = force_sum(load_);

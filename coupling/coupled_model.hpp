@@ -12,6 +12,8 @@
 
 namespace grainload::coupling {
 
+struct WindowLimits;
+
 /// How each window is solved (docs/theory/coupling.md). The case file's defaults are declared
 /// with its keys (coupling_case_reader.hpp, kCouplingKeys).
 struct CouplingSettings {
@@ -69,12 +71,15 @@ class CoupledModel final : public io::Stepper {
     const sph::SphModel& sph() const { return *sph_; }
     const fem::ShellModel& fem() const { return *fem_; }
     const CouplingMonitor& monitor() const { return monitor_; }
+    /// The estimated stable windows of the staggered exchange, reported in summary.json.
+    void set_window_limits(const WindowLimits& limits);
     /// The shell load of the next window (6 per node).
     const Eigen::VectorXd& interface_load() const { return load_; }
 
   private:
-    /// SPH sub-steps from t to t + dt, walls accumulating; returns their number.
-    int subcycle(double t, double dt);
+    /// SPH sub-steps from t to t + dt, walls accumulating (their time booked in `record`);
+    /// returns their number.
+    int subcycle(double t, double dt, WindowRecord& record);
     /// The window's mean load of every coupled part, mapped to the nodes.
     Eigen::VectorXd collect_load(double dt);
     void run_window(double t, double dt, const Eigen::VectorXd& applied);
@@ -96,8 +101,10 @@ class CoupledModel final : public io::Stepper {
     WindowRecord pending_;
     bool restarted_ = false;
     std::size_t windows_before_restart_ = 0;
-    std::vector<double> node_area_; ///< coupled area around each node (0: not coupled)
-    std::vector<Vec3> node_normal_; ///< unit normal towards the sand at each coupled node
+    std::vector<double> node_area_;  ///< coupled area around each node (0: not coupled)
+    std::vector<Vec3> node_normal_;  ///< unit normal towards the sand at each coupled node
+    double stable_window_max_ = 0.0; ///< dynamic shell: the staggered window's upper limit
+    double stable_window_min_ = 0.0; ///< static shell: its lower limit
 };
 
 } // namespace grainload::coupling

@@ -1,5 +1,6 @@
 #include "coupling/coupling_case_reader.hpp"
 
+#include "coupling/window_limits.hpp"
 #include "io/case_table.hpp"
 
 #include <cmath>
@@ -174,8 +175,17 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
                 << sph_step << " s: expected a window of at least one SPH step";
         coupling.fail("window", message.str());
     }
-    return std::make_unique<CoupledModel>(std::move(sph), std::move(fem), std::move(parts),
-                                          settings);
+    const WindowLimits limits = estimate_window_limits(*sph, *fem, parts, settings.relaxation);
+    if (settings.max_iterations <= 1) {
+        if (auto refusal =
+                window_refusal(limits, settings.window, fem->dynamic(), settings.relaxation)) {
+            coupling.fail("window", *refusal);
+        }
+    }
+    auto model =
+        std::make_unique<CoupledModel>(std::move(sph), std::move(fem), std::move(parts), settings);
+    model->set_window_limits(limits);
+    return model;
 }
 
 } // namespace grainload::coupling

@@ -393,6 +393,33 @@ Vec3 ShellAnalysis::director(Index element, int corner) const {
     return rotations_[at(node)] * initial;
 }
 
+Eigen::VectorXd ShellAnalysis::tangent_response(const Eigen::VectorXd& load) {
+    const std::vector<Index>& eq = equation_numbers();
+    SparseSolver::Matrix k;
+    Eigen::VectorXd internal;
+    set_assembly_load_factor(load_factor_);
+    assemble(&k, internal);
+    for (auto& e : elements_) {
+        e.revert();
+    }
+    Eigen::VectorXd rhs(free_count_);
+    for (std::size_t d = 0; d < eq.size(); ++d) {
+        if (eq[d] >= 0) {
+            rhs(eq[d]) = load(static_cast<Eigen::Index>(d));
+        }
+    }
+    SparseSolver solver;
+    solver.factorize(k, tangent_symmetric());
+    const Eigen::VectorXd x = solver.solve(rhs);
+    Eigen::VectorXd response = Eigen::VectorXd::Zero(load.size());
+    for (std::size_t d = 0; d < eq.size(); ++d) {
+        if (eq[d] >= 0) {
+            response(static_cast<Eigen::Index>(d)) = x(eq[d]);
+        }
+    }
+    return response;
+}
+
 Eigen::VectorXd ShellAnalysis::reactions() {
     set_assembly_load_factor(load_factor_);
     Eigen::VectorXd internal;

@@ -136,6 +136,10 @@ class ShellAnalysis {
         return initial_directors_[static_cast<std::size_t>(element)]
                                  [static_cast<std::size_t>(corner)];
     }
+    /// The displacements (all DOFs, zero where constrained) that `load` (all DOFs) would add
+    /// with the tangent of the current state: one linear solve, the state left as it is (the
+    /// coupling's estimate of the shell's compliance).
+    Eigen::VectorXd tangent_response(const Eigen::VectorXd& load);
     /// Internal minus applied force at every DOF (the reactions at constrained DOFs).
     Eigen::VectorXd reactions();
     Index free_dof_count() const { return free_count_; }

@@ -293,6 +293,15 @@ void read_shell_loads(const io::CaseTable& shell, const Vec3& case_gravity,
     analysis.use_part(-1);
 }
 
+std::vector<ShellReaction> read_shell_reactions(const io::CaseTable& shell, const ShellMesh& mesh,
+                                                const PartScope& part) {
+    std::vector<ShellReaction> reactions;
+    for (const io::CaseTable& table : shell.array_of_tables("reaction")) {
+        reactions.push_back({table.string("name"), node_set(table, mesh, part)});
+    }
+    return reactions;
+}
+
 std::vector<ShellMonitor> read_shell_monitors(const io::CaseTable& shell, const ShellMesh& mesh) {
     std::vector<ShellMonitor> monitors;
     for (const io::CaseTable& table : shell.array_of_tables("monitor")) {

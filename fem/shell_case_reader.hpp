@@ -25,6 +25,13 @@ struct ShellMonitor {
     std::string source;
 };
 
+/// A support reaction the case asks to report: the total force of the supports on the nodes of
+/// a set (reaction_force summed), e.g. the vertical load a silo wall carries at its base.
+struct ShellReaction {
+    std::string name;
+    std::vector<Index> nodes;
+};
+
 /// Mesh of one [[fem.shell]] table from its `generator` keys (see docs/user-guide/fem.md).
 ShellMesh read_shell_mesh(const io::CaseTable& shell);
 
@@ -55,6 +62,9 @@ void read_shell_loads(const io::CaseTable& shell, const Vec3& case_gravity,
                       const HistoryNames& histories, const PartScope& part,
                       ShellAnalysis& analysis);
 std::vector<ShellMonitor> read_shell_monitors(const io::CaseTable& shell, const ShellMesh& mesh);
+/// Its [[fem.shell.reaction]] tables: `name` and `node_set` (the part's sets first).
+std::vector<ShellReaction> read_shell_reactions(const io::CaseTable& shell, const ShellMesh& mesh,
+                                                const PartScope& part);
 /// "ux" .. "rz" -> 0 .. 5; a CaseError names the key otherwise.
 int read_dof(const io::CaseTable& table, std::string_view key, const std::string& name);
 

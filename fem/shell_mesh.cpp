@@ -120,6 +120,15 @@ Index ShellMesh::nearest_node(const Vec3& x) const {
     return best;
 }
 
+double element_area(const ShellMesh& mesh, const ShellElement& element) {
+    const auto& n = element.nodes;
+    const Vec3 c =
+        element.is_triangle()
+            ? Vec3((mesh.node(n[1]) - mesh.node(n[0])).cross(mesh.node(n[2]) - mesh.node(n[0])))
+            : Vec3((mesh.node(n[2]) - mesh.node(n[0])).cross(mesh.node(n[3]) - mesh.node(n[1])));
+    return 0.5 * c.norm();
+}
+
 Vec3 element_normal(const ShellMesh& mesh, const ShellElement& element) {
     const auto& n = element.nodes;
     const Vec3 d1 = mesh.node(n[2]) - mesh.node(n[0]);

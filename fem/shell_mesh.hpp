@@ -91,6 +91,9 @@ class ShellMesh {
     std::map<std::string, std::vector<Index>> element_sets_;
 };
 
+/// Area of an element from its diagonals (exact for a planar quadrangle or a triangle).
+double element_area(const ShellMesh& mesh, const ShellElement& element);
+
 /// Unit normal of an element from its diagonals (zero vector for a degenerate element).
 Vec3 element_normal(const ShellMesh& mesh, const ShellElement& element);
 

@@ -81,6 +81,10 @@ std::unique_ptr<ShellModel> ShellModel::from_case(const io::CaseTable& root,
         for (ShellMonitor& monitor : read_shell_monitors(shells[k], model->analysis_->mesh())) {
             model->monitors_.push_back(std::move(monitor));
         }
+        for (ShellReaction& reaction :
+             read_shell_reactions(shells[k], model->analysis_->mesh(), scope)) {
+            model->support_reactions_.push_back(std::move(reaction));
+        }
     }
     model->reactions_ = Eigen::VectorXd::Zero(6 * model->analysis_->mesh().node_count());
     if (model->dynamic_) {
@@ -302,6 +306,16 @@ void ShellModel::append_element_fields(io::Block& block, const std::vector<Index
 }
 
 void ShellModel::append_results(double, std::vector<io::ResultFigure>& results) const {
+    for (const ShellReaction& r : support_reactions_) {
+        Vec3 sum = Vec3::Zero();
+        for (const Index n : r.nodes) {
+            sum += reactions_.segment<3>(6 * n);
+        }
+        for (int a = 0; a < 3; ++a) {
+            results.push_back({r.name + "_" + std::string(1, static_cast<char>('x' + a)), sum[a],
+                               "N", std::nullopt, ""});
+        }
+    }
     for (const ShellMonitor& m : monitors_) {
         const double value = m.dof < 3 ? analysis_->displacement(m.node)(m.dof)
                                        : analysis_->rotation(m.node)(m.dof - 3);

@@ -78,6 +78,7 @@ class ShellModel final : public io::Stepper {
     std::vector<std::string> part_names_;
     std::unique_ptr<ShellAnalysis> analysis_;
     std::vector<ShellMonitor> monitors_;
+    std::vector<ShellReaction> support_reactions_;
     NewtonSettings settings_;
     double load_time_ = 1.0;
     bool dynamic_ = false;

@@ -32,6 +32,20 @@ SparseSolver::SparseSolver() : impl_(std::make_unique<Impl>()) {
 
 SparseSolver::~SparseSolver() = default;
 
+namespace {
+
+// Process-wide sums; the FEM runs on one thread (its solves are not parallel to each other).
+SparseSolver::Totals& running_totals() {
+    static SparseSolver::Totals totals;
+    return totals;
+}
+
+} // namespace
+
+SparseSolver::Totals SparseSolver::totals() {
+    return running_totals();
+}
+
 void SparseSolver::factorize(const Matrix& k, bool symmetric) {
     const bool same_pattern = k.rows() == impl_->rows && k.nonZeros() == impl_->nonzeros;
     analysis_seconds_ = 0.0;
@@ -42,6 +56,7 @@ void SparseSolver::factorize(const Matrix& k, bool symmetric) {
         impl_->rows = k.rows();
         impl_->nonzeros = k.nonZeros();
         analysis_seconds_ = seconds_since(start);
+        running_totals().analysis += analysis_seconds_;
     }
     const auto start = std::chrono::steady_clock::now();
     if (symmetric) {
@@ -50,6 +65,7 @@ void SparseSolver::factorize(const Matrix& k, bool symmetric) {
     if (symmetric && impl_->cholesky.info() == Eigen::Success) {
         method_ = Method::cholmod_supernodal_llt;
         factorization_seconds_ = seconds_since(start);
+        running_totals().factorization += factorization_seconds_;
         return;
     }
     if (!impl_->lu_analysed) {
@@ -58,6 +74,7 @@ void SparseSolver::factorize(const Matrix& k, bool symmetric) {
     }
     impl_->lu.factorize(k);
     factorization_seconds_ = seconds_since(start);
+    running_totals().factorization += factorization_seconds_;
     if (impl_->lu.info() != Eigen::Success) {
         method_ = Method::none;
         throw std::runtime_error("stiffness matrix is singular (CHOLMOD and UMFPACK both failed); "
@@ -67,15 +84,20 @@ void SparseSolver::factorize(const Matrix& k, bool symmetric) {
 }
 
 Eigen::VectorXd SparseSolver::solve(const Eigen::VectorXd& rhs) const {
+    const auto start = std::chrono::steady_clock::now();
+    Eigen::VectorXd x;
     switch (method_) {
     case Method::cholmod_supernodal_llt:
-        return impl_->cholesky.solve(rhs);
-    case Method::umfpack_lu:
-        return impl_->lu.solve(rhs);
-    case Method::none:
+        x = impl_->cholesky.solve(rhs);
         break;
+    case Method::umfpack_lu:
+        x = impl_->lu.solve(rhs);
+        break;
+    case Method::none:
+        throw std::logic_error("SparseSolver::solve called before a successful factorize");
     }
-    throw std::logic_error("SparseSolver::solve called before a successful factorize");
+    running_totals().solve += seconds_since(start);
+    return x;
 }
 
 double SparseSolver::cholesky_flops() const {

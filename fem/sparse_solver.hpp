@@ -31,6 +31,15 @@ class SparseSolver {
     /// Seconds spent in the last symbolic analysis and numeric factorisation.
     double analysis_seconds() const { return analysis_seconds_; }
     double factorization_seconds() const { return factorization_seconds_; }
+    /// Seconds spent by every SparseSolver of the process so far, by phase: symbolic analysis,
+    /// numeric factorisation, forward and back substitution (for the cost split of a coupled
+    /// run: bench/coupling_cost).
+    struct Totals {
+        double analysis = 0.0;
+        double factorization = 0.0;
+        double solve = 0.0;
+    };
+    static Totals totals();
     /// CHOLMOD's floating-point operation count of its last symbolic analysis (cholmod_common
     /// `fl`), to turn the factorisation time into a rate; 0 before any analysis.
     double cholesky_flops() const;
