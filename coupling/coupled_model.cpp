@@ -252,7 +252,28 @@ std::optional<std::string> CoupledModel::diagnose() const {
 
 void CoupledModel::append_blocks(io::Frame& frame) const {
     sph_->append_blocks(frame);
-    fem_->append_blocks(frame, interface_fields(), {});
+    // The same arrays per element: the mean of its corners', for cell-based filters.
+    const std::vector<io::FieldArray> nodes = interface_fields();
+    std::vector<io::FieldArray> elements;
+    const fem::ShellMesh& mesh = fem_->analysis().mesh();
+    for (const io::FieldArray& field : nodes) {
+        io::FieldArray cell{field.name, field.components, {}};
+        const auto c = static_cast<std::size_t>(field.components);
+        for (const fem::ShellElement& element : mesh.elements()) {
+            const int corners = element.is_triangle() ? 3 : 4;
+            for (std::size_t k = 0; k < c; ++k) {
+                double sum = 0.0;
+                for (int a = 0; a < corners; ++a) {
+                    sum += field.values[c * static_cast<std::size_t>(
+                                                element.nodes[static_cast<std::size_t>(a)]) +
+                                        k];
+                }
+                cell.values.push_back(sum / corners);
+            }
+        }
+        elements.push_back(std::move(cell));
+    }
+    fem_->append_blocks(frame, nodes, elements);
 }
 
 void CoupledModel::append_results(double t, std::vector<io::ResultFigure>& results) const {
