@@ -12,33 +12,6 @@ namespace {
 
 namespace dim = dimension;
 
-struct ImperialUnit {
-    std::string_view symbol;
-    double factor;
-    Dimension dimension;
-};
-
-// Exact by definition: international inch and foot (1959), avoirdupois pound, standard gravity
-// 9.80665 m/s^2 for the pound-force; the slug is 1 lbf s^2/ft.
-constexpr double kPound = 0.45359237;
-constexpr double kPoundForce = kPound * 9.80665;
-constexpr std::array kImperial{
-    ImperialUnit{"in", 0.0254, dim::kLength},
-    ImperialUnit{"ft", 0.3048, dim::kLength},
-    ImperialUnit{"lb", kPound, dim::kMass},
-    ImperialUnit{"lbf", kPoundForce, dim::kForce},
-    ImperialUnit{"slug", kPoundForce / 0.3048, dim::kMass},
-};
-
-std::optional<Quantity> unit_of(std::string_view symbol, std::string* error) {
-    for (const auto& unit : kImperial) {
-        if (unit.symbol == symbol) {
-            return Quantity{unit.factor, unit.dimension};
-        }
-    }
-    return parse_unit(symbol, error);
-}
-
 std::vector<std::string_view> split(std::string_view text) {
     std::vector<std::string_view> parts;
     std::size_t start = 0;
@@ -70,7 +43,7 @@ std::optional<KeywordUnits> parse_keyword_units(std::string_view text, std::stri
     std::array<Quantity, 3> units;
     for (std::size_t k = 0; k < 3; ++k) {
         std::string why;
-        const auto unit = parts[k].empty() ? std::nullopt : unit_of(parts[k], &why);
+        const auto unit = parts[k].empty() ? std::nullopt : parse_unit(parts[k], &why);
         if (!unit) {
             *error = expected + ": \"" + std::string(parts[k]) + "\" is not a unit" +
                      (why.empty() ? "" : " (" + why + ")");

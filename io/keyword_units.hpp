@@ -25,8 +25,8 @@ struct KeywordUnits {
 /// "mm-g-ms" (N, MPa), "cm-g-us" (Mbar). The middle unit may instead be a force, and the mass
 /// unit is then the one that force makes consistent, force time^2 / length: "in-lbf-s" (the
 /// "slinch", lbf s^2/in), "ft-lbf-s" (the slug), "mm-N-s" (= "mm-t-s"). Units are those of
-/// case files (io/units.hpp) plus in, ft, lbf, lb and slug. Returns std::nullopt and sets
-/// `error` when the text is not such a system.
+/// case files (io/units.hpp, which include in, ft, lb, lbf and slug). Returns std::nullopt and
+/// sets `error` when the text is not such a system.
 std::optional<KeywordUnits> parse_keyword_units(std::string_view text, std::string* error);
 
 } // namespace grainload::io

@@ -322,6 +322,9 @@ TEST(KeywordUnits, ConsistentSystemsConvertToSi) {
     expect_relative(units("in-lbf-s").to_si(dimension::kPressure),
                     4.4482216152605 / 0.0254 / 0.0254);
     EXPECT_NEAR(units("ft-lbf-s").mass, 14.5939029, 1e-7);
+    // The kip (1000 lbf) of the case files' unit table serves decks too: ksi stresses.
+    expect_relative(units("in-kip-s").to_si(dimension::kPressure),
+                    1e3 * 4.4482216152605 / 0.0254 / 0.0254);
     std::string error;
     EXPECT_FALSE(parse_keyword_units("mm-t", &error));
     EXPECT_NE(error.find("LENGTH-MASS-TIME"), std::string::npos);
