@@ -14,7 +14,26 @@ ElasticConstants ElasticConstants::from_bulk_shear(double density, double bulk, 
     return {density, bulk, shear};
 }
 
-ElasticConstants ElasticConstants::from_case(const io::CaseTable& table) {
+double ElasticConstants::read_stiffness_scale(const io::CaseTable& table) {
+    const double s = table.number_or("stiffness_scale", 1.0);
+    if (!(s > 0.0) || !std::isfinite(s)) {
+        table.fail("stiffness_scale", "expected a factor > 0 on the bulk and shear moduli");
+    }
+    return s;
+}
+
+ElasticConstants ElasticConstants::scaled(double s) const {
+    ElasticConstants out = *this;
+    out.bulk_modulus *= s;
+    out.shear_modulus *= s;
+    out.stiffness_scale *= s;
+    return out;
+}
+
+namespace {
+
+/// Density and the elastic pair as the table gives them, before stiffness_scale.
+ElasticConstants read_moduli(const io::CaseTable& table) {
     namespace dim = io::dimension;
     const double density = table.positive_quantity("density", dim::kDensity);
     const bool by_young = table.has("youngs_modulus") || table.has("poisson_ratio");
@@ -29,10 +48,17 @@ ElasticConstants ElasticConstants::from_case(const io::CaseTable& table) {
         if (!(poisson > -1.0 && poisson < 0.5)) {
             table.fail("poisson_ratio", "expected a Poisson ratio in (-1, 0.5)");
         }
-        return from_young(density, young, poisson);
+        return ElasticConstants::from_young(density, young, poisson);
     }
-    return from_bulk_shear(density, table.positive_quantity("bulk_modulus", dim::kPressure),
-                           table.positive_quantity("shear_modulus", dim::kPressure));
+    return ElasticConstants::from_bulk_shear(
+        density, table.positive_quantity("bulk_modulus", dim::kPressure),
+        table.positive_quantity("shear_modulus", dim::kPressure));
+}
+
+} // namespace
+
+ElasticConstants ElasticConstants::from_case(const io::CaseTable& table) {
+    return read_moduli(table).scaled(read_stiffness_scale(table));
 }
 
 double ElasticConstants::young() const {
@@ -46,6 +72,10 @@ double ElasticConstants::poisson() const {
 
 double ElasticConstants::p_wave_speed() const {
     return std::sqrt((bulk_modulus + 4.0 * shear_modulus / 3.0) / density);
+}
+
+double ElasticConstants::unscaled_p_wave_speed() const {
+    return p_wave_speed() / std::sqrt(stiffness_scale);
 }
 
 Matrix6 ElasticConstants::stiffness() const {

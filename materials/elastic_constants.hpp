@@ -13,18 +13,30 @@ struct ElasticConstants {
     double density = 0.0;
     double bulk_modulus = 0.0;
     double shear_modulus = 0.0;
+    /// s of the case key `stiffness_scale`: bulk_modulus and shear_modulus above are the
+    /// material's times s (a softer material for a longer explicit time step).
+    double stiffness_scale = 1.0;
 
     static ElasticConstants from_young(double density, double young, double poisson);
     static ElasticConstants from_bulk_shear(double density, double bulk, double shear);
     /// Reads density and either (youngs_modulus, poisson_ratio) or (bulk_modulus,
     /// shear_modulus) from a [[material]] table; refuses both or neither.
+    /// Then multiplies K and G by the table's stiffness_scale (default 1).
     static ElasticConstants from_case(const io::CaseTable& table);
+    /// The optional [[material]] key `stiffness_scale`, a number > 0 (default 1).
+    static double read_stiffness_scale(const io::CaseTable& table);
+    /// The same material with K and G multiplied by s (on top of any earlier scale).
+    ElasticConstants scaled(double s) const;
 
     double young() const;
     double poisson() const;
     double lame_lambda() const { return bulk_modulus - 2.0 * shear_modulus / 3.0; }
     /// P-wave speed sqrt((K + 4G/3)/rho), used for the CFL condition (thesis section 4.7).
     double p_wave_speed() const;
+    /// The P-wave speed of the material before stiffness_scale, p_wave_speed() / sqrt(s): the
+    /// sound speed of SPH's artificial viscosity, so that alpha c stays the real material's
+    /// when the stiffness is scaled (docs/validation/column_collapse.md, "alpha c, not K").
+    double unscaled_p_wave_speed() const;
     /// Isotropic stiffness in the Voigt convention of io/types.hpp (engineering shear strains).
     Matrix6 stiffness() const;
 };

@@ -42,7 +42,9 @@ void compute_velocity_gradient(ParticleSet& particles, const NeighbourList& neig
 struct ForceInputs {
     std::vector<Mat3> stress_over_rho2;  ///< sigma_i / rho_i^2, times C_i when corrected
     std::vector<Mat3> artificial_stress; ///< R_i (zero when epsilon = 0)
-    std::vector<double> sound_speed;     ///< c_i of the particle's material
+    /// c_i of the artificial viscosity: the P-wave speed of the particle's material before its
+    /// stiffness_scale (materials/elastic_constants.hpp), so that alpha c does not follow it.
+    std::vector<double> sound_speed;
     /// C_i = M_i^-T of compute_velocity_gradient; empty without the gradient correction.
     std::vector<Mat3> gradient_correction;
 };

@@ -26,14 +26,18 @@ SphSolver::SphSolver(ParticleSet particles, MaterialList materials, SphOptions o
     const Index n = particles_.size();
     is_wall_.resize(static_cast<std::size_t>(n));
     force_inputs_.sound_speed.resize(static_cast<std::size_t>(n));
+    wave_speed_.resize(static_cast<std::size_t>(n));
     for (Index i = 0; i < n; ++i) {
         is_wall_[i] = particles_.is_wall(i) ? 1 : 0;
         const int m = particles_.material_id[i];
         if (!is_wall_[i] && (m < 0 || m >= static_cast<int>(materials_.size()))) {
             throw std::invalid_argument("SphSolver: particle has no material");
         }
-        force_inputs_.sound_speed[i] =
-            is_wall_[i] ? 0.0 : materials_[static_cast<std::size_t>(m)]->elastic().p_wave_speed();
+        if (!is_wall_[i]) {
+            const auto& elastic = materials_[static_cast<std::size_t>(m)]->elastic();
+            wave_speed_[i] = elastic.p_wave_speed();
+            force_inputs_.sound_speed[i] = elastic.unscaled_p_wave_speed();
+        }
     }
     if (options_.formulation == Formulation::total_lagrangian) {
         total_lagrangian_.emplace(particles_, kernel_);
@@ -47,7 +51,7 @@ double SphSolver::stable_time_step() const {
     const Index n = particles_.size();
 #pragma omp parallel for reduction(max : fastest) schedule(static)
     for (Index i = 0; i < n; ++i) {
-        fastest = std::max(fastest, force_inputs_.sound_speed[i] + particles_.velocity[i].norm());
+        fastest = std::max(fastest, wave_speed_[i] + particles_.velocity[i].norm());
     }
     if (fastest == 0.0) {
         return std::numeric_limits<double>::infinity();
@@ -289,10 +293,11 @@ std::size_t SphSolver::bytes() const {
         held(p.stress) + held(p.strain_rate) + held(p.spin) + held(p.plastic_strain) +
         held(p.plastic_region) + held(p.body_id) + held(p.material_id) + held(p.wall_id) +
         held(p.clamped) + held(p.state_offset) + held(p.state);
-    const std::size_t work =
-        held(is_wall_) + held(force_inputs_.stress_over_rho2) +
-        held(force_inputs_.artificial_stress) + held(force_inputs_.sound_speed) +
-        held(force_inputs_.gradient_correction) + held(velocity_gradient_) + held(heating_rate_);
+    const std::size_t work = held(is_wall_) + held(force_inputs_.stress_over_rho2) +
+                             held(force_inputs_.artificial_stress) +
+                             held(force_inputs_.sound_speed) + held(wave_speed_) +
+                             held(force_inputs_.gradient_correction) + held(velocity_gradient_) +
+                             held(heating_rate_);
     return particle_fields + work + neighbours_.bytes() +
            (total_lagrangian_ ? total_lagrangian_->bytes() : 0);
 }

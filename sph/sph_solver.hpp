@@ -6,9 +6,9 @@
 #include "sph/neighbour_list.hpp"
 #include "sph/particle_set.hpp"
 #include "sph/rates.hpp"
-#include "sph/wall.hpp"
 #include "sph/sph_options.hpp"
 #include "sph/total_lagrangian.hpp"
+#include "sph/wall.hpp"
 #include "sph/wall_contact.hpp"
 
 #include <optional>
@@ -66,6 +66,8 @@ class SphSolver {
     const SphOptions& options() const { return options_; }
     const SmoothingKernel& kernel() const { return kernel_; }
     const NeighbourList& neighbours() const { return neighbours_; }
+    /// The per-particle inputs of the force pass (sound speeds of the viscosity, ...).
+    const ForceInputs& force_inputs() const { return force_inputs_; }
     std::vector<Wall>& walls() { return walls_; }
     const std::vector<Wall>& walls() const { return walls_; }
     const MaterialList& materials() const { return materials_; }
@@ -112,6 +114,8 @@ class SphSolver {
     std::optional<TotalLagrangian> total_lagrangian_;
     std::vector<char> is_wall_;
     ForceInputs force_inputs_;
+    /// P-wave speed of each particle's (scaled) material, for the CFL step; 0 for walls.
+    std::vector<double> wave_speed_;
     std::vector<Mat3> velocity_gradient_;
     std::vector<double> heating_rate_;
     bool forces_valid_ = false;

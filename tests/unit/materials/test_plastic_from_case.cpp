@@ -1,6 +1,7 @@
 #include "io/case_error.hpp"
 #include "io/case_table.hpp"
 #include "materials/drucker_prager.hpp"
+#include "materials/generalized_cap.hpp"
 #include "materials/material_factory.hpp"
 #include "materials/von_mises.hpp"
 
@@ -77,6 +78,41 @@ TEST(PlasticFromCase, DruckerPragerRefusesMixedFormsAndCutoffBeyondApex) {
     EXPECT_THROW(build(base + "friction_angle = \"30 deg\"\ncohesion = \"1 kPa\"\n"
                               "dilatancy_angle = \"0 deg\"\ncone_fit = \"outer\"\n"),
                  io::CaseError);
+}
+
+TEST(PlasticFromCase, StiffnessScaleScalesTheModuliAndNothingElse) {
+    // stiffness_scale s: K and G times s, density and plastic parameters unchanged; the wave
+    // speed falls by sqrt(s) and unscaled_p_wave_speed() gives back the real material's.
+    const std::string cap =
+        "model = \"generalized_cap\"\ndensity = \"2099 kg/m^3\"\n"
+        "bulk_modulus = \"30.62 GPa\"\nshear_modulus = \"8.23 GPa\"\n"
+        "cap_k = \"0.03858 MPa\"\ncap_theta = 0.03\ncap_gamma = \"0.03858 MPa\"\n"
+        "cap_beta = \"9.0 1/MPa\"\ncap_D = \"7.25 1/MPa\"\ncap_W = 0.18\n"
+        "cap_X0 = \"0 MPa\"\ncap_R = 2.0\n";
+    const auto full = build(cap);
+    const auto soft = build(cap + "stiffness_scale = 0.001\n");
+    EXPECT_EQ(soft->elastic().bulk_modulus, 0.001 * full->elastic().bulk_modulus);
+    EXPECT_EQ(soft->elastic().shear_modulus, 0.001 * full->elastic().shear_modulus);
+    EXPECT_EQ(soft->density(), full->density());
+    EXPECT_EQ(full->elastic().stiffness_scale, 1.0);
+    // sqrt(0.001) in the wave speed; round-off of the square roots only.
+    constexpr double kRoundOff = 1e-14;
+    const double c = full->elastic().p_wave_speed();
+    EXPECT_NEAR(soft->elastic().p_wave_speed(), std::sqrt(0.001) * c, kRoundOff * c);
+    EXPECT_NEAR(soft->elastic().unscaled_p_wave_speed(), c, kRoundOff * c);
+    EXPECT_EQ(full->elastic().unscaled_p_wave_speed(), c);
+    const auto& a = dynamic_cast<const GeneralizedCap&>(*full).parameters();
+    const auto& b = dynamic_cast<const GeneralizedCap&>(*soft).parameters();
+    EXPECT_EQ(a.k, b.k);
+    EXPECT_EQ(a.X0, b.X0);
+    EXPECT_EQ(a.D, b.D);
+    // The same key scales any model's elastic part; zero and negative factors are refused.
+    const auto elastic = build("model = \"linear_elastic\"\n" + std::string(kSandElastic) +
+                               "stiffness_scale = 0.1\n");
+    EXPECT_DOUBLE_EQ(elastic->elastic().bulk_modulus, 3e6);
+    EXPECT_THROW(build(cap + "stiffness_scale = 0\n"), io::CaseError);
+    EXPECT_THROW(build(cap + "stiffness_scale = -1\n"), io::CaseError);
+    EXPECT_THROW(build(cap + "stiffness_scale = \"0.1 MPa\"\n"), io::CaseError);
 }
 
 } // namespace

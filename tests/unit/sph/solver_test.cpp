@@ -2,6 +2,7 @@
 #include "sph/lattice_fill.hpp"
 #include "sph/sph_solver.hpp"
 
+#include <cmath>
 #include <gtest/gtest.h>
 #include <string>
 
@@ -59,6 +60,40 @@ TEST(SphSolver, UnstressedBodyFallsFreelyUnderGravity) {
         }
         const Vec3 p = solver.linear_momentum();
         EXPECT_NEAR(p.x(), 0.0, 1e-12);
+    }
+}
+
+TEST(SphSolver, StiffnessScaleShortensTheCflLimitButKeepsTheViscositySoundSpeed) {
+    // stiffness_scale s (materials/elastic_constants.hpp): K and G times s, so the P-wave speed
+    // and the CFL step's 1/c change by sqrt(s); the artificial viscosity's c stays the unscaled
+    // material's, so that alpha c (and with it the viscosity alpha c h) does not change.
+    constexpr double kScale = 1e-3;
+    const auto full = materials::ElasticConstants::from_young(2700.0, 70e9, 0.3);
+    const materials::LinearElastic soft(full.scaled(kScale));
+    EXPECT_DOUBLE_EQ(soft.elastic().bulk_modulus, kScale * full.bulk_modulus);
+    EXPECT_DOUBLE_EQ(soft.elastic().shear_modulus, kScale * full.shear_modulus);
+    ParticleSet particles;
+    LatticeBody body;
+    body.upper = Vec3(0.05, 0.05, 0.05);
+    body.spacing = 0.01;
+    body.density = full.density;
+    fill_box_lattice(particles, body, 3);
+    SphOptions options;
+    options.smoothing_length = 0.013;
+    options.particle_spacing = 0.01;
+    options.viscosity = {1.0, 1.0};
+    const SphSolver scaled(std::move(particles), {&soft}, options);
+    const SphSolver reference = make_solver(3, Vec3::Zero());
+    // Both at rest: dt = 0.3 h / c, and c scales with sqrt(s). Round-off only (a few ulp).
+    constexpr double kRoundOff = 1e-12;
+    EXPECT_NEAR(scaled.stable_time_step() * std::sqrt(kScale), reference.stable_time_step(),
+                kRoundOff * reference.stable_time_step());
+    for (const double c : scaled.force_inputs().sound_speed) {
+        EXPECT_NEAR(c, full.p_wave_speed(), kRoundOff * full.p_wave_speed());
+    }
+    // The reference material (stiffness_scale 1) uses its own wave speed for both.
+    for (const double c : reference.force_inputs().sound_speed) {
+        EXPECT_EQ(c, full.p_wave_speed());
     }
 }
 
