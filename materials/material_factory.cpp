@@ -4,11 +4,15 @@
 #include "materials/drucker_prager.hpp"
 #include "materials/generalized_cap.hpp"
 #include "materials/linear_elastic.hpp"
+#include "materials/lsdyna_material.hpp"
 #include "materials/von_mises.hpp"
 
 namespace grainload::materials {
 
 std::unique_ptr<Material> make_material(const io::CaseTable& table) {
+    if (table.has("from_lsdyna")) {
+        return material_from_lsdyna(table);
+    }
     const std::string model =
         table.choice("model", {"linear_elastic", "von_mises", "drucker_prager", "generalized_cap"});
     if (model == "linear_elastic") {
