@@ -12,6 +12,9 @@ const char* usage() {
            "                          [--restart DIR/checkpoint.bin]\n"
            "  grainload check CASE.toml [--set key=value ...]\n"
            "  grainload matpoint DRIVER.toml --out FILE.csv\n"
+           "  grainload trade CASE.toml --vary KEY=V1,V2,... [--link KEY=W1,W2,...] --out DIR\n"
+           "                  [--figures NAME,...] [--budget 2%] [--jobs N] [--threads N]\n"
+           "                  [--reference KEY=V] [--set key=value ...]\n"
            "  grainload --version\n"
            "\n"
            "  --out DIR        output directory (default out/<case name>)\n"
@@ -40,7 +43,7 @@ CommandLine::Command command_of(std::string_view word) {
         return CommandLine::Command::help;
     }
     throw io::CaseError("command line: unknown command '" + std::string(word) +
-                        "', expected run, check, matpoint or --version\n" + usage());
+                        "', expected run, check, matpoint, trade or --version\n" + usage());
 }
 
 } // namespace

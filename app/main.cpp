@@ -1,15 +1,21 @@
 #include "app/command_line.hpp"
 #include "app/run_driver.hpp"
+#include "app/trade_command.hpp"
 #include "io/case_error.hpp"
 #include "io/version.hpp"
 #include "materials/material_point_driver.hpp"
 
 #include <exception>
 #include <iostream>
+#include <string_view>
 
 int main(int argc, char** argv) {
     using namespace grainload;
     try {
+        // `trade` has options of its own (app/trade_command.hpp).
+        if (argc >= 2 && std::string_view(argv[1]) == "trade") {
+            return app::trade_main(argc, argv);
+        }
         const app::CommandLine line = app::parse_command_line(argc, argv);
         switch (line.command) {
         case app::CommandLine::Command::run:

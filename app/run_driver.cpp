@@ -1,5 +1,6 @@
 #include "app/run_driver.hpp"
 
+#include "app/cost_estimate.hpp"
 #include "app/progress_reporter.hpp"
 #include "app/scene.hpp"
 #include "io/atomic_file.hpp"
@@ -100,6 +101,13 @@ io::RunSummary make_summary(const Scene& scene, const CommandLine& line, const R
     return summary;
 }
 
+void attach(io::RunSummary& summary, const std::optional<CostEstimate>& estimate) {
+    if (estimate) {
+        summary.estimated_steps = static_cast<double>(estimate->steps);
+        summary.estimated_wall_time = estimate->wall_time_s;
+    }
+}
+
 } // namespace
 
 int check_case(const CommandLine& line) {
@@ -108,6 +116,21 @@ int check_case(const CommandLine& line) {
               << scene->settings.dimension << "D, " << scene->materials.size() << " materials, "
               << scene->point_count() << " particles and nodes, end time "
               << scene->settings.end_time << " s)\n";
+    const Calibration calibration = load_calibration();
+    const CostEstimate cost =
+        estimate_cost(*scene, line.threads.value_or(omp_get_max_threads()), calibration);
+    std::cout << describe_cost(cost, calibration);
+    // An hour is where a cheaper setting starts to matter (issue 18): say what the trade table
+    // measured, or how to make one.
+    constexpr double kLongRun = 3600.0;
+    if (cost.wall_time_s > kLongRun) {
+        const auto advice = trade_table_advice(line.input);
+        std::cout << "      longer than an hour: "
+                  << advice.value_or("no trade table next to the case; `grainload trade` measures "
+                                     "what cheaper settings cost and lose (docs/user-guide/"
+                                     "trade.md)")
+                  << '\n';
+    }
     return kExitOk;
 }
 
@@ -116,6 +139,12 @@ int run_case(const CommandLine& line) {
         omp_set_num_threads(*line.threads);
     }
     auto scene = Scene::load(line.input, line.overrides);
+    // The estimate `check` prints, kept for summary.json's estimate-against-actual ratios (a
+    // restarted run covers only part of the time, so it has none).
+    std::optional<CostEstimate> estimate;
+    if (!line.restart) {
+        estimate = estimate_cost(*scene, omp_get_max_threads(), load_calibration());
+    }
     const std::string out = line.out.value_or("out/" + scene->settings.name);
     std::filesystem::create_directories(out);
     std::ofstream log(out + "/log.txt", line.restart ? std::ios::app : std::ios::trunc);
@@ -167,6 +196,7 @@ int run_case(const CommandLine& line) {
         ++clock.step;
         if (auto problem = diagnose(*scene)) {
             auto summary = make_summary(*scene, line, clock, progress.elapsed_seconds());
+            attach(summary, estimate);
             summary.status = "unstable";
             summary.diagnosis = *problem;
             io::write_run_summary(summary, out + "/summary.json");
@@ -183,11 +213,19 @@ int run_case(const CommandLine& line) {
         progress.update(clock.t, clock.step, dt);
     }
     progress.update(clock.t, clock.step, dt, true);
-    const auto summary = make_summary(*scene, line, clock, progress.elapsed_seconds());
+    auto summary = make_summary(*scene, line, clock, progress.elapsed_seconds());
+    attach(summary, estimate);
     io::write_run_summary(summary, out + "/summary.json");
     progress.message("done: " + std::to_string(clock.step) + " steps, " +
                      std::to_string(summary.wall_time) + " s wall time; " + out +
                      "/summary.json, " + out + "/" + scene->settings.name + ".pvd");
+    if (estimate) {
+        progress.message(
+            "estimate before the run: " + std::to_string(estimate->steps) + " steps, " +
+            std::to_string(estimate->wall_time_s) + " s (actual / estimate: steps " +
+            std::to_string(static_cast<double>(clock.step) / static_cast<double>(estimate->steps)) +
+            ", wall time " + std::to_string(summary.wall_time / estimate->wall_time_s) + ")");
+    }
     return kExitOk;
 }
 

@@ -5,18 +5,29 @@
 // artificial viscosity).
 //
 // usage: sph_throughput [particles ...]   (default 1e4 1e5 1e6)
+//        sph_throughput --calibrate FILE  (the throughput `grainload check` estimates run times
+//                                          with: 2D and 3D blocks of the generalized cap sand,
+//                                          1 thread and all cores; writes FILE as JSON)
 
+#include "io/atomic_file.hpp"
+#include "io/json_value.hpp"
+#include "io/version.hpp"
+#include "materials/generalized_cap.hpp"
 #include "materials/linear_elastic.hpp"
 #include "sph/lattice_fill.hpp"
 #include "sph/sph_solver.hpp"
+#include "sph/wall.hpp"
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <fstream>
 #include <omp.h>
+#include <span>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -36,6 +47,12 @@ double peak_memory_mib() {
 }
 
 struct Measurement {
+    double seconds_per_step = 0.0;
+    /// Process CPU time per step: on one thread the wall time an idle machine would give, so
+    /// that the calibration does not depend on the machine's load while it runs.
+    double cpu_seconds_per_step = 0.0;
+    Index walls = 0;   ///< wall particles among the particles
+    Index entries = 0; ///< neighbour-list entries at the end
     double particle_steps_per_second = 0.0;
     double pairs_per_second = 0.0;
     double bytes_per_particle = 0.0;
@@ -48,42 +65,99 @@ struct Mode {
     sph::Formulation formulation;
 };
 
-Measurement measure(Index target, int threads, const Mode& mode,
-                    const materials::LinearElastic& steel) {
+struct Block {
+    int dimension = 3;
+    bool gradient_correction = true; ///< the case-file default
+    /// A floor of wall particles under the block, as the cases build them: spacing dp/2,
+    /// ceil(2h / (dp/2)) = 6 layers, twice the block's width, with the contact potential on;
+    /// its top 2h below the block's first centres (touching) or far from it (idle walls).
+    enum class Floor { none, far, touching };
+    Floor floor = Floor::none;
+    double smoothing_ratio = 1.3; ///< h / dp
+};
+
+/// The floor of Block::floor under a block of `side` particles of `spacing` per direction.
+std::vector<Vec3> floor_points(double side, double spacing, int dimension, bool touching) {
+    const double step = 0.5 * spacing;
+    const int layers = 6;
+    const double support = 2.0 * 1.3 * spacing;
+    const double top = 0.5 * spacing - (touching ? support : 10.0 * support);
+    const auto across = static_cast<int>(std::llround(2.0 * side * spacing / step));
+    const int second = dimension == 3 ? across : 1;
+    const int up = dimension == 3 ? 2 : 1;
+    std::vector<Vec3> points;
+    for (int k = 0; k < layers; ++k) {
+        for (int a = 0; a < across; ++a) {
+            for (int b = 0; b < second; ++b) {
+                Vec3 x = Vec3::Zero();
+                x(0) = -0.5 * side * spacing + (a + 0.5) * step;
+                x(1) = dimension == 3 ? -0.5 * side * spacing + (b + 0.5) * step : 0.0;
+                x(up) = top - k * step;
+                points.push_back(x);
+            }
+        }
+    }
+    return points;
+}
+
+Measurement measure(Index target, int threads, const Mode& mode, const materials::Material& law,
+                    const Block& shape = {}) {
     omp_set_num_threads(threads);
     const double spacing = 0.01;
-    const auto side = static_cast<double>(std::llround(std::cbrt(static_cast<double>(target))));
+    const double per_side = std::pow(static_cast<double>(target), 1.0 / shape.dimension);
+    const auto side = static_cast<double>(std::llround(per_side));
     sph::ParticleSet particles;
     sph::LatticeBody block;
     block.upper = Vec3::Constant(side * spacing);
     block.spacing = spacing;
-    block.density = steel.density();
-    sph::fill_box_lattice(particles, block, 3);
+    block.density = law.density();
+    block.state_size = law.state_size();
+    sph::fill_box_lattice(particles, block, shape.dimension);
+    for (Index i = 0; i < particles.size(); ++i) {
+        law.initialise_state(std::span(particles.state)
+                                 .subspan(static_cast<std::size_t>(
+                                              particles.state_offset[static_cast<std::size_t>(i)]),
+                                          static_cast<std::size_t>(law.state_size())));
+    }
     // A smooth velocity field so that stresses, rotations and neighbour changes are real.
     for (Index i = 0; i < particles.size(); ++i) {
         const Vec3& x = particles.position[i];
         particles.velocity[i] =
             Vec3(std::sin(20.0 * x.y()), std::sin(20.0 * x.z()), std::sin(20.0 * x.x()));
+        if (shape.dimension == 2) {
+            particles.velocity[i].z() = 0.0;
+        }
     }
     sph::SphOptions options;
-    options.dimension = 3;
+    options.dimension = shape.dimension;
     options.kernel = sph::KernelType::cubic_spline;
-    options.smoothing_length = 1.3 * spacing;
+    options.smoothing_length = shape.smoothing_ratio * spacing;
     options.particle_spacing = spacing;
     options.viscosity = {0.5, 1.0};
-    options.kernel_gradient_correction = true; // the case-file default
+    options.kernel_gradient_correction = shape.gradient_correction;
     options.verlet_skin_factor = mode.skin_factor;
     options.formulation = mode.formulation;
+    std::vector<sph::Wall> walls;
+    if (shape.floor != Block::Floor::none) {
+        options.contact.stiffness = law.elastic().bulk_modulus;
+        options.contact.damping_ratio = 0.5;
+        walls.push_back(sph::add_wall(
+            particles, "floor", 0, 1,
+            floor_points(side, spacing, shape.dimension, shape.floor == Block::Floor::touching),
+            0.5 * spacing, law.density(), shape.dimension));
+    }
     const Index n = particles.size();
-    sph::SphSolver solver(std::move(particles), {&steel}, options);
+    sph::SphSolver solver(std::move(particles), {&law}, options, std::move(walls));
     const double dt = solver.stable_time_step();
     solver.step(dt); // warm-up: first force evaluation, first list
     const int steps = std::max(2, static_cast<int>(2e6 / static_cast<double>(n)));
     const Index rebuilds_before = solver.neighbours().rebuild_count();
     const auto start = std::chrono::steady_clock::now();
+    const std::clock_t cpu_start = std::clock();
     for (int k = 0; k < steps; ++k) {
         solver.step(dt);
     }
+    const double cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     Index pairs = 0;
@@ -95,6 +169,10 @@ Measurement measure(Index target, int threads, const Mode& mode,
         }
     }
     Measurement m;
+    m.seconds_per_step = seconds / steps;
+    m.cpu_seconds_per_step = cpu_seconds / steps;
+    m.walls = solver.walls().empty() ? 0 : static_cast<Index>(solver.walls().front().count);
+    m.entries = solver.neighbours().pair_entries();
     m.particle_steps_per_second = static_cast<double>(n) * steps / seconds;
     // Interacting pairs, each counted once, visited twice per step (kinematics and forces).
     m.pairs_per_second = 0.5 * static_cast<double>(pairs) * steps / seconds;
@@ -104,9 +182,110 @@ Measurement measure(Index target, int threads, const Mode& mode,
     return m;
 }
 
+/// The thesis sand (section 7.2) with K and G / 1000, as the column-collapse cases run it.
+materials::GeneralizedCap calibration_sand() {
+    materials::cap::Parameters p;
+    p.k = 0.03858e6;
+    p.theta = 0.03;
+    p.gamma = 0.03858e6;
+    p.beta = 9.0e-6;
+    p.D = 7.25e-6;
+    p.W = 0.18;
+    p.R = 2.0;
+    return materials::GeneralizedCap(
+        materials::ElasticConstants::from_bulk_shear(2099.0, 30.62e6, 8.23e6), p);
+}
+
+/// Seconds per step of one thread: per neighbour-list entry between body particles and between
+/// a body and a wall particle (contact), per body particle and per wall particle
+/// (app/cost_estimate.hpp).
+struct Costs {
+    double entry = 0.0;
+    double contact_entry = 0.0;
+    double body = 0.0;
+    double wall = 0.0;
+};
+
+/// CPU seconds of one thread (the wall time of an idle machine). A block at h = 1.3 dp and at
+/// 2.0 dp (more entries, as many particles) separates the cost of
+/// an entry from that of a particle; the block above a far floor gives the cost of idle wall
+/// particles, on a touching floor that of the contact entries it adds. A difference that load
+/// on the machine makes negative is clamped at 0.
+Costs costs(Index target, int dimension, const materials::Material& law) {
+    using Floor = Block::Floor;
+    const Mode verlet{"Verlet 0.1h", 0.1, sph::Formulation::updated_lagrangian};
+    // The production cases' settings: Verlet list, viscosity, no gradient correction.
+    const Measurement narrow =
+        measure(target, 1, verlet, law, {dimension, false, Floor::none, 1.3});
+    const Measurement wide = measure(target, 1, verlet, law, {dimension, false, Floor::none, 2.0});
+    const Measurement far = measure(target, 1, verlet, law, {dimension, false, Floor::far, 1.3});
+    const Measurement touch =
+        measure(target, 1, verlet, law, {dimension, false, Floor::touching, 1.3});
+    const auto bodies =
+        static_cast<double>(narrow.particle_steps_per_second * narrow.seconds_per_step);
+    auto rate = [](double seconds, Index count) {
+        return count > 0 ? std::max(0.0, seconds / static_cast<double>(count)) : 0.0;
+    };
+    Costs c;
+    c.entry = rate(wide.cpu_seconds_per_step - narrow.cpu_seconds_per_step,
+                   wide.entries - narrow.entries);
+    c.body = std::max(
+        0.0,
+        (narrow.cpu_seconds_per_step - c.entry * static_cast<double>(narrow.entries)) / bodies);
+    c.wall = rate(far.cpu_seconds_per_step - narrow.cpu_seconds_per_step, far.walls);
+    c.contact_entry =
+        rate(touch.cpu_seconds_per_step - far.cpu_seconds_per_step, touch.entries - far.entries);
+    std::printf("%dD: %.0f bodies, %lld / %lld entries (h = 1.3 / 2.0 dp): %.3e / %.3e s/step; "
+                "%lld floor particles far / touching (%lld more entries): %.3e / %.3e s/step -> "
+                "%.3e s per entry, %.3e per contact entry, %.3e per body, %.3e per wall "
+                "particle\n",
+                dimension, bodies, static_cast<long long>(narrow.entries),
+                static_cast<long long>(wide.entries), narrow.cpu_seconds_per_step,
+                wide.cpu_seconds_per_step, static_cast<long long>(far.walls),
+                static_cast<long long>(touch.entries - far.entries), far.cpu_seconds_per_step,
+                touch.cpu_seconds_per_step, c.entry, c.contact_entry, c.body, c.wall);
+    return c;
+}
+
+/// Measures what `grainload check` needs and writes it as JSON (app/cost_estimate.hpp).
+int calibrate(const std::string& path) {
+    const auto sand = calibration_sand();
+    // Sizes large enough that per-step overheads do not count, small enough for seconds each.
+    const Costs c2 = costs(10000, 2, sand);
+    const Costs c3 = costs(8000, 3, sand);
+    const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    const Mode verlet{"Verlet 0.1h", 0.1, sph::Formulation::updated_lagrangian};
+    const double one = measure(8000, 1, verlet, sand, {3, false}).seconds_per_step;
+    const double all =
+        cores > 1 ? measure(8000, cores, verlet, sand, {3, false}).seconds_per_step : one;
+    const std::time_t now = std::time(nullptr);
+    char date[32];
+    std::strftime(date, sizeof date, "%Y-%m-%d %H:%M", std::localtime(&now));
+    io::write_file_atomically(path, [&](std::ostream& out) {
+        out << "{\n  \"source\": \"bench/sph_throughput --calibrate\",\n"
+            << "  \"date\": " << io::json_quoted(date) << ",\n"
+            << "  \"git_hash\": " << io::json_quoted(kGitHash) << ",\n"
+            << "  \"seconds_per_entry_2d\": " << io::json_number(c2.entry) << ",\n"
+            << "  \"seconds_per_body_2d\": " << io::json_number(c2.body) << ",\n"
+            << "  \"seconds_per_wall_2d\": " << io::json_number(c2.wall) << ",\n"
+            << "  \"seconds_per_contact_entry_2d\": " << io::json_number(c2.contact_entry) << ",\n"
+            << "  \"seconds_per_entry_3d\": " << io::json_number(c3.entry) << ",\n"
+            << "  \"seconds_per_body_3d\": " << io::json_number(c3.body) << ",\n"
+            << "  \"seconds_per_wall_3d\": " << io::json_number(c3.wall) << ",\n"
+            << "  \"seconds_per_contact_entry_3d\": " << io::json_number(c3.contact_entry) << ",\n"
+            << "  \"threads_measured\": " << cores << ",\n"
+            << "  \"speedup\": " << io::json_number(one / all) << "\n}\n";
+    });
+    std::printf("calibration: %d threads %.2fx one -> %s\n", cores, one / all, path.c_str());
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
+    if (argc == 3 && std::string(argv[1]) == "--calibrate") {
+        return calibrate(argv[2]);
+    }
     std::vector<Index> sizes;
     for (int a = 1; a < argc; ++a) {
         sizes.push_back(static_cast<Index>(std::atof(argv[a])));

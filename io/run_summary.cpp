@@ -92,8 +92,16 @@ void write_run_summary(const RunSummary& summary, const std::string& path) {
             << "  \"steps\": " << summary.steps << ",\n"
             << "  \"particles\": " << summary.points << ",\n"
             << "  \"particle_steps_per_second\": " << number(summary.point_steps_per_second())
-            << ",\n"
-            << "  \"results\": {";
+            << ",\n";
+        if (summary.estimated_steps && summary.estimated_wall_time) {
+            const double steps = *summary.estimated_steps;
+            const double wall = *summary.estimated_wall_time;
+            out << "  \"estimate\": {\"steps\": " << number(steps)
+                << ", \"wall_time_s\": " << number(wall)
+                << ", \"steps_ratio\": " << number(static_cast<double>(summary.steps) / steps)
+                << ", \"wall_time_ratio\": " << number(summary.wall_time / wall) << "},\n";
+        }
+        out << "  \"results\": {";
         for (std::size_t i = 0; i < summary.results.size(); ++i) {
             out << (i == 0 ? "\n" : ",\n");
             write_result(out, summary.results[i]);

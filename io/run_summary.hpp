@@ -2,6 +2,7 @@
 
 #include "io/frame.hpp"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,10 @@ struct RunSummary {
     std::string status = "completed"; ///< "completed" or "unstable"
     std::string diagnosis;
     std::vector<ResultFigure> results;
+    /// What `grainload check` estimated before the run (app/cost_estimate.hpp); written with
+    /// the ratios actual / estimated when set.
+    std::optional<double> estimated_steps;
+    std::optional<double> estimated_wall_time; ///< s
 
     double point_steps_per_second() const;
 };

@@ -10,6 +10,8 @@ GRAINLOAD_PACKAGES=(
   # Meshing of .geo geometry scripts (io/gmsh_runner); python3 runs the case scripts that
   # tests call (cases/hopper_wagon/export_k.py).
   gmsh python3
+  # Plots: `grainload trade` draws error against wall time with scripts/plot_trade.py.
+  python3-matplotlib
 )
 
 missing=()

@@ -1,0 +1,274 @@
+#include "app/cost_estimate.hpp"
+
+#include "app/scene.hpp"
+#include "app/trade_table.hpp"
+#include "coupling/coupled_model.hpp"
+#include "fem/shell_model.hpp"
+#include "io/json_value.hpp"
+#include "sph/sph_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <vector>
+
+namespace grainload::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string calibration_path() {
+    if (const char* path = std::getenv("GRAINLOAD_CALIBRATION")) {
+        return path;
+    }
+    std::error_code error;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", error);
+    return error ? std::string() : (exe.parent_path().parent_path() / "calibration.json").string();
+}
+
+/// Driver steps and SPH steps from t = 0 to the end at a constant step `dt` (SPH at
+/// `sph_dt` inside each), landing on every output instant as the driver's loop does.
+struct StepCount {
+    long long steps = 0;
+    double sph_steps = 0.0;
+};
+
+StepCount count_steps(double end, double interval, double dt, double sph_dt) {
+    StepCount count;
+    const double tolerance = 1e-12 * end;
+    const auto intervals = static_cast<long long>(std::ceil(end / interval - 1e-9));
+    for (long long k = 0; k < intervals; ++k) {
+        const double start = static_cast<double>(k) * interval;
+        const double stop = std::min(static_cast<double>(k + 1) * interval, end);
+        const double length = stop - start;
+        if (length <= tolerance) {
+            continue;
+        }
+        const auto n = static_cast<long long>(std::ceil(length / dt * (1.0 - 1e-12)));
+        count.steps += n;
+        const double window = length / static_cast<double>(n);
+        count.sph_steps += static_cast<double>(n) * std::ceil(window / sph_dt * (1.0 - 1e-12));
+    }
+    return count;
+}
+
+/// Neighbour-list entries at t = 0 between bodies, and between a body and a wall particle.
+std::pair<Index, Index> count_entries(const sph::SphModel& sph) {
+    if (sph.solver() == nullptr) {
+        return {0, 0};
+    }
+    const auto& wall_id = sph.particles().wall_id;
+    const sph::NeighbourList& list = sph.solver()->neighbours();
+    Index bodies = 0;
+    Index contacts = 0;
+    for (Index i = 0; i < sph.particles().size(); ++i) {
+        for (const auto j : list.neighbours(i)) {
+            const bool contact = wall_id[static_cast<std::size_t>(i)] >= 0 ||
+                                 wall_id[static_cast<std::size_t>(j)] >= 0;
+            (contact ? contacts : bodies) += 1;
+        }
+    }
+    return {bodies, contacts};
+}
+
+std::string duration(double s) {
+    char text[48];
+    if (s < 120.0) {
+        std::snprintf(text, sizeof text, "%.0f s", s);
+    } else if (s < 7200.0) {
+        std::snprintf(text, sizeof text, "%.0f min", s / 60.0);
+    } else {
+        std::snprintf(text, sizeof text, "%.1f h", s / 3600.0);
+    }
+    return text;
+}
+
+} // namespace
+
+Calibration load_calibration() {
+    Calibration c;
+    const std::string path = calibration_path();
+    if (path.empty() || !fs::exists(path)) {
+        return c;
+    }
+    try {
+        const io::JsonValue file = io::read_json_file(path);
+        const auto get = [&](const char* key, double fallback) {
+            return file.number_at(key).value_or(fallback);
+        };
+        c.seconds_per_entry_2d = get("seconds_per_entry_2d", c.seconds_per_entry_2d);
+        c.seconds_per_body_2d = get("seconds_per_body_2d", c.seconds_per_body_2d);
+        c.seconds_per_wall_2d = get("seconds_per_wall_2d", c.seconds_per_wall_2d);
+        c.seconds_per_contact_entry_2d =
+            get("seconds_per_contact_entry_2d", c.seconds_per_contact_entry_2d);
+        c.seconds_per_entry_3d = get("seconds_per_entry_3d", c.seconds_per_entry_3d);
+        c.seconds_per_body_3d = get("seconds_per_body_3d", c.seconds_per_body_3d);
+        c.seconds_per_wall_3d = get("seconds_per_wall_3d", c.seconds_per_wall_3d);
+        c.seconds_per_contact_entry_3d =
+            get("seconds_per_contact_entry_3d", c.seconds_per_contact_entry_3d);
+        c.threads_measured = static_cast<int>(get("threads_measured", 1.0));
+        c.speedup = get("speedup", 1.0);
+        c.source = path + " (" + file.string_at("date").value_or("undated") + ")";
+    } catch (const io::JsonError& e) {
+        c.source = std::string("built-in constants (") + e.what() + ")";
+    }
+    return c;
+}
+
+CostEstimate estimate_cost(const Scene& scene, int threads, const Calibration& calibration) {
+    CostEstimate e;
+    e.threads = std::max(1, threads);
+    double dt = std::numeric_limits<double>::infinity();
+    for (const auto& stepper : scene.steppers) {
+        dt = std::min(dt, stepper->stable_time_step());
+    }
+    const double end = scene.settings.end_time;
+    const double interval = scene.settings.output_interval;
+    e.time_step = std::isfinite(dt) ? dt : interval;
+    // Parallel speed-up: linear interpolation between 1 and the measured threads, and no
+    // further gain beyond them (the calibration knows nothing of more cores).
+    const int measured = std::max(1, calibration.threads_measured);
+    const double used = std::min(e.threads, measured);
+    const double speedup =
+        measured == 1 ? 1.0 : 1.0 + (calibration.speedup - 1.0) * (used - 1.0) / (measured - 1.0);
+    double seconds = 0.0;
+    double bytes = calibration.baseline_bytes;
+    auto add_sph = [&](const sph::SphModel& sph, double sph_dt) {
+        const StepCount count = count_steps(end, interval, e.time_step, sph_dt);
+        const Index n = sph.point_count();
+        const auto& wall_id = sph.particles().wall_id;
+        const auto walls = static_cast<Index>(
+            std::count_if(wall_id.begin(), wall_id.end(), [](int w) { return w >= 0; }));
+        const auto [entries, contacts] = count_entries(sph);
+        const bool two_d = sph.dimension() == 2;
+        e.sph_particles += n;
+        e.wall_particles += walls;
+        e.entries += entries;
+        e.contact_entries += contacts;
+        e.sph_steps += count.sph_steps;
+        e.steps = count.steps;
+        e.particle_steps += static_cast<double>(n) * count.sph_steps;
+        const double per_step =
+            static_cast<double>(entries) *
+                (two_d ? calibration.seconds_per_entry_2d : calibration.seconds_per_entry_3d) +
+            static_cast<double>(contacts) * (two_d ? calibration.seconds_per_contact_entry_2d
+                                                   : calibration.seconds_per_contact_entry_3d) +
+            static_cast<double>(n - walls) *
+                (two_d ? calibration.seconds_per_body_2d : calibration.seconds_per_body_3d) +
+            static_cast<double>(walls) *
+                (two_d ? calibration.seconds_per_wall_2d : calibration.seconds_per_wall_3d);
+        seconds += per_step * count.sph_steps / speedup;
+        bytes += sph.solver() ? static_cast<double>(sph.solver()->bytes()) : 0.0;
+    };
+    auto add_shell = [&](const fem::ShellModel& fem) {
+        const StepCount count = count_steps(end, interval, e.time_step, e.time_step);
+        e.shell_nodes += fem.point_count();
+        e.shell_dofs += fem.analysis().free_dof_count();
+        e.steps = count.steps;
+        seconds += static_cast<double>(fem.analysis().free_dof_count()) *
+                   static_cast<double>(count.steps) * calibration.shell_seconds_per_dof_step;
+        bytes +=
+            static_cast<double>(fem.analysis().free_dof_count()) * calibration.shell_bytes_per_dof;
+    };
+    for (const auto& stepper : scene.steppers) {
+        if (const auto* coupled = dynamic_cast<const coupling::CoupledModel*>(stepper.get())) {
+            add_sph(coupled->sph(), coupled->sph().stable_time_step());
+            add_shell(coupled->fem());
+        } else if (const auto* sph = dynamic_cast<const sph::SphModel*>(stepper.get())) {
+            add_sph(*sph, e.time_step);
+        } else if (const auto* fem = dynamic_cast<const fem::ShellModel*>(stepper.get())) {
+            add_shell(*fem);
+        }
+    }
+    if (e.steps == 0) {
+        e.steps = count_steps(end, interval, e.time_step, e.time_step).steps;
+    }
+    e.wall_time_s = seconds;
+    e.memory_bytes = bytes;
+    return e;
+}
+
+std::string describe_cost(const CostEstimate& e, const Calibration& calibration) {
+    std::ostringstream out;
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "cost: %lld SPH particles (%lld of them walls), %lld shell nodes (%lld free "
+                  "DOFs)\n",
+                  static_cast<long long>(e.sph_particles), static_cast<long long>(e.wall_particles),
+                  static_cast<long long>(e.shell_nodes), static_cast<long long>(e.shell_dofs));
+    out << line;
+    std::snprintf(line, sizeof line,
+                  "      step %.3g s at t = 0: %lld steps to the end time (%.3g SPH steps, "
+                  "%.3g particle-steps, %lld + %lld contact neighbour entries)\n",
+                  e.time_step, e.steps, e.sph_steps, e.particle_steps,
+                  static_cast<long long>(e.entries), static_cast<long long>(e.contact_entries));
+    out << line;
+    std::snprintf(line, sizeof line,
+                  "      estimated wall time %s on %d threads, memory %.0f MiB\n",
+                  duration(e.wall_time_s).c_str(), e.threads, e.memory_bytes / (1024.0 * 1024.0));
+    out << line << "      throughput: " << calibration.source << '\n';
+    return out.str();
+}
+
+std::optional<std::string> trade_table_advice(const std::string& case_file) {
+    const fs::path path = fs::path(case_file).replace_extension(".trade.csv");
+    std::ifstream in(path);
+    if (!in) {
+        return std::nullopt;
+    }
+    std::string line;
+    std::getline(in, line);
+    std::map<std::string, std::size_t> column;
+    const std::vector<std::string> header = split_csv_line(line);
+    for (std::size_t i = 0; i < header.size(); ++i) {
+        column[header[i]] = i;
+    }
+    for (const char* needed : {"run", "elapsed_s", "change", "figure", "knee", "most_accurate"}) {
+        if (!column.count(needed)) {
+            return path.string() + " is not a trade.csv (no column '" + needed + "')";
+        }
+    }
+    std::string knee;
+    std::string best;
+    double knee_time = 0.0;
+    double best_time = 0.0;
+    double worst = 0.0;
+    std::string worst_figure;
+    while (std::getline(in, line)) {
+        std::vector<std::string> cells = split_csv_line(line);
+        cells.resize(header.size());
+        if (cells[column["most_accurate"]] == "1") {
+            best = cells[column["run"]];
+            best_time = std::atof(cells[column["elapsed_s"]].c_str());
+        }
+        if (cells[column["knee"]] != "1") {
+            continue;
+        }
+        knee = cells[column["run"]];
+        knee_time = std::atof(cells[column["elapsed_s"]].c_str());
+        const std::string& change = cells[column["change"]];
+        if (!change.empty() && std::abs(std::atof(change.c_str())) >= worst) {
+            worst = std::abs(std::atof(change.c_str()));
+            worst_figure = cells[column["figure"]];
+        }
+    }
+    if (knee.empty()) {
+        return path.string() + ": no run of the sweep stayed within its budget";
+    }
+    char text[512];
+    std::snprintf(text, sizeof text,
+                  "%s: its knee %s took %.0f s against %.0f s for the most accurate run %s "
+                  "(%.1fx less), changing no figure by more than %.2f %% (%s)",
+                  path.string().c_str(), knee.c_str(), knee_time, best_time, best.c_str(),
+                  best_time / std::max(knee_time, 1e-9), 100.0 * worst, worst_figure.c_str());
+    return std::string(text);
+}
+
+} // namespace grainload::app

@@ -1,0 +1,373 @@
+#include "app/trade_command.hpp"
+
+#include "app/process_pool.hpp"
+#include "app/trade_table.hpp"
+#include "io/atomic_file.hpp"
+#include "io/case_error.hpp"
+#include "io/case_table.hpp"
+#include "io/json_value.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+namespace grainload::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* const kUsage =
+    "  grainload trade CASE.toml --vary KEY=V1,V2,... [--link KEY=W1,W2,...] [--vary ...]\n"
+    "                  --out DIR [--figures NAME,...] [--budget 2%] [--jobs N] [--threads N]\n"
+    "                  [--reference KEY=V] [--set key=value ...]\n";
+
+std::vector<std::string> split_commas(const std::string& text) {
+    std::vector<std::string> parts;
+    std::stringstream in(text);
+    std::string part;
+    while (std::getline(in, part, ',')) {
+        if (!part.empty()) {
+            parts.push_back(part);
+        }
+    }
+    return parts;
+}
+
+int positive_integer(const std::string& text, const std::string& option) {
+    std::size_t used = 0;
+    int value = 0;
+    try {
+        value = std::stoi(text, &used);
+    } catch (const std::exception&) {
+    }
+    if (used != text.size() || value < 1) {
+        throw io::CaseError("command line: " + option + " expects a positive integer, got '" +
+                            text + "'");
+    }
+    return value;
+}
+
+/// FNV-1a of the case file's text: a resumed sweep must run the same case.
+std::string text_hash(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    std::uint64_t hash = 1469598103934665603ULL;
+    for (const char c : text.str()) {
+        hash = (hash ^ static_cast<unsigned char>(c)) * 1099511628211ULL;
+    }
+    char out[17];
+    std::snprintf(out, sizeof out, "%016llx", static_cast<unsigned long long>(hash));
+    return out;
+}
+
+std::string json_strings(const std::vector<std::string>& items) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        out += (i == 0 ? "" : ", ") + io::json_quoted(items[i]);
+    }
+    return out + "]";
+}
+
+std::vector<std::string> strings_of(const io::JsonValue* array) {
+    std::vector<std::string> out;
+    if (array != nullptr) {
+        for (const io::JsonValue& item : array->array) {
+            out.push_back(item.string);
+        }
+    }
+    return out;
+}
+
+/// DIR/trade.json names the case and the overrides common to all runs; a later invocation on
+/// the same DIR must give the same ones (the grid itself may grow or shrink).
+void check_manifest(const TradeOptions& o, const std::string& case_path) {
+    const std::string path = o.out + "/trade.json";
+    const std::string hash = text_hash(case_path);
+    if (fs::exists(path)) {
+        const io::JsonValue manifest = io::read_json_file(path);
+        const bool same_case = manifest.string_at("case_hash") == hash;
+        const bool same_overrides = strings_of(manifest.find("overrides")) == o.overrides;
+        if (!same_case || !same_overrides) {
+            throw io::CaseError(
+                "command line: --out " + o.out + " holds a sweep of " +
+                manifest.string_at("case_file").value_or("another case") +
+                (same_case ? " with other --set overrides" : " as the case file was then") +
+                "; its runs cannot be reused: give another --out");
+        }
+        return;
+    }
+    io::write_file_atomically(path, [&](std::ostream& out) {
+        out << "{\n  \"case_file\": " << io::json_quoted(case_path)
+            << ",\n  \"case_hash\": " << io::json_quoted(hash)
+            << ",\n  \"overrides\": " << json_strings(o.overrides) << "\n}\n";
+    });
+}
+
+/// Runs end in a record DIR/<id>/trade_run.json. Finished: recorded with these overrides and an
+/// exit code that a rerun would repeat (0 done, 2 bad input, 3 unstable).
+struct RunRecord {
+    int exit_code = -1;
+    double elapsed_s = 0.0;
+};
+
+std::optional<RunRecord> finished_record(const std::string& directory, const TradeRun& run) {
+    const std::string path = directory + "/trade_run.json";
+    if (!fs::exists(path)) {
+        return std::nullopt;
+    }
+    const io::JsonValue record = io::read_json_file(path);
+    if (strings_of(record.find("overrides")) != run.overrides) {
+        throw io::CaseError(path + ": this run was made with other overrides (" +
+                            json_strings(strings_of(record.find("overrides"))) +
+                            "); give another --out");
+    }
+    const int code = static_cast<int>(record.number_at("exit_code").value_or(-1));
+    if (code != 0 && code != 2 && code != 3) {
+        return std::nullopt;
+    }
+    return RunRecord{code, record.number_at("elapsed_s").value_or(0.0)};
+}
+
+void write_record(const std::string& directory, const TradeRun& run, const ProcessResult& r) {
+    io::write_file_atomically(directory + "/trade_run.json", [&](std::ostream& out) {
+        out << "{\n  \"overrides\": " << json_strings(run.overrides)
+            << ",\n  \"exit_code\": " << r.exit_code << ",\n  \"signal\": " << r.signal
+            << ",\n  \"elapsed_s\": " << io::json_number(r.elapsed_s) << "\n}\n";
+    });
+}
+
+ProcessSpec run_command(const TradeOptions& o, const std::string& case_path, const TradeRun& run,
+                        int threads) {
+    const std::string directory = o.out + "/" + run.id;
+    ProcessSpec spec;
+    spec.argv = {fs::read_symlink("/proc/self/exe").string(),
+                 "run",
+                 case_path,
+                 "--out",
+                 directory,
+                 "--threads",
+                 std::to_string(threads)};
+    for (const auto* list : {&o.overrides, &run.overrides}) {
+        for (const std::string& assignment : *list) {
+            spec.argv.push_back("--set");
+            spec.argv.push_back(assignment);
+        }
+    }
+    spec.log_file = directory + "/console.txt";
+    return spec;
+}
+
+std::string seconds(double s) {
+    char text[32];
+    std::snprintf(text, sizeof text, s < 100.0 ? "%.1f s" : "%.0f s", s);
+    return text;
+}
+
+std::string percent(double relative) {
+    if (std::isinf(relative)) {
+        return "inf";
+    }
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f %%", 100.0 * relative);
+    return text;
+}
+
+/// The largest |change| of a run over the budget's figures, and which figure; none if any is
+/// missing.
+std::optional<std::pair<double, std::string>> worst_change(const TradeAnalysis& a, std::size_t r) {
+    std::pair<double, std::string> worst{0.0, ""};
+    for (std::size_t f = 0; f < a.figures.size(); ++f) {
+        if (!a.change[r][f]) {
+            return std::nullopt;
+        }
+        if (std::abs(*a.change[r][f]) >= worst.first) {
+            worst = {std::abs(*a.change[r][f]), a.figures[f]};
+        }
+    }
+    return worst;
+}
+
+void print_table(const std::vector<TradeRun>& grid, const std::vector<TradeResult>& results,
+                 const TradeAnalysis& a, double budget) {
+    std::size_t width = 3;
+    for (const TradeRun& run : grid) {
+        width = std::max(width, run.id.size());
+    }
+    std::printf("%-*s  %-10s %10s %10s  %s\n", static_cast<int>(width), "run", "status", "elapsed",
+                "steps", "max |change| against the most accurate run");
+    for (std::size_t r = 0; r < grid.size(); ++r) {
+        const auto worst = worst_change(a, r);
+        std::string change = worst ? percent(worst->first) + " (" + worst->second + ")" : "-";
+        change = r == a.best ? "(most accurate run)" : change;
+        std::printf("%-*s  %-10s %10s %10s  %s%s\n", static_cast<int>(width), grid[r].id.c_str(),
+                    results[r].status.c_str(), seconds(results[r].elapsed_s).c_str(),
+                    results[r].steps ? std::to_string(*results[r].steps).c_str() : "-",
+                    change.c_str(), a.within_budget[r] && r != a.best ? "  within budget" : "");
+    }
+    if (!a.knee) {
+        std::printf("knee: none (the most accurate run %s did not complete)\n",
+                    grid[a.best].id.c_str());
+        return;
+    }
+    const std::size_t k = *a.knee;
+    const auto worst = worst_change(a, k);
+    std::printf("knee (budget %s on %zu figures): %s, %s, %.1fx less time than the most "
+                "accurate run %s (%s); max |change| %s\n",
+                percent(budget).c_str(), a.figures.size(), grid[k].id.c_str(),
+                seconds(results[k].elapsed_s).c_str(),
+                results[a.best].elapsed_s / std::max(results[k].elapsed_s, 1e-9),
+                grid[a.best].id.c_str(), seconds(results[a.best].elapsed_s).c_str(),
+                worst ? (percent(worst->first) + " (" + worst->second + ")").c_str() : "-");
+}
+
+/// scripts/plot_trade.py DIR/trade.csv DIR/trade.svg; says why when it cannot draw.
+void plot(const TradeOptions& o) {
+    const std::string script = std::string(GRAINLOAD_SCRIPTS_DIR) + "/plot_trade.py";
+    ProcessSpec spec;
+    // Debian's interpreter, which python3-matplotlib serves (scripts/ensure_packages.sh).
+    spec.argv = {"/usr/bin/python3",   script,     o.out + "/trade.csv",
+                 o.out + "/trade.svg", "--budget", std::to_string(o.budget)};
+    spec.log_file = o.out + "/plot_log.txt";
+    const ProcessResult r = run_process(spec);
+    if (r.exit_code == 0) {
+        std::printf("plot: %s/trade.svg\n", o.out.c_str());
+        return;
+    }
+    std::ifstream log(spec.log_file);
+    std::string line;
+    std::string last;
+    while (std::getline(log, line)) {
+        last = line.empty() ? last : line;
+    }
+    std::printf("plot skipped (%s); trade.csv is complete\n",
+                last.empty() ? "python3 could not be started" : last.c_str());
+}
+
+} // namespace
+
+const char* trade_usage() {
+    return kUsage;
+}
+
+TradeOptions parse_trade_options(int argc, const char* const* argv) {
+    TradeOptions o;
+    std::vector<std::string> references;
+    auto value_of = [&](int& i, const std::string& option) -> std::string {
+        if (i + 1 >= argc) {
+            throw io::CaseError("command line: " + option + " expects a value");
+        }
+        return argv[++i];
+    };
+    for (int i = 2; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--vary") {
+            o.axes.push_back(parse_trade_axis(value_of(i, arg), arg));
+        } else if (arg == "--link") {
+            link_trade_axis(o.axes, parse_trade_axis(value_of(i, arg), arg));
+        } else if (arg == "--reference") {
+            references.push_back(value_of(i, arg));
+        } else if (arg == "--figures") {
+            o.figures = split_commas(value_of(i, arg));
+        } else if (arg == "--budget") {
+            o.budget = parse_budget(value_of(i, arg));
+        } else if (arg == "--jobs") {
+            o.jobs = positive_integer(value_of(i, arg), arg);
+        } else if (arg == "--threads") {
+            o.threads = positive_integer(value_of(i, arg), arg);
+        } else if (arg == "--out") {
+            o.out = value_of(i, arg);
+        } else if (arg == "--set") {
+            o.overrides.push_back(value_of(i, arg));
+        } else if (!arg.starts_with("-") && o.case_file.empty()) {
+            o.case_file = arg;
+        } else {
+            throw io::CaseError("command line: unexpected argument '" + arg + "'\nusage:\n" +
+                                kUsage);
+        }
+    }
+    for (const std::string& reference : references) {
+        set_trade_reference(o.axes, reference);
+    }
+    if (o.case_file.empty() || o.axes.empty() || o.out.empty()) {
+        throw io::CaseError(std::string("command line: trade needs CASE.toml, at least one "
+                                        "--vary and --out DIR\nusage:\n") +
+                            kUsage);
+    }
+    return o;
+}
+
+int run_trade(const TradeOptions& o) {
+    if (!fs::is_regular_file(o.case_file)) {
+        throw io::CaseError("command line: " + o.case_file + " is not a readable case file");
+    }
+    const std::string case_path = fs::absolute(o.case_file).lexically_normal().string();
+    // The overrides' syntax is checked here, once; what they mean, by each run.
+    auto document = io::CaseDocument::from_file(case_path);
+    for (const std::string& assignment : o.overrides) {
+        document->set(assignment);
+    }
+    const std::vector<TradeRun> grid = trade_grid(o.axes);
+    for (const std::string& assignment : grid.front().overrides) {
+        document->set(assignment);
+    }
+    const std::size_t best = find_run(grid, most_accurate(o.axes));
+    fs::create_directories(o.out);
+    check_manifest(o, case_path);
+
+    const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    const int threads = o.threads.value_or(std::max(1, cores / o.jobs));
+    std::vector<std::optional<RunRecord>> records(grid.size());
+    std::vector<ProcessSpec> commands;
+    std::vector<std::size_t> pending;
+    for (std::size_t r = 0; r < grid.size(); ++r) {
+        const std::string directory = o.out + "/" + grid[r].id;
+        records[r] = finished_record(directory, grid[r]);
+        if (!records[r]) {
+            fs::create_directories(directory);
+            fs::remove(directory + "/summary.json");
+            commands.push_back(run_command(o, case_path, grid[r], threads));
+            pending.push_back(r);
+        }
+    }
+    std::printf("trade: %zu runs, %zu finished earlier, %zu to run (%d at a time, %d threads "
+                "each); most accurate: %s\n",
+                grid.size(), grid.size() - pending.size(), pending.size(), o.jobs, threads,
+                grid[best].id.c_str());
+    std::fflush(stdout);
+    std::size_t done = 0;
+    run_processes(commands, o.jobs, [&](std::size_t c, const ProcessResult& result) {
+        const std::size_t r = pending[c];
+        write_record(o.out + "/" + grid[r].id, grid[r], result);
+        records[r] = RunRecord{result.exit_code, result.elapsed_s};
+        std::printf("[%zu/%zu] %s: exit %d%s, %s\n", ++done, pending.size(), grid[r].id.c_str(),
+                    result.exit_code,
+                    result.signal != 0 ? (" (signal " + std::to_string(result.signal) + ")").c_str()
+                                       : "",
+                    seconds(result.elapsed_s).c_str());
+        std::fflush(stdout);
+    });
+    std::vector<TradeResult> results;
+    for (std::size_t r = 0; r < grid.size(); ++r) {
+        results.push_back(read_trade_result(o.out + "/" + grid[r].id, records[r]->exit_code,
+                                            records[r]->elapsed_s));
+    }
+    const TradeAnalysis analysis = analyse_trade(results, best, o.figures, o.budget);
+    write_trade_csv(o.out + "/trade.csv", o.axes, grid, results, analysis);
+    print_table(grid, results, analysis, o.budget);
+    std::printf("table: %s/trade.csv\n", o.out.c_str());
+    plot(o);
+    return 0;
+}
+
+int trade_main(int argc, const char* const* argv) {
+    return run_trade(parse_trade_options(argc, argv));
+}
+
+} // namespace grainload::app

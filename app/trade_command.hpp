@@ -1,0 +1,39 @@
+#pragma once
+
+#include "app/trade_grid.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace grainload::app {
+
+/// What `grainload trade` was asked to do.
+struct TradeOptions {
+    std::string case_file;
+    std::string out;                    ///< --out DIR (required)
+    std::vector<TradeAxis> axes;        ///< --vary (with their --link and --reference)
+    std::vector<std::string> figures;   ///< --figures; empty: all of the most accurate run's
+    std::vector<std::string> overrides; ///< --set, applied to every run before the axes
+    double budget = 0.02;               ///< --budget
+    int jobs = 1;                       ///< --jobs
+    std::optional<int> threads;         ///< --threads per run; default cores / jobs
+};
+
+/// Parses `grainload trade CASE.toml --vary ... --out DIR` (argv[1] is "trade"). Throws
+/// io::CaseError (exit 2) on a malformed line.
+TradeOptions parse_trade_options(int argc, const char* const* argv);
+
+/// Runs the sweep (docs/user-guide/trade.md): every run of the grid not finished in an earlier
+/// invocation, as `grainload run` subprocesses of this executable, --jobs at a time; then
+/// DIR/trade.csv, the summary on stdout, the knee, and DIR/trade.svg by scripts/plot_trade.py.
+/// Returns the exit code: 0 when the sweep ran (failed runs are rows of the table).
+int run_trade(const TradeOptions& options);
+
+/// `grainload trade ...`, from main().
+int trade_main(int argc, const char* const* argv);
+
+/// The usage lines of `grainload trade`, for --help.
+const char* trade_usage();
+
+} // namespace grainload::app

@@ -1,0 +1,81 @@
+#!/usr/bin/env python3
+"""Error against wall time of a `grainload trade` sweep, one panel per figure.
+
+Usage: plot_trade.py DIR/trade.csv OUT.svg [--budget 0.02] [--figures NAME,...]
+
+Each completed run is a point: x its elapsed time, y |change| of the figure against the most
+accurate run of the grid (relative; the most accurate run itself, at 0, sits on the floor of the
+log axis). The budget is a dashed line, the knee a ring, runs outside the budget grey. Runs that
+failed or went unstable are not drawn (they are rows of trade.csv). Called by `grainload trade`
+at the end of a sweep; exits with 4 and says so when matplotlib is missing (Debian:
+python3-matplotlib, installed by scripts/ensure_packages.sh).
+"""
+
+import argparse
+import csv
+import math
+import sys
+
+try:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+except ImportError:
+    print("matplotlib is not installed (Debian package python3-matplotlib)", file=sys.stderr)
+    sys.exit(4)
+
+# Changes below this are drawn on the floor of the log axis (the most accurate run is 0).
+FLOOR = 1e-6
+
+
+def read_rows(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("csv")
+    parser.add_argument("out")
+    parser.add_argument("--budget", type=float, default=0.02)
+    parser.add_argument("--figures", default="")
+    args = parser.parse_args()
+    rows = [r for r in read_rows(args.csv) if r["figure"]]
+    chosen = [f for f in args.figures.split(",") if f]
+    figures = chosen or sorted({r["figure"] for r in rows if r["change"]})
+    if not figures:
+        print("no figure has a change against the most accurate run", file=sys.stderr)
+        return 3
+    columns = min(3, len(figures))
+    lines = math.ceil(len(figures) / columns)
+    fig, axes = plt.subplots(lines, columns, figsize=(4.2 * columns, 3.4 * lines), squeeze=False)
+    for panel, name in zip(axes.flat, figures):
+        points = [r for r in rows if r["figure"] == name and r["status"] == "completed"
+                  and r["change"] not in ("", "inf", "-inf")]
+        for r in points:
+            change = max(abs(float(r["change"])), FLOOR)
+            inside = r["within_budget"] == "1"
+            panel.scatter(float(r["elapsed_s"]), change, color="C0" if inside else "0.6",
+                          zorder=3)
+            if r["knee"] == "1":
+                panel.scatter(float(r["elapsed_s"]), change, s=160, facecolors="none",
+                              edgecolors="C3", linewidths=1.5, zorder=4, label="knee")
+            panel.annotate(r["run"], (float(r["elapsed_s"]), change), fontsize=6,
+                           xytext=(3, 3), textcoords="offset points")
+        panel.axhline(args.budget, color="C3", linestyle="--", linewidth=1, label="budget")
+        panel.set_xscale("log")
+        panel.set_yscale("log")
+        panel.set_title(name, fontsize=9)
+        panel.set_xlabel("elapsed time (s)")
+        panel.set_ylabel("|change| against the most accurate run")
+        panel.legend(fontsize=7)
+    for panel in list(axes.flat)[len(figures):]:
+        panel.axis("off")
+    fig.tight_layout()
+    fig.savefig(args.out)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,65 @@
+// The cost estimate of `grainload check` (app/cost_estimate.hpp) against the steps runs take,
+// read from the estimate block each run writes into its summary.json. A fixed step must be
+// counted exactly (the estimate lands on the output instants as the time loop does). A CFL step
+// h / (c + |v|) can only shrink as the material speeds up, so the actual steps exceed the
+// estimate from t = 0 by at most the ratio (c + v_max) / c: for the CI column collapse (E =
+// 5.84 MPa, c = 62.07 m/s; a 0.1 m column whose particles cannot outrun the free-fall speed
+// sqrt(2 g H0) = 1.40 m/s by more than a factor 2) that is 1 + 2.8 / 62.07 = 1.045.
+
+#include "io/json_value.hpp"
+#include "support/cli_runner.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <gtest/gtest.h>
+
+namespace {
+
+using namespace grainload::testing;
+
+grainload::io::JsonValue run_and_read(const std::string& arguments, const std::string& name) {
+    const std::string out = ::testing::TempDir() + "grainload_" + name;
+    std::filesystem::remove_all(out);
+    const auto result =
+        run_cli("run " + arguments + " --threads 1 --out '" + out + "'", out + ".log");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    return grainload::io::read_json_file(out + "/summary.json");
+}
+
+TEST(CostEstimate, FixedStepIsCountedExactly) {
+    // 3 ms steps in 10 ms frames: 4 steps per frame (the last one cut to the frame), 80 in all.
+    const auto summary = run_and_read("'" + source_path("cases/free_fall/free_fall_small.toml") +
+                                          "' --set 'sph.time_step=3 ms'",
+                                      "cost_free_fall");
+    const auto* estimate = summary.find("estimate");
+    ASSERT_NE(estimate, nullptr);
+    EXPECT_EQ(estimate->number_at("steps"), 80.0);
+    EXPECT_EQ(summary.number_at("steps"), 80.0);
+    EXPECT_EQ(estimate->number_at("steps_ratio"), 1.0);
+    EXPECT_GT(*estimate->number_at("wall_time_s"), 0.0);
+}
+
+TEST(CostEstimate, CflStepCountWithinTheSpeedBound) {
+    constexpr double kSpeedBound = 1.0 + 2.0 * 1.40 / 62.07;
+    const auto summary =
+        run_and_read("'" + source_path("cases/column_collapse_2d/column_collapse_2d_small.toml") +
+                         "' --set 'case.end_time=0.1 s'",
+                     "cost_collapse");
+    const auto* estimate = summary.find("estimate");
+    ASSERT_NE(estimate, nullptr);
+    const double ratio = *estimate->number_at("steps_ratio");
+    RecordProperty("steps_ratio", std::to_string(ratio));
+    EXPECT_GE(ratio, 1.0);
+    EXPECT_LE(ratio, kSpeedBound);
+}
+
+TEST(CostEstimate, CheckPrintsTheEstimate) {
+    const std::string log = ::testing::TempDir() + "grainload_cost_check.log";
+    const auto result =
+        run_cli("check '" + source_path("cases/free_fall/free_fall_small.toml") + "'", log);
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_NE(result.output.find("200 steps to the end time"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("estimated wall time"), std::string::npos) << result.output;
+}
+
+} // namespace

@@ -1,0 +1,111 @@
+// `grainload trade` end to end on the CI free fall (4 x 4 x 8 particles, no interactions, runs
+// of a fraction of a second): a failed run is a row of the table, a second invocation runs
+// nothing new, a grown grid runs only the new settings, and a sweep directory refuses another
+// case's settings. The figure compared is the free fall's centre height, which leapfrog
+// integrates exactly for every time step (test_free_fall), so every completed run is within
+// budget of the most accurate one.
+
+#include "io/json_value.hpp"
+#include "support/cli_runner.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <map>
+#include <sstream>
+#include <vector>
+
+namespace {
+
+using namespace grainload::testing;
+namespace fs = std::filesystem;
+
+const std::string kCase = "'" + source_path("cases/free_fall/free_fall_small.toml") + "'";
+
+/// The rows of trade.csv as maps from column to cell (no quoted commas in this sweep).
+std::vector<std::map<std::string, std::string>> read_rows(const std::string& path) {
+    std::ifstream in(path);
+    std::string line;
+    std::getline(in, line);
+    std::vector<std::string> header;
+    std::stringstream names(line);
+    for (std::string name; std::getline(names, name, ',');) {
+        header.push_back(name);
+    }
+    std::vector<std::map<std::string, std::string>> rows;
+    while (std::getline(in, line)) {
+        std::stringstream cells(line + ",");
+        std::map<std::string, std::string> row;
+        for (const std::string& name : header) {
+            std::getline(cells, row[name], ',');
+        }
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+TEST(TradeCli, FailedRunsAreRowsAndAResumedSweepRunsNothingNew) {
+    const std::string out = ::testing::TempDir() + "grainload_trade_cli";
+    fs::remove_all(out);
+    const std::string sweep = "trade " + kCase + " --out '" + out +
+                              "' --reference 'sph.time_step=1 ms' --jobs 2 --threads 1"
+                              " --figures centre_height --vary 'sph.time_step=1 ms,3 ms,fast";
+    const std::string end = "'";
+    const auto first = run_cli(sweep + end, out + ".log");
+    ASSERT_EQ(first.exit_code, 0) << first.output;
+    EXPECT_NE(first.output.find("3 runs, 0 finished earlier, 3 to run"), std::string::npos)
+        << first.output;
+    const auto rows = read_rows(out + "/trade.csv");
+    // Two figures (centre_height, max_position_error) per completed run, one failed row.
+    ASSERT_EQ(rows.size(), 5u);
+    std::map<std::string, std::map<std::string, std::string>> by_run;
+    for (const auto& row : rows) {
+        if (row.at("figure") == "centre_height" || row.at("figure").empty()) {
+            by_run[row.at("run")] = row;
+        }
+    }
+    EXPECT_EQ(by_run["time_step_fast"]["status"], "bad_input");
+    EXPECT_EQ(by_run["time_step_fast"]["exit_code"], "2");
+    EXPECT_EQ(by_run["time_step_fast"]["figure"], "");
+    EXPECT_EQ(by_run["time_step_1ms"]["most_accurate"], "1");
+    EXPECT_EQ(by_run["time_step_3ms"]["status"], "completed");
+    EXPECT_EQ(by_run["time_step_3ms"]["figure"], "centre_height");
+    EXPECT_EQ(by_run["time_step_3ms"]["steps"], "80"); // 4 steps per 10 ms frame
+    EXPECT_EQ(by_run["time_step_3ms"]["within_budget"], "1");
+    // Leapfrog is exact here: the change is round-off and the figure meets its own reference.
+    EXPECT_LT(std::abs(std::stod(by_run["time_step_3ms"]["change"])), 1e-12);
+    EXPECT_LT(std::stod(by_run["time_step_3ms"]["reference_error"]), 1e-12);
+    EXPECT_EQ(by_run["time_step_1ms"]["knee"] == "1" || by_run["time_step_3ms"]["knee"] == "1",
+              true);
+    const bool plotted = fs::exists(out + "/trade.svg");
+    EXPECT_TRUE(plotted || first.output.find("plot skipped") != std::string::npos) << first.output;
+
+    const auto stamp = fs::last_write_time(out + "/time_step_1ms/summary.json");
+    const auto second = run_cli(sweep + end, out + ".log");
+    ASSERT_EQ(second.exit_code, 0) << second.output;
+    EXPECT_NE(second.output.find("3 runs, 3 finished earlier, 0 to run"), std::string::npos)
+        << second.output;
+    EXPECT_EQ(fs::last_write_time(out + "/time_step_1ms/summary.json"), stamp);
+
+    const auto grown = run_cli(sweep + ",2 ms" + end, out + ".log");
+    ASSERT_EQ(grown.exit_code, 0) << grown.output;
+    EXPECT_NE(grown.output.find("4 runs, 3 finished earlier, 1 to run"), std::string::npos)
+        << grown.output;
+
+    const auto other = run_cli(sweep + end + " --set 'case.end_time=0.1 s'", out + ".log");
+    EXPECT_EQ(other.exit_code, 2) << other.output;
+    EXPECT_NE(other.output.find("its runs cannot be reused"), std::string::npos) << other.output;
+    fs::remove_all(out);
+}
+
+TEST(TradeCli, RefusesAnAxisWithoutAccuracyRule) {
+    const auto result = run_cli("trade " + kCase + " --out '" + ::testing::TempDir() +
+                                    "grainload_trade_norule' --vary 'sph.kernel=cubic_spline,"
+                                    "quintic_spline'",
+                                ::testing::TempDir() + "grainload_trade_norule.log");
+    EXPECT_EQ(result.exit_code, 2) << result.output;
+    EXPECT_NE(result.output.find("--reference 'sph.kernel=VALUE'"), std::string::npos)
+        << result.output;
+}
+
+} // namespace
