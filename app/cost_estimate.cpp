@@ -122,6 +122,39 @@ Calibration load_calibration() {
     return c;
 }
 
+namespace {
+
+/// Seconds of one thread per SPH step of a model at the calibrated costs; fills the counts.
+double sph_seconds_per_step(const sph::SphModel& sph, const Calibration& c, CostEstimate& e) {
+    const Index n = sph.point_count();
+    const auto& wall_id = sph.particles().wall_id;
+    const auto walls = static_cast<Index>(
+        std::count_if(wall_id.begin(), wall_id.end(), [](int w) { return w >= 0; }));
+    const auto [entries, contacts] = count_entries(sph);
+    e.sph_particles += n;
+    e.wall_particles += walls;
+    e.entries += entries;
+    e.contact_entries += contacts;
+    const bool two_d = sph.dimension() == 2;
+    return static_cast<double>(entries) *
+               (two_d ? c.seconds_per_entry_2d : c.seconds_per_entry_3d) +
+           static_cast<double>(contacts) *
+               (two_d ? c.seconds_per_contact_entry_2d : c.seconds_per_contact_entry_3d) +
+           static_cast<double>(n - walls) *
+               (two_d ? c.seconds_per_body_2d : c.seconds_per_body_3d) +
+           static_cast<double>(walls) * (two_d ? c.seconds_per_wall_2d : c.seconds_per_wall_3d);
+}
+
+/// Parallel speed-up: linear between 1 and the measured threads, no further gain beyond them
+/// (the calibration knows nothing of more cores).
+double speedup_of(int threads, const Calibration& c) {
+    const int measured = std::max(1, c.threads_measured);
+    const double used = std::min(threads, measured);
+    return measured == 1 ? 1.0 : 1.0 + (c.speedup - 1.0) * (used - 1.0) / (measured - 1.0);
+}
+
+} // namespace
+
 CostEstimate estimate_cost(const Scene& scene, int threads, const Calibration& calibration) {
     CostEstimate e;
     e.threads = std::max(1, threads);
@@ -132,50 +165,23 @@ CostEstimate estimate_cost(const Scene& scene, int threads, const Calibration& c
     const double end = scene.settings.end_time;
     const double interval = scene.settings.output_interval;
     e.time_step = std::isfinite(dt) ? dt : interval;
-    // Parallel speed-up: linear interpolation between 1 and the measured threads, and no
-    // further gain beyond them (the calibration knows nothing of more cores).
-    const int measured = std::max(1, calibration.threads_measured);
-    const double used = std::min(e.threads, measured);
-    const double speedup =
-        measured == 1 ? 1.0 : 1.0 + (calibration.speedup - 1.0) * (used - 1.0) / (measured - 1.0);
+    e.steps = count_steps(end, interval, e.time_step, e.time_step).steps;
+    const double speedup = speedup_of(e.threads, calibration);
     double seconds = 0.0;
     double bytes = calibration.baseline_bytes;
     auto add_sph = [&](const sph::SphModel& sph, double sph_dt) {
-        const StepCount count = count_steps(end, interval, e.time_step, sph_dt);
-        const Index n = sph.point_count();
-        const auto& wall_id = sph.particles().wall_id;
-        const auto walls = static_cast<Index>(
-            std::count_if(wall_id.begin(), wall_id.end(), [](int w) { return w >= 0; }));
-        const auto [entries, contacts] = count_entries(sph);
-        const bool two_d = sph.dimension() == 2;
-        e.sph_particles += n;
-        e.wall_particles += walls;
-        e.entries += entries;
-        e.contact_entries += contacts;
-        e.sph_steps += count.sph_steps;
-        e.steps = count.steps;
-        e.particle_steps += static_cast<double>(n) * count.sph_steps;
-        const double per_step =
-            static_cast<double>(entries) *
-                (two_d ? calibration.seconds_per_entry_2d : calibration.seconds_per_entry_3d) +
-            static_cast<double>(contacts) * (two_d ? calibration.seconds_per_contact_entry_2d
-                                                   : calibration.seconds_per_contact_entry_3d) +
-            static_cast<double>(n - walls) *
-                (two_d ? calibration.seconds_per_body_2d : calibration.seconds_per_body_3d) +
-            static_cast<double>(walls) *
-                (two_d ? calibration.seconds_per_wall_2d : calibration.seconds_per_wall_3d);
-        seconds += per_step * count.sph_steps / speedup;
+        const double sph_steps = count_steps(end, interval, e.time_step, sph_dt).sph_steps;
+        e.sph_steps += sph_steps;
+        e.particle_steps += static_cast<double>(sph.point_count()) * sph_steps;
+        seconds += sph_seconds_per_step(sph, calibration, e) * sph_steps / speedup;
         bytes += sph.solver() ? static_cast<double>(sph.solver()->bytes()) : 0.0;
     };
     auto add_shell = [&](const fem::ShellModel& fem) {
-        const StepCount count = count_steps(end, interval, e.time_step, e.time_step);
+        const auto dofs = static_cast<double>(fem.analysis().free_dof_count());
         e.shell_nodes += fem.point_count();
         e.shell_dofs += fem.analysis().free_dof_count();
-        e.steps = count.steps;
-        seconds += static_cast<double>(fem.analysis().free_dof_count()) *
-                   static_cast<double>(count.steps) * calibration.shell_seconds_per_dof_step;
-        bytes +=
-            static_cast<double>(fem.analysis().free_dof_count()) * calibration.shell_bytes_per_dof;
+        seconds += dofs * static_cast<double>(e.steps) * calibration.shell_seconds_per_dof_step;
+        bytes += dofs * calibration.shell_bytes_per_dof;
     };
     for (const auto& stepper : scene.steppers) {
         if (const auto* coupled = dynamic_cast<const coupling::CoupledModel*>(stepper.get())) {
@@ -186,9 +192,6 @@ CostEstimate estimate_cost(const Scene& scene, int threads, const Calibration& c
         } else if (const auto* fem = dynamic_cast<const fem::ShellModel*>(stepper.get())) {
             add_shell(*fem);
         }
-    }
-    if (e.steps == 0) {
-        e.steps = count_steps(end, interval, e.time_step, e.time_step).steps;
     }
     e.wall_time_s = seconds;
     e.memory_bytes = bytes;

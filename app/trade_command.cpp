@@ -250,6 +250,21 @@ void plot(const TradeOptions& o) {
                 last.empty() ? "python3 could not be started" : last.c_str());
 }
 
+/// The commands of the runs still to do, their directories made and emptied of a summary an
+/// interrupted attempt may have left.
+std::vector<ProcessSpec> prepare_runs(const TradeOptions& o, const std::string& case_path,
+                                      const std::vector<TradeRun>& grid,
+                                      const std::vector<std::size_t>& pending, int threads) {
+    std::vector<ProcessSpec> commands;
+    for (const std::size_t r : pending) {
+        const std::string directory = o.out + "/" + grid[r].id;
+        fs::create_directories(directory);
+        fs::remove(directory + "/summary.json");
+        commands.push_back(run_command(o, case_path, grid[r], threads));
+    }
+    return commands;
+}
+
 } // namespace
 
 const char* trade_usage() {
@@ -324,18 +339,14 @@ int run_trade(const TradeOptions& o) {
     const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     const int threads = o.threads.value_or(std::max(1, cores / o.jobs));
     std::vector<std::optional<RunRecord>> records(grid.size());
-    std::vector<ProcessSpec> commands;
     std::vector<std::size_t> pending;
     for (std::size_t r = 0; r < grid.size(); ++r) {
-        const std::string directory = o.out + "/" + grid[r].id;
-        records[r] = finished_record(directory, grid[r]);
+        records[r] = finished_record(o.out + "/" + grid[r].id, grid[r]);
         if (!records[r]) {
-            fs::create_directories(directory);
-            fs::remove(directory + "/summary.json");
-            commands.push_back(run_command(o, case_path, grid[r], threads));
             pending.push_back(r);
         }
     }
+    const std::vector<ProcessSpec> commands = prepare_runs(o, case_path, grid, pending, threads);
     std::printf("trade: %zu runs, %zu finished earlier, %zu to run (%d at a time, %d threads "
                 "each); most accurate: %s\n",
                 grid.size(), grid.size() - pending.size(), pending.size(), o.jobs, threads,

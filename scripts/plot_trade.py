@@ -20,18 +20,27 @@ try:
     import matplotlib
 
     matplotlib.use("Agg")
+    matplotlib.rcParams["svg.fonttype"] = "none"  # text as text: small, diffable SVG
     import matplotlib.pyplot as plt
 except ImportError:
     print("matplotlib is not installed (Debian package python3-matplotlib)", file=sys.stderr)
     sys.exit(4)
 
-# Changes below this are drawn on the floor of the log axis (the most accurate run is 0).
-FLOOR = 1e-6
+# Changes below budget / FLOOR_DECADES are drawn on the floor of the log axis (the most accurate
+# run is 0), so the axis spans what matters around the budget.
+FLOOR_DECADES = 100.0
 
 
 def read_rows(path):
     with open(path, newline="") as f:
-        return list(csv.DictReader(f))
+        reader = csv.DictReader(f)
+        rows = list(reader)
+        fields = reader.fieldnames
+    # The axis columns stand between "run" and "status": a run is labelled by its values.
+    axes = fields[1:fields.index("status")]
+    for r in rows:
+        r["label"] = ", ".join(r[a] for a in axes)
+    return rows, axes
 
 
 def main():
@@ -41,7 +50,9 @@ def main():
     parser.add_argument("--budget", type=float, default=0.02)
     parser.add_argument("--figures", default="")
     args = parser.parse_args()
-    rows = [r for r in read_rows(args.csv) if r["figure"]]
+    rows, axes_keys = read_rows(args.csv)
+    rows = [r for r in rows if r["figure"]]
+    floor = args.budget / FLOOR_DECADES
     chosen = [f for f in args.figures.split(",") if f]
     figures = chosen or sorted({r["figure"] for r in rows if r["change"]})
     if not figures:
@@ -50,28 +61,32 @@ def main():
     columns = min(3, len(figures))
     lines = math.ceil(len(figures) / columns)
     fig, axes = plt.subplots(lines, columns, figsize=(4.2 * columns, 3.4 * lines), squeeze=False)
-    for panel, name in zip(axes.flat, figures):
+    for index, (panel, name) in enumerate(zip(axes.flat, figures)):
         points = [r for r in rows if r["figure"] == name and r["status"] == "completed"
                   and r["change"] not in ("", "inf", "-inf")]
         for r in points:
-            change = max(abs(float(r["change"])), FLOOR)
+            change = max(abs(float(r["change"])), floor)
             inside = r["within_budget"] == "1"
             panel.scatter(float(r["elapsed_s"]), change, color="C0" if inside else "0.6",
                           zorder=3)
             if r["knee"] == "1":
                 panel.scatter(float(r["elapsed_s"]), change, s=160, facecolors="none",
                               edgecolors="C3", linewidths=1.5, zorder=4, label="knee")
-            panel.annotate(r["run"], (float(r["elapsed_s"]), change), fontsize=6,
-                           xytext=(3, 3), textcoords="offset points")
+            panel.annotate(r["label"], (float(r["elapsed_s"]), change), fontsize=6,
+                           xytext=(3, 3), textcoords="offset points",
+                           color="black" if inside else "0.45")
         panel.axhline(args.budget, color="C3", linestyle="--", linewidth=1, label="budget")
         panel.set_xscale("log")
         panel.set_yscale("log")
         panel.set_title(name, fontsize=9)
         panel.set_xlabel("elapsed time (s)")
         panel.set_ylabel("|change| against the most accurate run")
-        panel.legend(fontsize=7)
+        if index == 0:
+            panel.legend(fontsize=7, loc="lower left")
     for panel in list(axes.flat)[len(figures):]:
         panel.axis("off")
+    fig.suptitle("runs labelled " + ", ".join(axes_keys) + f"; floor = change < {floor:g}",
+                 fontsize=8)
     fig.tight_layout()
     fig.savefig(args.out)
     return 0
