@@ -6,6 +6,7 @@
 
 #include <exception>
 #include <iostream>
+#include <string>
 
 int main(int argc, char** argv) {
     using namespace grainload;
@@ -25,7 +26,8 @@ int main(int argc, char** argv) {
             std::cout << "grainload " << kVersion << " (" << kGitHash << ")\n";
             return app::kExitOk;
         case app::CommandLine::Command::help:
-            std::cout << app::usage();
+            std::cout << (line.help_topic.empty() ? std::string(app::usage())
+                                                  : app::usage(line.help_topic));
             return app::kExitOk;
         }
     } catch (const io::CaseError& error) {

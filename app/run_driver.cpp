@@ -1,9 +1,9 @@
 #include "app/run_driver.hpp"
 
+#include "app/checkpoint.hpp"
 #include "app/progress_reporter.hpp"
 #include "app/scene.hpp"
 #include "io/atomic_file.hpp"
-#include "io/binary_stream.hpp"
 #include "io/run_summary.hpp"
 #include "io/version.hpp"
 #include "io/vtk_frame_writer.hpp"
@@ -19,15 +19,6 @@ namespace grainload::app {
 
 namespace {
 
-constexpr std::uint64_t kCheckpointMagic = 0x474c434b50543031; // "GLCKPT01"
-
-/// The mutable part of a run that a checkpoint must carry besides the models.
-struct RunClock {
-    double t = 0.0;
-    long long step = 0;
-    std::vector<double> frame_times;
-};
-
 io::Frame collect_frame(const Scene& scene, double t) {
     io::Frame frame;
     frame.time = t;
@@ -35,36 +26,6 @@ io::Frame collect_frame(const Scene& scene, double t) {
         stepper->append_blocks(frame);
     }
     return frame;
-}
-
-void write_checkpoint(const Scene& scene, const RunClock& clock, const std::string& path) {
-    io::write_file_atomically(
-        path,
-        [&](std::ostream& out) {
-            io::write_value(out, kCheckpointMagic);
-            io::write_value(out, clock.t);
-            io::write_value(out, clock.step);
-            io::write_array(out, clock.frame_times);
-            for (const auto& stepper : scene.steppers) {
-                stepper->write_checkpoint(out);
-            }
-        },
-        true);
-}
-
-RunClock read_checkpoint(Scene& scene, const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in || io::read_value<std::uint64_t>(in) != kCheckpointMagic) {
-        throw io::CaseError(path + ": not a grainload checkpoint");
-    }
-    RunClock clock;
-    clock.t = io::read_value<double>(in);
-    clock.step = io::read_value<long long>(in);
-    io::read_array(in, clock.frame_times);
-    for (const auto& stepper : scene.steppers) {
-        stepper->read_checkpoint(in);
-    }
-    return clock;
 }
 
 double stable_step(const Scene& scene) {

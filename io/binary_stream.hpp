@@ -2,8 +2,10 @@
 
 #include <cstdint>
 #include <istream>
+#include <limits>
 #include <ostream>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -24,18 +26,49 @@ template <class T> void write_array(std::ostream& out, const std::vector<T>& val
               static_cast<std::streamsize>(count * sizeof(T)));
 }
 
+/// Bytes left between the read position and the end of a seekable stream; the largest value
+/// when the stream cannot tell (a pipe).
+inline std::uint64_t remaining_bytes(std::istream& in) {
+    const std::streampos here = in.tellg();
+    if (here < 0) {
+        return std::numeric_limits<std::uint64_t>::max();
+    }
+    in.seekg(0, std::ios::end);
+    const std::streampos end = in.tellg();
+    in.seekg(here);
+    return end >= here ? static_cast<std::uint64_t>(end - here) : 0;
+}
+
+/// Reads what write_array wrote. A count larger than the bytes left in the stream is refused
+/// before anything is allocated, so a corrupt count cannot ask for terabytes.
 template <class T> void read_array(std::istream& in, std::vector<T>& values) {
     static_assert(kRawDumpable<T>);
     std::uint64_t count = 0;
     in.read(reinterpret_cast<char*>(&count), sizeof count);
-    if (!in || count > (std::uint64_t{1} << 40)) {
-        throw std::runtime_error("checkpoint is truncated or corrupt");
+    if (!in) {
+        throw std::runtime_error("checkpoint is truncated");
+    }
+    if (count > remaining_bytes(in) / sizeof(T)) {
+        throw std::runtime_error("checkpoint is truncated or corrupt: an array of " +
+                                 std::to_string(count) + " values of " + std::to_string(sizeof(T)) +
+                                 " bytes is longer than the file");
     }
     values.resize(static_cast<std::size_t>(count));
     in.read(reinterpret_cast<char*>(values.data()),
             static_cast<std::streamsize>(count * sizeof(T)));
     if (!in) {
         throw std::runtime_error("checkpoint is truncated");
+    }
+}
+
+/// Same, and the array must hold `expected` values (`what` names it in the message): a
+/// checkpoint of another case must not leave arrays of the wrong length behind.
+template <class T>
+void read_array(std::istream& in, std::vector<T>& values, std::size_t expected, const char* what) {
+    read_array(in, values);
+    if (values.size() != expected) {
+        throw std::runtime_error("checkpoint holds " + std::to_string(values.size()) + " " + what +
+                                 ", the case makes " + std::to_string(expected));
     }
 }
 

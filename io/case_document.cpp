@@ -1,5 +1,7 @@
 #include "io/case_table.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -71,9 +73,14 @@ std::unique_ptr<CaseDocument> CaseDocument::from_string(std::string_view text,
 }
 
 std::unique_ptr<CaseDocument> CaseDocument::from_file(const std::string& file) {
+    std::error_code error;
+    if (std::filesystem::is_directory(file, error)) {
+        throw CaseError(file + ": is a directory; expected a case file (CASE.toml)");
+    }
     std::ifstream in(file, std::ios::binary);
     if (!in) {
-        throw CaseError(file + ": cannot open the case file");
+        // errno from the failed open says why: no such file, permission denied, ...
+        throw CaseError(file + ": cannot open the case file (" + std::strerror(errno) + ")");
     }
     std::ostringstream text;
     text << in.rdbuf();
