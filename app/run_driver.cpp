@@ -14,6 +14,7 @@
 #include <iostream>
 #include <limits>
 #include <omp.h>
+#include <sstream>
 
 namespace grainload::app {
 
@@ -34,6 +35,22 @@ double stable_step(const Scene& scene) {
         dt = std::min(dt, stepper->stable_time_step());
     }
     return std::isfinite(dt) ? dt : scene.settings.output_interval;
+}
+
+/// Advances every stepper. A numerical failure that a module reports by throwing (a singular
+/// stiffness matrix, a material point whose iteration diverges) is a diagnosis like any other:
+/// the run stops with exit code 3, its summary and its last good frame and checkpoint.
+std::optional<std::string> advance(Scene& scene, double t, double dt) {
+    for (const auto& stepper : scene.steppers) {
+        try {
+            stepper->advance(t, dt);
+        } catch (const io::CaseError&) {
+            throw;
+        } catch (const std::runtime_error& error) {
+            return std::string(stepper->name()) + ": " + error.what();
+        }
+    }
+    return std::nullopt;
 }
 
 std::optional<std::string> diagnose(const Scene& scene) {
@@ -59,6 +76,25 @@ io::RunSummary make_summary(const Scene& scene, const CommandLine& line, const R
         stepper->append_results(clock.t, summary.results);
     }
     return summary;
+}
+
+/// The watchdog's exit: summary.json with status "unstable" and the one-line diagnosis, and
+/// the message naming the last good frame and its checkpoint, which the run wrote together.
+int stop_unstable(const Scene& scene, const CommandLine& line, const RunClock& clock,
+                  std::string problem, const std::string& last_frame, ProgressReporter& progress) {
+    std::replace(problem.begin(), problem.end(), '\n', ' ');
+    const std::string out = line.out.value_or("out/" + scene.settings.name);
+    auto summary = make_summary(scene, line, clock, progress.elapsed_seconds());
+    summary.status = "unstable";
+    summary.diagnosis = problem;
+    io::write_run_summary(summary, out + "/summary.json");
+    std::ostringstream message;
+    message.precision(9);
+    message << "grainload: the run became unstable at t = " << clock.t << " s (step " << clock.step
+            << "): " << problem << "\nlast good frame: " << last_frame
+            << "\ncheckpoint of that frame: " << out << "/checkpoint.bin";
+    progress.message(message.str());
+    return kExitUnstable;
 }
 
 } // namespace
@@ -121,21 +157,11 @@ int run_case(const CommandLine& line) {
     while (clock.t < scene->settings.end_time - end_tolerance) {
         const double next_output = next_output_time();
         dt = std::min(stable_step(*scene), next_output - clock.t);
-        for (const auto& stepper : scene->steppers) {
-            stepper->advance(clock.t, dt);
-        }
+        std::optional<std::string> failure = advance(*scene, clock.t, dt);
         clock.t += dt;
         ++clock.step;
-        if (auto problem = diagnose(*scene)) {
-            auto summary = make_summary(*scene, line, clock, progress.elapsed_seconds());
-            summary.status = "unstable";
-            summary.diagnosis = *problem;
-            io::write_run_summary(summary, out + "/summary.json");
-            progress.message("grainload: the run became unstable at t = " +
-                             std::to_string(clock.t) + " s (step " + std::to_string(clock.step) +
-                             "): " + *problem + "\nlast good frame: " + writer.last_frame_path() +
-                             "\ncheckpoint of that frame: " + checkpoint);
-            return kExitUnstable;
+        if (auto problem = failure ? failure : diagnose(*scene)) {
+            return stop_unstable(*scene, line, clock, *problem, writer.last_frame_path(), progress);
         }
         if (clock.t >= next_output - end_tolerance) {
             clock.t = next_output;

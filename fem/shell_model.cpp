@@ -166,6 +166,11 @@ void ShellModel::solve_step(double t, double dt) {
             << entry.report.cutbacks
             << " cut-backs; last converged t = " << analysis_->load_factor() << " s (load factor "
             << entry.load_factor << ")";
+        if (const Index dof = entry.report.worst_dof; dof >= 0) {
+            why << "; largest out-of-balance force at " << dof_name(dof) << " (part "
+                << part_of_node(dof / 6) << "): " << entry.report.worst_residual
+                << (dof % 6 < 3 ? " N" : " N m");
+        }
         failure_ = why.str();
     }
     log_.push_back(std::move(entry));

@@ -147,7 +147,7 @@ ParticleCount estimate_body(const io::CaseTable& body, int dimension) {
 }
 
 /// A wall's surface measure (area in 3D, length in 2D) and how it was found.
-std::pair<double, std::string> wall_measure(const io::CaseTable& wall, int dimension,
+std::pair<double, std::string> wall_measure(const io::CaseTable& wall, int dimension, double layers,
                                             double thickness) {
     const std::string type = wall.choice("type", {"plane", "box", "mesh"});
     if (type == "mesh") {
@@ -155,10 +155,19 @@ std::pair<double, std::string> wall_measure(const io::CaseTable& wall, int dimen
         return {measure, "mesh wall of " + text(measure) + (dimension == 3 ? " m^2" : " m")};
     }
     if (type == "plane") {
+        // Rows on both edges, as plane_wall_points lays them: (round(|u| / s) + 1) per edge.
+        const double spacing = thickness / layers;
+        auto rows = [&](const Vec3& edge) {
+            return std::max(1.0, std::round(edge.norm() / spacing)) + 1.0;
+        };
         const Vec3 u = wall.vector("edge_u", dim::kLength);
-        const double measure =
-            dimension == 3 ? u.norm() * wall.vector("edge_v", dim::kLength).norm() : u.norm();
-        return {measure, "plane wall of " + text(measure) + (dimension == 3 ? " m^2" : " m")};
+        const double cells =
+            dimension == 3 ? rows(u) * rows(wall.vector("edge_v", dim::kLength)) : rows(u);
+        return {cells * std::pow(spacing, dimension - 1),
+                "plane wall of " + text(u.norm()) + " m" +
+                    (dimension == 3
+                         ? " x " + text(wall.vector("edge_v", dim::kLength).norm()) + " m"
+                         : "")};
     }
     // A box wall wraps its box in `thickness`: its cross-section surface is the outer box's
     // volume less the inner one (and less the open top), divided by the thickness.
@@ -188,7 +197,7 @@ ParticleCount estimate_wall(const io::CaseTable& wall, int dimension, double bod
     count.spacing_key = wall.has("spacing") ? wall.key_path("spacing") : std::string();
     const auto layers = static_cast<double>(
         wall.integer_or("layers", static_cast<int>(std::ceil(support / count.spacing))));
-    const auto [measure, basis] = wall_measure(wall, dimension, layers * count.spacing);
+    const auto [measure, basis] = wall_measure(wall, dimension, layers, layers * count.spacing);
     count.particles = layers * measure / std::pow(count.spacing, dimension - 1);
     count.basis =
         basis + " x " + text(layers) + " layers / spacing^" + std::to_string(dimension - 1);
