@@ -6,6 +6,7 @@
 #include <cmath>
 #include <istream>
 #include <ostream>
+#include <sstream>
 #include <stdexcept>
 
 namespace grainload::app {
@@ -55,6 +56,12 @@ RunClock read_checkpoint(Scene& scene, const std::string& path) {
     RunClock clock;
     io::read_checkpoint_file(path, [&](std::istream& in) { clock = read_payload(scene, in); });
     return clock;
+}
+
+std::string checkpoint_bytes(const Scene& scene, const RunClock& clock) {
+    std::ostringstream payload(std::ios::binary);
+    write_payload(scene, clock, payload);
+    return io::frame_checkpoint(payload.str());
 }
 
 RunClock read_checkpoint_bytes(Scene& scene, std::string_view bytes) {

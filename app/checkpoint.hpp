@@ -23,7 +23,10 @@ void write_checkpoint(const Scene& scene, const RunClock& clock, const std::stri
 /// another case, or a directory throws io::CaseError naming the file (exit code 2).
 RunClock read_checkpoint(Scene& scene, const std::string& path);
 
-/// Same, from a checkpoint held in memory (for the fuzz harness).
+/// The bytes write_checkpoint would write (for the fuzz harness and tests).
+std::string checkpoint_bytes(const Scene& scene, const RunClock& clock);
+
+/// Same as read_checkpoint, from a checkpoint held in memory (for the fuzz harness).
 RunClock read_checkpoint_bytes(Scene& scene, std::string_view bytes);
 
 } // namespace grainload::app

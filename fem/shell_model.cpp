@@ -391,8 +391,9 @@ void ShellModel::read_checkpoint(std::istream& in) {
     analysis_->read_state(in);
     if (dynamic_) {
         std::vector<double> v, a;
-        io::read_array(in, v);
-        io::read_array(in, a);
+        const auto dofs = static_cast<std::size_t>(newmark_->velocity().size());
+        io::read_array(in, v, dofs, "shell velocities");
+        io::read_array(in, a, dofs, "shell accelerations");
         const auto n = static_cast<Eigen::Index>(v.size());
         newmark_->restore(Eigen::Map<const Eigen::VectorXd>(v.data(), n),
                           Eigen::Map<const Eigen::VectorXd>(a.data(), n));

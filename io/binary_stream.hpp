@@ -39,20 +39,24 @@ inline std::uint64_t remaining_bytes(std::istream& in) {
     return end >= here ? static_cast<std::uint64_t>(end - here) : 0;
 }
 
-/// Reads what write_array wrote. A count larger than the bytes left in the stream is refused
-/// before anything is allocated, so a corrupt count cannot ask for terabytes.
-template <class T> void read_array(std::istream& in, std::vector<T>& values) {
-    static_assert(kRawDumpable<T>);
+/// The element count in front of an array of `element_size`-byte values. A count larger than
+/// the bytes left in the stream is refused before anything is allocated, so a corrupt count
+/// cannot ask for terabytes.
+inline std::uint64_t read_count(std::istream& in, std::size_t element_size) {
     std::uint64_t count = 0;
     in.read(reinterpret_cast<char*>(&count), sizeof count);
     if (!in) {
         throw std::runtime_error("checkpoint is truncated");
     }
-    if (count > remaining_bytes(in) / sizeof(T)) {
+    if (count > remaining_bytes(in) / element_size) {
         throw std::runtime_error("checkpoint is truncated or corrupt: an array of " +
-                                 std::to_string(count) + " values of " + std::to_string(sizeof(T)) +
-                                 " bytes is longer than the file");
+                                 std::to_string(count) + " values of " +
+                                 std::to_string(element_size) + " bytes is longer than the file");
     }
+    return count;
+}
+
+template <class T> void read_values(std::istream& in, std::vector<T>& values, std::uint64_t count) {
     values.resize(static_cast<std::size_t>(count));
     in.read(reinterpret_cast<char*>(values.data()),
             static_cast<std::streamsize>(count * sizeof(T)));
@@ -61,15 +65,24 @@ template <class T> void read_array(std::istream& in, std::vector<T>& values) {
     }
 }
 
-/// Same, and the array must hold `expected` values (`what` names it in the message): a
-/// checkpoint of another case must not leave arrays of the wrong length behind.
+/// Reads what write_array wrote.
+template <class T> void read_array(std::istream& in, std::vector<T>& values) {
+    static_assert(kRawDumpable<T>);
+    read_values(in, values, read_count(in, sizeof(T)));
+}
+
+/// Same, and the array must hold `expected` values (`what` names them in the message): a
+/// checkpoint of another case must not leave arrays of the wrong length behind. A count that
+/// differs is refused before `values` is touched.
 template <class T>
 void read_array(std::istream& in, std::vector<T>& values, std::size_t expected, const char* what) {
-    read_array(in, values);
-    if (values.size() != expected) {
-        throw std::runtime_error("checkpoint holds " + std::to_string(values.size()) + " " + what +
+    static_assert(kRawDumpable<T>);
+    const std::uint64_t count = read_count(in, sizeof(T));
+    if (count != expected) {
+        throw std::runtime_error("checkpoint holds " + std::to_string(count) + " " + what +
                                  ", the case makes " + std::to_string(expected));
     }
+    read_values(in, values, count);
 }
 
 template <class T> void write_value(std::ostream& out, const T& value) {

@@ -1,6 +1,7 @@
 #include "io/case_table.hpp"
 
 #include <cerrno>
+#include <charconv>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -127,7 +128,15 @@ void CaseDocument::set(std::string_view assignment) {
         const auto& part = parts[i];
         if (part.front() == '[') {
             auto* array = cursor->as_array();
-            const auto index = std::stoul(part.substr(1, part.size() - 2));
+            // Digits only: "[x]", "[]" or an index beyond any array is the user's typo (exit
+            // code 2), not std::stoul's exception (found by tests/fuzz/fuzz_case).
+            std::size_t index = 0;
+            const std::string digits = part.substr(1, part.size() - 2);
+            const auto [end, error] =
+                std::from_chars(digits.data(), digits.data() + digits.size(), index);
+            if (digits.empty() || error != std::errc() || end != digits.data() + digits.size()) {
+                throw CaseError(origin + ": '" + part + "' is not an index [0], [1], ...");
+            }
             if (array == nullptr || index >= array->size()) {
                 throw CaseError(origin + ": '" + part + "' does not name an existing element");
             }

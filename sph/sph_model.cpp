@@ -470,11 +470,7 @@ void SphModel::write_checkpoint(std::ostream& out) const {
 void SphModel::read_checkpoint(std::istream& in) {
     auto& p = solver_ ? solver_->particles() : particles_;
     const auto n = p.position.size();
-    io::read_array(in, p.position);
-    if (p.position.size() != n) {
-        throw std::runtime_error("checkpoint holds " + std::to_string(p.position.size()) +
-                                 " particles, the case makes " + std::to_string(n));
-    }
+    io::read_array(in, p.position, n, "particles");
     // Every array must keep the length the case gave it: the solver indexes them by particle.
     const auto state_size = p.state.size();
     io::read_array(in, p.velocity, n, "velocities");
