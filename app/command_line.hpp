@@ -8,19 +8,26 @@ namespace grainload::app {
 
 /// What the user asked for on the command line.
 struct CommandLine {
-    enum class Command { run, check, matpoint, version, help };
+    enum class Command { run, check, matpoint, trade, version, help };
     Command command = Command::help;
     std::string input;                  ///< CASE.toml or DRIVER.toml
     std::optional<std::string> out;     ///< --out
     std::optional<int> threads;         ///< --threads
     std::vector<std::string> overrides; ///< --set key=value, in order
     std::optional<std::string> restart; ///< --restart CHECKPOINT
+    /// For help: the command whose usage to print ("run"); empty for the overview.
+    std::string help_topic;
 };
 
-/// Parse argv; throws io::CaseError (exit code 2) on a malformed command line.
+/// Parse argv; throws io::CaseError (exit code 2) on a malformed command line. `--help` or
+/// `-h` anywhere, `grainload help` and `grainload help COMMAND` ask for help (exit code 0).
 CommandLine parse_command_line(int argc, const char* const* argv);
 
-/// The --help text.
+/// The usage overview (`grainload --help`).
 const char* usage();
+
+/// The usage of one command ("run", "check", "matpoint", "version", "help"); throws io::CaseError
+/// for an unknown one.
+std::string usage(const std::string& command);
 
 } // namespace grainload::app

@@ -7,15 +7,11 @@
 
 #include <exception>
 #include <iostream>
-#include <string_view>
+#include <string>
 
 int main(int argc, char** argv) {
     using namespace grainload;
     try {
-        // `trade` has options of its own (app/trade_command.hpp).
-        if (argc >= 2 && std::string_view(argv[1]) == "trade") {
-            return app::trade_main(argc, argv);
-        }
         const app::CommandLine line = app::parse_command_line(argc, argv);
         switch (line.command) {
         case app::CommandLine::Command::run:
@@ -27,11 +23,14 @@ int main(int argc, char** argv) {
                 throw io::CaseError("command line: matpoint expects --out FILE.csv");
             }
             return materials::run_material_point(line.input, *line.out);
+        case app::CommandLine::Command::trade:
+            return app::trade_main(argc, argv);
         case app::CommandLine::Command::version:
             std::cout << "grainload " << kVersion << " (" << kGitHash << ")\n";
             return app::kExitOk;
         case app::CommandLine::Command::help:
-            std::cout << app::usage();
+            std::cout << (line.help_topic.empty() ? std::string(app::usage())
+                                                  : app::usage(line.help_topic));
             return app::kExitOk;
         }
     } catch (const io::CaseError& error) {

@@ -1,10 +1,10 @@
 #include "app/run_driver.hpp"
 
+#include "app/checkpoint.hpp"
 #include "app/cost_estimate.hpp"
 #include "app/progress_reporter.hpp"
 #include "app/scene.hpp"
 #include "io/atomic_file.hpp"
-#include "io/binary_stream.hpp"
 #include "io/run_summary.hpp"
 #include "io/version.hpp"
 #include "io/vtk_frame_writer.hpp"
@@ -15,19 +15,11 @@
 #include <iostream>
 #include <limits>
 #include <omp.h>
+#include <sstream>
 
 namespace grainload::app {
 
 namespace {
-
-constexpr std::uint64_t kCheckpointMagic = 0x474c434b50543031; // "GLCKPT01"
-
-/// The mutable part of a run that a checkpoint must carry besides the models.
-struct RunClock {
-    double t = 0.0;
-    long long step = 0;
-    std::vector<double> frame_times;
-};
 
 io::Frame collect_frame(const Scene& scene, double t) {
     io::Frame frame;
@@ -38,42 +30,28 @@ io::Frame collect_frame(const Scene& scene, double t) {
     return frame;
 }
 
-void write_checkpoint(const Scene& scene, const RunClock& clock, const std::string& path) {
-    io::write_file_atomically(
-        path,
-        [&](std::ostream& out) {
-            io::write_value(out, kCheckpointMagic);
-            io::write_value(out, clock.t);
-            io::write_value(out, clock.step);
-            io::write_array(out, clock.frame_times);
-            for (const auto& stepper : scene.steppers) {
-                stepper->write_checkpoint(out);
-            }
-        },
-        true);
-}
-
-RunClock read_checkpoint(Scene& scene, const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in || io::read_value<std::uint64_t>(in) != kCheckpointMagic) {
-        throw io::CaseError(path + ": not a grainload checkpoint");
-    }
-    RunClock clock;
-    clock.t = io::read_value<double>(in);
-    clock.step = io::read_value<long long>(in);
-    io::read_array(in, clock.frame_times);
-    for (const auto& stepper : scene.steppers) {
-        stepper->read_checkpoint(in);
-    }
-    return clock;
-}
-
 double stable_step(const Scene& scene) {
     double dt = std::numeric_limits<double>::infinity();
     for (const auto& stepper : scene.steppers) {
         dt = std::min(dt, stepper->stable_time_step());
     }
     return std::isfinite(dt) ? dt : scene.settings.output_interval;
+}
+
+/// Advances every stepper. A numerical failure that a module reports by throwing (a singular
+/// stiffness matrix, a material point whose iteration diverges) is a diagnosis like any other:
+/// the run stops with exit code 3, its summary and its last good frame and checkpoint.
+std::optional<std::string> advance(Scene& scene, double t, double dt) {
+    for (const auto& stepper : scene.steppers) {
+        try {
+            stepper->advance(t, dt);
+        } catch (const io::CaseError&) {
+            throw;
+        } catch (const std::runtime_error& error) {
+            return std::string(stepper->name()) + ": " + error.what();
+        }
+    }
+    return std::nullopt;
 }
 
 std::optional<std::string> diagnose(const Scene& scene) {
@@ -106,6 +84,27 @@ void attach(io::RunSummary& summary, const std::optional<CostEstimate>& estimate
         summary.estimated_steps = static_cast<double>(estimate->steps);
         summary.estimated_wall_time = estimate->wall_time_s;
     }
+}
+
+/// The watchdog's exit: summary.json with status "unstable" and the one-line diagnosis, and
+/// the message naming the last good frame and its checkpoint, which the run wrote together.
+int stop_unstable(const Scene& scene, const CommandLine& line, const RunClock& clock,
+                  std::string problem, const std::string& last_frame,
+                  const std::optional<CostEstimate>& estimate, ProgressReporter& progress) {
+    std::replace(problem.begin(), problem.end(), '\n', ' ');
+    const std::string out = line.out.value_or("out/" + scene.settings.name);
+    auto summary = make_summary(scene, line, clock, progress.elapsed_seconds());
+    attach(summary, estimate);
+    summary.status = "unstable";
+    summary.diagnosis = problem;
+    io::write_run_summary(summary, out + "/summary.json");
+    std::ostringstream message;
+    message.precision(9);
+    message << "grainload: the run became unstable at t = " << clock.t << " s (step " << clock.step
+            << "): " << problem << "\nlast good frame: " << last_frame
+            << "\ncheckpoint of that frame: " << out << "/checkpoint.bin";
+    progress.message(message.str());
+    return kExitUnstable;
 }
 
 } // namespace
@@ -189,22 +188,12 @@ int run_case(const CommandLine& line) {
     while (clock.t < scene->settings.end_time - end_tolerance) {
         const double next_output = next_output_time();
         dt = std::min(stable_step(*scene), next_output - clock.t);
-        for (const auto& stepper : scene->steppers) {
-            stepper->advance(clock.t, dt);
-        }
+        std::optional<std::string> failure = advance(*scene, clock.t, dt);
         clock.t += dt;
         ++clock.step;
-        if (auto problem = diagnose(*scene)) {
-            auto summary = make_summary(*scene, line, clock, progress.elapsed_seconds());
-            attach(summary, estimate);
-            summary.status = "unstable";
-            summary.diagnosis = *problem;
-            io::write_run_summary(summary, out + "/summary.json");
-            progress.message("grainload: the run became unstable at t = " +
-                             std::to_string(clock.t) + " s (step " + std::to_string(clock.step) +
-                             "): " + *problem + "\nlast good frame: " + writer.last_frame_path() +
-                             "\ncheckpoint of that frame: " + checkpoint);
-            return kExitUnstable;
+        if (auto problem = failure ? failure : diagnose(*scene)) {
+            return stop_unstable(*scene, line, clock, *problem, writer.last_frame_path(), estimate,
+                                 progress);
         }
         if (clock.t >= next_output - end_tolerance) {
             clock.t = next_output;

@@ -1,5 +1,6 @@
 #include "app/scene.hpp"
 
+#include "app/memory_guard.hpp"
 #include "coupling/coupling_case_reader.hpp"
 #include "fem/shell_model.hpp"
 #include "sph/sph_model.hpp"
@@ -21,6 +22,7 @@ std::unique_ptr<Scene> Scene::load(const std::string& file,
         io::read_scene_settings(*scene->document, std::filesystem::path(file).stem().string());
     const io::CaseTable root = scene->document->root();
     scene->materials = materials::MaterialLibrary::from_case(root);
+    refuse_oversized_scene(root, scene->settings.dimension, available_memory());
     if (root.has("coupling")) {
         scene->steppers.push_back(
             coupling::read_coupled_model(root, scene->settings, scene->materials));

@@ -136,6 +136,7 @@ StepReport NewmarkIntegrator::step(double dt, double load_factor, const NewtonSe
         }
         if (residual0.norm() == 0.0 || i == settings.max_iterations) {
             if (i == settings.max_iterations) {
+                record_worst_dof(eq, residual, report);
                 analysis_->revert_to_committed();
                 return report;
             }

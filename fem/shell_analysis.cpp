@@ -4,6 +4,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -232,6 +233,30 @@ void ShellAnalysis::revert_to_committed() {
     rotations_ = committed_rotations_;
 }
 
+void record_worst_dof(const std::vector<Index>& equation_numbers, const Eigen::VectorXd& residual,
+                      StepReport& report) {
+    report.worst_dof = -1;
+    report.worst_residual = 0.0;
+    for (std::size_t d = 0; d < equation_numbers.size(); ++d) {
+        const Index row = equation_numbers[d];
+        if (row < 0) {
+            continue;
+        }
+        const double r = residual(row);
+        const bool worse = !std::isfinite(r) ? std::isfinite(report.worst_residual)
+                                             : std::abs(r) > std::abs(report.worst_residual);
+        if (report.worst_dof < 0 || worse) {
+            report.worst_dof = static_cast<Index>(d);
+            report.worst_residual = r;
+        }
+    }
+}
+
+std::string dof_name(Index dof) {
+    static constexpr std::array<const char*, 6> kComponents{"ux", "uy", "uz", "rx", "ry", "rz"};
+    return "node " + std::to_string(dof / 6) + " " + kComponents[static_cast<std::size_t>(dof % 6)];
+}
+
 bool ShellAnalysis::increment(double from, double to, const NewtonSettings& settings,
                               StepReport& report) {
     const std::vector<Index>& eq = equation_numbers();
@@ -266,6 +291,7 @@ bool ShellAnalysis::increment(double from, double to, const NewtonSettings& sett
                 residual -= free_part(coupling);
             }
             if (!residual.allFinite()) {
+                record_worst_dof(eq, residual, report);
                 return false;
             }
             if (i == 0) {
@@ -299,6 +325,7 @@ bool ShellAnalysis::increment(double from, double to, const NewtonSettings& sett
                 }
             }
             if (i == settings.max_iterations) {
+                record_worst_dof(eq, residual, report);
                 return false;
             }
             solver_.factorize(k, tangent_symmetric());

@@ -40,7 +40,20 @@ struct StepReport {
     std::string solver;               ///< which factorisation ran last
     std::vector<NewtonIteration> log; ///< iterations of every accepted increment, in order
     std::vector<int> iterations;      ///< iterations per accepted increment
+    /// Where the last increment that did not converge was furthest out of balance: the global
+    /// DOF (node * 6 + component, components ux uy uz rx ry rz) with the largest |residual| (a
+    /// non-finite one first) of its last iteration, and that residual [N or N m]; -1: none.
+    Index worst_dof = -1;
+    double worst_residual = 0.0;
 };
+
+/// Sets report.worst_dof and worst_residual from the free-DOF `residual` of a failed increment
+/// (`equation_numbers` maps global DOFs to its rows, -1 for constrained ones).
+void record_worst_dof(const std::vector<Index>& equation_numbers, const Eigen::VectorXd& residual,
+                      StepReport& report);
+
+/// "node 12 uz" for a global DOF.
+std::string dof_name(Index dof);
 
 /// One shell part of a structure (a [[fem.shell]] table): its elements are those of the mesh
 /// with ShellElement::part equal to its index; each part has its own material and through-

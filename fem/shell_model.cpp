@@ -166,6 +166,11 @@ void ShellModel::solve_step(double t, double dt) {
             << entry.report.cutbacks
             << " cut-backs; last converged t = " << analysis_->load_factor() << " s (load factor "
             << entry.load_factor << ")";
+        if (const Index dof = entry.report.worst_dof; dof >= 0) {
+            why << "; largest out-of-balance force at " << dof_name(dof) << " (part "
+                << part_of_node(dof / 6) << "): " << entry.report.worst_residual
+                << (dof % 6 < 3 ? " N" : " N m");
+        }
         failure_ = why.str();
     }
     log_.push_back(std::move(entry));
@@ -386,8 +391,9 @@ void ShellModel::read_checkpoint(std::istream& in) {
     analysis_->read_state(in);
     if (dynamic_) {
         std::vector<double> v, a;
-        io::read_array(in, v);
-        io::read_array(in, a);
+        const auto dofs = static_cast<std::size_t>(newmark_->velocity().size());
+        io::read_array(in, v, dofs, "shell velocities");
+        io::read_array(in, a, dofs, "shell accelerations");
         const auto n = static_cast<Eigen::Index>(v.size());
         newmark_->restore(Eigen::Map<const Eigen::VectorXd>(v.data(), n),
                           Eigen::Map<const Eigen::VectorXd>(a.data(), n));

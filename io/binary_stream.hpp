@@ -2,8 +2,10 @@
 
 #include <cstdint>
 #include <istream>
+#include <limits>
 #include <ostream>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -24,19 +26,63 @@ template <class T> void write_array(std::ostream& out, const std::vector<T>& val
               static_cast<std::streamsize>(count * sizeof(T)));
 }
 
-template <class T> void read_array(std::istream& in, std::vector<T>& values) {
-    static_assert(kRawDumpable<T>);
+/// Bytes left between the read position and the end of a seekable stream; the largest value
+/// when the stream cannot tell (a pipe).
+inline std::uint64_t remaining_bytes(std::istream& in) {
+    const std::streampos here = in.tellg();
+    if (here < 0) {
+        return std::numeric_limits<std::uint64_t>::max();
+    }
+    in.seekg(0, std::ios::end);
+    const std::streampos end = in.tellg();
+    in.seekg(here);
+    return end >= here ? static_cast<std::uint64_t>(end - here) : 0;
+}
+
+/// The element count in front of an array of `element_size`-byte values. A count larger than
+/// the bytes left in the stream is refused before anything is allocated, so a corrupt count
+/// cannot ask for terabytes.
+inline std::uint64_t read_count(std::istream& in, std::size_t element_size) {
     std::uint64_t count = 0;
     in.read(reinterpret_cast<char*>(&count), sizeof count);
-    if (!in || count > (std::uint64_t{1} << 40)) {
-        throw std::runtime_error("checkpoint is truncated or corrupt");
+    if (!in) {
+        throw std::runtime_error("checkpoint is truncated");
     }
+    if (count > remaining_bytes(in) / element_size) {
+        throw std::runtime_error("checkpoint is truncated or corrupt: an array of " +
+                                 std::to_string(count) + " values of " +
+                                 std::to_string(element_size) + " bytes is longer than the file");
+    }
+    return count;
+}
+
+template <class T> void read_values(std::istream& in, std::vector<T>& values, std::uint64_t count) {
     values.resize(static_cast<std::size_t>(count));
     in.read(reinterpret_cast<char*>(values.data()),
             static_cast<std::streamsize>(count * sizeof(T)));
     if (!in) {
         throw std::runtime_error("checkpoint is truncated");
     }
+}
+
+/// Reads what write_array wrote.
+template <class T> void read_array(std::istream& in, std::vector<T>& values) {
+    static_assert(kRawDumpable<T>);
+    read_values(in, values, read_count(in, sizeof(T)));
+}
+
+/// Same, and the array must hold `expected` values (`what` names them in the message): a
+/// checkpoint of another case must not leave arrays of the wrong length behind. A count that
+/// differs is refused before `values` is touched.
+template <class T>
+void read_array(std::istream& in, std::vector<T>& values, std::size_t expected, const char* what) {
+    static_assert(kRawDumpable<T>);
+    const std::uint64_t count = read_count(in, sizeof(T));
+    if (count != expected) {
+        throw std::runtime_error("checkpoint holds " + std::to_string(count) + " " + what +
+                                 ", the case makes " + std::to_string(expected));
+    }
+    read_values(in, values, count);
 }
 
 template <class T> void write_value(std::ostream& out, const T& value) {

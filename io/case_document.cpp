@@ -1,5 +1,8 @@
 #include "io/case_table.hpp"
 
+#include <cerrno>
+#include <charconv>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -71,9 +74,14 @@ std::unique_ptr<CaseDocument> CaseDocument::from_string(std::string_view text,
 }
 
 std::unique_ptr<CaseDocument> CaseDocument::from_file(const std::string& file) {
+    std::error_code error;
+    if (std::filesystem::is_directory(file, error)) {
+        throw CaseError(file + ": is a directory; expected a case file (CASE.toml)");
+    }
     std::ifstream in(file, std::ios::binary);
     if (!in) {
-        throw CaseError(file + ": cannot open the case file");
+        // errno from the failed open says why: no such file, permission denied, ...
+        throw CaseError(file + ": cannot open the case file (" + std::strerror(errno) + ")");
     }
     std::ostringstream text;
     text << in.rdbuf();
@@ -120,7 +128,15 @@ void CaseDocument::set(std::string_view assignment) {
         const auto& part = parts[i];
         if (part.front() == '[') {
             auto* array = cursor->as_array();
-            const auto index = std::stoul(part.substr(1, part.size() - 2));
+            // Digits only: "[x]", "[]" or an index beyond any array is the user's typo (exit
+            // code 2), not std::stoul's exception (found by tests/fuzz/fuzz_case).
+            std::size_t index = 0;
+            const std::string digits = part.substr(1, part.size() - 2);
+            const auto [end, error] =
+                std::from_chars(digits.data(), digits.data() + digits.size(), index);
+            if (digits.empty() || error != std::errc() || end != digits.data() + digits.size()) {
+                throw CaseError(origin + ": '" + part + "' is not an index [0], [1], ...");
+            }
             if (array == nullptr || index >= array->size()) {
                 throw CaseError(origin + ": '" + part + "' does not name an existing element");
             }

@@ -85,6 +85,9 @@ class MeshReader {
     MeshReader(const KeywordUnits& units) : units_(units) {}
 
     KeywordMesh read(const KeywordDeck& deck) {
+        for (const Keyword* node : deck.find("NODE")) {
+            node_cards_ += static_cast<KeywordId>(node->cards.size());
+        }
         for (const Keyword& keyword : deck.keywords) {
             read_keyword(keyword);
         }
@@ -291,6 +294,14 @@ class MeshReader {
                 f.fail(3,
                        "expected NEND >= NID (particles NID..NEND), got " + std::to_string(last));
             }
+            // Every particle needs a node of its own: a range longer than the deck's *NODE
+            // cards cannot be right, and would otherwise allocate without bound (found by
+            // tests/fuzz/fuzz_keyword: NEND = 3.3e82 asked for gigabytes).
+            if (last - first >= node_cards_) {
+                f.fail(3, "particles NID..NEND = " + std::to_string(first) + ".." +
+                              std::to_string(last) + " are more than the deck's " +
+                              std::to_string(node_cards_) + " *NODE cards");
+            }
             for (KeywordId node = first; node <= last; ++node) {
                 particle.node = node;
                 mesh_.particles.push_back(particle);
@@ -299,6 +310,7 @@ class MeshReader {
     }
 
     const KeywordUnits& units_;
+    KeywordId node_cards_ = 0; ///< cards of every *NODE keyword: an upper bound on node count
     KeywordMesh mesh_;
     std::set<KeywordId> shell_ids_, node_set_ids_, shell_set_ids_;
     std::map<std::string, int> unsupported_;

@@ -16,8 +16,12 @@ constexpr double kMaxCellsPerParticle = 8.0;
 std::array<Index, 3> CellList::cell_coordinates(const Vec3& x) const {
     std::array<Index, 3> c{};
     for (int a = 0; a < 3; ++a) {
-        const auto k = static_cast<Index>(std::floor((x[a] - origin_[a]) / cell_size_));
-        c[a] = std::clamp<Index>(k, 0, cells_[a] - 1);
+        // Clamped while still a double: a particle far outside the grid, or at infinity or NaN
+        // (gone astray; the diagnosis names it after the step), takes the nearest cell, and
+        // the cast to an integer stays defined.
+        const double k = std::floor((x[a] - origin_[a]) / cell_size_);
+        const auto last = cells_[a] - 1;
+        c[a] = k >= 0.0 ? (k < static_cast<double>(last) ? static_cast<Index>(k) : last) : 0;
     }
     return c;
 }
@@ -27,25 +31,29 @@ void CellList::build(std::span<const Vec3> positions, double search_radius, int 
         throw std::invalid_argument("CellList: search radius must be positive");
     }
     const auto n = static_cast<Index>(positions.size());
+    // The grid spans the finite positions; a non-finite one goes to the nearest cell.
     Vec3 lower = Vec3::Constant(0.0);
     Vec3 upper = Vec3::Constant(0.0);
-    if (n > 0) {
-        lower = positions[0];
-        upper = positions[0];
-        for (const Vec3& x : positions) {
-            lower = lower.cwiseMin(x);
-            upper = upper.cwiseMax(x);
+    bool first = true;
+    for (const Vec3& x : positions) {
+        if (x.allFinite()) {
+            lower = first ? x : Vec3(lower.cwiseMin(x));
+            upper = first ? x : Vec3(upper.cwiseMax(x));
+            first = false;
         }
     }
     origin_ = lower;
     cell_size_ = search_radius;
     const double budget = kMaxCellsPerParticle * static_cast<double>(std::max<Index>(n, 1)) + 27.0;
     for (;;) {
+        // Counted in doubles (half extents: no overflow even for +-1e308), so that particles
+        // flung far away coarsen the grid instead of overflowing its integer size.
         double count = 1.0;
         for (int a = 0; a < 3; ++a) {
             const bool flat = a == 2 && dimension == 2;
-            cells_[a] = flat ? 1 : static_cast<Index>((upper[a] - lower[a]) / cell_size_) + 1;
-            count *= static_cast<double>(cells_[a]);
+            const double span = 2.0 * ((0.5 * upper[a] - 0.5 * lower[a]) / cell_size_);
+            cells_[a] = flat ? 1 : static_cast<Index>(std::min(span, budget)) + 1;
+            count *= flat ? 1.0 : span + 1.0;
         }
         if (count <= budget) {
             break;

@@ -103,6 +103,7 @@ void SphModel::build(const io::CaseTable& root) {
     }
     initial_position_ = particles().position;
     initial_velocity_ = particles().velocity;
+    escape_watch_ = EscapeWatch(particles(), gravity_, dimension_);
     if (!interactions_) {
         compute_accelerations();
     }
@@ -317,11 +318,13 @@ std::optional<std::string> SphModel::diagnose() const {
                                                                                 : nullptr;
         if (bad != nullptr) {
             std::ostringstream out;
-            out << "particle " << i << " (body "
-                << body_names_[static_cast<std::size_t>(p.body_id[i])]
+            out << "particle " << i << " (body " << body_name(p.body_id[i])
                 << ") has a non-finite or non-physical " << bad;
             return out.str();
         }
+    }
+    if (auto escape = escape_watch_.check(p, [this](int body) { return body_name(body); })) {
+        return escape;
     }
     if (solver_) {
         return solver_->energy_ledger().check(solver_->held_energy(), kEnergySurplusLimit);
@@ -467,19 +470,17 @@ void SphModel::write_checkpoint(std::ostream& out) const {
 void SphModel::read_checkpoint(std::istream& in) {
     auto& p = solver_ ? solver_->particles() : particles_;
     const auto n = p.position.size();
-    io::read_array(in, p.position);
-    if (p.position.size() != n) {
-        throw std::runtime_error("checkpoint holds " + std::to_string(p.position.size()) +
-                                 " particles, the case makes " + std::to_string(n));
-    }
-    io::read_array(in, p.velocity);
-    io::read_array(in, p.acceleration);
-    io::read_array(in, p.density);
-    io::read_array(in, p.internal_energy);
-    io::read_array(in, p.stress);
-    io::read_array(in, p.plastic_strain);
-    io::read_array(in, p.state);
-    io::read_array(in, p.clamped);
+    io::read_array(in, p.position, n, "particles");
+    // Every array must keep the length the case gave it: the solver indexes them by particle.
+    const auto state_size = p.state.size();
+    io::read_array(in, p.velocity, n, "velocities");
+    io::read_array(in, p.acceleration, n, "accelerations");
+    io::read_array(in, p.density, n, "densities");
+    io::read_array(in, p.internal_energy, n, "internal energies");
+    io::read_array(in, p.stress, n, "stresses");
+    io::read_array(in, p.plastic_strain, n, "plastic strains");
+    io::read_array(in, p.state, state_size, "material state values");
+    io::read_array(in, p.clamped, n, "clamp flags");
     if (solver_) {
         for (Wall& wall : solver_->walls()) {
             std::vector<Vec3> centre;
@@ -488,8 +489,14 @@ void SphModel::read_checkpoint(std::istream& in) {
                 throw std::runtime_error("checkpoint: wall '" + wall.name + "' has no centre");
             }
             wall.centre = centre.front();
-            io::read_array(in, wall.normals);
+            const auto normals = wall.normals.size();
+            io::read_array(in, wall.normals, normals, "wall normals");
             io::read_array(in, wall.angular_velocities);
+            if (!wall.angular_velocities.empty() &&
+                wall.angular_velocities.size() != static_cast<std::size_t>(wall.count)) {
+                throw std::runtime_error("checkpoint: wall '" + wall.name +
+                                         "' has angular velocities of another particle count");
+            }
             if (wall.driver) {
                 wall.driver->read_state(in);
             }
@@ -504,6 +511,10 @@ void SphModel::read_checkpoint(std::istream& in) {
         solver_->wall_contact().set_friction_work(scalars[1]);
         std::vector<Vec3> reference;
         io::read_array(in, reference);
+        if (!reference.empty() && reference.size() != n) {
+            throw std::runtime_error("checkpoint: the neighbour list's reference positions do "
+                                     "not match the particles");
+        }
         solver_->restart(reference, scalars[2] != 0.0);
         std::vector<double> ledger;
         io::read_array(in, ledger);

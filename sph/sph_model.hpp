@@ -3,6 +3,7 @@
 #include "io/scene_settings.hpp"
 #include "io/stepper.hpp"
 #include "materials/material_library.hpp"
+#include "sph/escape_watch.hpp"
 #include "sph/heap_monitor.hpp"
 #include "sph/particle_set.hpp"
 #include "sph/rigid_wall.hpp"
@@ -113,6 +114,7 @@ class SphModel final : public io::Stepper {
     mutable double last_row_time_ = -1.0;
     /// [sph.heap]: the measured body's kinetic energy per step and its heap at the end.
     std::optional<HeapMonitor> heap_;
+    EscapeWatch escape_watch_; ///< the watchdog for particles leaving the scene
 };
 
 } // namespace grainload::sph

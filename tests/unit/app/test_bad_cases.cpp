@@ -51,6 +51,15 @@ TEST(BadCases, MalformedCommandLinesAndOverridesExitWithTwo) {
     EXPECT_EQ(result.exit_code, 2);
     EXPECT_NE(result.output.find("--set sph.time_step=5"), std::string::npos) << result.output;
     EXPECT_NE(result.output.find("expected a time"), std::string::npos) << result.output;
+    // Found by tests/fuzz/fuzz_case: an index that is not a number ended in std::stoul's
+    // exception, exit code 1.
+    for (const char* index : {"x", "", "99999999999999999999999", "-1"}) {
+        const auto bad =
+            run_cli("check " + good + " --set 'sph.body[" + index + "].spacing=1'", log);
+        EXPECT_EQ(bad.exit_code, 2) << index << "\n" << bad.output;
+        EXPECT_NE(bad.output.find("is not an index [0], [1], ..."), std::string::npos)
+            << bad.output;
+    }
     EXPECT_EQ(run_cli("check " + good, log).exit_code, 0);
 }
 

@@ -301,6 +301,23 @@ TEST(KeywordDeck, ThicknessSetsAndParticles) {
     }
 }
 
+// Found by tests/fuzz/fuzz_keyword: NID..NEND asked for up to 3.3e7 particles per card, a
+// vector of gigabytes, with two nodes in the deck. Each particle needs a node, so a range
+// longer than the *NODE cards is refused with the card named.
+TEST(KeywordDeck, AParticleRangeLongerThanTheNodesIsRefused) {
+    const std::string dir = fresh_directory("sph_range");
+    const std::string deck = "*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n*ELEMENT_SPH\n"
+                             "1, 3, 1.0E-6, 33333333\n*END\n";
+    const std::string error = error_of([&] { read_mesh(write(dir + "/range.k", deck)); });
+    EXPECT_NE(error.find("range.k:5: *ELEMENT_SPH card"), std::string::npos) << error;
+    EXPECT_NE(error.find("particles NID..NEND = 1..33333333 are more than the deck's 2 *NODE "
+                         "cards"),
+              std::string::npos)
+        << error;
+    const std::string fits = "*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n*ELEMENT_SPH\n1, 3, 1.0E-6, 2\n";
+    EXPECT_EQ(read_mesh(write(dir + "/fits.k", fits)).particles.size(), 2u);
+}
+
 // Consistent systems: the SI value of each deck unit against its textbook value.
 TEST(KeywordUnits, ConsistentSystemsConvertToSi) {
     constexpr double kRelative = 1e-12; // double round-off of a few products

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <gtest/gtest.h>
+#include <limits>
 #include <random>
 #include <set>
 #include <utility>
@@ -101,6 +102,25 @@ TEST(NeighbourList, FarOutlierDoesNotBlowUpTheGrid) {
     NeighbourList list(0.01, 0.0, 3);
     list.update(points, {});
     EXPECT_EQ(listed_pairs(list, points, 0.01), brute_force_pairs(points, 0.01));
+}
+
+// Found by the checkpoint fuzzer (tests/fuzz/regressions/checkpoint/): positions of 1e47 m
+// made the grid's cell count overflow its integer (undefined behaviour), and a NaN or an
+// infinity has no cell at all. A particle gone astray like that must not break the list for
+// the others, which keep exactly their brute-force neighbours, and the list must be built
+// (not loop or allocate without end) so that the diagnosis can name the particle.
+TEST(NeighbourList, AstrayParticlesAtHugeNonFiniteCoordinatesLeaveTheOthersIntact) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    for (const Vec3& astray : {Vec3(3.3e47, 0.5, 0.5), Vec3(-1.7e308, 1.7e308, 0.0),
+                               Vec3(nan, 0.5, 0.5), Vec3(0.5, inf, -inf)}) {
+        auto points = random_points(200, 3, 11u);
+        points.push_back(astray);
+        NeighbourList list(0.1, 0.0, 3);
+        list.update(points, {});
+        PairSet finite = listed_pairs(list, points, 0.1);
+        EXPECT_EQ(finite, brute_force_pairs(points, 0.1)) << astray.transpose();
+    }
 }
 
 } // namespace

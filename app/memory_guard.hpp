@@ -1,0 +1,19 @@
+#pragma once
+
+#include "io/case_table.hpp"
+
+#include <optional>
+
+namespace grainload::app {
+
+/// Bytes the machine can give a new process without swapping: MemAvailable of /proc/meminfo.
+/// std::nullopt where the kernel does not say (then nothing is refused).
+std::optional<double> available_memory();
+
+/// Refuses, before any particle is made, a scene whose SPH particles (sph/particle_estimate.hpp)
+/// would need more than `available` bytes: io::CaseError at the spacing key of the largest
+/// body or wall, with the estimate and the spacing that would fit.
+void refuse_oversized_scene(const io::CaseTable& root, int dimension,
+                            std::optional<double> available);
+
+} // namespace grainload::app

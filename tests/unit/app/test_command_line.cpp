@@ -1,0 +1,83 @@
+// The CLI's help, and input it must refuse before doing anything (issue 18, sections 2 and 6).
+
+#include "support/cli_runner.hpp"
+
+#include <filesystem>
+#include <gtest/gtest.h>
+
+namespace {
+
+using namespace grainload::testing;
+
+const std::string kFreeFall = "'" + source_path("cases/free_fall/free_fall_small.toml") + "'";
+
+std::string log_file() {
+    return ::testing::TempDir() + "command_line.log";
+}
+
+// Every way of asking for help prints a usage and exits with 0, whatever else is on the line.
+TEST(CommandLine, HelpPrintsTheUsageAndExitsWithZero) {
+    for (const char* line : {"--help", "-h", "help", ""}) {
+        const auto result = run_cli(line, log_file());
+        EXPECT_EQ(result.exit_code, 0) << line << "\n" << result.output;
+        EXPECT_NE(result.output.find("grainload run CASE.toml"), std::string::npos) << line;
+        EXPECT_NE(result.output.find("exit codes: 0 done"), std::string::npos) << line;
+    }
+    for (const char* command : {"run", "check", "matpoint", "version", "help"}) {
+        for (const std::string line :
+             {std::string("help ") + command, std::string(command) + " --help"}) {
+            const auto result = run_cli(line, log_file());
+            EXPECT_EQ(result.exit_code, 0) << line << "\n" << result.output;
+            EXPECT_EQ(result.output.rfind("usage: grainload", 0), 0u) << line << result.output;
+        }
+    }
+    const auto run_help = run_cli("run " + kFreeFall + " --threads 2 -h", log_file());
+    EXPECT_EQ(run_help.exit_code, 0) << run_help.output;
+    EXPECT_NE(run_help.output.find("--restart FILE"), std::string::npos) << run_help.output;
+}
+
+TEST(CommandLine, HelpOnAnUnknownCommandIsABadCommandLine) {
+    const auto result = run_cli("help simulate", log_file());
+    EXPECT_EQ(result.exit_code, 2) << result.output;
+    EXPECT_NE(result.output.find("no help on 'simulate'"), std::string::npos) << result.output;
+}
+
+TEST(CommandLine, ADirectoryAsTheCaseIsRefusedByName) {
+    const std::string directory = source_path("cases/free_fall");
+    for (const char* command : {"run", "check"}) {
+        const auto result = run_cli(std::string(command) + " '" + directory + "'", log_file());
+        EXPECT_EQ(result.exit_code, 2) << result.output;
+        EXPECT_NE(result.output.find(directory + ": is a directory; expected a case file"),
+                  std::string::npos)
+            << result.output;
+    }
+    const auto missing = run_cli("check /nonexistent/case.toml", log_file());
+    EXPECT_EQ(missing.exit_code, 2);
+    EXPECT_NE(missing.output.find("cannot open the case file (No such file or directory)"),
+              std::string::npos)
+        << missing.output;
+}
+
+// The new user's mistake of issue 18: a spacing of 1e-7 m in the 0.1 x 0.1 x 0.2 m free-fall
+// block is (1e6)^2 x 2e6 = 2e18 particles, which no machine holds. It must be refused at once
+// (before the lattice is made: the test would otherwise end in std::bad_alloc or run out of
+// time) with exit code 2, naming the key, the estimate and a spacing that fits.
+TEST(CommandLine, ASceneBeyondTheMachinesMemoryIsRefusedBeforeAllocating) {
+    for (const char* command : {"run", "check"}) {
+        const auto result = run_cli(std::string(command) + " " + kFreeFall +
+                                        " --set 'sph.body[0].spacing=1e-7 m' --out '" +
+                                        ::testing::TempDir() + "refused'",
+                                    log_file());
+        EXPECT_EQ(result.exit_code, 2) << result.output;
+        EXPECT_NE(result.output.find("key 'sph.body[0].spacing'"), std::string::npos)
+            << result.output;
+        EXPECT_NE(result.output.find("about 2e+18 SPH particles"), std::string::npos)
+            << result.output;
+        EXPECT_NE(result.output.find("MemAvailable"), std::string::npos) << result.output;
+        EXPECT_NE(result.output.find("expected a spacing of at least about"), std::string::npos)
+            << result.output;
+    }
+    EXPECT_FALSE(std::filesystem::exists(::testing::TempDir() + "refused/checkpoint.bin"));
+}
+
+} // namespace
