@@ -24,15 +24,12 @@ struct CubicSplineKernel {
         }
         return 0.0;
     }
+    /// Both pieces evaluated and one selected: pair loops run it branch free.
     static double shape_derivative(double q) {
-        if (q < 1.0) {
-            return -2.0 * q + 1.5 * q * q;
-        }
-        if (q < 2.0) {
-            const double t = 2.0 - q;
-            return -0.5 * t * t;
-        }
-        return 0.0;
+        const double inner = -2.0 * q + 1.5 * q * q;
+        const double t = 2.0 - q;
+        const double outer = -0.5 * t * t;
+        return q < 1.0 ? inner : (q < 2.0 ? outer : 0.0);
     }
     /// Thesis: 2D 15/(7 pi), 3D 3/(2 pi).
     static double normalisation(int dimension) {
@@ -78,11 +75,9 @@ struct WendlandC2Kernel {
         return (t * t) * (t * t) * (2.0 * q + 1.0);
     }
     static double shape_derivative(double q) {
-        if (q >= 2.0) {
-            return 0.0;
-        }
         const double t = 1.0 - 0.5 * q;
-        return -5.0 * q * t * t * t;
+        const double inside = -5.0 * q * t * t * t;
+        return q >= 2.0 ? 0.0 : inside;
     }
     static double normalisation(int dimension) {
         return dimension == 2 ? 7.0 / (4.0 * std::numbers::pi) : 21.0 / (16.0 * std::numbers::pi);
@@ -116,6 +111,22 @@ class SmoothingKernel {
     /// grad_i W(x_i - x_j) for the separation x_ij = x_i - x_j at distance r > 0.
     Vec3 gradient(const Vec3& x_ij, double r) const { return (radial_derivative(r) / r) * x_ij; }
 
+    /// Calls visit(shape) with the kernel's shape (CubicSplineKernel{}, ...), so that a pair
+    /// loop is compiled once per shape with the shape inlined (ShapeTerms below).
+    template <class Visit> decltype(auto) visit_shape(Visit&& visit) const {
+        switch (type_) {
+        case KernelType::cubic_spline:
+            return visit(CubicSplineKernel{});
+        case KernelType::quintic_spline:
+            return visit(QuinticSplineKernel{});
+        case KernelType::wendland_c2:
+            break;
+        }
+        return visit(WendlandC2Kernel{});
+    }
+    double normalisation_over_h_d() const { return alpha_; }
+    double inverse_smoothing_length() const { return inverse_h_; }
+
   private:
     double shape(double q) const {
         switch (type_) {
@@ -146,6 +157,23 @@ class SmoothingKernel {
     double inverse_h_;
     double support_;
     double alpha_; ///< normalisation / h^d
+};
+
+/// A kernel's value and gradient factor with the shape fixed at compile time, for pair loops:
+/// the same operations, in the same order, as SmoothingKernel::value() and gradient(), so a
+/// loop that uses it reproduces the generic path bit for bit.
+template <class Shape> struct ShapeTerms {
+    explicit ShapeTerms(const SmoothingKernel& kernel)
+        : inverse_h(kernel.inverse_smoothing_length()), alpha(kernel.normalisation_over_h_d()),
+          alpha_over_h(alpha * inverse_h) {}
+    double value(double r) const { return alpha * Shape::shape(r * inverse_h); }
+    /// W'(r) / r: grad_i W_ij = gradient_factor(r) x_ij.
+    double gradient_factor(double r) const {
+        return alpha_over_h * Shape::shape_derivative(r * inverse_h) / r;
+    }
+    double inverse_h;
+    double alpha;
+    double alpha_over_h;
 };
 
 } // namespace grainload::sph
