@@ -15,6 +15,10 @@ class CellList {
   public:
     /// dimension 2 keeps a single layer of cells in z.
     void build(std::span<const Vec3> positions, double search_radius, int dimension);
+    /// The grid of `like` (origin, cell size and counts), holding only the particles i with
+    /// !skip[i]: candidates come in the same order as from `like`, less the skipped ones.
+    void build_subset(std::span<const Vec3> positions, const CellList& like,
+                      std::span<const char> skip);
 
     /// Call visit(j) for every particle j in the cells around x (including x's own particle).
     template <class Visit> void for_each_candidate(const Vec3& x, Visit&& visit) const {
@@ -44,17 +48,22 @@ class CellList {
     }
 
     Index cell_count() const { return cells_[0] * cells_[1] * cells_[2]; }
+    /// Heap bytes held (cell starts and sorted indices).
+    std::size_t bytes() const {
+        return (cell_start_.capacity() + sorted_.capacity()) * sizeof(Index);
+    }
     double cell_size() const { return cell_size_; }
 
   private:
     std::array<Index, 3> cell_coordinates(const Vec3& x) const;
+    /// Counting sort of the particles i with !skip[i] (all with an empty skip) into the grid.
+    void bin(std::span<const Vec3> positions, std::span<const char> skip);
 
     Vec3 origin_ = Vec3::Zero();
     double cell_size_ = 1.0;
     std::array<Index, 3> cells_{1, 1, 1};
     std::vector<Index> cell_start_; ///< size cell_count() + 1
     std::vector<Index> sorted_;     ///< particle indices ordered by cell
-    std::vector<Index> cell_of_;    ///< cell of each particle
 };
 
 } // namespace grainload::sph

@@ -43,6 +43,15 @@ void NeighbourList::rebuild(std::span<const Vec3> positions, std::span<const cha
     const double radius_squared = radius * radius;
     cells_.build(positions, radius, dimension_);
     const bool use_frozen = !frozen.empty();
+    // A frozen particle (a wall's) pairs only with free ones, so it searches a grid of the free
+    // particles alone: the same grid, so the same candidate order less the frozen ones, without
+    // walking past its own wall's particles (most of the candidates of a wall particle).
+    if (use_frozen) {
+        free_cells_.build_subset(positions, cells_, frozen);
+    }
+    auto grid_of = [&](Index i) -> const CellList& {
+        return use_frozen && frozen[i] ? free_cells_ : cells_;
+    };
     auto keeps = [&](Index i, Index j) {
         return j != i && !(use_frozen && frozen[i] && frozen[j]) &&
                (positions[i] - positions[j]).squaredNorm() < radius_squared;
@@ -52,7 +61,7 @@ void NeighbourList::rebuild(std::span<const Vec3> positions, std::span<const cha
 #pragma omp parallel for schedule(dynamic, 256)
     for (Index i = 0; i < n; ++i) {
         Index count = 0;
-        cells_.for_each_candidate(positions[i], [&](Index j) { count += keeps(i, j) ? 1 : 0; });
+        grid_of(i).for_each_candidate(positions[i], [&](Index j) { count += keeps(i, j) ? 1 : 0; });
         offset_[i + 1] = count;
     }
     for (Index i = 0; i < n; ++i) {
@@ -62,7 +71,7 @@ void NeighbourList::rebuild(std::span<const Vec3> positions, std::span<const cha
 #pragma omp parallel for schedule(dynamic, 256)
     for (Index i = 0; i < n; ++i) {
         Index k = offset_[i];
-        cells_.for_each_candidate(positions[i], [&](Index j) {
+        grid_of(i).for_each_candidate(positions[i], [&](Index j) {
             if (keeps(i, j)) {
                 index_[k++] = static_cast<std::int32_t>(j);
             }
@@ -74,8 +83,7 @@ void NeighbourList::rebuild(std::span<const Vec3> positions, std::span<const cha
 
 std::size_t NeighbourList::bytes() const {
     return offset_.capacity() * sizeof(Index) + index_.capacity() * sizeof(std::int32_t) +
-           reference_.capacity() * sizeof(Vec3) +
-           static_cast<std::size_t>(cells_.cell_count() + 1) * sizeof(Index) * 2;
+           reference_.capacity() * sizeof(Vec3) + cells_.bytes() + free_cells_.bytes();
 }
 
 } // namespace grainload::sph

@@ -46,6 +46,7 @@ class NeighbourList {
     double skin_;
     int dimension_;
     CellList cells_;
+    CellList free_cells_; ///< the same grid holding only the particles that are not frozen
     std::vector<Index> offset_;
     std::vector<std::int32_t> index_;
     std::vector<Vec3> reference_; ///< positions at the last build
