@@ -198,7 +198,8 @@ void prepare_force_inputs(const ParticleSet& p, const ArtificialStress& artifici
     const Index n = p.size();
     inputs.stress_over_rho2.resize(static_cast<std::size_t>(n));
     inputs.artificial_stress.resize(static_cast<std::size_t>(n));
-#pragma omp parallel for schedule(static)
+    // Dynamic: the eigen decomposition of the artificial stress runs for material particles only.
+#pragma omp parallel for schedule(dynamic, 256)
     for (Index i = 0; i < n; ++i) {
         const double inv_rho2 = 1.0 / (p.density[i] * p.density[i]);
         const Mat3 sigma = stress_tensor(p.stress[i]);
