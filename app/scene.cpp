@@ -4,6 +4,7 @@
 #include "fem/shell_model.hpp"
 #include "sph/sph_model.hpp"
 
+#include <algorithm>
 #include <filesystem>
 
 namespace grainload::app {
@@ -38,6 +39,20 @@ std::unique_ptr<Scene> Scene::load(const std::string& file,
     }
     scene->document->reject_unknown_keys();
     return scene;
+}
+
+Index Scene::material_point_count() const {
+    Index count = 0;
+    for (const auto& stepper : steppers) {
+        // Wall particles are the boundary, not material; io::Stepper counts all its points.
+        if (const auto* model = dynamic_cast<const sph::SphModel*>(stepper.get())) {
+            const std::vector<int>& wall = model->particles().wall_id;
+            count += std::count_if(wall.begin(), wall.end(), [](int w) { return w < 0; });
+        } else {
+            count += stepper->point_count();
+        }
+    }
+    return count;
 }
 
 Index Scene::point_count() const {

@@ -15,11 +15,15 @@ struct RunSummary {
     double wall_time = 0.0; ///< s
     double simulated_time = 0.0;
     Index steps = 0;
-    Index points = 0;                 ///< particles + shell nodes
+    Index points = 0; ///< particles + shell nodes
+    /// Points of the material: body particles and shell nodes, without the wall particles
+    /// (boundary, not material). particle_steps_per_second counts these.
+    Index material_points = 0;
     std::string status = "completed"; ///< "completed" or "unstable"
     std::string diagnosis;
     std::vector<ResultFigure> results;
 
+    /// material_points * steps / wall_time.
     double point_steps_per_second() const;
 };
 
