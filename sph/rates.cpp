@@ -82,6 +82,7 @@ template <class Shape, int D, bool Corrected> struct GradientRow {
     const ShapeTerms<Shape> w;
     const std::vector<int>& key;
     const double support_squared;
+    double* entry_factor; ///< nullptr, or W'(r)/r of each same-body entry in the support
 
     void operator()(Index i, Mat3& l_out, Mat3& moment_out) const {
         double l[D][D] = {};
@@ -89,7 +90,11 @@ template <class Shape, int D, bool Corrected> struct GradientRow {
         const Vec3& xi = p.position[i];
         const Vec3& vi = p.velocity[i];
         const int key_i = key[i];
-        for (const Index j : neighbours.neighbours(i)) {
+        const auto list = neighbours.neighbours(i);
+        double* factor_of_entry =
+            entry_factor != nullptr ? entry_factor + neighbours.first_entry(i) : nullptr;
+        for (std::size_t k = 0; k < list.size(); ++k) {
+            const Index j = list[k];
             const Vec3& xj = p.position[j];
             double d[D];
             for (int c = 0; c < D; ++c) {
@@ -103,6 +108,9 @@ template <class Shape, int D, bool Corrected> struct GradientRow {
                 continue;
             }
             const double f = w.gradient_factor(std::sqrt(r2));
+            if (factor_of_entry != nullptr) {
+                factor_of_entry[k] = f;
+            }
             double g[D];
             for (int c = 0; c < D; ++c) {
                 g[c] = f * d[c];
@@ -138,10 +146,14 @@ template <class Shape, int D, bool Corrected> struct GradientRow {
 template <class Shape, int D, bool Corrected>
 void velocity_gradient_pass(ParticleSet& p, const NeighbourList& neighbours,
                             const SmoothingKernel& kernel, std::vector<Mat3>& velocity_gradient,
-                            std::vector<Mat3>& correction) {
+                            std::vector<Mat3>& correction, double* entry_factor) {
     const std::vector<int> key = continuum_keys(p);
-    const GradientRow<Shape, D, Corrected> row{p, neighbours, ShapeTerms<Shape>(kernel), key,
-                                               kernel.support_radius() * kernel.support_radius()};
+    const GradientRow<Shape, D, Corrected> row{p,
+                                               neighbours,
+                                               ShapeTerms<Shape>(kernel),
+                                               key,
+                                               kernel.support_radius() * kernel.support_radius(),
+                                               entry_factor};
     const Index n = p.size();
 #pragma omp parallel for schedule(dynamic, 128)
     for (Index i = 0; i < n; ++i) {
@@ -167,10 +179,14 @@ void velocity_gradient_pass(ParticleSet& p, const NeighbourList& neighbours,
 
 void compute_velocity_gradient(ParticleSet& p, const NeighbourList& neighbours,
                                const SmoothingKernel& kernel, bool gradient_correction,
-                               std::vector<Mat3>& velocity_gradient,
-                               std::vector<Mat3>& correction) {
+                               std::vector<Mat3>& velocity_gradient, std::vector<Mat3>& correction,
+                               std::vector<double>* entry_factor) {
     const Index n = p.size();
     velocity_gradient.resize(static_cast<std::size_t>(n));
+    if (entry_factor != nullptr) {
+        entry_factor->resize(static_cast<std::size_t>(neighbours.pair_entries()));
+    }
+    double* factors = entry_factor != nullptr ? entry_factor->data() : nullptr;
     if (gradient_correction) {
         correction.assign(static_cast<std::size_t>(n), Mat3::Identity());
     } else {
@@ -180,7 +196,7 @@ void compute_velocity_gradient(ParticleSet& p, const NeighbourList& neighbours,
         using Shape = decltype(shape);
         auto pass = [&](auto dimension, auto corrected) {
             velocity_gradient_pass<Shape, decltype(dimension)::value, decltype(corrected)::value>(
-                p, neighbours, kernel, velocity_gradient, correction);
+                p, neighbours, kernel, velocity_gradient, correction, factors);
         };
         using Two = std::integral_constant<int, 2>;
         using Three = std::integral_constant<int, 3>;
@@ -269,6 +285,8 @@ template <class Shape, int D> struct ForceRow {
     const ContactPotential& contact;
     const ForceInputs& in;
     const std::vector<int>& key;
+    /// in.entry_factor's data, or nullptr: the kernel is evaluated here.
+    const double* entry_factor;
 
     /// Stress, artificial stress and viscosity of a same-body pair; adds to a and heating.
     /// in_support false: computed as if, added nowhere (a branch-free skip).
@@ -375,7 +393,11 @@ template <class Shape, int D> struct ForceRow {
         const Vec3& xi = p.position[i];
         const double volume_i = p.mass[i] / p.density[i];
         const int key_i = key[i];
-        for (const Index j : neighbours.neighbours(i)) {
+        const auto list = neighbours.neighbours(i);
+        const double* factor_of_entry =
+            entry_factor != nullptr ? entry_factor + neighbours.first_entry(i) : nullptr;
+        for (std::size_t k = 0; k < list.size(); ++k) {
+            const Index j = list[k];
             const Vec3& xj = p.position[j];
             double d[D];
             for (int c = 0; c < D; ++c) {
@@ -398,9 +420,12 @@ template <class Shape, int D> struct ForceRow {
             }
             // Total-Lagrangian stress forces come from TotalLagrangian over the reference
             // pairs; the viscosity still acts between current neighbours. Pairs outside the
-            // support are evaluated at r = support (finite) and not added.
-            const double r = std::sqrt(in_support ? r2 : s.support_squared);
-            const double f = w.gradient_factor(r);
+            // support are evaluated at r = support (finite) and not added. The kinematic pass
+            // left W'(r)/r of the pairs inside the support in entry_factor when it is given
+            // (its value there for the others is stale but not added).
+            const bool need_r = factor_of_entry == nullptr || s.use_artificial_stress;
+            const double r = need_r ? std::sqrt(in_support ? r2 : s.support_squared) : 0.0;
+            const double f = factor_of_entry != nullptr ? factor_of_entry[k] : w.gradient_factor(r);
             double g[D];
             for (int c = 0; c < D; ++c) {
                 g[c] = f * d[c];
@@ -425,8 +450,15 @@ void compute_accelerations(ParticleSet& p, const NeighbourList& neighbours,
         using Shape = decltype(shape);
         auto pass = [&](auto dimension) {
             const ForceRow<Shape, decltype(dimension)::value> row{
-                p,        neighbours,      kernel, ShapeTerms<Shape>(kernel),
-                settings, options.contact, in,     key};
+                p,
+                neighbours,
+                kernel,
+                ShapeTerms<Shape>(kernel),
+                settings,
+                options.contact,
+                in,
+                key,
+                in.entry_factor.empty() ? nullptr : in.entry_factor.data()};
 #pragma omp parallel for schedule(dynamic, 128)
             for (Index i = 0; i < n; ++i) {
                 row(i, p.acceleration[i], heating_rate[i]);

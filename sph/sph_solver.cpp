@@ -123,8 +123,12 @@ void SphSolver::compute_kinematics() {
         total_lagrangian_->compute_kinematics(particles_, velocity_gradient_);
         return;
     }
+    // The force pass, which always follows at the same positions and list, reuses the
+    // kernel gradients of this pass. Plane strain only: in 3D the 8 bytes per list entry
+    // (about 75 entries) would take the solver past 1 KB per particle.
     compute_velocity_gradient(particles_, neighbours_, kernel_, options_.kernel_gradient_correction,
-                              velocity_gradient_, force_inputs_.gradient_correction);
+                              velocity_gradient_, force_inputs_.gradient_correction,
+                              options_.dimension == 2 ? &force_inputs_.entry_factor : nullptr);
 }
 
 void SphSolver::step(double dt) {
@@ -292,7 +296,8 @@ std::size_t SphSolver::bytes() const {
     const std::size_t work =
         held(is_wall_) + held(force_inputs_.stress_over_rho2) +
         held(force_inputs_.artificial_stress) + held(force_inputs_.sound_speed) +
-        held(force_inputs_.gradient_correction) + held(velocity_gradient_) + held(heating_rate_);
+        held(force_inputs_.gradient_correction) + held(force_inputs_.entry_factor) +
+        held(velocity_gradient_) + held(heating_rate_);
     return particle_fields + work + neighbours_.bytes() +
            (total_lagrangian_ ? total_lagrangian_->bytes() : 0);
 }
