@@ -11,6 +11,7 @@
 //
 // usage: sph_throughput [particles ...]   (default 1e4 1e5 1e6)
 
+#include "app/openmp_wait.hpp"
 #include "app/scene.hpp"
 #include "materials/linear_elastic.hpp"
 #include "sph/lattice_fill.hpp"
@@ -192,6 +193,7 @@ void print(Index n, int threads, const char* label, const Measurement& m) {
 } // namespace
 
 int main(int argc, char** argv) {
+    grainload::app::default_openmp_wait(argv); // the product default, as grainload run
     std::vector<Index> sizes;
     for (int a = 1; a < argc; ++a) {
         sizes.push_back(static_cast<Index>(std::atof(argv[a])));
