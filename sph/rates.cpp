@@ -213,10 +213,20 @@ void prepare_force_inputs(const ParticleSet& p, const ArtificialStress& artifici
                           ForceInputs& inputs) {
     const Index n = p.size();
     inputs.stress_over_rho2.resize(static_cast<std::size_t>(n));
-    inputs.artificial_stress.resize(static_cast<std::size_t>(n));
-    // Dynamic: the eigen decomposition of the artificial stress runs for material particles only.
+    const bool artificial_on = artificial.epsilon > 0.0;
+    if (artificial_on) {
+        inputs.artificial_stress.resize(static_cast<std::size_t>(n));
+    } else {
+        inputs.artificial_stress.clear(); // 72 bytes per particle that nothing reads
+    }
+    // Wall particles are skipped: the force pass reads these only for pairs of one body
+    // (their entries keep whatever they held). Dynamic, as walls and grains alternate in
+    // blocks.
 #pragma omp parallel for schedule(dynamic, 256)
     for (Index i = 0; i < n; ++i) {
+        if (p.wall_id[i] >= 0) {
+            continue;
+        }
         const double inv_rho2 = 1.0 / (p.density[i] * p.density[i]);
         const Mat3 sigma = stress_tensor(p.stress[i]);
         // With the correction the momentum equation needs sigma_i/rho_i^2 C_i: formed once here
@@ -224,20 +234,19 @@ void prepare_force_inputs(const ParticleSet& p, const ArtificialStress& artifici
         inputs.stress_over_rho2[i] = inputs.gradient_correction.empty()
                                          ? Mat3(sigma * inv_rho2)
                                          : Mat3(sigma * inv_rho2 * inputs.gradient_correction[i]);
-        Mat3 r = Mat3::Zero();
-        if (artificial.epsilon > 0.0 && p.wall_id[i] < 0) {
-            // Gray, Monaghan & Swift (2001) eq. (4.7): only tensile principal stresses.
-            Eigen::SelfAdjointEigenSolver<Mat3> eigen;
-            eigen.computeDirect(sigma);
-            const Vec3 principal = eigen.eigenvalues();
-            Vec3 scaled = Vec3::Zero();
-            for (int a = 0; a < 3; ++a) {
-                scaled[a] =
-                    principal[a] > 0.0 ? -artificial.epsilon * principal[a] * inv_rho2 : 0.0;
-            }
-            r = eigen.eigenvectors() * scaled.asDiagonal() * eigen.eigenvectors().transpose();
+        if (!artificial_on) {
+            continue;
         }
-        inputs.artificial_stress[i] = r;
+        // Gray, Monaghan & Swift (2001) eq. (4.7): only tensile principal stresses.
+        Eigen::SelfAdjointEigenSolver<Mat3> eigen;
+        eigen.computeDirect(sigma);
+        const Vec3 principal = eigen.eigenvalues();
+        Vec3 scaled = Vec3::Zero();
+        for (int a = 0; a < 3; ++a) {
+            scaled[a] = principal[a] > 0.0 ? -artificial.epsilon * principal[a] * inv_rho2 : 0.0;
+        }
+        inputs.artificial_stress[i] =
+            eigen.eigenvectors() * scaled.asDiagonal() * eigen.eigenvectors().transpose();
     }
 }
 

@@ -44,8 +44,9 @@ void compute_velocity_gradient(ParticleSet& particles, const NeighbourList& neig
 
 /// Per-particle quantities the force pass reads, computed once per step.
 struct ForceInputs {
-    std::vector<Mat3> stress_over_rho2;  ///< sigma_i / rho_i^2, times C_i when corrected
-    std::vector<Mat3> artificial_stress; ///< R_i (zero when epsilon = 0)
+    /// sigma_i / rho_i^2, times C_i when corrected (material particles; wall entries unused)
+    std::vector<Mat3> stress_over_rho2;
+    std::vector<Mat3> artificial_stress; ///< R_i of material particles; empty when epsilon = 0
     std::vector<double> sound_speed;     ///< c_i of the particle's material
     /// C_i = M_i^-T of compute_velocity_gradient; empty without the gradient correction.
     std::vector<Mat3> gradient_correction;
