@@ -7,6 +7,7 @@
 // (c66a431) 253 s, and the experiment. The target of issue 20 is 5x the peer: 51.6 s.
 //
 // usage: column_collapse_2d [--threads N] [--set key=value ...] [CASE.toml]
+//        column_collapse_2d --analyse OUT   (the deposit of an existing run's last frame)
 //   --set is passed to the run (e.g. --set 'case.end_time=0.1 s' for a short check).
 
 #include "app/command_line.hpp"
@@ -207,6 +208,13 @@ int main(int argc, char** argv) {
         std::string(GRAINLOAD_SOURCE_DIR) + "/cases/column_collapse_2d/column_collapse_2d.toml";
     for (int a = 1; a < argc; ++a) {
         const std::string arg = argv[a];
+        if (arg == "--analyse" && a + 1 < argc) {
+            const Deposit d = measure(last_frame(argv[++a]));
+            std::printf(
+                "(L_inf - L0) / L0 %.3f  (L_5%% - L0) / L0 %.3f  H_inf %.4f m  outside %d\n",
+                (d.run_out - d.l0) / d.l0, (d.run_out_5 - d.l0) / d.l0, d.height, d.outside);
+            return 0;
+        }
         if (arg == "--threads" && a + 1 < argc) {
             line.threads = std::atoi(argv[++a]);
         } else if (arg == "--set" && a + 1 < argc) {
