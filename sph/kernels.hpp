@@ -24,12 +24,15 @@ struct CubicSplineKernel {
         }
         return 0.0;
     }
-    /// Both pieces evaluated and one selected: pair loops run it branch free.
     static double shape_derivative(double q) {
-        const double inner = -2.0 * q + 1.5 * q * q;
-        const double t = 2.0 - q;
-        const double outer = -0.5 * t * t;
-        return q < 1.0 ? inner : (q < 2.0 ? outer : 0.0);
+        if (q < 1.0) {
+            return -2.0 * q + 1.5 * q * q;
+        }
+        if (q < 2.0) {
+            const double t = 2.0 - q;
+            return -0.5 * t * t;
+        }
+        return 0.0;
     }
     /// Thesis: 2D 15/(7 pi), 3D 3/(2 pi).
     static double normalisation(int dimension) {
@@ -75,9 +78,11 @@ struct WendlandC2Kernel {
         return (t * t) * (t * t) * (2.0 * q + 1.0);
     }
     static double shape_derivative(double q) {
+        if (q >= 2.0) {
+            return 0.0;
+        }
         const double t = 1.0 - 0.5 * q;
-        const double inside = -5.0 * q * t * t * t;
-        return q >= 2.0 ? 0.0 : inside;
+        return -5.0 * q * t * t * t;
     }
     static double normalisation(int dimension) {
         return dimension == 2 ? 7.0 / (4.0 * std::numbers::pi) : 21.0 / (16.0 * std::numbers::pi);

@@ -87,8 +87,10 @@ template <class Shape, int D, bool Corrected> struct GradientRow {
     void operator()(Index i, Mat3& l_out, Mat3& moment_out) const {
         double l[D][D] = {};
         double moment[D][D] = {};
-        const Vec3& xi = p.position[i];
-        const Vec3& vi = p.velocity[i];
+        Mat3 l3 = Mat3::Zero();
+        Mat3 moment3 = Mat3::Zero();
+        const Vec3 xi = p.position[i];
+        const Vec3 vi = p.velocity[i];
         const int key_i = key[i];
         const auto list = neighbours.neighbours(i);
         double* factor_of_entry =
@@ -96,14 +98,26 @@ template <class Shape, int D, bool Corrected> struct GradientRow {
         for (std::size_t k = 0; k < list.size(); ++k) {
             const Index j = list[k];
             const Vec3& xj = p.position[j];
+            if constexpr (D == 3) {
+                // Eigen's vector forms: the same operations, packed two by two.
+                const Vec3 x_ij = xi - xj;
+                const double r2 = x_ij.squaredNorm();
+                if (r2 >= support_squared || r2 == 0.0 || key[j] != key_i) {
+                    continue;
+                }
+                const Vec3 grad = w.gradient_factor(std::sqrt(r2)) * x_ij;
+                const double mj = p.mass[j];
+                l3.noalias() += (mj * (p.velocity[j] - vi)) * grad.transpose();
+                if constexpr (Corrected) {
+                    moment3.noalias() += (-mj * x_ij) * grad.transpose();
+                }
+                continue;
+            }
             double d[D];
             for (int c = 0; c < D; ++c) {
                 d[c] = xi[c] - xj[c];
             }
-            double r2 = d[0] * d[0] + d[1] * d[1];
-            if constexpr (D == 3) {
-                r2 += d[2] * d[2];
-            }
+            const double r2 = d[0] * d[0] + d[1] * d[1];
             if (r2 >= support_squared || r2 == 0.0 || key[j] != key_i) {
                 continue;
             }
@@ -131,6 +145,11 @@ template <class Shape, int D, bool Corrected> struct GradientRow {
                     }
                 }
             }
+        }
+        if constexpr (D == 3) {
+            l_out = l3;
+            moment_out = moment3;
+            return;
         }
         l_out.setZero();
         moment_out.setZero();
