@@ -90,6 +90,12 @@ void CellList::bin(std::span<const Vec3> positions, std::span<const char> skip) 
             sorted_[fill[cell_of(i)]++] = i;
         }
     }
+    for (int axis = 0; axis < 3; ++axis) {
+        coordinates_[axis].resize(static_cast<std::size_t>(count));
+        for (Index k = 0; k < count; ++k) {
+            coordinates_[axis][k] = positions[sorted_[k]][axis];
+        }
+    }
 }
 
 } // namespace grainload::sph
