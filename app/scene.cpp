@@ -1,5 +1,6 @@
 #include "app/scene.hpp"
 
+#include "coupling/coupled_model.hpp"
 #include "coupling/coupling_case_reader.hpp"
 #include "fem/shell_model.hpp"
 #include "sph/sph_model.hpp"
@@ -41,13 +42,25 @@ std::unique_ptr<Scene> Scene::load(const std::string& file,
     return scene;
 }
 
+namespace {
+
+/// Body particles of an SPH model: wall particles are the boundary, not material.
+Index material_particles(const sph::SphModel& model) {
+    const std::vector<int>& wall = model.particles().wall_id;
+    return std::count_if(wall.begin(), wall.end(), [](int w) { return w < 0; });
+}
+
+} // namespace
+
 Index Scene::material_point_count() const {
+    // io::Stepper counts all its points; the SPH models' are looked into here.
     Index count = 0;
     for (const auto& stepper : steppers) {
-        // Wall particles are the boundary, not material; io::Stepper counts all its points.
         if (const auto* model = dynamic_cast<const sph::SphModel*>(stepper.get())) {
-            const std::vector<int>& wall = model->particles().wall_id;
-            count += std::count_if(wall.begin(), wall.end(), [](int w) { return w < 0; });
+            count += material_particles(*model);
+        } else if (const auto* coupled =
+                       dynamic_cast<const coupling::CoupledModel*>(stepper.get())) {
+            count += material_particles(coupled->sph()) + coupled->fem().point_count();
         } else {
             count += stepper->point_count();
         }
