@@ -73,6 +73,7 @@ io::RunSummary make_summary(const Scene& scene, const CommandLine& line, const R
     summary.simulated_time = clock.t;
     summary.steps = clock.step;
     summary.points = scene.point_count();
+    summary.material_points = scene.material_point_count();
     for (const auto& stepper : scene.steppers) {
         stepper->append_results(clock.t, summary.results);
     }
@@ -156,7 +157,7 @@ int run_case(const CommandLine& line) {
         clock = read_checkpoint(*scene, *line.restart);
         writer.set_history(clock.frame_times);
     }
-    ProgressReporter progress(log, scene->settings.end_time, scene->point_count());
+    ProgressReporter progress(log, scene->settings.end_time, scene->material_point_count());
     progress.message("grainload " + std::string(kVersion) + " (" + kGitHash + "): case " +
                      scene->settings.name + ", " + std::to_string(scene->point_count()) +
                      " points, " + std::to_string(omp_get_max_threads()) + " threads, output " +

@@ -1,10 +1,12 @@
 #include "app/scene.hpp"
 
 #include "app/memory_guard.hpp"
+#include "coupling/coupled_model.hpp"
 #include "coupling/coupling_case_reader.hpp"
 #include "fem/shell_model.hpp"
 #include "sph/sph_model.hpp"
 
+#include <algorithm>
 #include <filesystem>
 
 namespace grainload::app {
@@ -40,6 +42,32 @@ std::unique_ptr<Scene> Scene::load(const std::string& file,
     }
     scene->document->reject_unknown_keys();
     return scene;
+}
+
+namespace {
+
+/// Body particles of an SPH model: wall particles are the boundary, not material.
+Index material_particles(const sph::SphModel& model) {
+    const std::vector<int>& wall = model.particles().wall_id;
+    return std::count_if(wall.begin(), wall.end(), [](int w) { return w < 0; });
+}
+
+} // namespace
+
+Index Scene::material_point_count() const {
+    // io::Stepper counts all its points; the SPH models' are looked into here.
+    Index count = 0;
+    for (const auto& stepper : steppers) {
+        if (const auto* model = dynamic_cast<const sph::SphModel*>(stepper.get())) {
+            count += material_particles(*model);
+        } else if (const auto* coupled =
+                       dynamic_cast<const coupling::CoupledModel*>(stepper.get())) {
+            count += material_particles(coupled->sph()) + coupled->fem().point_count();
+        } else {
+            count += stepper->point_count();
+        }
+    }
+    return count;
 }
 
 Index Scene::point_count() const {

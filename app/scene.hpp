@@ -24,6 +24,8 @@ struct Scene {
     static std::unique_ptr<Scene> load(const std::string& file,
                                        const std::vector<std::string>& overrides);
     Index point_count() const;
+    /// point_count() less the wall particles: what particle-steps per second count.
+    Index material_point_count() const;
 };
 
 } // namespace grainload::app

@@ -1,20 +1,28 @@
-// SPH throughput on a 3D elastic block: particle-steps per second, neighbour pairs per second,
-// bytes per particle and peak memory, for 1 and 2 threads, for the two neighbour-search modes
-// (cell list every step, Verlet list with a skin of 0.1 h) and for the total-Lagrangian
-// formulation (stress sums over stored reference pairs; the Verlet list still serves the
-// artificial viscosity).
+// SPH throughput in 3D: particle-steps per second of the material's particles, neighbour pairs
+// per second, bytes per particle and peak memory, for 1 and 2 threads.
+//  - an elastic block with a smooth velocity field, for the two neighbour-search modes (cell
+//    list every step, Verlet list with a skin of 0.1 h) and the total-Lagrangian formulation
+//    (stress sums over stored reference pairs; the Verlet list still serves the viscosity);
+//  - a granular block (Drucker-Prager, and the generalized cap) slumping under gravity on a
+//    frictional floor of wall particles (contact, dashpot, Coulomb friction): the production
+//    configuration of issue 20, built from a case file as `grainload run` builds it.
+// Each row also prints the kinetic energy after the timed steps, so that a change meant to keep
+// the physics can be checked against the figure of an earlier build (docs/performance.md).
 //
 // usage: sph_throughput [particles ...]   (default 1e4 1e5 1e6)
 //        sph_throughput --calibrate FILE  (the throughput `grainload check` estimates run times
 //                                          with: 2D and 3D blocks of the generalized cap sand,
 //                                          1 thread and all cores; writes FILE as JSON)
 
+#include "app/openmp_wait.hpp"
+#include "app/scene.hpp"
 #include "io/atomic_file.hpp"
 #include "io/json_value.hpp"
 #include "io/version.hpp"
 #include "materials/generalized_cap.hpp"
 #include "materials/linear_elastic.hpp"
 #include "sph/lattice_fill.hpp"
+#include "sph/sph_model.hpp"
 #include "sph/sph_solver.hpp"
 #include "sph/wall.hpp"
 
@@ -23,11 +31,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <filesystem>
 #include <fstream>
 #include <omp.h>
 #include <span>
+#include <sstream>
 #include <string>
 #include <thread>
+#include <unistd.h>
 #include <vector>
 
 namespace {
@@ -53,11 +64,52 @@ struct Measurement {
     double cpu_seconds_per_step = 0.0;
     Index walls = 0;   ///< wall particles among the particles
     Index entries = 0; ///< neighbour-list entries at the end
-    double particle_steps_per_second = 0.0;
+    double particle_steps_per_second = 0.0; ///< material particles only
     double pairs_per_second = 0.0;
-    double bytes_per_particle = 0.0;
+    double bytes_per_particle = 0.0; ///< solver heap bytes / material particles
     double rebuilds_per_step = 0.0;
+    double kinetic_energy = 0.0; ///< of the material after the timed steps, J
 };
+
+/// Timed steps of `solver` (after one untimed step: first list, first forces) at the stable
+/// step; `advance` takes one step of length dt; `material` counts the particles that are not
+/// wall particles.
+template <class Advance>
+Measurement time_steps(const sph::SphSolver& solver, Index material, Advance&& advance) {
+    const double dt = solver.stable_time_step();
+    advance(dt);
+    const int steps = std::max(2, static_cast<int>(2e6 / static_cast<double>(material)));
+    const Index rebuilds_before = solver.neighbours().rebuild_count();
+    const auto start = std::chrono::steady_clock::now();
+    const std::clock_t cpu_start = std::clock();
+    for (int k = 0; k < steps; ++k) {
+        advance(dt);
+    }
+    const double cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    Index pairs = 0;
+    const double support = solver.kernel().support_radius();
+    const sph::ParticleSet& p = solver.particles();
+    for (Index i = 0; i < p.size(); ++i) {
+        for (const Index j : solver.neighbours().neighbours(i)) {
+            pairs += (p.position[i] - p.position[j]).norm() < support;
+        }
+    }
+    Measurement m;
+    m.seconds_per_step = seconds / steps;
+    m.cpu_seconds_per_step = cpu_seconds / steps;
+    m.walls = solver.walls().empty() ? 0 : static_cast<Index>(solver.walls().front().count);
+    m.entries = solver.neighbours().pair_entries();
+    m.particle_steps_per_second = static_cast<double>(material) * steps / seconds;
+    // Interacting pairs, each counted once, visited twice per step (kinematics and forces).
+    m.pairs_per_second = 0.5 * static_cast<double>(pairs) * steps / seconds;
+    m.bytes_per_particle = static_cast<double>(solver.bytes()) / static_cast<double>(material);
+    m.rebuilds_per_step =
+        static_cast<double>(solver.neighbours().rebuild_count() - rebuilds_before) / steps;
+    m.kinetic_energy = solver.kinetic_energy();
+    return m;
+}
 
 struct Mode {
     const char* label;
@@ -146,40 +198,76 @@ Measurement measure(Index target, int threads, const Mode& mode, const materials
             floor_points(side, spacing, shape.dimension, shape.floor == Block::Floor::touching),
             0.5 * spacing, law.density(), shape.dimension));
     }
-    const Index n = particles.size();
+    const Index material =
+        particles.size() - (walls.empty() ? 0 : static_cast<Index>(walls.front().count));
     sph::SphSolver solver(std::move(particles), {&law}, options, std::move(walls));
-    const double dt = solver.stable_time_step();
-    solver.step(dt); // warm-up: first force evaluation, first list
-    const int steps = std::max(2, static_cast<int>(2e6 / static_cast<double>(n)));
-    const Index rebuilds_before = solver.neighbours().rebuild_count();
-    const auto start = std::chrono::steady_clock::now();
-    const std::clock_t cpu_start = std::clock();
-    for (int k = 0; k < steps; ++k) {
-        solver.step(dt);
-    }
-    const double cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    Index pairs = 0;
-    const double support = solver.kernel().support_radius();
-    for (Index i = 0; i < n; ++i) {
-        for (const Index j : solver.neighbours().neighbours(i)) {
-            pairs +=
-                (solver.particles().position[i] - solver.particles().position[j]).norm() < support;
-        }
-    }
-    Measurement m;
-    m.seconds_per_step = seconds / steps;
-    m.cpu_seconds_per_step = cpu_seconds / steps;
-    m.walls = solver.walls().empty() ? 0 : static_cast<Index>(solver.walls().front().count);
-    m.entries = solver.neighbours().pair_entries();
-    m.particle_steps_per_second = static_cast<double>(n) * steps / seconds;
-    // Interacting pairs, each counted once, visited twice per step (kinematics and forces).
-    m.pairs_per_second = 0.5 * static_cast<double>(pairs) * steps / seconds;
-    m.bytes_per_particle = static_cast<double>(solver.bytes()) / static_cast<double>(n);
-    m.rebuilds_per_step =
-        static_cast<double>(solver.neighbours().rebuild_count() - rebuilds_before) / steps;
-    return m;
+    return time_steps(solver, material, [&](double dt) { solver.step(dt); });
+}
+
+/// Case file of the granular block: a cube of about `target` particles at 10 mm on a floor of
+/// two layers of wall particles at 5 mm with Coulomb friction, released under gravity.
+std::string granular_case(Index target, const std::string& material) {
+    const double spacing = 10.0; // mm
+    const auto side = static_cast<double>(std::llround(std::cbrt(static_cast<double>(target))));
+    const double edge = side * spacing;
+    const double base = 1.85 * spacing; // as the 2D collapse: touching the floor, no force
+    const double margin = 3.0 * spacing;
+    std::ostringstream text;
+    text << "[case]\nname = \"bench_granular\"\ndimension = 3\nend_time = \"1 s\"\n"
+         << "gravity = \"0 0 -9.81 m/s^2\"\n\n"
+         << "[[material]]\nname = \"sand\"\n"
+         << material << "\n"
+         << "[sph]\nkernel = \"cubic_spline\"\nsmoothing_length_ratio = 1.3\n"
+         << "kernel_gradient_correction = false\n"
+         << "[sph.artificial_viscosity]\nalpha = 0.1\nbeta = 0.1\n"
+         << "[sph.contact]\nstiffness = \"10 MPa\"\nexponent = 1\ndamping_ratio = 0.5\n\n"
+         << "[[sph.body]]\nname = \"block\"\nmaterial = \"sand\"\nspacing = \"" << spacing
+         << " mm\"\n[sph.body.shape]\ntype = \"box\"\nmin = \"0 0 " << base << " mm\"\nmax = \""
+         << edge << " " << edge << " " << base + edge << " mm\"\n\n"
+         << "[[sph.wall]]\nname = \"floor\"\ntype = \"plane\"\nspacing = \"" << 0.5 * spacing
+         << " mm\"\nlayers = 2\norigin = \"" << -margin << " " << -margin << " 0 mm\"\nedge_u = \""
+         << edge + 2.0 * margin << " 0 0 mm\"\nedge_v = \"0 " << edge + 2.0 * margin
+         << " 0 mm\"\nnormal = \"0 0 1\"\n\n"
+         << "[[sph.friction]]\nbody = \"block\"\nwall = \"floor\"\nmu_static = 0.5\n"
+         << "mu_kinetic = 0.5\n";
+    return text.str();
+}
+
+/// Drucker-Prager sand (10 MPa, 30 deg, cohesionless) and the generalized cap of the 3D column
+/// collapse cases (the thesis sand at 1/1000 of its stiffness).
+constexpr const char* kDruckerPrager =
+    "model = \"drucker_prager\"\ndensity = \"2000 kg/m^3\"\nyoungs_modulus = \"10 MPa\"\n"
+    "poisson_ratio = 0.3\nfriction_angle = \"30 deg\"\ncohesion = \"0 Pa\"\n"
+    "dilatancy_angle = \"0 deg\"\ncone_fit = \"compression\"\n";
+constexpr const char* kCap =
+    "model = \"generalized_cap\"\ndensity = \"2099 kg/m^3\"\nbulk_modulus = \"30.62 MPa\"\n"
+    "shear_modulus = \"8.23 MPa\"\ncap_k = \"0.03858 MPa\"\ncap_theta = 0.03\n"
+    "cap_gamma = \"0.03858 MPa\"\ncap_beta = \"9.0 1/MPa\"\ncap_D = \"7.25 1/MPa\"\n"
+    "cap_W = 0.18\ncap_X0 = \"0 MPa\"\ncap_R = 2.0\n";
+
+Measurement measure_granular(Index target, int threads, const char* material) {
+    omp_set_num_threads(threads);
+    const std::string file = (std::filesystem::temp_directory_path() /
+                              ("grainload_bench_granular_" + std::to_string(getpid()) + ".toml"))
+                                 .string();
+    std::ofstream(file) << granular_case(target, material);
+    const auto scene = app::Scene::load(file, {});
+    std::filesystem::remove(file);
+    io::Stepper& stepper = *scene->steppers.front();
+    const auto& model = dynamic_cast<const sph::SphModel&>(stepper);
+    double t = 0.0;
+    return time_steps(*model.solver(), scene->material_point_count(), [&](double dt) {
+        stepper.advance(t, dt);
+        t += dt;
+    });
+}
+
+void print(Index n, int threads, const char* label, const Measurement& m) {
+    std::printf("%10lld %7d %-22s %16.3e %14.3e %12.0f %12.2f %14.0f %22.15e\n",
+                static_cast<long long>(n), threads, label, m.particle_steps_per_second,
+                m.pairs_per_second, m.bytes_per_particle, m.rebuilds_per_step, peak_memory_mib(),
+                m.kinetic_energy);
+    std::fflush(stdout);
 }
 
 /// The thesis sand (section 7.2) with K and G / 1000, as the column-collapse cases run it.
@@ -283,6 +371,7 @@ int calibrate(const std::string& path) {
 } // namespace
 
 int main(int argc, char** argv) {
+    grainload::app::default_openmp_wait(argv); // the product default, as grainload run
     if (argc == 3 && std::string(argv[1]) == "--calibrate") {
         return calibrate(argv[2]);
     }
@@ -295,23 +384,25 @@ int main(int argc, char** argv) {
     }
     const materials::LinearElastic steel(
         materials::ElasticConstants::from_young(7850.0, 200e9, 0.3));
-    std::printf("# 3D elastic block, cubic spline, h = 1.3 dx, artificial viscosity and "
-                "kernel-gradient correction on\n");
+    std::printf("# 3D, cubic spline, h = 1.3 dx. Elastic block: artificial viscosity and "
+                "kernel-gradient correction on. Granular block: Drucker-Prager or cap, viscosity, "
+                "floor contact with dashpot and friction, Verlet 0.1h.\n"
+                "# particle-steps/s and bytes/particle per material particle (wall particles "
+                "not counted); KE = the material's kinetic energy after the timed steps\n");
     const Mode modes[] = {{"cell list", 0.0, sph::Formulation::updated_lagrangian},
                           {"Verlet 0.1h", 0.1, sph::Formulation::updated_lagrangian},
                           {"total Lagrangian", 0.1, sph::Formulation::total_lagrangian}};
-    std::printf("%10s %7s %-20s %16s %14s %12s %12s %14s\n", "particles", "threads", "search",
-                "particle-steps/s", "pairs/s", "bytes/part.", "rebuild/step", "peak RSS MiB");
+    std::printf("%10s %7s %-22s %16s %14s %12s %12s %14s %22s\n", "particles", "threads", "mode",
+                "particle-steps/s", "pairs/s", "bytes/part.", "rebuild/step", "peak RSS MiB",
+                "KE, J");
     for (const Index n : sizes) {
         for (const int threads : {1, 2}) {
             for (const Mode& mode : modes) {
-                const Measurement m = measure(n, threads, mode, steel);
-                std::printf("%10lld %7d %-20s %16.3e %14.3e %12.0f %12.2f %14.0f\n",
-                            static_cast<long long>(n), threads, mode.label,
-                            m.particle_steps_per_second, m.pairs_per_second, m.bytes_per_particle,
-                            m.rebuilds_per_step, peak_memory_mib());
-                std::fflush(stdout);
+                print(n, threads, mode.label, measure(n, threads, mode, steel));
             }
+            print(n, threads, "granular Drucker-Prager",
+                  measure_granular(n, threads, kDruckerPrager));
+            print(n, threads, "granular cap", measure_granular(n, threads, kCap));
         }
     }
     return 0;

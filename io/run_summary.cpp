@@ -11,8 +11,9 @@
 namespace grainload::io {
 
 double RunSummary::point_steps_per_second() const {
-    return wall_time > 0.0 ? static_cast<double>(points) * static_cast<double>(steps) / wall_time
-                           : 0.0;
+    return wall_time > 0.0
+               ? static_cast<double>(material_points) * static_cast<double>(steps) / wall_time
+               : 0.0;
 }
 
 namespace {
@@ -91,6 +92,7 @@ void write_run_summary(const RunSummary& summary, const std::string& path) {
             << "  \"simulated_time_s\": " << number(summary.simulated_time) << ",\n"
             << "  \"steps\": " << summary.steps << ",\n"
             << "  \"particles\": " << summary.points << ",\n"
+            << "  \"material_points\": " << summary.material_points << ",\n"
             << "  \"particle_steps_per_second\": " << number(summary.point_steps_per_second())
             << ",\n";
         if (summary.estimated_steps && summary.estimated_wall_time) {

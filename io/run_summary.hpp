@@ -16,7 +16,10 @@ struct RunSummary {
     double wall_time = 0.0; ///< s
     double simulated_time = 0.0;
     Index steps = 0;
-    Index points = 0;                 ///< particles + shell nodes
+    Index points = 0; ///< particles + shell nodes
+    /// Points of the material: body particles and shell nodes, without the wall particles
+    /// (boundary, not material). particle_steps_per_second counts these.
+    Index material_points = 0;
     std::string status = "completed"; ///< "completed" or "unstable"
     std::string diagnosis;
     std::vector<ResultFigure> results;
@@ -25,6 +28,7 @@ struct RunSummary {
     std::optional<double> estimated_steps;
     std::optional<double> estimated_wall_time; ///< s
 
+    /// material_points * steps / wall_time.
     double point_steps_per_second() const;
 };
 

@@ -106,7 +106,7 @@ PlasticRegion DruckerPrager::update(const Voigt6& strain_increment, Voigt6& stre
     const Parameters& p = parameters_;
     const double bulk = elastic_.bulk_modulus;
     const double shear = elastic_.shear_modulus;
-    const Voigt6 trial_stress = stress + elastic_.stiffness() * strain_increment;
+    const Voigt6 trial_stress = stress + elastic_.stress_from_strain(strain_increment);
     Trial trial;
     trial.deviator = voigt::deviator(trial_stress);
     trial.i1 = voigt::trace(trial_stress);

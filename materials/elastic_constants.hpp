@@ -39,6 +39,23 @@ struct ElasticConstants {
     double unscaled_p_wave_speed() const;
     /// Isotropic stiffness in the Voigt convention of io/types.hpp (engineering shear strains).
     Matrix6 stiffness() const;
+    /// stiffness() * strain without forming the matrix: the same products and sums, in the
+    /// order Eigen evaluates the 6x6 product (its zero terms left out), for the stress updates
+    /// of every particle and step.
+    Voigt6 stress_from_strain(const Voigt6& strain) const {
+        const double lambda = lame_lambda();
+        double diagonal = lambda;
+        diagonal += 2.0 * shear_modulus;
+        Voigt6 stress;
+        for (int i = 0; i < 3; ++i) {
+            double sum = (i == 0 ? diagonal : lambda) * strain[0];
+            sum += (i == 1 ? diagonal : lambda) * strain[1];
+            sum += (i == 2 ? diagonal : lambda) * strain[2];
+            stress[i] = sum;
+            stress[i + 3] = shear_modulus * strain[i + 3];
+        }
+        return stress;
+    }
 };
 
 } // namespace grainload::materials

@@ -8,10 +8,9 @@ std::unique_ptr<LinearElastic> LinearElastic::from_case(const io::CaseTable& tab
 
 PlasticRegion LinearElastic::update(const Voigt6& strain_increment, Voigt6& stress,
                                     std::span<double>, Matrix6* tangent) const {
-    const Matrix6 d = elastic_.stiffness();
-    stress += d * strain_increment;
+    stress += elastic_.stress_from_strain(strain_increment);
     if (tangent != nullptr) {
-        *tangent = d;
+        *tangent = elastic_.stiffness();
     }
     return PlasticRegion::elastic;
 }

@@ -15,9 +15,23 @@ class CellList {
   public:
     /// dimension 2 keeps a single layer of cells in z.
     void build(std::span<const Vec3> positions, double search_radius, int dimension);
+    /// The grid of `like` (origin, cell size and counts), holding only the particles i with
+    /// !skip[i]: candidates come in the same order as from `like`, less the skipped ones.
+    void build_subset(std::span<const Vec3> positions, const CellList& like,
+                      std::span<const char> skip);
 
     /// Call visit(j) for every particle j in the cells around x (including x's own particle).
     template <class Visit> void for_each_candidate(const Vec3& x, Visit&& visit) const {
+        for_each_range(x, [&](Index begin, Index end) {
+            for (Index k = begin; k < end; ++k) {
+                visit(sorted_[k]);
+            }
+        });
+    }
+
+    /// Call visit(begin, end) for each run [begin, end) of sorted positions around x, in the
+    /// order for_each_candidate visits them: sorted()[k] and the coordinates at k.
+    template <class Visit> void for_each_range(const Vec3& x, Visit&& visit) const {
         const auto c = cell_coordinates(x);
         const int z_reach = cells_[2] > 1 ? 1 : 0;
         for (int dz = -z_reach; dz <= z_reach; ++dz) {
@@ -34,27 +48,36 @@ class CellList {
                 const Index x_first = c[0] > 0 ? c[0] - 1 : 0;
                 const Index x_last = c[0] + 1 < cells_[0] ? c[0] + 1 : cells_[0] - 1;
                 // Cells adjacent in x are contiguous in the sorted order: one range per row.
-                const Index begin = cell_start_[row + x_first];
-                const Index end = cell_start_[row + x_last + 1];
-                for (Index k = begin; k < end; ++k) {
-                    visit(sorted_[k]);
-                }
+                visit(cell_start_[row + x_first], cell_start_[row + x_last + 1]);
             }
         }
     }
 
     Index cell_count() const { return cells_[0] * cells_[1] * cells_[2]; }
+    /// Particle indices in cell order, and their coordinates in the same order (contiguous, so
+    /// that a search loop over a run of them vectorises).
+    const Index* sorted() const { return sorted_.data(); }
+    const double* sorted_coordinate(int axis) const { return coordinates_[axis].data(); }
+    /// Heap bytes held (cell starts, sorted indices and coordinates).
+    std::size_t bytes() const {
+        return (cell_start_.capacity() + sorted_.capacity()) * sizeof(Index) +
+               (coordinates_[0].capacity() + coordinates_[1].capacity() +
+                coordinates_[2].capacity()) *
+                   sizeof(double);
+    }
     double cell_size() const { return cell_size_; }
 
   private:
     std::array<Index, 3> cell_coordinates(const Vec3& x) const;
+    /// Counting sort of the particles i with !skip[i] (all with an empty skip) into the grid.
+    void bin(std::span<const Vec3> positions, std::span<const char> skip);
 
     Vec3 origin_ = Vec3::Zero();
     double cell_size_ = 1.0;
     std::array<Index, 3> cells_{1, 1, 1};
-    std::vector<Index> cell_start_; ///< size cell_count() + 1
-    std::vector<Index> sorted_;     ///< particle indices ordered by cell
-    std::vector<Index> cell_of_;    ///< cell of each particle
+    std::vector<Index> cell_start_;                  ///< size cell_count() + 1
+    std::vector<Index> sorted_;                      ///< particle indices ordered by cell
+    std::array<std::vector<double>, 3> coordinates_; ///< x, y, z of sorted_[k] at k
 };
 
 } // namespace grainload::sph

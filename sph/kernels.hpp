@@ -116,6 +116,22 @@ class SmoothingKernel {
     /// grad_i W(x_i - x_j) for the separation x_ij = x_i - x_j at distance r > 0.
     Vec3 gradient(const Vec3& x_ij, double r) const { return (radial_derivative(r) / r) * x_ij; }
 
+    /// Calls visit(shape) with the kernel's shape (CubicSplineKernel{}, ...), so that a pair
+    /// loop is compiled once per shape with the shape inlined (ShapeTerms below).
+    template <class Visit> decltype(auto) visit_shape(Visit&& visit) const {
+        switch (type_) {
+        case KernelType::cubic_spline:
+            return visit(CubicSplineKernel{});
+        case KernelType::quintic_spline:
+            return visit(QuinticSplineKernel{});
+        case KernelType::wendland_c2:
+            break;
+        }
+        return visit(WendlandC2Kernel{});
+    }
+    double normalisation_over_h_d() const { return alpha_; }
+    double inverse_smoothing_length() const { return inverse_h_; }
+
   private:
     double shape(double q) const {
         switch (type_) {
@@ -146,6 +162,23 @@ class SmoothingKernel {
     double inverse_h_;
     double support_;
     double alpha_; ///< normalisation / h^d
+};
+
+/// A kernel's value and gradient factor with the shape fixed at compile time, for pair loops:
+/// the same operations, in the same order, as SmoothingKernel::value() and gradient(), so a
+/// loop that uses it reproduces the generic path bit for bit.
+template <class Shape> struct ShapeTerms {
+    explicit ShapeTerms(const SmoothingKernel& kernel)
+        : inverse_h(kernel.inverse_smoothing_length()), alpha(kernel.normalisation_over_h_d()),
+          alpha_over_h(alpha * inverse_h) {}
+    double value(double r) const { return alpha * Shape::shape(r * inverse_h); }
+    /// W'(r) / r: grad_i W_ij = gradient_factor(r) x_ij.
+    double gradient_factor(double r) const {
+        return alpha_over_h * Shape::shape_derivative(r * inverse_h) / r;
+    }
+    double inverse_h;
+    double alpha;
+    double alpha_over_h;
 };
 
 } // namespace grainload::sph

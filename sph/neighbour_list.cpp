@@ -43,17 +43,56 @@ void NeighbourList::rebuild(std::span<const Vec3> positions, std::span<const cha
     const double radius_squared = radius * radius;
     cells_.build(positions, radius, dimension_);
     const bool use_frozen = !frozen.empty();
-    auto keeps = [&](Index i, Index j) {
-        return j != i && !(use_frozen && frozen[i] && frozen[j]) &&
-               (positions[i] - positions[j]).squaredNorm() < radius_squared;
+    // A frozen particle (a wall's) pairs only with free ones, so it searches a grid of the free
+    // particles alone: the same grid, so the same candidate order less the frozen ones, without
+    // walking past its own wall's particles (most of the candidates of a wall particle).
+    if (use_frozen) {
+        free_cells_.build_subset(positions, cells_, frozen);
+    }
+    auto grid_of = [&](Index i) -> const CellList& {
+        return use_frozen && frozen[i] ? free_cells_ : cells_;
+    };
+    // Whether candidate k of `grid` is a neighbour of i: the distance as
+    // (x_i - x_j).squaredNorm() computes it, from the grid's contiguous coordinates. Frozen
+    // pairs never meet (a frozen particle searches the free grid), so no test for them.
+    auto within = [radius_squared](const CellList& grid, const Vec3& x, Index i, Index k) {
+        const double dx = x[0] - grid.sorted_coordinate(0)[k];
+        const double dy = x[1] - grid.sorted_coordinate(1)[k];
+        const double dz = x[2] - grid.sorted_coordinate(2)[k];
+        return (dx * dx + dy * dy + dz * dz < radius_squared) & (grid.sorted()[k] != i);
     };
     offset_.assign(static_cast<std::size_t>(n + 1), 0);
     // Two passes (count, then fill) keep the list in one allocation with no per-thread buffers.
 #pragma omp parallel for schedule(dynamic, 256)
     for (Index i = 0; i < n; ++i) {
+        const CellList& grid = grid_of(i);
+        const Vec3 x = positions[i];
+        const double* gx = grid.sorted_coordinate(0);
+        const double* gy = grid.sorted_coordinate(1);
+        const double* gz = grid.sorted_coordinate(2);
         Index count = 0;
-        cells_.for_each_candidate(positions[i], [&](Index j) { count += keeps(i, j) ? 1 : 0; });
-        offset_[i + 1] = count;
+        // Counted without the test j != i, so that the loop vectorises; i itself passed the
+        // distance test if it is in this grid (not a frozen particle's free grid) and its
+        // distance to itself, 0 or NaN for a position that is not finite, is below the radius.
+        const double x0 = x[0];
+        const double x1 = x[1];
+        const double x2 = x[2];
+        grid.for_each_range(x, [&](Index begin, Index end) {
+            // Whole numbers below 2^53 add exactly in any order, so the SIMD reduction that
+            // lets SSE2 vectorise the count (it cannot turn a double comparison into a 64-bit
+            // integer) changes nothing.
+            double run = 0.0;
+#pragma omp simd reduction(+ : run)
+            for (Index k = begin; k < end; ++k) {
+                const double dx = x0 - gx[k];
+                const double dy = x1 - gy[k];
+                const double dz = x2 - gz[k];
+                run += dx * dx + dy * dy + dz * dz < radius_squared ? 1.0 : 0.0;
+            }
+            count += static_cast<Index>(run);
+        });
+        const bool counted_itself = &grid == &cells_ && (x - x).squaredNorm() < radius_squared;
+        offset_[i + 1] = count - (counted_itself ? 1 : 0);
     }
     for (Index i = 0; i < n; ++i) {
         offset_[i + 1] += offset_[i];
@@ -61,10 +100,14 @@ void NeighbourList::rebuild(std::span<const Vec3> positions, std::span<const cha
     index_.resize(static_cast<std::size_t>(offset_[n]));
 #pragma omp parallel for schedule(dynamic, 256)
     for (Index i = 0; i < n; ++i) {
-        Index k = offset_[i];
-        cells_.for_each_candidate(positions[i], [&](Index j) {
-            if (keeps(i, j)) {
-                index_[k++] = static_cast<std::int32_t>(j);
+        const CellList& grid = grid_of(i);
+        const Vec3 x = positions[i];
+        Index entry = offset_[i];
+        grid.for_each_range(x, [&](Index begin, Index end) {
+            for (Index k = begin; k < end; ++k) {
+                if (within(grid, x, i, k)) {
+                    index_[entry++] = static_cast<std::int32_t>(grid.sorted()[k]);
+                }
             }
         });
     }
@@ -74,8 +117,7 @@ void NeighbourList::rebuild(std::span<const Vec3> positions, std::span<const cha
 
 std::size_t NeighbourList::bytes() const {
     return offset_.capacity() * sizeof(Index) + index_.capacity() * sizeof(std::int32_t) +
-           reference_.capacity() * sizeof(Vec3) +
-           static_cast<std::size_t>(cells_.cell_count() + 1) * sizeof(Index) * 2;
+           reference_.capacity() * sizeof(Vec3) + cells_.bytes() + free_cells_.bytes();
 }
 
 } // namespace grainload::sph

@@ -29,6 +29,8 @@ class NeighbourList {
         return {index_.data() + offset_[i], static_cast<std::size_t>(offset_[i + 1] - offset_[i])};
     }
     Index pair_entries() const { return offset_.empty() ? 0 : offset_.back(); }
+    /// Position of row i's first entry among all pair_entries(): per-entry arrays index by it.
+    Index first_entry(Index i) const { return offset_[i]; }
     Index rebuild_count() const { return rebuilds_; }
     double search_radius() const { return support_ + skin_; }
     double skin() const { return skin_; }
@@ -46,6 +48,7 @@ class NeighbourList {
     double skin_;
     int dimension_;
     CellList cells_;
+    CellList free_cells_; ///< the same grid holding only the particles that are not frozen
     std::vector<Index> offset_;
     std::vector<std::int32_t> index_;
     std::vector<Vec3> reference_; ///< positions at the last build

@@ -34,19 +34,28 @@ void store_kinematics(ParticleSet& particles, Index i, const Mat3& velocity_grad
 /// strain_rate = sym L in engineering shear (eq. 4.6.1.13), spin = axial vector of skew L
 /// (eq. 4.6.1.17). The thesis writes these with the gradient taken at x_j; the signs here are
 /// those of grad_i W_ij = W'(r) x_ij / r.
+/// With `entry_factor` it also stores W'(r)/r of every same-body neighbour entry inside the
+/// support (indexed like the list's entries; other entries are left as they were), for the
+/// force pass at the same positions.
 void compute_velocity_gradient(ParticleSet& particles, const NeighbourList& neighbours,
                                const SmoothingKernel& kernel, bool gradient_correction,
-                               std::vector<Mat3>& velocity_gradient, std::vector<Mat3>& correction);
+                               std::vector<Mat3>& velocity_gradient, std::vector<Mat3>& correction,
+                               std::vector<double>* entry_factor = nullptr);
 
 /// Per-particle quantities the force pass reads, computed once per step.
 struct ForceInputs {
-    std::vector<Mat3> stress_over_rho2;  ///< sigma_i / rho_i^2, times C_i when corrected
-    std::vector<Mat3> artificial_stress; ///< R_i (zero when epsilon = 0)
+    /// sigma_i / rho_i^2, times C_i when corrected (material particles; wall entries unused)
+    std::vector<Mat3> stress_over_rho2;
+    std::vector<Mat3> artificial_stress; ///< R_i of material particles; empty when epsilon = 0
     /// c_i of the artificial viscosity: the P-wave speed of the particle's material before its
     /// stiffness_scale (materials/elastic_constants.hpp), so that alpha c does not follow it.
     std::vector<double> sound_speed;
     /// C_i = M_i^-T of compute_velocity_gradient; empty without the gradient correction.
     std::vector<Mat3> gradient_correction;
+    /// W'(r)/r per neighbour entry from compute_velocity_gradient at the current positions and
+    /// list, which the force pass then reads instead of evaluating the kernel again; empty: it
+    /// evaluates the kernel. Same values either way.
+    std::vector<double> entry_factor;
 };
 
 /// Fill stress_over_rho2 and artificial_stress from the particles' current stresses (after

@@ -16,7 +16,10 @@ Mat3 jaumann_rotation(const Vec3& spin, double dt) {
 void update_stresses(ParticleSet& p, std::span<const materials::Material* const> materials,
                      double dt) {
     const Index n = p.size();
-#pragma omp parallel for schedule(static)
+    // Dynamic: wall particles are skipped and plastic returns cost more than elastic steps, so
+    // equal index ranges are unequal work (a static split gave one thread every grain of the
+    // column collapse, whose walls come after its grains).
+#pragma omp parallel for schedule(dynamic, 64)
     for (Index i = 0; i < n; ++i) {
         if (p.wall_id[i] >= 0) {
             continue;

@@ -1,0 +1,148 @@
+// Time each pass of an SPH step on a case's particles (by default the 2D column collapse of
+// the peer comparison, issue 20): velocity gradient, force inputs, forces, stress update and
+// neighbour-list rebuild, in microseconds per material particle, the best of --reps calls each
+// (a shared machine slows single calls at random; the best is the code's own speed). A run's
+// checkpoint gives a flowing state: `grainload run CASE --set 'case.end_time=0.2 s'` writes
+// OUT/checkpoint.bin. The checksum line sums the computed rates, so that two builds meant to
+// compute the same can be compared.
+//
+// usage: sph_passes [--threads N] [--reps R] [--restart CHECKPOINT] [CASE.toml]
+
+#include "app/openmp_wait.hpp"
+#include "app/scene.hpp"
+#include "io/binary_stream.hpp"
+#include "sph/rates.hpp"
+#include "sph/sph_model.hpp"
+#include "sph/stress_update.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <omp.h>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace grainload;
+
+template <class Pass> double best_seconds(Pass&& pass, int reps) {
+    double best = 1e300;
+    for (int r = 0; r < reps; ++r) {
+        const auto start = std::chrono::steady_clock::now();
+        pass();
+        best = std::min(
+            best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    return best;
+}
+
+/// The state of a checkpoint written by `grainload run` (the driver's header, then the models).
+void read_state(app::Scene& scene, const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    io::read_value<std::uint64_t>(in); // magic
+    io::read_value<double>(in);        // time
+    io::read_value<long long>(in);     // step
+    std::vector<double> frame_times;
+    io::read_array(in, frame_times);
+    for (const auto& stepper : scene.steppers) {
+        stepper->read_checkpoint(in);
+    }
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    app::default_openmp_wait(argv);
+    std::string kase =
+        std::string(GRAINLOAD_SOURCE_DIR) + "/cases/column_collapse_2d/column_collapse_2d.toml";
+    std::string checkpoint;
+    int threads = 1;
+    int reps = 20;
+    for (int a = 1; a < argc; ++a) {
+        const std::string arg = argv[a];
+        if (arg == "--threads" && a + 1 < argc) {
+            threads = std::atoi(argv[++a]);
+        } else if (arg == "--reps" && a + 1 < argc) {
+            reps = std::atoi(argv[++a]);
+        } else if (arg == "--restart" && a + 1 < argc) {
+            checkpoint = argv[++a];
+        } else {
+            kase = arg;
+        }
+    }
+    omp_set_num_threads(threads);
+    const auto scene = app::Scene::load(kase, {});
+    if (!checkpoint.empty()) {
+        read_state(*scene, checkpoint);
+    }
+    const auto* model = dynamic_cast<const sph::SphModel*>(scene->steppers.front().get());
+    if (model == nullptr || model->solver() == nullptr) {
+        std::fprintf(stderr, "sph_passes: %s has no SPH solver\n", kase.c_str());
+        return 2;
+    }
+    const sph::SphSolver& solver = *model->solver();
+    const sph::SphOptions& options = solver.options();
+    const sph::SmoothingKernel& kernel = solver.kernel();
+    sph::ParticleSet p = solver.particles();
+    std::vector<char> frozen(static_cast<std::size_t>(p.size()));
+    Index material = 0;
+    sph::ForceInputs inputs;
+    inputs.sound_speed.assign(static_cast<std::size_t>(p.size()), 0.0);
+    for (Index i = 0; i < p.size(); ++i) {
+        frozen[i] = p.is_wall(i) ? 1 : 0;
+        if (!frozen[i]) {
+            ++material;
+            inputs.sound_speed[i] = solver.materials()[static_cast<std::size_t>(p.material_id[i])]
+                                        ->elastic()
+                                        .p_wave_speed();
+        }
+    }
+    sph::NeighbourList list(kernel.support_radius(),
+                            options.verlet_skin_factor * options.smoothing_length,
+                            options.dimension);
+    list.update(p.position, frozen, true);
+    const std::vector<const materials::Material*> materials(solver.materials().begin(),
+                                                            solver.materials().end());
+    std::vector<Mat3> gradient;
+    std::vector<double> heating;
+    // As SphSolver: plane strain keeps the kinematic pass's kernel gradients for the forces.
+    std::vector<double>* factors = options.dimension == 2 ? &inputs.entry_factor : nullptr;
+    auto kinematics = [&] {
+        sph::compute_velocity_gradient(p, list, kernel, options.kernel_gradient_correction,
+                                       gradient, inputs.gradient_correction, factors);
+    };
+    kinematics();
+    const double t_gradient = best_seconds(kinematics, reps);
+    const double t_inputs = best_seconds(
+        [&] { sph::prepare_force_inputs(p, options.artificial_stress, inputs); }, reps);
+    const double t_forces = best_seconds(
+        [&] { sph::compute_accelerations(p, list, kernel, options, inputs, heating); }, reps);
+    sph::ParticleSet updated = p;
+    const double t_stress = best_seconds(
+        [&] {
+            updated.stress = p.stress;
+            updated.state = p.state;
+            sph::update_stresses(updated, materials, 1e-5);
+        },
+        reps);
+    const double t_rebuild = best_seconds([&] { list.update(p.position, frozen, true); }, reps);
+    double checksum = 0.0;
+    for (Index i = 0; i < p.size(); ++i) {
+        checksum += p.acceleration[i].norm() + heating[i] + p.density_rate[i];
+    }
+    const double us = 1e6 / static_cast<double>(material);
+    std::printf("# %s%s%s: %lld points, %lld material, %lld list entries, %d thread(s), best "
+                "of %d\n",
+                kase.c_str(), checkpoint.empty() ? "" : " at ", checkpoint.c_str(),
+                static_cast<long long>(p.size()), static_cast<long long>(material),
+                static_cast<long long>(list.pair_entries()), threads, reps);
+    std::printf("us per material particle: velocity gradient %.4f  force inputs %.4f  forces "
+                "%.4f  stress update %.4f  (sum %.4f)  list rebuild %.4f\n",
+                t_gradient * us, t_inputs * us, t_forces * us, t_stress * us,
+                (t_gradient + t_inputs + t_forces + t_stress) * us, t_rebuild * us);
+    std::printf("checksum %.17g\n", checksum);
+    return 0;
+}
