@@ -62,8 +62,8 @@ struct Measurement {
     /// Process CPU time per step: on one thread the wall time an idle machine would give, so
     /// that the calibration does not depend on the machine's load while it runs.
     double cpu_seconds_per_step = 0.0;
-    Index walls = 0;   ///< wall particles among the particles
-    Index entries = 0; ///< neighbour-list entries at the end
+    Index walls = 0;                        ///< wall particles among the particles
+    Index entries = 0;                      ///< neighbour-list entries at the end
     double particle_steps_per_second = 0.0; ///< material particles only
     double pairs_per_second = 0.0;
     double bytes_per_particle = 0.0; ///< solver heap bytes / material particles

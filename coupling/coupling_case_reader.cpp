@@ -176,7 +176,9 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
         coupling.fail("window", message.str());
     }
     const WindowLimits limits = estimate_window_limits(*sph, *fem, parts, settings.relaxation);
-    if (settings.max_iterations <= 1) {
+    const bool beyond = coupling.boolean_or(
+        "beyond_window_limit", io::default_value(kCouplingKeys, "beyond_window_limit") != 0.0);
+    if (settings.max_iterations <= 1 && !beyond) {
         if (auto refusal =
                 window_refusal(limits, settings.window, fem->dynamic(), settings.relaxation)) {
             coupling.fail("window", *refusal);

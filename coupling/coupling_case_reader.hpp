@@ -15,7 +15,7 @@ class CaseTable;
 namespace grainload::coupling {
 
 /// The [coupling] table's own keys (docs/user-guide/coupling.md).
-inline constexpr std::array<io::KeySpec, 6> kCouplingKeys{{
+inline constexpr std::array<io::KeySpec, 7> kCouplingKeys{{
     {"window", "time", "the dynamic shell's `fem.time_step`; required for a static shell",
      "FEM step Δt_F: the shell is solved once per window, SPH sub-cycles through it"},
     {"max_subcycles", "integer", "0 (no limit)",
@@ -30,6 +30,10 @@ inline constexpr std::array<io::KeySpec, 6> kCouplingKeys{{
      "the iteration stops when ‖F_new − F‖ / ‖F_new‖ is below it", 1e-3},
     {"energy_error_limit", "number", "0.05",
      "exit 3 when the interface energy error exceeds this fraction of the interface work", 0.05},
+    {"beyond_window_limit", "boolean", "false",
+     "true: run a staggered window longer than twice its estimated stable limit (refused "
+     "otherwise); the energy watchdog is then the only guard",
+     0.0},
 }};
 
 /// The keys of each [[coupling.interface]] table.

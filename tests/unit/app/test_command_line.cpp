@@ -11,8 +11,10 @@ using namespace grainload::testing;
 
 const std::string kFreeFall = "'" + source_path("cases/free_fall/free_fall_small.toml") + "'";
 
+/// One log per test: ctest runs the tests of this file side by side.
 std::string log_file() {
-    return ::testing::TempDir() + "command_line.log";
+    return ::testing::TempDir() + "command_line_" +
+           ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".log";
 }
 
 // Every way of asking for help prints a usage and exits with 0, whatever else is on the line.
