@@ -294,15 +294,18 @@ bool ShellAnalysis::increment(double from, double to, const NewtonSettings& sett
                 record_worst_dof(eq, residual, report);
                 return false;
             }
-            if (i == 0) {
-                residual0 = residual;
-                // Out of balance already within the force tolerance of the total force (e.g.
-                // a step in which no load changes, leaving the last solve's round-off): the
-                // ratios of eqs. 5.2.8-5.2.9 would measure noise against noise.
+            // Out of balance within the force tolerance of the total force (e.g. a step in
+            // which no load changes, leaving the last solve's round-off): the ratios of eqs.
+            // 5.2.8-5.2.9 would measure noise against noise.
+            const auto in_balance = [&](const Eigen::VectorXd& r) {
                 const double tolerance =
                     settings.force_tolerance > 0.0 ? settings.force_tolerance : 1e-10;
-                if (residual0.norm() <=
-                    tolerance * (free_part(applied).norm() + free_part(internal).norm())) {
+                return r.norm() <=
+                       tolerance * (free_part(applied).norm() + free_part(internal).norm());
+            };
+            if (i == 0) {
+                residual0 = residual;
+                if (in_balance(residual0)) {
                     update_state(prescribed_increment);
                     break;
                 }
@@ -321,6 +324,13 @@ bool ShellAnalysis::increment(double from, double to, const NewtonSettings& sett
                 if (met(it.displacement_ratio, settings.displacement_tolerance) &&
                     met(it.force_ratio, settings.force_tolerance) &&
                     met(it.energy_ratio, settings.energy_tolerance)) {
+                    break;
+                }
+                // Balanced to the force tolerance of the total force, as the first iteration
+                // accepts: when residual0 was itself small (a step in which only the lagged
+                // coupling load moved a little), the ratios above compare round-off with it and
+                // can never be met.
+                if (in_balance(residual)) {
                     break;
                 }
             }
