@@ -76,6 +76,8 @@ io::RunSummary make_summary(const Scene& scene, const CommandLine& line, const R
     summary.material_points = scene.material_point_count();
     for (const auto& stepper : scene.steppers) {
         stepper->append_results(clock.t, summary.results);
+        stepper->describe_model(summary.model);
+        stepper->append_hints(summary.hints);
     }
     return summary;
 }
@@ -206,6 +208,9 @@ int run_case(const CommandLine& line) {
     auto summary = make_summary(*scene, line, clock, progress.elapsed_seconds());
     attach(summary, estimate);
     io::write_run_summary(summary, out + "/summary.json");
+    for (const std::string& hint : summary.hints) {
+        progress.message("hint: " + hint);
+    }
     progress.message("done: " + std::to_string(clock.step) + " steps, " +
                      std::to_string(summary.wall_time) + " s wall time; " + out +
                      "/summary.json, " + out + "/" + scene->settings.name + ".pvd");

@@ -184,10 +184,42 @@ void CoupledModel::advance(double t, double dt) {
         load_ += settings_.relaxation * (produced - load_);
         pending_.map_seconds += seconds_since(start);
         monitor_.add(pending_);
+        track_extremes();
         return;
     }
     iterate_window(t, dt);
     monitor_.add(pending_);
+    track_extremes();
+}
+
+void CoupledModel::track_extremes() {
+    for (const CoupledPart& part : parts_) {
+        extremes_.update(*fem_, part.elements);
+    }
+}
+
+void CoupledModel::describe_model(std::vector<io::ModelChoice>& choices) const {
+    sph_->describe_model(choices);
+    for (const CoupledPart& part : parts_) {
+        for (io::ModelChoice& choice : choices) {
+            if (choice.item == "wall " + part.name) {
+                choice.choice = "elastic shell, coupled";
+            }
+        }
+    }
+    for (const fem::ShellPart& part : fem_->analysis().parts()) {
+        choices.push_back({"shell " + part.name, std::string(part.material->model())});
+    }
+    choices.push_back({"coupling", settings_.max_iterations > 1 ? "iterated" : "staggered"});
+}
+
+void CoupledModel::append_hints(std::vector<std::string>& hints) const {
+    sph_->append_hints(hints);
+    std::string names;
+    for (const CoupledPart& part : parts_) {
+        names += (names.empty() ? "" : ", ") + part.name;
+    }
+    append_shell_hints(extremes_, *fem_, names, sph_->spacing(), hints);
 }
 
 void CoupledModel::iterate_window(double t, double dt) {
@@ -283,6 +315,8 @@ void CoupledModel::append_results(double t, std::vector<io::ResultFigure>& resul
     results.push_back({"coupling_windows",
                        static_cast<double>(monitor_.windows().size() + windows_before_restart_), "",
                        std::nullopt, ""});
+    results.push_back({"shell_largest_deflection", extremes_.deflection, "m", std::nullopt, ""});
+    results.push_back({"shell_largest_von_mises", extremes_.von_mises, "Pa", std::nullopt, ""});
     results.push_back({"coupling_sand_work", monitor_.sand_work(), "J", std::nullopt, ""});
     results.push_back({"coupling_shell_work", monitor_.shell_work(), "J", std::nullopt, ""});
     results.push_back(
@@ -332,7 +366,8 @@ void CoupledModel::write_checkpoint(std::ostream& out) const {
     io::write_array(out, std::vector<double>(start_load_.begin(), start_load_.end()));
     io::write_array(out, monitor_.state());
     io::write_array(out, std::vector<double>{static_cast<double>(monitor_.windows().size() +
-                                                                 windows_before_restart_)});
+                                                                 windows_before_restart_),
+                                             extremes_.deflection, extremes_.von_mises});
 }
 
 void CoupledModel::read_checkpoint(std::istream& in) {
@@ -354,7 +389,13 @@ void CoupledModel::read_checkpoint(std::istream& in) {
     monitor_.set_state(state);
     std::vector<double> windows;
     io::read_array(in, windows);
-    windows_before_restart_ = windows.empty() ? 0 : static_cast<std::size_t>(windows.front());
+    if (windows.size() != 3) {
+        throw std::runtime_error(
+            "checkpoint: the coupling's window count and extremes are missing");
+    }
+    windows_before_restart_ = static_cast<std::size_t>(windows[0]);
+    extremes_.deflection = windows[1];
+    extremes_.von_mises = windows[2];
     restarted_ = true;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "coupling/coupling_monitor.hpp"
+#include "coupling/model_hints.hpp"
 #include "coupling/shell_wall.hpp"
 #include "fem/shell_model.hpp"
 #include "io/stepper.hpp"
@@ -63,6 +64,10 @@ class CoupledModel final : public io::Stepper {
     std::optional<std::string> diagnose() const override;
     void append_blocks(io::Frame& frame) const override;
     void append_results(double t, std::vector<io::ResultFigure>& results) const override;
+    /// The SPH side's choices, each coupled part as an elastic shell wall and its material.
+    void describe_model(std::vector<io::ModelChoice>& choices) const override;
+    /// The SPH side's hints, and the coupled shell's (coupling/model_hints.hpp).
+    void append_hints(std::vector<std::string>& hints) const override;
     void write_logs(const std::string& directory) const override;
     void set_output_directory(const std::string& directory) override;
     void write_checkpoint(std::ostream& out) const override;
@@ -84,6 +89,8 @@ class CoupledModel final : public io::Stepper {
     Eigen::VectorXd collect_load(double dt);
     void run_window(double t, double dt, const Eigen::VectorXd& applied);
     void iterate_window(double t, double dt);
+    /// The shell's extremes after a window, for the hints.
+    void track_extremes();
     /// Per node of the shell mesh: the interface load as contact pressure (compression
     /// positive) and friction traction (tangential force per area), from the load over the
     /// lumped area of the coupled elements around the node.
@@ -99,6 +106,7 @@ class CoupledModel final : public io::Stepper {
     Eigen::VectorXd end_load_;
     CouplingMonitor monitor_;
     WindowRecord pending_;
+    ShellExtremes extremes_; ///< over the run, for the hints
     bool restarted_ = false;
     std::size_t windows_before_restart_ = 0;
     std::vector<double> node_area_;  ///< coupled area around each node (0: not coupled)

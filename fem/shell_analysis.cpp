@@ -79,6 +79,12 @@ bool ShellAnalysis::constant_tangent() const {
     });
 }
 
+bool ShellAnalysis::prescribes_motion() const {
+    return !rigid_rotations_.empty() ||
+           std::any_of(prescribed_.begin(), prescribed_.end(),
+                       [](double value) { return !std::isnan(value) && value != 0.0; });
+}
+
 ShellNodes ShellAnalysis::element_nodes(std::size_t element) const {
     ShellNodes nodes;
     for (std::size_t k = 0; k < 4; ++k) {

@@ -172,6 +172,9 @@ class ShellAnalysis {
     /// True when the tangent never changes: linear kinematics, linear elastic parts and no
     /// follower or moment loads (a factorisation can then be reused from step to step).
     bool constant_tangent() const;
+    /// True when the supports prescribe a motion (a non-zero prescribed DOF or a rigid rotation
+    /// of a node set), which a rigid wall in the shell's place would have to follow too.
+    bool prescribes_motion() const;
     /// False when the tangent has a non-symmetric part (moment or follower loads).
     bool tangent_symmetric() const { return !has_moment_loads_ && follower_pressures_.empty(); }
     /// Add a full-size DOF increment to the state (translations add; rotations compose).

@@ -103,6 +103,16 @@ void write_run_summary(const RunSummary& summary, const std::string& path) {
                 << ", \"steps_ratio\": " << number(static_cast<double>(summary.steps) / steps)
                 << ", \"wall_time_ratio\": " << number(summary.wall_time / wall) << "},\n";
         }
+        out << "  \"model\": {";
+        for (std::size_t i = 0; i < summary.model.size(); ++i) {
+            out << (i == 0 ? "" : ", ") << quoted(summary.model[i].item) << ": "
+                << quoted(summary.model[i].choice);
+        }
+        out << "},\n  \"hints\": [";
+        for (std::size_t i = 0; i < summary.hints.size(); ++i) {
+            out << (i == 0 ? "\n    " : ",\n    ") << quoted(summary.hints[i]);
+        }
+        out << (summary.hints.empty() ? "],\n" : "\n  ],\n");
         out << "  \"results\": {";
         for (std::size_t i = 0; i < summary.results.size(); ++i) {
             out << (i == 0 ? "\n" : ",\n");

@@ -29,6 +29,12 @@ class Stepper {
     virtual void append_blocks(Frame& frame) const = 0;
     /// The case's own figures at time t, for summary.json.
     virtual void append_results(double t, std::vector<ResultFigure>& results) const = 0;
+    /// What the module models, item by item, for summary.json's "model". Nothing by default.
+    virtual void describe_model(std::vector<ModelChoice>& choices) const { (void)choices; }
+    /// After the run: what the scene could have left out, with the numbers that say so (a cap
+    /// that was never reached, a shell that hardly moved), for the log and summary.json's
+    /// "hints". Nothing by default.
+    virtual void append_hints(std::vector<std::string>& hints) const { (void)hints; }
     /// Write the module's own logs into the output directory (the shell FEM's per-step
     /// convergence CSV); called at every output instant. Nothing by default.
     virtual void write_logs(const std::string& /*directory*/) const {}

@@ -73,6 +73,11 @@ class SphModel final : public io::Stepper {
     std::optional<std::string> diagnose() const override;
     void append_blocks(io::Frame& frame) const override;
     void append_results(double t, std::vector<io::ResultFigure>& results) const override;
+    /// Dimension, formulation, each body material's model, each wall rigid or driven
+    /// (sph/model_report.cpp).
+    void describe_model(std::vector<io::ModelChoice>& choices) const override;
+    /// Generalized-cap materials whose cap was never reached (sph/model_report.cpp).
+    void append_hints(std::vector<std::string>& hints) const override;
     void write_checkpoint(std::ostream& out) const override;
     void read_checkpoint(std::istream& in) override;
 

@@ -1,0 +1,29 @@
+#pragma once
+
+#include "fem/shell_model.hpp"
+
+#include <string>
+#include <vector>
+
+namespace grainload::coupling {
+
+/// The extremes of the coupled shell parts over a run, which say whether the shell was worth
+/// modelling (issue 18, section 3): a wall whose largest deflection is far below the particle
+/// spacing gives the sand the same boundary as a rigid wall, and one that never comes near its
+/// yield stress needs no plasticity.
+struct ShellExtremes {
+    double deflection = 0.0; ///< largest nodal translation of a coupled part [m]
+    double von_mises = 0.0; ///< largest von Mises stress (top, middle, bottom) of its elements [Pa]
+
+    /// Take the shell's state at the end of a window into account: the coupled `elements`.
+    void update(const fem::ShellModel& fem, const std::vector<Index>& elements);
+};
+
+/// The hints of the coupled parts: deflection against the particle spacing (skipped when the
+/// shell's supports prescribe a motion, which a rigid wall would follow too) and the stress
+/// against the parts' yield stress.
+/// `names`: the coupled parts, for the text.
+void append_shell_hints(const ShellExtremes& extremes, const fem::ShellModel& fem,
+                        const std::string& names, double spacing, std::vector<std::string>& hints);
+
+} // namespace grainload::coupling

@@ -1,0 +1,88 @@
+// What an SPH scene modelled and what it could have left out (issue 18, section 3): the
+// SphModel members behind io::Stepper::describe_model and append_hints.
+#include "materials/generalized_cap.hpp"
+#include "sph/rigid_wall.hpp"
+#include "sph/sph_model.hpp"
+
+#include <cstdio>
+#include <set>
+
+namespace grainload::sph {
+
+namespace {
+
+std::string percent(double share) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g %%", 100.0 * share);
+    return text;
+}
+
+} // namespace
+
+void SphModel::describe_model(std::vector<io::ModelChoice>& choices) const {
+    choices.push_back({"dimension", dimension_ == 2 ? "plane strain" : "3D"});
+    if (!solver_) {
+        choices.push_back({"sph", "free flight (no interactions)"});
+        return;
+    }
+    choices.push_back(
+        {"sph formulation", solver_->options().formulation == Formulation::total_lagrangian
+                                ? "total Lagrangian"
+                                : "updated Lagrangian"});
+    const ParticleSet& p = particles();
+    std::set<int> used;
+    for (Index i = 0; i < p.size(); ++i) {
+        if (!p.is_wall(i)) {
+            used.insert(p.material_id[i]);
+        }
+    }
+    for (const int m : used) {
+        choices.push_back(
+            {"material " + materials_->name(m), std::string((*materials_)[m].model())});
+    }
+    for (const Wall& wall : solver_->walls()) {
+        // A wall without a driver stays where it was built; the coupling's walls follow a shell.
+        const bool rigid = !wall.driver || dynamic_cast<const RigidMotion*>(wall.driver.get());
+        choices.push_back({"wall " + wall.name, rigid ? "rigid" : "driven by another solver"});
+    }
+}
+
+void SphModel::append_hints(std::vector<std::string>& hints) const {
+    // A cap that never hardened: compaction on the cap is what the generalized cap adds to its
+    // failure envelope, so without it a Drucker-Prager cone of the same envelope gives the same
+    // response for less work per update. eps_v^p > 0 marks net compaction on the cap (MAT_025:
+    // it starts at 0 and grows only there; docs/theory/generalized_cap.md).
+    const ParticleSet& p = particles();
+    for (int m = 0; m < materials_->size(); ++m) {
+        if ((*materials_)[m].model() != "generalized_cap") {
+            continue;
+        }
+        Index count = 0;
+        Index compacted = 0;
+        for (Index i = 0; i < p.size(); ++i) {
+            if (p.is_wall(i) || p.material_id[i] != m) {
+                continue;
+            }
+            ++count;
+            const double strain = p.state[static_cast<std::size_t>(p.state_offset[i]) +
+                                          materials::GeneralizedCap::kPlasticVolumetricStrain];
+            compacted += strain > 0.0;
+        }
+        if (count == 0) {
+            continue;
+        }
+        const std::string name = "material '" + materials_->name(m) + "' (generalized_cap): ";
+        if (compacted == 0) {
+            hints.push_back(name + "none of its " + std::to_string(count) +
+                            " particles compacted on the cap; a drucker_prager material with the "
+                            "cap's failure envelope would give the same response at lower cost");
+        } else {
+            hints.push_back(name + std::to_string(compacted) + " of its " + std::to_string(count) +
+                            " particles (" +
+                            percent(static_cast<double>(compacted) / static_cast<double>(count)) +
+                            ") compacted on the cap: the cap is needed");
+        }
+    }
+}
+
+} // namespace grainload::sph
