@@ -1,6 +1,9 @@
 #pragma once
 
 #include <string>
+#include <vtkCompositeDataSet.h>
+#include <vtkDataSet.h>
+#include <vtkInformation.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
@@ -16,6 +19,22 @@ inline vtkSmartPointer<vtkPolyData> read_particle_block(const std::string& vtm,
     reader->Update();
     auto* blocks = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
     return vtkPolyData::SafeDownCast(blocks->GetBlock(index));
+}
+
+/// The block called `name` (a body, a wall, a shell part) of a written frame; null if none.
+inline vtkSmartPointer<vtkDataSet> read_named_block(const std::string& vtm,
+                                                    const std::string& name) {
+    vtkNew<vtkXMLMultiBlockDataReader> reader;
+    reader->SetFileName(vtm.c_str());
+    reader->Update();
+    auto* blocks = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
+    for (unsigned i = 0; blocks != nullptr && i < blocks->GetNumberOfBlocks(); ++i) {
+        if (blocks->HasMetaData(i) &&
+            name == blocks->GetMetaData(i)->Get(vtkCompositeDataSet::NAME())) {
+            return vtkDataSet::SafeDownCast(blocks->GetBlock(i));
+        }
+    }
+    return nullptr;
 }
 
 } // namespace grainload::testing
