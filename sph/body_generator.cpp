@@ -174,4 +174,29 @@ std::vector<Vec3> generate_body_points(const io::CaseTable& shape, double spacin
     return points;
 }
 
+std::string thin_body_warning(const std::vector<Vec3>& points, double spacing, int dimension,
+                              const std::string& name) {
+    // Three particles across fill the cubic spline's support (2.6 spacings) from a centre row.
+    constexpr long kFewestAcross = 3;
+    if (points.empty()) {
+        return "";
+    }
+    Vec3 low = points.front();
+    Vec3 high = points.front();
+    for (const Vec3& x : points) {
+        low = low.cwiseMin(x);
+        high = high.cwiseMax(x);
+    }
+    for (int a = 0; a < dimension; ++a) {
+        const long across = std::lround((high[a] - low[a]) / spacing) + 1;
+        if (across < kFewestAcross) {
+            return "body \"" + name + "\" is " + std::to_string(across) + " particle" +
+                   (across == 1 ? "" : "s") + " across along " + std::string(1, "xyz"[a]) +
+                   ": SPH needs about three across to fill its kernel support; halve the spacing "
+                   "or thicken the body";
+        }
+    }
+    return "";
+}
+
 } // namespace grainload::sph

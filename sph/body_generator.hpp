@@ -3,6 +3,7 @@
 #include "io/types.hpp"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace grainload::io {
@@ -40,5 +41,12 @@ std::vector<Vec3> fill_disc(const Vec3& centre, double radius, double spacing, i
 /// is std::mt19937_64, whose sequence the C++ standard fixes.
 void jitter_points(std::vector<Vec3>& points, double spacing, double fraction, std::uint64_t seed,
                    int dimension);
+
+/// A warning when a body is fewer than three particles across along one of its axes (its
+/// bounding box; "" otherwise): the SPH sums need the kernel support, 2h = 2.6 spacings at the
+/// default h = 1.3 dp, filled across the body, so a layer one or two particles thick has
+/// spurious surface deficiency everywhere (docs/theory/sph.md).
+std::string thin_body_warning(const std::vector<Vec3>& points, double spacing, int dimension,
+                              const std::string& name);
 
 } // namespace grainload::sph

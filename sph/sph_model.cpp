@@ -3,10 +3,12 @@
 #include "io/binary_stream.hpp"
 #include "io/case_table.hpp"
 #include "sph/body_generator.hpp"
+#include "sph/gravity_strain.hpp"
 #include "sph/sph_case_reader.hpp"
 
 #include <cmath>
 #include <filesystem>
+#include <iostream>
 #include <limits>
 #include <sstream>
 
@@ -97,6 +99,8 @@ void SphModel::build(const io::CaseTable& root) {
     if (interactions_) {
         build_solver(sph);
         read_probes(sph);
+        check_gravity_strain(root, particles(), *materials_, body_names_, gravity_, spacing_,
+                             solver_->options().contact.stiffness);
     }
     if (const auto heap = sph.optional_table("heap")) {
         heap_.emplace(*heap, body_names_, particles(), spacing_, gravity_, dimension_);
@@ -247,6 +251,10 @@ void SphModel::add_body(const io::CaseTable& body, int dimension) {
     const auto& law = (*materials_)[material];
     const auto points =
         generate_body_points(body.table("shape"), spacing, dimension, law.density());
+    if (const std::string warning = thin_body_warning(points, spacing, dimension, name);
+        !warning.empty()) {
+        std::cerr << "grainload: warning: " << warning << '\n';
+    }
     const double particle_mass = law.density() * std::pow(spacing, dimension);
     const int body_index = static_cast<int>(body_names_.size());
     const Index first = particles_.size();

@@ -147,10 +147,10 @@ TEST(CouplingSmall, SandDroppedOnAPlateGivesItItsImpulseAndEnergy) {
 // thickness (the upper face): a particle through the sheet would be below it by up to a
 // spacing. Measured: the smallest clearance over the frames is 1.5 mm from the mid-surface.
 TEST(CouplingSmall, ABlockAt100MetresPerSecondDoesNotPassThroughThePlate) {
-    const CaseRun run = run_case_file(
-        "cases/sand_drop/sand_drop_small.toml", "sand_drop_100",
-        "--set 'sph.body[0].velocity=0 0 -100 m/s' --set 'case.end_time=1 ms' --set "
-        "'case.output_interval=0.1 ms' --set 'fem.time_step=0.05 ms'");
+    const CaseRun run =
+        run_case_file("cases/sand_drop/sand_drop_small.toml", "sand_drop_100",
+                      "--set 'sph.body[0].velocity=0 0 -100 m/s' --set 'case.end_time=1 ms' --set "
+                      "'case.output_interval=0.1 ms' --set 'fem.time_step=0.05 ms'");
     ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
     double deepest_plate = 0.0;
     for (int frame = 1; frame <= 10; ++frame) {

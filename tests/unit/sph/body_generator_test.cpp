@@ -145,5 +145,37 @@ jitter = 0.7
     EXPECT_THROW(generate_body_points(root.table("bad"), dx, 3, 1000.0), io::CaseError);
 }
 
+// A layer two particles thick is named with its axis and count; three across (the kernel
+// support of h = 1.3 dp filled from the middle row) passes; in plane strain z is not an axis.
+TEST(BodyGenerator, ThinBodiesAreWarnedAbout) {
+    const double dx = 0.01;
+    std::vector<Vec3> slab;
+    for (int i = 0; i < 10; ++i) {
+        for (int j = 0; j < 10; ++j) {
+            for (int k = 0; k < 2; ++k) {
+                slab.emplace_back(i * dx, j * dx, k * dx);
+            }
+        }
+    }
+    const std::string warning = thin_body_warning(slab, dx, 3, "layer");
+    EXPECT_NE(warning.find("body \"layer\" is 2 particles across along z"), std::string::npos)
+        << warning;
+    for (int i = 0; i < 10; ++i) {
+        for (int j = 0; j < 10; ++j) {
+            slab.emplace_back(i * dx, j * dx, 2 * dx);
+        }
+    }
+    EXPECT_EQ(thin_body_warning(slab, dx, 3, "layer"), "");
+    std::vector<Vec3> strip;
+    for (int i = 0; i < 10; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            strip.emplace_back(i * dx, j * dx, 0.0);
+        }
+    }
+    EXPECT_EQ(thin_body_warning(strip, dx, 2, "strip"), "");
+    EXPECT_NE(thin_body_warning(strip, dx, 3, "strip").find("1 particle across along z"),
+              std::string::npos);
+}
+
 } // namespace
 } // namespace grainload::sph
