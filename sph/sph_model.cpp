@@ -3,7 +3,7 @@
 #include "io/binary_stream.hpp"
 #include "io/case_table.hpp"
 #include "sph/body_generator.hpp"
-#include "sph/gravity_strain.hpp"
+#include "sph/scene_limits.hpp"
 #include "sph/sph_case_reader.hpp"
 
 #include <cmath>
@@ -101,6 +101,11 @@ void SphModel::build(const io::CaseTable& root) {
         read_probes(sph);
         check_gravity_strain(root, particles(), *materials_, body_names_, gravity_, spacing_,
                              solver_->options().contact.stiffness);
+        if (const std::string warning =
+                impact_warning(particles(), body_names_, solver_->options().contact.stiffness);
+            !warning.empty()) {
+            std::cerr << "grainload: warning: " << warning << '\n';
+        }
     }
     if (const auto heap = sph.optional_table("heap")) {
         heap_.emplace(*heap, body_names_, particles(), spacing_, gravity_, dimension_);

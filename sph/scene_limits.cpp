@@ -1,4 +1,4 @@
-#include "sph/gravity_strain.hpp"
+#include "sph/scene_limits.hpp"
 
 #include "io/case_table.hpp"
 
@@ -86,6 +86,36 @@ void check_gravity_strain(const io::CaseTable& root, const ParticleSet& particle
                 << g.contact_stress / kLargestGravityStrain << " Pa";
         root.table("sph").table("contact").fail("stiffness", message.str());
     }
+}
+
+std::string impact_warning(const ParticleSet& particles, const std::vector<std::string>& body_names,
+                           double contact_stiffness) {
+    if (!(contact_stiffness > 0.0)) {
+        return "";
+    }
+    double worst = 0.0;
+    Index at = -1;
+    for (Index i = 0; i < particles.size(); ++i) {
+        if (particles.is_wall(i)) {
+            continue;
+        }
+        const double pressure = particles.density[i] * particles.velocity[i].squaredNorm();
+        if (pressure > worst) {
+            worst = pressure;
+            at = i;
+        }
+    }
+    if (worst <= contact_stiffness) {
+        return "";
+    }
+    std::ostringstream message;
+    message.precision(3);
+    message << "body \"" << body_names[static_cast<std::size_t>(particles.body_id[at])]
+            << "\" starts at " << particles.velocity[at].norm() << " m/s: rho v^2 = " << worst
+            << " Pa exceeds the contact stiffness " << contact_stiffness
+            << " Pa, so its particles can pass a rigid wall; a contact stiffness of at least "
+            << worst << " Pa stops them";
+    return message.str();
 }
 
 } // namespace grainload::sph
