@@ -16,6 +16,8 @@ void EnergyLedger::open(double held, double stored_elastic, double contact) {
     wall_work_ = 0.0;
     largest_gravity_work_ = 0.0;
     largest_wall_work_ = 0.0;
+    removed_held_ = 0.0;
+    removed_contact_ = 0.0;
 }
 
 void EnergyLedger::add_gravity_work(double work) {
@@ -28,9 +30,15 @@ void EnergyLedger::add_wall_work(double work) {
     largest_wall_work_ = std::max(largest_wall_work_, std::abs(wall_work_));
 }
 
+void EnergyLedger::add_removed(double held, double contact) {
+    removed_held_ += held;
+    removed_contact_ += contact;
+}
+
 double EnergyLedger::balance_error(double held, double contact) const {
     const double scale = throughput();
-    return scale > 0.0 ? (surplus(held) + contact - initial_contact_) / scale : 0.0;
+    return scale > 0.0 ? (surplus(held) + removed_contact_ + contact - initial_contact_) / scale
+                       : 0.0;
 }
 
 double EnergyLedger::throughput() const {
@@ -58,12 +66,13 @@ std::optional<std::string> EnergyLedger::check(double held, double fraction) con
 
 std::vector<double> EnergyLedger::state() const {
     return {open_ ? 1.0 : 0.0, initial_held_,         initial_contact_, initial_scale_,
-            gravity_work_,     largest_gravity_work_, wall_work_,       largest_wall_work_};
+            gravity_work_,     largest_gravity_work_, wall_work_,       largest_wall_work_,
+            removed_held_,     removed_contact_};
 }
 
 void EnergyLedger::set_state(const std::vector<double>& state) {
-    if (state.size() != 8) {
-        throw std::runtime_error("checkpoint: expected 8 energy-ledger entries, found " +
+    if (state.size() != 10) {
+        throw std::runtime_error("checkpoint: expected 10 energy-ledger entries, found " +
                                  std::to_string(state.size()));
     }
     open_ = state[0] != 0.0;
@@ -74,6 +83,8 @@ void EnergyLedger::set_state(const std::vector<double>& state) {
     largest_gravity_work_ = state[5];
     wall_work_ = state[6];
     largest_wall_work_ = state[7];
+    removed_held_ = state[8];
+    removed_contact_ = state[9];
 }
 
 } // namespace grainload::sph

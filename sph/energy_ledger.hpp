@@ -17,6 +17,10 @@ namespace grainload::sph {
 /// correction's and artificial stress's small departures from a conservative form, and
 /// leapfrog's O(dt^2) error. A numerical instability creates energy, which shows as a surplus
 /// of the same order as all the energy that has passed through the run; that is the check.
+/// Taken out: particles that leave the scene (a sink, a removed wall) take their kinetic and
+/// internal energy with them, and the contact potential between them and what stays is
+/// released; both are booked as removed, so a departure is not a deficit (docs/theory/sph.md,
+/// "Sinks").
 class EnergyLedger {
   public:
     /// Starts the account from the particles' energy at t = 0 and the energy stored at t = 0
@@ -25,13 +29,21 @@ class EnergyLedger {
     bool is_open() const { return open_; }
     void add_gravity_work(double work);
     void add_wall_work(double work);
+    /// Particles left: `held` their kinetic plus internal energy, `contact` the contact
+    /// potential of their pairs with each other and with what stays.
+    void add_removed(double held, double contact);
 
     double gravity_work() const { return gravity_work_; }
     double wall_work() const { return wall_work_; }
-    /// Energy held now minus what was held at t = 0 and what gravity and the walls put in.
-    double surplus(double held) const { return held - initial_held_ - gravity_work_ - wall_work_; }
-    /// (held + contact - everything at t = 0 - work put in) / throughput: what the books miss,
-    /// counting the contact potential's energy both now and at t = 0.
+    double removed_held() const { return removed_held_; }
+    double removed_contact() const { return removed_contact_; }
+    /// Energy held now, plus what left with removed particles, minus what was held at t = 0
+    /// and what gravity and the walls put in.
+    double surplus(double held) const {
+        return held + removed_held_ - initial_held_ - gravity_work_ - wall_work_;
+    }
+    /// (held + contact + removed - everything at t = 0 - work put in) / throughput: what the
+    /// books miss, counting the contact potential's energy both now and at t = 0.
     double balance_error(double held, double contact) const;
     /// The scale of the run's energy: the initial kinetic, internal and stored energy plus the
     /// largest work gravity and the walls have done so far.
@@ -52,6 +64,8 @@ class EnergyLedger {
     double wall_work_ = 0.0;
     double largest_gravity_work_ = 0.0;
     double largest_wall_work_ = 0.0;
+    double removed_held_ = 0.0;
+    double removed_contact_ = 0.0;
 };
 
 } // namespace grainload::sph

@@ -177,6 +177,9 @@ std::vector<Wall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& partic
             angular_history.empty()
                 ? table.vector_or("angular_velocity", dim::kAngularVelocity, Vec3::Zero())
                 : history_value(angular_history, 0.0);
+        if (table.has("remove_at")) {
+            wall.removal_time = table.positive_quantity("remove_at", dim::kTime, true);
+        }
         RigidMotion& motion = attach_rigid_motion(particles, wall, velocity, angular_velocity);
         motion.velocity_history = std::move(velocity_history);
         motion.angular_velocity_history = std::move(angular_history);

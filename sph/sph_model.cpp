@@ -107,6 +107,7 @@ void SphModel::build(const io::CaseTable& root) {
             std::cerr << "grainload: warning: " << warning << '\n';
         }
     }
+    build_outlets(sph);
     if (const auto heap = sph.optional_table("heap")) {
         heap_.emplace(*heap, body_names_, particles(), spacing_, gravity_, dimension_);
     }
@@ -218,6 +219,10 @@ void SphModel::write_output_rows(double time) const {
         }
         wall_writer_->write(time, solver_->walls());
     }
+    if (!sinks_.empty()) {
+        sinks_.record(time);
+        sinks_.write_csv(output_directory_);
+    }
     if (probes_.empty()) {
         return;
     }
@@ -229,6 +234,9 @@ void SphModel::write_output_rows(double time) const {
     }
     const auto& p = solver_->particles();
     for (const auto& [name, i] : probes_) {
+        if (i < 0) { // its particle left through a sink
+            continue;
+        }
         const Voigt6& s = p.stress[i];
         *probe_writer_ << time << ',' << name << ',' << i << ',' << s[0] << ',' << s[1] << ','
                        << s[2] << ',' << s[3] << ',' << von_mises_of(s) << ',' << pressure_of(s)
@@ -300,6 +308,7 @@ void SphModel::advance(double t, double dt) {
     if (solver_) {
         solver_->set_time(t);
         solver_->step(dt);
+        remove_departed(t + dt);
         if (heap_) {
             heap_->record(t + dt, solver_->particles());
         }
@@ -407,12 +416,20 @@ void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) 
     if (heap_) {
         heap_->append_results(particles(), results);
     }
+    if (removals_) {
+        sinks_.append_results(scene_mass(), results);
+    }
     if (solver_) {
         results.push_back({"kinetic_energy", solver_->kinetic_energy(), "J", std::nullopt, ""});
         results.push_back({"internal_energy", solver_->internal_energy(), "J", std::nullopt, ""});
         const EnergyLedger& ledger = solver_->energy_ledger();
         results.push_back({"gravity_work", ledger.gravity_work(), "J", std::nullopt, ""});
         results.push_back({"moving_wall_work", ledger.wall_work(), "J", std::nullopt, ""});
+        if (removals_) {
+            results.push_back({"removed_energy", ledger.removed_held(), "J", std::nullopt, ""});
+            results.push_back(
+                {"removed_contact_energy", ledger.removed_contact(), "J", std::nullopt, ""});
+        }
         const double contact = solver_->contact_energy();
         results.push_back({"contact_energy", contact, "J", std::nullopt, ""});
         results.push_back({"energy_balance_error",
@@ -448,6 +465,7 @@ void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) 
 }
 
 void SphModel::write_checkpoint(std::ostream& out) const {
+    io::write_array(out, origin_);
     const auto& p = particles();
     io::write_array(out, p.position);
     io::write_array(out, p.velocity);
@@ -478,9 +496,11 @@ void SphModel::write_checkpoint(std::ostream& out) const {
     if (heap_) {
         io::write_array(out, heap_->state());
     }
+    write_outlet_state(out);
 }
 
 void SphModel::read_checkpoint(std::istream& in) {
+    read_removals(in);
     auto& p = solver_ ? solver_->particles() : particles_;
     const auto n = p.position.size();
     io::read_array(in, p.position, n, "particles");
@@ -538,6 +558,7 @@ void SphModel::read_checkpoint(std::istream& in) {
         io::read_array(in, state);
         heap_->set_state(state);
     }
+    read_outlet_state(in);
 }
 
 } // namespace grainload::sph

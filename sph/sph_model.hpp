@@ -7,10 +7,12 @@
 #include "sph/heap_monitor.hpp"
 #include "sph/particle_set.hpp"
 #include "sph/rigid_wall.hpp"
+#include "sph/sink.hpp"
 #include "sph/sph_solver.hpp"
 
 #include <fstream>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -83,6 +85,10 @@ class SphModel final : public io::Stepper {
 
     const ParticleSet& particles() const { return solver_ ? solver_->particles() : particles_; }
     const SphSolver* solver() const { return solver_.get(); }
+    const SinkSet& sinks() const { return sinks_; }
+    /// Index each current particle had when the case built the scene (particles leave through
+    /// sinks and removed walls; the rest keep their order).
+    const std::vector<Index>& original_index() const { return origin_; }
     /// Where wall_forces.csv and probes.csv go: the run's output directory. Defaults to
     /// out/<case name>, the driver's default; a driver run with --out must set it.
     void set_output_directory(const std::string& directory) override;
@@ -97,6 +103,19 @@ class SphModel final : public io::Stepper {
     void append_wall_blocks(io::Frame& frame) const;
     void read_probes(const io::CaseTable& sph);
     void write_output_rows(double time) const;
+    /// Sinks and remove_at (sph_model_outlets.cpp): read them, refuse what cannot lose
+    /// particles, and open the mass audit.
+    void build_outlets(const io::CaseTable& sph);
+    /// After a step ending at `time`: the particles in a sink and the walls due to go leave.
+    void remove_departed(double time);
+    /// Take the flagged particles out of the solver and of every per-particle array here.
+    void apply_removal(std::span<const char> gone);
+    /// Mass of the material particles now.
+    double scene_mass() const;
+    void write_outlet_state(std::ostream& out) const;
+    /// Replays the checkpoint's removals on the freshly built scene: before the particle arrays.
+    void read_removals(std::istream& in);
+    void read_outlet_state(std::istream& in);
 
     const materials::MaterialLibrary* materials_;
     ParticleSet particles_;
@@ -120,6 +139,11 @@ class SphModel final : public io::Stepper {
     /// [sph.heap]: the measured body's kinetic energy per step and its heap at the end.
     std::optional<HeapMonitor> heap_;
     EscapeWatch escape_watch_; ///< the watchdog for particles leaving the scene
+    /// [[sph.sink]]: mutable because its history is recorded at the output instants, which the
+    /// driver reaches through the const append_blocks (as the wall and probe writers above).
+    mutable SinkSet sinks_;
+    bool removals_ = false; ///< a sink or a wall with remove_at: particles may leave
+    std::vector<Index> origin_;
 };
 
 } // namespace grainload::sph

@@ -1,6 +1,7 @@
 #include "sph/sph_solver.hpp"
 
 #include "sph/contact_force.hpp"
+#include "sph/particle_removal.hpp"
 #include "sph/stress_update.hpp"
 
 #include <Eigen/Geometry>
@@ -74,6 +75,28 @@ void SphSolver::restart(std::span<const Vec3> neighbour_reference, bool forces_v
                                                    : neighbour_reference,
                        is_wall_, true);
     forces_valid_ = forces_valid;
+}
+
+void SphSolver::remove_particles(std::span<const char> gone) {
+    if (total_lagrangian_) {
+        throw std::logic_error("SphSolver::remove_particles: the total-Lagrangian reference "
+                               "pairs cannot lose particles");
+    }
+    if (energy_.is_open()) {
+        double held = 0.0;
+        for (Index i = 0; i < particles_.size(); ++i) {
+            if (gone[i] && !is_wall_[i]) {
+                held += particles_.mass[i] * (0.5 * particles_.velocity[i].squaredNorm() +
+                                              particles_.internal_energy[i]);
+            }
+        }
+        energy_.add_removed(held, contact_energy_of(gone));
+    }
+    sph::remove_particles(particles_, gone, walls_);
+    compact(is_wall_, gone);
+    compact(wave_speed_, gone);
+    compact(force_inputs_.sound_speed, gone);
+    neighbours_.update(particles_.position, is_wall_, true);
 }
 
 void SphSolver::refresh_neighbours() {
@@ -204,6 +227,10 @@ double SphSolver::held_energy() const {
 }
 
 double SphSolver::contact_energy() const {
+    return contact_energy_of({});
+}
+
+double SphSolver::contact_energy_of(std::span<const char> flagged) const {
     if (!(options_.contact.stiffness > 0.0)) {
         return 0.0;
     }
@@ -211,13 +238,18 @@ double SphSolver::contact_energy() const {
     const Index n = p.size();
     const double support_squared = kernel_.support_radius() * kernel_.support_radius();
     const double w_reference = kernel_.value(options_.particle_spacing);
+    const bool all = flagged.empty();
     double sum = 0.0;
 #pragma omp parallel for schedule(dynamic, 256) reduction(+ : sum)
     for (Index i = 0; i < n; ++i) {
+        if (!all && !flagged[i]) {
+            continue;
+        }
         for (const Index j : neighbours_.neighbours(i)) {
-            // The list holds each pair twice (i in j's list and j in i's): count it from the
-            // lower index.
-            if (j < i || p.body_id[i] == p.body_id[j]) {
+            // The list holds each pair twice (i in j's list and j in i's): count it once, from
+            // the lower index when both are counted from.
+            const bool j_counts = all || flagged[j];
+            if ((j < i && j_counts) || p.body_id[i] == p.body_id[j]) {
                 continue;
             }
             const double r2 = (p.position[i] - p.position[j]).squaredNorm();

@@ -46,6 +46,13 @@ class SphSolver {
     /// from the end-of-step velocity would change the continuation at round-off level.
     void restart(std::span<const Vec3> neighbour_reference, bool forces_valid);
     bool forces_valid() const { return forces_valid_; }
+    /// Take the particles with gone[i] != 0 out of the scene (sph/particle_removal.hpp), between
+    /// steps: the energy ledger books what they held and the contact potential they shared
+    /// (EnergyLedger::add_removed), the per-particle work arrays and wall ranges follow, and
+    /// the neighbour list is rebuilt at the current positions. The accelerations stay valid
+    /// (the next kick uses the forces of the step just ended, removed neighbours included).
+    /// Not with Formulation::total_lagrangian, whose reference pairs are fixed.
+    void remove_particles(std::span<const char> gone);
     double time() const { return time_; }
     /// The driver's clock, which wall motion histories follow (also after a restart).
     void set_time(double time) { time_ = time; }
@@ -84,6 +91,8 @@ class SphSolver {
     /// Energy stored in the contact potential of all pairs of different bodies and of bodies
     /// and walls (a pass over the neighbour list: for summaries and the ledger's opening).
     double contact_energy() const;
+    /// The part of contact_energy() in pairs with at least one flagged particle.
+    double contact_energy_of(std::span<const char> flagged) const;
     /// Opened at the first step (or restored from a checkpoint).
     const EnergyLedger& energy_ledger() const { return energy_; }
     EnergyLedger& energy_ledger() { return energy_; }

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <iosfwd>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -73,6 +74,10 @@ struct Wall {
     Vec3 moment = Vec3::Zero(); ///< about `centre`
     /// Null: the wall never moves.
     std::shared_ptr<WallDriver> driver;
+    /// The wall leaves the scene at the end of the first step that reaches this time (an
+    /// outlet opened at once, [[sph.wall]] remove_at): its particles are removed, and the wall
+    /// stays in the list with count 0. Infinity: never.
+    double removal_time = std::numeric_limits<double>::infinity();
 
     /// Velocity of the wall at point x seen from its particle k (an index into the
     /// ParticleSet): v_k + omega_k x (x - x_k).

@@ -1,0 +1,34 @@
+#pragma once
+
+#include "sph/particle_set.hpp"
+#include "sph/wall.hpp"
+
+#include <span>
+#include <vector>
+
+namespace grainload::sph {
+
+/// Keep the entries of `values` whose `gone` flag is 0, in order (one flag per entry).
+template <class T> void compact(std::vector<T>& values, std::span<const char> gone) {
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (!gone[i]) {
+            if (kept != i) {
+                values[kept] = std::move(values[i]);
+            }
+            ++kept;
+        }
+    }
+    values.resize(kept);
+}
+
+/// Remove the particles with gone[i] != 0 from `particles` (material or wall particles alike):
+/// every field is compacted in order, the material state with it (each kept particle's block
+/// moves down and its state_offset with it), and each wall's range [first, first + count) and
+/// its per-particle arrays (normals, angular velocities, samples) follow, so a wall whose
+/// particles all went keeps its place with count 0. Returns the old-to-new index map (-1 for
+/// a removed particle). The caller rebuilds what indexes particles (the neighbour list).
+std::vector<Index> remove_particles(ParticleSet& particles, std::span<const char> gone,
+                                    std::vector<Wall>& walls);
+
+} // namespace grainload::sph

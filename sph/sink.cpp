@@ -1,0 +1,185 @@
+#include "sph/sink.hpp"
+
+#include "io/atomic_file.hpp"
+#include "io/case_table.hpp"
+#include "io/steady_rate.hpp"
+#include "sph/sph_case_reader.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <ostream>
+#include <stdexcept>
+
+namespace grainload::sph {
+
+namespace dim = io::dimension;
+
+namespace {
+
+io::Region read_region(const io::CaseTable& table, int dimension) {
+    const std::string type = table.choice("type", {"plane", "box"});
+    if (type == "plane") {
+        const Vec3 point = table.vector("point", dim::kLength);
+        Vec3 normal = table.vector("normal", dim::kNone);
+        if (dimension == 2) {
+            normal.z() = 0.0;
+        }
+        if (!(normal.norm() > 0.0)) {
+            table.fail("normal", "expected a non-zero normal pointing out of the scene");
+        }
+        return io::Region::half_space(point, normal, dimension);
+    }
+    const Vec3 lower = table.vector("min", dim::kLength);
+    const Vec3 upper = table.vector("max", dim::kLength);
+    for (int a = 0; a < dimension; ++a) {
+        if (!(upper[a] > lower[a])) {
+            table.fail("max", "expected max > min in every direction");
+        }
+    }
+    return io::Region::box(lower, upper, dimension);
+}
+
+} // namespace
+
+SinkSet::SinkSet(const io::CaseTable& sph, const std::vector<std::string>& body_names,
+                 int dimension)
+    : dimension_(dimension) {
+    for (const auto& table : sph.array_of_tables("sink")) {
+        Sink sink;
+        sink.name = table.string("name");
+        for (const Sink& other : sinks_) {
+            if (other.name == sink.name) {
+                table.fail("name", "a sink called \"" + sink.name + "\" is already defined");
+            }
+        }
+        sink.region = read_region(table, dimension);
+        if (table.has("body")) {
+            sink.body = body_index(table, "body", body_names);
+        }
+        sinks_.push_back(std::move(sink));
+    }
+}
+
+Index SinkSet::collect(const ParticleSet& p, std::vector<char>& gone) {
+    Index flagged = 0;
+    for (Index i = 0; i < p.size(); ++i) {
+        if (p.is_wall(i) || gone[static_cast<std::size_t>(i)]) {
+            continue;
+        }
+        for (Sink& sink : sinks_) {
+            if ((sink.body < 0 || sink.body == p.body_id[i]) &&
+                sink.region.contains(p.position[i])) {
+                gone[static_cast<std::size_t>(i)] = 1;
+                sink.discharged += p.mass[i];
+                ++flagged;
+                break;
+            }
+        }
+    }
+    return flagged;
+}
+
+double SinkSet::discharged() const {
+    double sum = 0.0;
+    for (const Sink& sink : sinks_) {
+        sum += sink.discharged;
+    }
+    return sum;
+}
+
+double SinkSet::audit_error(double scene_mass) const {
+    return initial_mass_ > 0.0 ? (scene_mass + discharged() - initial_mass_) / initial_mass_ : 0.0;
+}
+
+void SinkSet::record(double time) {
+    if (!history_times_.empty() && !(time > history_times_.back())) {
+        return;
+    }
+    history_times_.push_back(time);
+    std::vector<double> row;
+    for (const Sink& sink : sinks_) {
+        row.push_back(sink.discharged);
+    }
+    history_.push_back(std::move(row));
+}
+
+void SinkSet::write_csv(const std::string& directory) const {
+    std::filesystem::create_directories(directory);
+    const char* mass_unit = dimension_ == 2 ? "kg_per_m" : "kg";
+    io::write_file_atomically(directory + "/discharge.csv", [&](std::ostream& out) {
+        out.precision(10);
+        out << "time_s,sink,discharged_mass_" << mass_unit << ",rate_" << mass_unit << "_per_s\n";
+        for (std::size_t k = 0; k < history_times_.size(); ++k) {
+            for (std::size_t s = 0; s < sinks_.size(); ++s) {
+                const double rate = k == 0 ? 0.0
+                                           : (history_[k][s] - history_[k - 1][s]) /
+                                                 (history_times_[k] - history_times_[k - 1]);
+                out << history_times_[k] << ',' << sinks_[s].name << ',' << history_[k][s] << ','
+                    << rate << '\n';
+            }
+        }
+    });
+}
+
+void SinkSet::append_results(double scene_mass, std::vector<io::ResultFigure>& results) const {
+    const std::string mass_unit = dimension_ == 2 ? "kg/m" : "kg";
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (std::size_t s = 0; s < sinks_.size(); ++s) {
+        const std::string prefix = "sink_" + sinks_[s].name;
+        results.push_back(
+            {prefix + "_discharged_mass", sinks_[s].discharged, mass_unit, std::nullopt, ""});
+        std::vector<double> mass;
+        for (const auto& row : history_) {
+            mass.push_back(row[s]);
+        }
+        // summary.json writes NaN as null: too little discharged, or too few output instants.
+        const auto fit = io::steady_rate(history_times_, mass);
+        results.push_back(
+            {prefix + "_steady_rate", fit ? fit->rate : nan, mass_unit + "/s", std::nullopt, ""});
+        results.push_back(
+            {prefix + "_steady_window_start", fit ? fit->start : nan, "s", std::nullopt, ""});
+        results.push_back(
+            {prefix + "_steady_window_end", fit ? fit->end : nan, "s", std::nullopt, ""});
+    }
+    results.push_back({"discharged_mass", discharged(), mass_unit, std::nullopt, ""});
+    results.push_back({"initial_mass", initial_mass_, mass_unit, std::nullopt, ""});
+    results.push_back({"mass_audit_error", audit_error(scene_mass), "", 0.0,
+                       "mass in the scene + mass discharged = initial mass"});
+}
+
+std::vector<double> SinkSet::state() const {
+    std::vector<double> state{initial_mass_, static_cast<double>(history_times_.size())};
+    for (const Sink& sink : sinks_) {
+        state.push_back(sink.discharged);
+    }
+    for (std::size_t k = 0; k < history_times_.size(); ++k) {
+        state.push_back(history_times_[k]);
+        state.insert(state.end(), history_[k].begin(), history_[k].end());
+    }
+    return state;
+}
+
+void SinkSet::set_state(const std::vector<double>& state) {
+    const std::size_t sinks = sinks_.size();
+    const auto rows = state.size() >= 2 ? static_cast<std::size_t>(state[1]) : 0;
+    if (state.size() < 2 || state.size() != 2 + sinks + rows * (1 + sinks)) {
+        throw std::runtime_error("checkpoint: the sinks' state does not match the case's " +
+                                 std::to_string(sinks) + " sinks");
+    }
+    initial_mass_ = state[0];
+    std::size_t k = 2;
+    for (Sink& sink : sinks_) {
+        sink.discharged = state[k++];
+    }
+    history_times_.clear();
+    history_.clear();
+    for (std::size_t r = 0; r < rows; ++r) {
+        history_times_.push_back(state[k++]);
+        history_.emplace_back(state.begin() + static_cast<std::ptrdiff_t>(k),
+                              state.begin() + static_cast<std::ptrdiff_t>(k + sinks));
+        k += sinks;
+    }
+}
+
+} // namespace grainload::sph

@@ -1,0 +1,141 @@
+// SphModel's outlets: particles leaving through [[sph.sink]] regions and walls removed at a
+// time ([[sph.wall]] remove_at), with their checkpoint state. The rest of SphModel is in
+// sph_model.cpp.
+#include "io/binary_stream.hpp"
+#include "io/case_table.hpp"
+#include "sph/particle_removal.hpp"
+#include "sph/sph_model.hpp"
+
+#include <cmath>
+#include <numeric>
+
+namespace grainload::sph {
+
+namespace {
+
+// A wall due at remove_at leaves after the step whose end reaches it; the end of a step that
+// the driver cut to an output instant can fall an ulp short of that instant, and
+// remove_at = an output instant means that instant (as the driver's own end tolerance).
+constexpr double kRemovalTimeTolerance = 1e-12;
+
+} // namespace
+
+void SphModel::build_outlets(const io::CaseTable& sph) {
+    sinks_ = SinkSet(sph, body_names_, dimension_);
+    bool walls_go = false;
+    if (solver_) {
+        for (const Wall& wall : solver_->walls()) {
+            walls_go = walls_go || std::isfinite(wall.removal_time);
+        }
+    }
+    removals_ = !sinks_.empty() || walls_go;
+    origin_.resize(static_cast<std::size_t>(particles().size()));
+    std::iota(origin_.begin(), origin_.end(), Index{0});
+    if (!removals_) {
+        return;
+    }
+    const char* key = sinks_.empty() ? "wall" : "sink";
+    if (!solver_) {
+        sph.fail(key, "particles leave the scene only in the SPH solver: expected "
+                      "interactions = true");
+    }
+    if (solver_->options().formulation == Formulation::total_lagrangian) {
+        sph.fail(key, "the total-Lagrangian formulation keeps its reference neighbours for "
+                      "ever, so no particle can leave: expected formulation = "
+                      "\"updated_lagrangian\" with sinks or remove_at");
+    }
+    if (!added_walls_.empty()) {
+        sph.fail(key, "sinks and remove_at are not yet available in a coupled scene (the "
+                      "coupling's iterated windows restore the particles they started with): "
+                      "expected no [[sph.sink]] and no remove_at with [coupling]");
+    }
+    sinks_.set_initial_mass(scene_mass());
+}
+
+double SphModel::scene_mass() const {
+    const ParticleSet& p = particles();
+    double sum = 0.0;
+    for (Index i = 0; i < p.size(); ++i) {
+        sum += p.is_wall(i) ? 0.0 : p.mass[i];
+    }
+    return sum;
+}
+
+void SphModel::remove_departed(double time) {
+    if (!removals_) {
+        return;
+    }
+    const ParticleSet& p = solver_->particles();
+    std::vector<char> gone(static_cast<std::size_t>(p.size()), 0);
+    Index count = sinks_.collect(p, gone);
+    for (const Wall& wall : solver_->walls()) {
+        const double due = wall.removal_time * (1.0 - kRemovalTimeTolerance);
+        if (wall.count > 0 && time >= due) {
+            std::fill_n(gone.begin() + wall.first, wall.count, char{1});
+            count += wall.count;
+        }
+    }
+    if (count > 0) {
+        apply_removal(gone);
+    }
+}
+
+void SphModel::apply_removal(std::span<const char> gone) {
+    std::vector<Index> new_index(gone.size(), -1);
+    Index kept = 0;
+    for (std::size_t i = 0; i < gone.size(); ++i) {
+        if (!gone[i]) {
+            new_index[i] = kept++;
+        }
+    }
+    solver_->remove_particles(gone);
+    compact(initial_position_, gone);
+    compact(initial_velocity_, gone);
+    compact(origin_, gone);
+    for (auto& probe : probes_) {
+        if (probe.second >= 0) {
+            probe.second = new_index[static_cast<std::size_t>(probe.second)];
+        }
+    }
+}
+
+void SphModel::write_outlet_state(std::ostream& out) const {
+    if (removals_) {
+        io::write_array(out, sinks_.state());
+    }
+}
+
+void SphModel::read_removals(std::istream& in) {
+    std::vector<Index> kept;
+    io::read_array(in, kept);
+    const auto n = static_cast<std::size_t>(particles().size());
+    if (kept.size() == n) {
+        return;
+    }
+    // The checkpoint's particles are a subset of the case's, in order: flag the others.
+    const std::string other = "checkpoint holds " + std::to_string(kept.size()) +
+                              " particles, the case makes " + std::to_string(n);
+    if (!removals_) {
+        throw std::runtime_error(other + " and has no sink or remove_at to lose any by");
+    }
+    std::vector<char> gone(n, 1);
+    Index previous = -1;
+    for (const Index k : kept) {
+        if (k <= previous || k >= static_cast<Index>(n)) {
+            throw std::runtime_error(other + ", not a subset of them in order");
+        }
+        gone[static_cast<std::size_t>(k)] = 0;
+        previous = k;
+    }
+    apply_removal(gone);
+}
+
+void SphModel::read_outlet_state(std::istream& in) {
+    if (removals_) {
+        std::vector<double> state;
+        io::read_array(in, state);
+        sinks_.set_state(state);
+    }
+}
+
+} // namespace grainload::sph
