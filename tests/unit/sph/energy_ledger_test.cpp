@@ -38,6 +38,21 @@ TEST(EnergyLedger, DiagnosesASurplusAboveTheLimitOnly) {
     EXPECT_FALSE(EnergyLedger().check(1e9, 1.0).has_value()) << "a ledger not opened";
 }
 
+// Particles leaving take 3 J of kinetic + internal energy and release 0.5 J of contact
+// potential: booked as removed, neither shows as a deficit, and the checkpoint state keeps them.
+TEST(EnergyLedger, RemovedParticlesAreNoDeficit) {
+    EnergyLedger ledger = worked_example();
+    const double surplus_before = ledger.surplus(14.0);
+    const double error_before = ledger.balance_error(14.0, 2.0);
+    ledger.add_removed(3.0, 0.5);
+    EXPECT_DOUBLE_EQ(ledger.surplus(11.0), surplus_before);
+    EXPECT_DOUBLE_EQ(ledger.balance_error(11.0, 1.5), error_before);
+    EnergyLedger restored;
+    restored.set_state(ledger.state());
+    EXPECT_DOUBLE_EQ(restored.removed_held(), 3.0);
+    EXPECT_DOUBLE_EQ(restored.removed_contact(), 0.5);
+}
+
 TEST(EnergyLedger, StateRoundTripsAndRejectsAForeignLayout) {
     const EnergyLedger ledger = worked_example();
     EnergyLedger restored;
