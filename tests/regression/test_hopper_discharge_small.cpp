@@ -1,4 +1,5 @@
 #include "support/case_runner.hpp"
+#include "support/frame_reader.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -96,6 +97,73 @@ TEST(HopperDischargeSmall, RestartAcrossRemovalsReproducesTheUninterruptedRun) {
         EXPECT_EQ(result_value(a, figure), result_value(b, figure)) << figure;
     }
     EXPECT_GT(result_value(a, "discharged_mass"), 0.0);
+}
+
+/// discharge.csv of one sink as (time, discharged mass) pairs.
+std::vector<std::pair<double, double>> discharge_rows(const std::string& out) {
+    std::stringstream in(read_file(out + "/discharge.csv"));
+    std::string line;
+    std::getline(in, line);
+    std::vector<std::pair<double, double>> rows;
+    while (std::getline(in, line)) {
+        std::stringstream fields(line);
+        std::string time, sink, mass;
+        std::getline(fields, time, ',');
+        std::getline(fields, sink, ',');
+        std::getline(fields, mass, ',');
+        rows.emplace_back(std::stod(time), std::stod(mass));
+    }
+    return rows;
+}
+
+/// Mean x of the points of block `index` of a frame.
+double mean_x(const std::string& vtm, unsigned index) {
+    const auto block = read_particle_block(vtm, index);
+    double sum = 0.0;
+    for (vtkIdType i = 0; i < block->GetNumberOfPoints(); ++i) {
+        sum += block->GetPoint(i)[0];
+    }
+    return sum / static_cast<double>(block->GetNumberOfPoints());
+}
+
+// A slide gate is a rigid wall with a velocity history (user guide, "Outlets and gates"): the
+// small hopper's gate, kept (remove_at far away), held until 0.4 s, ramped to 2 m/s along +x
+// by 0.41 s. Its trailing edge (x = -0.3 m) uncovers the orifice's edge (x = -0.2 m) once it
+// has moved 0.1 m, at 0.455 s; the stream then needs about 0.2 s to reach the sink.
+//  - Nothing leaves before the gate uncovers the orifice (exactly 0 kg at 0.45 s).
+//  - The gate is where its history puts it: at 1.6 s moved by the exact integral, 0.01 m over
+//    the ramp plus 2 m/s x 1.19 s = 2.39 m (the motion integrates the history exactly; 1e-9 m
+//    allows the round-off of summing 3000 steps).
+//  - The mean rate over 1.0-1.6 s lies in the Beverloo band of the removed-gate test.
+TEST(HopperDischargeSmall, ASlideGateOpensTheOrificeByItsPrescribedMotion) {
+    const CaseRun run = run_case_file(
+        "cases/hopper_discharge/hopper_discharge_small.toml", "hopper_slide_gate",
+        "--set 'case.end_time=1.6 s' --set 'sph.wall[2].remove_at=\"100 s\"' --set "
+        "'sph.wall[2].velocity_history=[[\"0 s\",\"0 0 m/s\"],[\"0.4 s\",\"0 0 m/s\"],"
+        "[\"0.41 s\",\"2 0 m/s\"],[\"10 s\",\"2 0 m/s\"]]'");
+    ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
+    const auto rows = discharge_rows(run.out);
+    double at_1s = -1.0;
+    double at_end = -1.0;
+    for (const auto& [time, mass] : rows) {
+        if (time < 0.45 + 1e-9) {
+            EXPECT_EQ(mass, 0.0) << "out at " << time
+                                 << " s, before the gate uncovered the orifice";
+        }
+        at_1s = std::abs(time - 1.0) < 1e-9 ? mass : at_1s;
+        at_end = std::abs(time - 1.6) < 1e-9 ? mass : at_end;
+    }
+    ASSERT_GE(at_1s, 0.0);
+    ASSERT_GE(at_end, 0.0);
+    const double rate = (at_end - at_1s) / 0.6;
+    std::cout << "slide gate: mean rate over 1.0-1.6 s " << rate << " kg/m/s\n";
+    EXPECT_GT(rate, beverloo_slot(3.0));
+    EXPECT_LT(rate, beverloo_slot(1.0));
+    constexpr unsigned kGateBlock = 3; // fill, left, right, gate
+    constexpr double kSummedRoundOff = 1e-9;
+    const double moved = mean_x(run.out + "/frames/hopper_discharge_small_000032.vtm", kGateBlock) -
+                         mean_x(run.out + "/frames/hopper_discharge_small_000000.vtm", kGateBlock);
+    EXPECT_NEAR(moved, 0.01 + 2.0 * 1.19, kSummedRoundOff);
 }
 
 } // namespace
