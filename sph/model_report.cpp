@@ -4,6 +4,7 @@
 #include "sph/rigid_wall.hpp"
 #include "sph/sph_model.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <set>
 
@@ -43,7 +44,18 @@ void SphModel::describe_model(std::vector<io::ModelChoice>& choices) const {
     for (const Wall& wall : solver_->walls()) {
         // A wall without a driver stays where it was built; the coupling's walls follow a shell.
         const bool rigid = !wall.driver || dynamic_cast<const RigidMotion*>(wall.driver.get());
-        choices.push_back({"wall " + wall.name, rigid ? "rigid" : "driven by another solver"});
+        std::string what = rigid ? "rigid" : "driven by another solver";
+        if (std::isfinite(wall.removal_time)) {
+            char time[32];
+            std::snprintf(time, sizeof time, "%g", wall.removal_time);
+            what += std::string(", removed at ") + time + " s";
+        }
+        choices.push_back({"wall " + wall.name, what});
+    }
+    for (const SinkSet::Sink& sink : sinks_.sinks()) {
+        choices.push_back({"sink " + sink.name, sink.region.kind == io::Region::Kind::half_space
+                                                    ? "half-space beyond a plane"
+                                                    : "box"});
     }
 }
 
