@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <set>
 
 namespace grainload::sph {
 
@@ -30,14 +29,7 @@ void SphModel::describe_model(std::vector<io::ModelChoice>& choices) const {
         {"sph formulation", solver_->options().formulation == Formulation::total_lagrangian
                                 ? "total Lagrangian"
                                 : "updated Lagrangian"});
-    const ParticleSet& p = particles();
-    std::set<int> used;
-    for (Index i = 0; i < p.size(); ++i) {
-        if (!p.is_wall(i)) {
-            used.insert(p.material_id[i]);
-        }
-    }
-    for (const int m : used) {
+    for (const int m : built_materials_) {
         choices.push_back(
             {"material " + materials_->name(m), std::string((*materials_)[m].model())});
     }

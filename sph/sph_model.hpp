@@ -144,6 +144,9 @@ class SphModel final : public io::Stepper {
     mutable SinkSet sinks_;
     bool removals_ = false; ///< a sink or a wall with remove_at: particles may leave
     std::vector<Index> origin_;
+    /// The materials of the particles as the case built them, for describe_model (particles,
+    /// and with them a material, may leave through a sink).
+    std::vector<int> built_materials_;
 };
 
 } // namespace grainload::sph

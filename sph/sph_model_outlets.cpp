@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <numeric>
+#include <set>
 
 namespace grainload::sph {
 
@@ -29,6 +30,14 @@ void SphModel::build_outlets(const io::CaseTable& sph) {
         }
     }
     removals_ = !sinks_.empty() || walls_go;
+    const ParticleSet& p = particles();
+    std::set<int> used;
+    for (Index i = 0; i < p.size(); ++i) {
+        if (!p.is_wall(i)) {
+            used.insert(p.material_id[i]);
+        }
+    }
+    built_materials_.assign(used.begin(), used.end());
     origin_.resize(static_cast<std::size_t>(particles().size()));
     std::iota(origin_.begin(), origin_.end(), Index{0});
     if (!removals_) {
