@@ -13,6 +13,9 @@ struct RunClock {
     double t = 0.0;
     long long step = 0;
     std::vector<double> frame_times;
+    /// Material points summed over this process's steps (particles leaving through a sink stop
+    /// counting), for the particle-steps per second of its wall time; not checkpointed.
+    double material_point_steps = 0.0;
 };
 
 /// Write the clock and every module's state to `path` (framing and checksum:

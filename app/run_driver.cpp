@@ -74,6 +74,7 @@ io::RunSummary make_summary(const Scene& scene, const CommandLine& line, const R
     summary.steps = clock.step;
     summary.points = scene.point_count();
     summary.material_points = scene.material_point_count();
+    summary.material_point_steps = clock.material_point_steps;
     for (const auto& stepper : scene.steppers) {
         stepper->append_results(clock.t, summary.results);
         stepper->describe_model(summary.model);
@@ -191,6 +192,7 @@ int run_case(const CommandLine& line) {
     while (clock.t < scene->settings.end_time - end_tolerance) {
         const double next_output = next_output_time();
         dt = std::min(stable_step(*scene), next_output - clock.t);
+        clock.material_point_steps += static_cast<double>(scene->material_point_count());
         std::optional<std::string> failure = advance(*scene, clock.t, dt);
         clock.t += dt;
         ++clock.step;

@@ -11,9 +11,13 @@
 namespace grainload::io {
 
 double RunSummary::point_steps_per_second() const {
-    return wall_time > 0.0
-               ? static_cast<double>(material_points) * static_cast<double>(steps) / wall_time
-               : 0.0;
+    if (!(wall_time > 0.0)) {
+        return 0.0;
+    }
+    if (material_point_steps > 0.0) {
+        return material_point_steps / wall_time;
+    }
+    return static_cast<double>(material_points) * static_cast<double>(steps) / wall_time;
 }
 
 namespace {
