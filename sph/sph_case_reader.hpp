@@ -22,9 +22,8 @@ SphOptions read_sph_options(const io::CaseTable& sph, int dimension, double spac
 
 /// Append the particles of every [[sph.wall]] to `particles` and return the walls. Wall body
 /// ids follow `first_body_id`; `support_radius` sets the default number of layers.
-std::vector<Wall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& particles,
-                                        int dimension, double spacing, double support_radius,
-                                        int first_body_id);
+std::vector<Wall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& particles, int dimension,
+                                   double spacing, double support_radius, int first_body_id);
 
 /// The [[sph.body.clamp]] boxes (`min`, `max`) of one body, whose particles are
 /// particles[first, size()): every particle inside one of them (boundary included) is flagged

@@ -47,18 +47,17 @@ std::string plate_part(const std::string& name, const std::string& material, dou
                        const std::string& load) {
     return "[[fem.shell]]\nname = \"" + name + "\"\nmaterial = \"" + material +
            "\"\nthickness = \"" + thickness + "\"\ngenerator = \"plate\"\nlength_x = \"" +
-           std::to_string(width) + " m\"\nlength_y = \"1 m\"\nelements_x = " +
-           std::to_string(elements_x) + "\nelements_y = 8\noffset = \"" + std::to_string(offset) +
-           " 0 0 m\"\n" + load +
+           std::to_string(width) +
+           " m\"\nlength_y = \"1 m\"\nelements_x = " + std::to_string(elements_x) +
+           "\nelements_y = 8\noffset = \"" + std::to_string(offset) + " 0 0 m\"\n" + load +
            "[[fem.shell.boundary]]\nnode_set = \"y0\"\ndofs = \"uz\"\n"
            "[[fem.shell.boundary]]\nnode_set = \"y1\"\ndofs = \"uz\"\n";
 }
 
 const std::string kPressure = "[[fem.shell.load]]\ntype = \"pressure\"\nvalue = \"-1 kPa\"\n";
-const std::string kEdgeX0 =
-    "[[fem.shell.boundary]]\nnode_set = \"x0\"\ndofs = \"uz\"\n"
-    "[[fem.shell.boundary]]\npoint = \"0 0 0 m\"\ndofs = \"ux uy rz\"\n"
-    "[[fem.shell.boundary]]\npoint = \"0 1 0 m\"\ndofs = \"ux\"\n";
+const std::string kEdgeX0 = "[[fem.shell.boundary]]\nnode_set = \"x0\"\ndofs = \"uz\"\n"
+                            "[[fem.shell.boundary]]\npoint = \"0 0 0 m\"\ndofs = \"ux uy rz\"\n"
+                            "[[fem.shell.boundary]]\npoint = \"0 1 0 m\"\ndofs = \"ux\"\n";
 const std::string kEdgeX1 = "[[fem.shell.boundary]]\nnode_set = \"x1\"\ndofs = \"uz\"\n";
 
 double centre_deflection(const ShellModel& model) {
@@ -72,12 +71,11 @@ double centre_deflection(const ShellModel& model) {
 // (Timoshenko & Woinowsky-Krieger, table 8: w = 0.00406 q a^4 / D), is met by the 8 x 8 MITC4
 // mesh within its discretisation error (1 %: measured -0.3 %).
 TEST(ShellParts, TwoHalvesOfAPlateAreThePlate) {
-    Loaded whole =
-        load(kHeader + plate_part("plate", "steel", 1.0, 8, 0.0, "10 mm", kPressure + kEdgeX0 +
-                                                                            kEdgeX1));
-    Loaded halves = load(kHeader + plate_part("left", "steel", 0.5, 4, 0.0, "10 mm",
-                                              kPressure + kEdgeX0) +
-                         plate_part("right", "steel", 0.5, 4, 0.5, "10 mm", kPressure + kEdgeX1));
+    Loaded whole = load(kHeader + plate_part("plate", "steel", 1.0, 8, 0.0, "10 mm",
+                                             kPressure + kEdgeX0 + kEdgeX1));
+    Loaded halves =
+        load(kHeader + plate_part("left", "steel", 0.5, 4, 0.0, "10 mm", kPressure + kEdgeX0) +
+             plate_part("right", "steel", 0.5, 4, 0.5, "10 mm", kPressure + kEdgeX1));
     ASSERT_EQ(halves.model->analysis().mesh().node_count(),
               whole.model->analysis().mesh().node_count());
     EXPECT_EQ(halves.model->part_names(), (std::vector<std::string>{"left", "right"}));
@@ -100,9 +98,9 @@ TEST(ShellParts, TwoHalvesOfAPlateAreThePlate) {
 // along z in 3D, is the one every module uses.
 TEST(ShellParts, EachPartHasItsOwnMaterialAndThickness) {
     const std::string gravity = "[[fem.shell.load]]\ntype = \"gravity\"\n";
-    Loaded halves = load(kHeader + plate_part("steel", "steel", 0.5, 4, 0.0, "10 mm",
-                                              gravity + kEdgeX0) +
-                         plate_part("alu", "aluminium", 0.5, 4, 0.5, "4 mm", gravity + kEdgeX1));
+    Loaded halves =
+        load(kHeader + plate_part("steel", "steel", 0.5, 4, 0.0, "10 mm", gravity + kEdgeX0) +
+             plate_part("alu", "aluminium", 0.5, 4, 0.5, "4 mm", gravity + kEdgeX1));
     halves.model->advance(0.0, 1.0);
     const Eigen::VectorXd reactions = halves.model->analysis().reactions();
     double vertical = 0.0;
