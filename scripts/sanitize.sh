@@ -5,7 +5,7 @@
 # verification tests there; the CLI the tests start is the sanitized one. Any sanitizer report
 # fails the test that triggered it: undefined behaviour aborts (-fno-sanitize-recover), and so
 # do memory errors and, at exit, leaks. Default ctest selection: -L 'unit|verification';
-# scripts/test.sh passes -L unit for CI (docs/validation/robustness.md has the times).
+# CI does not run it (it needs a second, sanitized build of everything); run it before a release.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${GRAINLOAD_SANITIZE_BUILD:-$root/build-sanitize}"
