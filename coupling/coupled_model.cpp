@@ -215,6 +215,9 @@ void CoupledModel::describe_model(std::vector<io::ModelChoice>& choices) const {
 
 void CoupledModel::append_hints(std::vector<std::string>& hints) const {
     sph_->append_hints(hints);
+    if (parts_.empty()) {
+        return; // every interface rigid: no shell under load
+    }
     std::string names;
     for (const CoupledPart& part : parts_) {
         names += (names.empty() ? "" : ", ") + part.name;

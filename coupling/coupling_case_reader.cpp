@@ -121,7 +121,7 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
         CoupledPart part;
         const int index = part_index(table, "part", names);
         part.name = names[static_cast<std::size_t>(index)];
-        for (const CoupledPart& other : parts) {
+        for (const sph::SphModel::WallDefinition& other : walls) {
             if (other.name == part.name) {
                 table.fail("part", "the part \"" + part.name + "\" is coupled twice");
             }
@@ -151,9 +151,15 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
         wall.normals = part.wall->normals();
         wall.samples = part.wall->samples();
         wall.spacing = layout.spacing;
-        wall.driver = part.wall;
+        // A rigid part keeps its wall where the shell was built (no driver) and sends no load
+        // back: the same scene with a rigid wall, one key away (issue 18, section 3).
+        const bool rigid =
+            table.boolean_or("rigid", io::default_value(kInterfaceKeys, "rigid") != 0.0);
+        wall.driver = rigid ? nullptr : part.wall;
         walls.push_back(std::move(wall));
-        parts.push_back(std::move(part));
+        if (!rigid) {
+            parts.push_back(std::move(part));
+        }
     }
     read_friction(coupling, names, *sph, walls);
     for (auto& wall : walls) {

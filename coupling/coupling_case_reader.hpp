@@ -37,13 +37,17 @@ inline constexpr std::array<io::KeySpec, 7> kCouplingKeys{{
 }};
 
 /// The keys of each [[coupling.interface]] table.
-inline constexpr std::array<io::KeySpec, 4> kInterfaceKeys{{
+inline constexpr std::array<io::KeySpec, 5> kInterfaceKeys{{
     {"part", "string", "", "a [[fem.shell]] part name"},
     {"side", "`positive` or `negative`", "",
      "the side of the part's element normals (right-hand rule of the node order) the sand is on"},
     {"spacing", "length", "the bodies' spacing", "wall particle spacing on the shell"},
     {"layers", "integer", "enough to fill the kernel support: ⌈2h / spacing⌉ (3h quintic)",
      "layers of wall particles behind the contact face"},
+    {"rigid", "boolean", "false",
+     "true: the part's surface is a rigid wall where the shell was built; the sand's load on it "
+     "is reported (`wall_PART_force_*`) but not applied to the shell",
+     0.0},
 }};
 
 /// A scene with [sph], [fem] and [coupling]: the bodies, the shell parts, one wall per
