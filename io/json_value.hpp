@@ -26,6 +26,16 @@ struct JsonValue {
     std::vector<JsonValue> array;
     std::vector<std::pair<std::string, JsonValue>> object;
 
+    // Defined in the .cpp, where JsonValue is complete: an implicit destructor here would
+    // instantiate std::pair<std::string, JsonValue> of an incomplete type, which clang with
+    // libstdc++ refuses (the fuzz build).
+    JsonValue();
+    JsonValue(const JsonValue&);
+    JsonValue(JsonValue&&) noexcept;
+    JsonValue& operator=(const JsonValue&);
+    JsonValue& operator=(JsonValue&&) noexcept;
+    ~JsonValue();
+
     /// The member `key` of an object; nullptr when absent or when this is not an object.
     const JsonValue* find(std::string_view key) const;
     /// The number at `key`, std::nullopt when absent, null or not a number.
