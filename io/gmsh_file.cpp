@@ -98,9 +98,13 @@ class GmshParser {
                 }
                 int physical_count = 0;
                 line >> physical_count;
+                // Each tag is read before the next is asked for: a count of 2e9 on a short
+                // line would otherwise push zeros for minutes (a fuzzer's timeout).
                 for (int k = 0; k < physical_count; ++k) {
                     int physical = 0;
-                    line >> physical;
+                    if (!(line >> physical)) {
+                        fail("malformed $Entities record: fewer physical tags than its count");
+                    }
                     file_.entity_groups[{dimension, tag}].push_back(physical);
                 }
                 if (!line) {
