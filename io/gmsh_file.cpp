@@ -123,9 +123,14 @@ class GmshParser {
             if (!(next_line() >> dimension >> entity >> parametric >> count)) {
                 fail("malformed $Nodes block header");
             }
-            std::vector<long> tags(count);
-            for (auto& tag : tags) {
+            // Tags are read one line each, not allocated from the header's count first: a
+            // count of 3e15 in a damaged file would ask for petabytes before the end of file
+            // (fuzz_gmsh); this way the file runs out first, with its line number.
+            std::vector<long> tags;
+            for (std::size_t k = 0; k < count; ++k) {
+                long tag = 0;
                 next_line() >> tag;
+                tags.push_back(tag);
             }
             // Parametric coordinates, when present, follow x y z on the same line.
             for (const long tag : tags) {
