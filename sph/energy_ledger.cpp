@@ -18,6 +18,8 @@ void EnergyLedger::open(double held, double stored_elastic, double contact) {
     largest_wall_work_ = 0.0;
     removed_held_ = 0.0;
     removed_contact_ = 0.0;
+    created_held_ = 0.0;
+    created_contact_ = 0.0;
 }
 
 void EnergyLedger::add_gravity_work(double work) {
@@ -35,14 +37,22 @@ void EnergyLedger::add_removed(double held, double contact) {
     removed_contact_ += contact;
 }
 
+void EnergyLedger::add_created(double held, double contact) {
+    created_held_ += held;
+    created_contact_ += contact;
+}
+
 double EnergyLedger::balance_error(double held, double contact) const {
     const double scale = throughput();
-    return scale > 0.0 ? (surplus(held) + removed_contact_ + contact - initial_contact_) / scale
+    return scale > 0.0 ? (surplus(held) + removed_contact_ + contact - initial_contact_ -
+                          created_contact_) /
+                             scale
                        : 0.0;
 }
 
 double EnergyLedger::throughput() const {
-    return initial_scale_ + largest_gravity_work_ + largest_wall_work_;
+    return initial_scale_ + std::abs(created_held_) + std::abs(created_contact_) +
+           largest_gravity_work_ + largest_wall_work_;
 }
 
 std::optional<std::string> EnergyLedger::check(double held, double fraction) const {
@@ -67,12 +77,12 @@ std::optional<std::string> EnergyLedger::check(double held, double fraction) con
 std::vector<double> EnergyLedger::state() const {
     return {open_ ? 1.0 : 0.0, initial_held_,         initial_contact_, initial_scale_,
             gravity_work_,     largest_gravity_work_, wall_work_,       largest_wall_work_,
-            removed_held_,     removed_contact_};
+            removed_held_,     removed_contact_,      created_held_,    created_contact_};
 }
 
 void EnergyLedger::set_state(const std::vector<double>& state) {
-    if (state.size() != 10) {
-        throw std::runtime_error("checkpoint: expected 10 energy-ledger entries, found " +
+    if (state.size() != 12) {
+        throw std::runtime_error("checkpoint: expected 12 energy-ledger entries, found " +
                                  std::to_string(state.size()));
     }
     open_ = state[0] != 0.0;
@@ -85,6 +95,8 @@ void EnergyLedger::set_state(const std::vector<double>& state) {
     largest_wall_work_ = state[7];
     removed_held_ = state[8];
     removed_contact_ = state[9];
+    created_held_ = state[10];
+    created_contact_ = state[11];
 }
 
 } // namespace grainload::sph

@@ -20,7 +20,8 @@ namespace grainload::sph {
 /// Taken out: particles that leave the scene (a sink, a removed wall) take their kinetic and
 /// internal energy with them, and the contact potential between them and what stays is
 /// released; both are booked as removed, so a departure is not a deficit (docs/theory/sph.md,
-/// "Sinks").
+/// "Sinks"). Brought in: particles a source creates bring their kinetic and internal energy and
+/// the contact potential they start with, booked as created (docs/theory/sph.md, "Sources").
 class EnergyLedger {
   public:
     /// Starts the account from the particles' energy at t = 0 and the energy stored at t = 0
@@ -32,21 +33,26 @@ class EnergyLedger {
     /// Particles left: `held` their kinetic plus internal energy, `contact` the contact
     /// potential of their pairs with each other and with what stays.
     void add_removed(double held, double contact);
+    /// Particles entered: `held` their kinetic plus internal energy, `contact` the contact
+    /// potential of their pairs with what was there.
+    void add_created(double held, double contact);
 
     double gravity_work() const { return gravity_work_; }
     double wall_work() const { return wall_work_; }
     double removed_held() const { return removed_held_; }
     double removed_contact() const { return removed_contact_; }
-    /// Energy held now, plus what left with removed particles, minus what was held at t = 0
-    /// and what gravity and the walls put in.
+    double created_held() const { return created_held_; }
+    double created_contact() const { return created_contact_; }
+    /// Energy held now, plus what left with removed particles, minus what was held at t = 0,
+    /// what created particles brought and what gravity and the walls put in.
     double surplus(double held) const {
-        return held + removed_held_ - initial_held_ - gravity_work_ - wall_work_;
+        return held + removed_held_ - initial_held_ - created_held_ - gravity_work_ - wall_work_;
     }
     /// (held + contact + removed - everything at t = 0 - work put in) / throughput: what the
     /// books miss, counting the contact potential's energy both now and at t = 0.
     double balance_error(double held, double contact) const;
-    /// The scale of the run's energy: the initial kinetic, internal and stored energy plus the
-    /// largest work gravity and the walls have done so far.
+    /// The scale of the run's energy: the initial kinetic, internal and stored energy, what
+    /// created particles brought, plus the largest work gravity and the walls have done so far.
     double throughput() const;
     /// A diagnosis when the surplus exceeds `fraction` of the throughput.
     std::optional<std::string> check(double held, double fraction) const;
@@ -66,6 +72,8 @@ class EnergyLedger {
     double largest_wall_work_ = 0.0;
     double removed_held_ = 0.0;
     double removed_contact_ = 0.0;
+    double created_held_ = 0.0;
+    double created_contact_ = 0.0;
 };
 
 } // namespace grainload::sph

@@ -88,8 +88,9 @@ double SinkSet::discharged() const {
     return sum;
 }
 
-double SinkSet::audit_error(double scene_mass) const {
-    return initial_mass_ > 0.0 ? (scene_mass + discharged() - initial_mass_) / initial_mass_ : 0.0;
+double SinkSet::audit_error(double scene_mass, double created) const {
+    const double total = initial_mass_ + created;
+    return total > 0.0 ? (scene_mass + discharged() - initial_mass_ - created) / total : 0.0;
 }
 
 void SinkSet::record(double time) {
@@ -122,7 +123,8 @@ void SinkSet::write_csv(const std::string& directory) const {
     });
 }
 
-void SinkSet::append_results(double scene_mass, std::vector<io::ResultFigure>& results) const {
+void SinkSet::append_results(double scene_mass, double created,
+                             std::vector<io::ResultFigure>& results) const {
     const std::string mass_unit = dimension_ == 2 ? "kg/m" : "kg";
     const double nan = std::numeric_limits<double>::quiet_NaN();
     for (std::size_t s = 0; s < sinks_.size(); ++s) {
@@ -144,8 +146,9 @@ void SinkSet::append_results(double scene_mass, std::vector<io::ResultFigure>& r
     }
     results.push_back({"discharged_mass", discharged(), mass_unit, std::nullopt, ""});
     results.push_back({"initial_mass", initial_mass_, mass_unit, std::nullopt, ""});
-    results.push_back({"mass_audit_error", audit_error(scene_mass), "", 0.0,
-                       "mass in the scene + mass discharged = initial mass"});
+    results.push_back({"created_mass", created, mass_unit, std::nullopt, ""});
+    results.push_back({"mass_audit_error", audit_error(scene_mass, created), "", 0.0,
+                       "mass in the scene + mass discharged = initial mass + mass created"});
 }
 
 std::vector<double> SinkSet::state() const {

@@ -64,8 +64,9 @@ class SinkSet {
 
     /// The mass of the material particles when the scene was built, for the mass audit.
     void set_initial_mass(double mass) { initial_mass_ = mass; }
-    /// (mass in the scene + mass discharged - initial mass) / initial mass.
-    double audit_error(double scene_mass) const;
+    /// (mass in the scene + mass discharged - initial mass - mass created) / (initial mass +
+    /// mass created).
+    double audit_error(double scene_mass, double created) const;
 
     /// Add a row (time, discharged mass per sink) to the history, at an output instant.
     void record(double time);
@@ -74,8 +75,9 @@ class SinkSet {
     void write_csv(const std::string& directory) const;
     /// Per sink: sink_NAME_discharged_mass, sink_NAME_steady_rate (io::steady_rate over the
     /// history, null when it cannot be fitted), sink_NAME_steady_window_start/_end; then
-    /// discharged_mass and mass_audit_error.
-    void append_results(double scene_mass, std::vector<io::ResultFigure>& results) const;
+    /// discharged_mass, initial_mass, created_mass (by sources) and mass_audit_error.
+    void append_results(double scene_mass, double created,
+                        std::vector<io::ResultFigure>& results) const;
 
     /// For checkpoints: the masses, the initial mass and the history.
     std::vector<double> state() const;

@@ -287,6 +287,7 @@ void SphModel::add_body(const io::CaseTable& body, int dimension) {
     read_clamps(body, particles_, first, dimension);
     read_initial_stress(body, particles_, first, gravity_, spacing);
     body_names_.push_back(std::move(name));
+    body_material_.push_back(material);
 }
 
 double SphModel::stable_time_step() const {
@@ -309,6 +310,7 @@ void SphModel::advance(double t, double dt) {
         solver_->set_time(t);
         solver_->step(dt);
         remove_departed(t + dt);
+        create_arrivals(t, dt);
         if (heap_) {
             heap_->record(t + dt, solver_->particles());
         }
@@ -416,8 +418,8 @@ void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) 
     if (heap_) {
         heap_->append_results(particles(), results);
     }
-    if (removals_) {
-        sinks_.append_results(scene_mass(), results);
+    if (audit_) {
+        sinks_.append_results(scene_mass(), sources_.created(), results);
     }
     if (solver_) {
         results.push_back({"kinetic_energy", solver_->kinetic_energy(), "J", std::nullopt, ""});
@@ -425,10 +427,15 @@ void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) 
         const EnergyLedger& ledger = solver_->energy_ledger();
         results.push_back({"gravity_work", ledger.gravity_work(), "J", std::nullopt, ""});
         results.push_back({"moving_wall_work", ledger.wall_work(), "J", std::nullopt, ""});
-        if (removals_) {
+        if (audit_) {
             results.push_back({"removed_energy", ledger.removed_held(), "J", std::nullopt, ""});
             results.push_back(
                 {"removed_contact_energy", ledger.removed_contact(), "J", std::nullopt, ""});
+        }
+        if (!sources_.empty()) {
+            results.push_back({"created_energy", ledger.created_held(), "J", std::nullopt, ""});
+            results.push_back(
+                {"created_contact_energy", ledger.created_contact(), "J", std::nullopt, ""});
         }
         const double contact = solver_->contact_energy();
         results.push_back({"contact_energy", contact, "J", std::nullopt, ""});
@@ -465,6 +472,7 @@ void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) 
 }
 
 void SphModel::write_checkpoint(std::ostream& out) const {
+    write_created(out);
     io::write_array(out, origin_);
     const auto& p = particles();
     io::write_array(out, p.position);
@@ -500,6 +508,7 @@ void SphModel::write_checkpoint(std::ostream& out) const {
 }
 
 void SphModel::read_checkpoint(std::istream& in) {
+    read_created(in);
     read_removals(in);
     auto& p = solver_ ? solver_->particles() : particles_;
     const auto n = p.position.size();

@@ -8,6 +8,7 @@
 #include "sph/particle_set.hpp"
 #include "sph/rigid_wall.hpp"
 #include "sph/sink.hpp"
+#include "sph/source.hpp"
 #include "sph/sph_solver.hpp"
 
 #include <fstream>
@@ -86,6 +87,7 @@ class SphModel final : public io::Stepper {
     const ParticleSet& particles() const { return solver_ ? solver_->particles() : particles_; }
     const SphSolver* solver() const { return solver_.get(); }
     const SinkSet& sinks() const { return sinks_; }
+    const SourceSet& sources() const { return sources_; }
     /// Index each current particle had when the case built the scene (particles leave through
     /// sinks and removed walls; the rest keep their order).
     const std::vector<Index>& original_index() const { return origin_; }
@@ -116,6 +118,16 @@ class SphModel final : public io::Stepper {
     /// Replays the checkpoint's removals on the freshly built scene: before the particle arrays.
     void read_removals(std::istream& in);
     void read_outlet_state(std::istream& in);
+    /// Sources (sph_model_sources.cpp): read them and refuse what cannot gain particles.
+    void build_sources(const io::CaseTable& sph);
+    /// After a step [t, t + dt] (and its removals): the sources' new particles enter.
+    void create_arrivals(double t, double dt);
+    /// Append particles (source index and creation position per arrival) to the solver and to
+    /// every per-particle array here; `book_energy` as SphSolver::add_particles.
+    void apply_creation(std::span<const Arrival> arrivals, bool book_energy);
+    /// The creation log, so a restart can rebuild the created particles before the removals.
+    void write_created(std::ostream& out) const;
+    void read_created(std::istream& in);
 
     const materials::MaterialLibrary* materials_;
     ParticleSet particles_;
@@ -144,6 +156,16 @@ class SphModel final : public io::Stepper {
     mutable SinkSet sinks_;
     bool removals_ = false; ///< a sink or a wall with remove_at: particles may leave
     std::vector<Index> origin_;
+    /// [[sph.source]]: particles entering the scene.
+    SourceSet sources_;
+    /// Every particle a source created, in order: its source and position at creation (4
+    /// numbers each), so a checkpoint can replay the creations on the freshly built scene.
+    std::vector<double> created_log_;
+    /// The number of particles the case built: created particles' original_index() follows.
+    Index built_count_ = 0;
+    /// The material of each body, for sources.
+    std::vector<int> body_material_;
+    bool audit_ = false; ///< a sink, remove_at or a source: the mass audit and energy books
     /// The materials of the particles as the case built them, for describe_model (particles,
     /// and with them a material, may leave through a sink).
     std::vector<int> built_materials_;

@@ -30,6 +30,9 @@ void SphModel::build_outlets(const io::CaseTable& sph) {
         }
     }
     removals_ = !sinks_.empty() || walls_go;
+    build_sources(sph);
+    audit_ = removals_ || !sources_.empty();
+    built_count_ = particles().size();
     const ParticleSet& p = particles();
     std::set<int> used;
     for (Index i = 0; i < p.size(); ++i) {
@@ -40,23 +43,24 @@ void SphModel::build_outlets(const io::CaseTable& sph) {
     built_materials_.assign(used.begin(), used.end());
     origin_.resize(static_cast<std::size_t>(particles().size()));
     std::iota(origin_.begin(), origin_.end(), Index{0});
-    if (!removals_) {
+    if (!audit_) {
         return;
     }
-    const char* key = sinks_.empty() ? "wall" : "sink";
+    const char* key = !sources_.empty() ? "source" : sinks_.empty() ? "wall" : "sink";
     if (!solver_) {
-        sph.fail(key, "particles leave the scene only in the SPH solver: expected "
+        sph.fail(key, "particles leave or enter the scene only in the SPH solver: expected "
                       "interactions = true");
     }
     if (solver_->options().formulation == Formulation::total_lagrangian) {
         sph.fail(key, "the total-Lagrangian formulation keeps its reference neighbours for "
-                      "ever, so no particle can leave: expected formulation = "
-                      "\"updated_lagrangian\" with sinks or remove_at");
+                      "ever, so no particle can leave or enter: expected formulation = "
+                      "\"updated_lagrangian\" with sinks, sources or remove_at");
     }
     if (!added_walls_.empty()) {
-        sph.fail(key, "sinks and remove_at are not yet available in a coupled scene (the "
-                      "coupling's iterated windows restore the particles they started with): "
-                      "expected no [[sph.sink]] and no remove_at with [coupling]");
+        sph.fail(key, "sinks, sources and remove_at are not yet available in a coupled scene "
+                      "(the coupling's iterated windows restore the particles they started "
+                      "with): expected no [[sph.sink]], [[sph.source]] or remove_at with "
+                      "[coupling]");
     }
     sinks_.set_initial_mass(scene_mass());
 }
@@ -109,8 +113,11 @@ void SphModel::apply_removal(std::span<const char> gone) {
 }
 
 void SphModel::write_outlet_state(std::ostream& out) const {
-    if (removals_) {
+    if (audit_) {
         io::write_array(out, sinks_.state());
+    }
+    if (!sources_.empty()) {
+        io::write_array(out, sources_.state());
     }
 }
 
@@ -140,10 +147,15 @@ void SphModel::read_removals(std::istream& in) {
 }
 
 void SphModel::read_outlet_state(std::istream& in) {
-    if (removals_) {
+    if (audit_) {
         std::vector<double> state;
         io::read_array(in, state);
         sinks_.set_state(state);
+    }
+    if (!sources_.empty()) {
+        std::vector<double> state;
+        io::read_array(in, state);
+        sources_.set_state(state);
     }
 }
 

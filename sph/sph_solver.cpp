@@ -99,6 +99,35 @@ void SphSolver::remove_particles(std::span<const char> gone) {
     neighbours_.update(particles_.position, is_wall_, true);
 }
 
+void SphSolver::add_particles(std::span<const NewParticle> arrivals, bool book_energy) {
+    if (total_lagrangian_) {
+        throw std::logic_error("SphSolver::add_particles: the total-Lagrangian reference pairs "
+                               "cannot gain particles");
+    }
+    const auto first = static_cast<std::size_t>(particles_.size());
+    double held = 0.0;
+    for (const NewParticle& a : arrivals) {
+        const materials::Material& law = *materials_.at(static_cast<std::size_t>(a.material));
+        particles_.add(a.position, a.velocity, a.mass, law.density(), a.body, a.material,
+                       law.state_size());
+        const auto i = particles_.size() - 1;
+        particles_.acceleration[i] = options_.gravity;
+        law.initialise_state(std::span(particles_.state)
+                                 .subspan(static_cast<std::size_t>(particles_.state_offset[i]),
+                                          static_cast<std::size_t>(law.state_size())));
+        is_wall_.push_back(0);
+        wave_speed_.push_back(law.elastic().p_wave_speed());
+        force_inputs_.sound_speed.push_back(law.elastic().unscaled_p_wave_speed());
+        held += a.mass * 0.5 * a.velocity.squaredNorm();
+    }
+    neighbours_.update(particles_.position, is_wall_, true);
+    if (book_energy && energy_.is_open()) {
+        std::vector<char> flagged(static_cast<std::size_t>(particles_.size()), 0);
+        std::fill(flagged.begin() + static_cast<std::ptrdiff_t>(first), flagged.end(), char{1});
+        energy_.add_created(held, contact_energy_of(flagged));
+    }
+}
+
 void SphSolver::refresh_neighbours() {
     neighbours_.update(particles_.position, is_wall_);
 }

@@ -53,6 +53,22 @@ class SphSolver {
     /// (the next kick uses the forces of the step just ended, removed neighbours included).
     /// Not with Formulation::total_lagrangian, whose reference pairs are fixed.
     void remove_particles(std::span<const char> gone);
+    /// A particle entering the scene (a source): where, how fast, its mass, body and material.
+    struct NewParticle {
+        Vec3 position;
+        Vec3 velocity;
+        double mass = 0.0;
+        int body = 0;
+        int material = 0;
+    };
+    /// Append `arrivals` after every particle there (so the walls' ranges stay as they are),
+    /// between steps: each gets its material's density and initial state (initialise_state),
+    /// zero stress and the acceleration of gravity (it has no neighbour yet: the next kick
+    /// starts it in free flight), the per-particle work arrays grow, and the neighbour list
+    /// is rebuilt at the current positions. With `book_energy` the ledger books what they
+    /// bring and the contact potential they start with (EnergyLedger::add_created); a
+    /// checkpoint's replay, whose ledger is read afterwards, books nothing.
+    void add_particles(std::span<const NewParticle> arrivals, bool book_energy);
     double time() const { return time_; }
     /// The driver's clock, which wall motion histories follow (also after a restart).
     void set_time(double time) { time_ = time; }

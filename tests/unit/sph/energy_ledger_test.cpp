@@ -53,6 +53,25 @@ TEST(EnergyLedger, RemovedParticlesAreNoDeficit) {
     EXPECT_DOUBLE_EQ(restored.removed_contact(), 0.5);
 }
 
+// Particles entering with 4 J of kinetic energy and 0.5 J of contact potential with what is
+// there: held rises by 4 J and the contact potential by 0.5 J at once, so booked as created
+// they leave the surplus and the balance where they were; the throughput grows by 4.5 J.
+TEST(EnergyLedger, CreatedParticlesBringWhatTheyHoldWithoutASurplus) {
+    EnergyLedger ledger = worked_example();
+    const double surplus_before = ledger.surplus(14.0);
+    const double error_before = ledger.balance_error(14.0, 2.0);
+    const double throughput_before = ledger.throughput();
+    ledger.add_created(4.0, 0.5);
+    EXPECT_DOUBLE_EQ(ledger.surplus(18.0), surplus_before);
+    EXPECT_DOUBLE_EQ(ledger.balance_error(18.0, 2.5) * ledger.throughput(),
+                     error_before * throughput_before);
+    EXPECT_DOUBLE_EQ(ledger.throughput(), throughput_before + 4.5);
+    EnergyLedger restored;
+    restored.set_state(ledger.state());
+    EXPECT_DOUBLE_EQ(restored.created_held(), 4.0);
+    EXPECT_DOUBLE_EQ(restored.created_contact(), 0.5);
+}
+
 TEST(EnergyLedger, StateRoundTripsAndRejectsAForeignLayout) {
     const EnergyLedger ledger = worked_example();
     EnergyLedger restored;

@@ -149,8 +149,11 @@ TEST(SinkSet, TakesMaterialParticlesInItsRegionAndBooksTheirMass) {
         EXPECT_EQ(gone[static_cast<std::size_t>(i)], 0) << "wall particle " << i;
     }
     remove_particles(scene.particles, gone, scene.walls);
-    EXPECT_EQ(set.audit_error(0.0), 0.0);
-    EXPECT_EQ(set.audit_error(0.25), 0.25 / 3.75);
+    EXPECT_EQ(set.audit_error(0.0, 0.0), 0.0);
+    EXPECT_EQ(set.audit_error(0.25, 0.0), 0.25 / 3.75);
+    // 0.5 created: the scene holds it too when the audit closes.
+    EXPECT_EQ(set.audit_error(0.5, 0.5), 0.0);
+    EXPECT_EQ(set.audit_error(0.25, 0.5), -0.25 / 4.25);
 }
 
 // Half-space: strictly beyond the plane (a particle on it stays); box: faces included; in plane

@@ -1,0 +1,172 @@
+#include "sph/source.hpp"
+
+#include "io/case_table.hpp"
+#include "sph/sph_case_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace grainload::sph {
+
+namespace dim = io::dimension;
+
+namespace {
+
+// A step owes whole particles once the owed mass reaches one particle's mass; the sum of the
+// steps' rate * dt differs from the exact product by round-off, which must not hold a
+// particle back for a step (a few hundred ulps of a particle mass is far below any physics).
+constexpr double kOwedRoundOff = 1e-12;
+
+/// Mass rate: kg/s in 3D, kg/(m s) in plane strain (masses there are per metre of depth).
+io::Dimension mass_rate_dimension(int dimension) {
+    return dimension == 2 ? io::Dimension{1, -1, -1, 0} : io::Dimension{1, 0, -1, 0};
+}
+
+} // namespace
+
+SourceSet::SourceSet(const io::CaseTable& sph, const std::vector<std::string>& body_names,
+                     const std::vector<int>& body_material, const std::vector<double>& body_density,
+                     double spacing, int dimension)
+    : spacing_(spacing), dimension_(dimension) {
+    for (const auto& table : sph.array_of_tables("source")) {
+        Source source;
+        source.name = table.string("name");
+        for (const Source& other : sources_) {
+            if (other.name == source.name) {
+                table.fail("name", "a source called \"" + source.name + "\" is already defined");
+            }
+        }
+        source.body = body_index(table, "body", body_names);
+        const auto b = static_cast<std::size_t>(source.body);
+        source.material = body_material[b];
+        source.particle_mass = body_density[b] * std::pow(spacing, dimension);
+        const Vec3 lower = table.vector("min", dim::kLength);
+        const Vec3 upper = table.vector("max", dim::kLength);
+        for (int a = 0; a < dimension; ++a) {
+            if (!(upper[a] - lower[a] >= spacing)) {
+                table.fail("max", "expected max above min by at least the body's spacing (" +
+                                      std::to_string(spacing) + " m) in every direction");
+            }
+        }
+        source.region = io::Region::box(lower, upper, dimension);
+        source.sites = lattice(source.region, spacing, dimension);
+        source.mass_rate = table.positive_quantity("mass_rate", mass_rate_dimension(dimension));
+        source.start = table.quantity_or("start", dim::kTime, 0.0);
+        if (table.has("end")) {
+            source.end = table.quantity("end", dim::kTime);
+            if (!(source.end > source.start)) {
+                table.fail("end", "expected an end after start");
+            }
+        }
+        source.velocity = table.vector_or("velocity", dim::kVelocity, Vec3::Zero());
+        if (dimension == 2) {
+            source.velocity.z() = 0.0;
+        }
+        sources_.push_back(std::move(source));
+    }
+}
+
+std::vector<Vec3> SourceSet::lattice(const io::Region& box, double spacing, int dimension) {
+    std::array<int, 3> count{1, 1, 1};
+    for (int a = 0; a < dimension; ++a) {
+        count[a] = std::max(1, static_cast<int>(std::floor((box.upper[a] - box.lower[a]) / spacing *
+                                                           (1.0 + kOwedRoundOff))));
+    }
+    std::vector<Vec3> sites;
+    for (int k = 0; k < count[2]; ++k) {
+        for (int j = 0; j < count[1]; ++j) {
+            for (int i = 0; i < count[0]; ++i) {
+                Vec3 x = box.lower + spacing * Vec3(i + 0.5, j + 0.5, k + 0.5);
+                if (dimension == 2) {
+                    x.z() = 0.0;
+                }
+                sites.push_back(x);
+            }
+        }
+    }
+    return sites;
+}
+
+std::vector<Arrival> SourceSet::collect(const ParticleSet& particles, double t, double dt) {
+    std::vector<Arrival> arrivals;
+    for (std::size_t s = 0; s < sources_.size(); ++s) {
+        Source& source = sources_[s];
+        const double active = std::min(t + dt, source.end) - std::max(t, source.start);
+        if (active > 0.0) {
+            source.owed += source.mass_rate * active;
+        }
+        if (source.owed >= source.particle_mass * (1.0 - kOwedRoundOff)) {
+            collect_one(source, particles, arrivals, static_cast<int>(s));
+        }
+    }
+    return arrivals;
+}
+
+void SourceSet::collect_one(Source& source, const ParticleSet& particles,
+                            std::vector<Arrival>& arrivals, int index) const {
+    // Only particles within a spacing of the box can block a site: gather them once.
+    const double gap = kMinimumGap * spacing_;
+    std::vector<Vec3> near;
+    const Vec3 margin = Vec3::Constant(spacing_);
+    for (Index i = 0; i < particles.size(); ++i) {
+        const Vec3& x = particles.position[i];
+        if ((x.array() >= (source.region.lower - margin).array()).all() &&
+            (x.array() <= (source.region.upper + margin).array()).all()) {
+            near.push_back(x);
+        }
+    }
+    for (const Arrival& a : arrivals) {
+        near.push_back(a.position);
+    }
+    const std::size_t n = source.sites.size();
+    for (std::size_t tried = 0; tried < n; ++tried) {
+        if (source.owed < source.particle_mass * (1.0 - kOwedRoundOff)) {
+            break;
+        }
+        const Vec3& site = source.sites[source.cursor];
+        source.cursor = (source.cursor + 1) % n;
+        const bool free = std::none_of(near.begin(), near.end(), [&](const Vec3& x) {
+            return (x - site).squaredNorm() < gap * gap;
+        });
+        if (!free) {
+            continue;
+        }
+        arrivals.push_back({site, source.velocity, index});
+        near.push_back(site);
+        source.owed -= source.particle_mass;
+        source.created += source.particle_mass;
+    }
+}
+
+double SourceSet::created() const {
+    double sum = 0.0;
+    for (const Source& source : sources_) {
+        sum += source.created;
+    }
+    return sum;
+}
+
+std::vector<double> SourceSet::state() const {
+    std::vector<double> state;
+    for (const Source& source : sources_) {
+        state.push_back(source.owed);
+        state.push_back(source.created);
+        state.push_back(static_cast<double>(source.cursor));
+    }
+    return state;
+}
+
+void SourceSet::set_state(const std::vector<double>& state) {
+    if (state.size() != 3 * sources_.size()) {
+        throw std::runtime_error("checkpoint: the sources' state does not match the case's " +
+                                 std::to_string(sources_.size()) + " sources");
+    }
+    for (std::size_t s = 0; s < sources_.size(); ++s) {
+        sources_[s].owed = state[3 * s];
+        sources_[s].created = state[3 * s + 1];
+        sources_[s].cursor = static_cast<std::size_t>(state[3 * s + 2]);
+    }
+}
+
+} // namespace grainload::sph

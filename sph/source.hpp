@@ -1,0 +1,98 @@
+#pragma once
+
+#include "io/key_spec.hpp"
+#include "io/region.hpp"
+#include "sph/particle_set.hpp"
+
+#include <array>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace grainload::io {
+class CaseTable;
+}
+
+namespace grainload::sph {
+
+/// The keys of each [[sph.source]] table (docs/user-guide/sph.md, "Sources").
+inline constexpr std::array<io::KeySpec, 8> kSourceKeys{{
+    {"name", "string", "", "names the source in log.txt and summary.json"},
+    {"body", "string", "", "the [[sph.body]] whose particles (material, spacing) it creates"},
+    {"min", "length vector", "", "the lower corner of the box the particles are created in"},
+    {"max", "length vector", "", "the box's upper corner, above min by a spacing on every axis"},
+    {"mass_rate", "mass rate", "", "kg/s created (in plane strain per metre of depth, kg/(m s))"},
+    {"start", "time", "0 s", "creation starts"},
+    {"end", "time", "never", "creation ends"},
+    {"velocity", "velocity vector", "0 m/s", "the velocity the new particles start with"},
+}};
+
+/// A particle a source is about to create: where, how fast, and which source.
+struct Arrival {
+    Vec3 position = Vec3::Zero();
+    Vec3 velocity = Vec3::Zero();
+    int source = 0;
+};
+
+/// Particles entering the scene through box regions at a mass rate (the way silos are filled).
+/// Each source owns a lattice at the body's spacing inside its box; a step owes it
+/// mass_rate * (the part of the step inside [start, end)), and whole particles are created
+/// from what is owed at lattice sites no particle is near (closer than kMinimumGap spacings),
+/// taking the sites round-robin so the stream covers the box evenly. In terms of positions and
+/// masses only: the model turns arrivals into particles.
+class SourceSet {
+  public:
+    struct Source {
+        std::string name;
+        io::Region region;
+        int body = 0;
+        int material = 0;
+        double particle_mass = 0.0;
+        double mass_rate = 0.0;
+        double start = 0.0;
+        double end = std::numeric_limits<double>::infinity();
+        Vec3 velocity = Vec3::Zero();
+        std::vector<Vec3> sites;
+        // State (checkpointed):
+        double owed = 0.0;
+        double created = 0.0;
+        std::size_t cursor = 0;
+    };
+    /// A lattice site is free when no particle lies closer than this many spacings: lattice
+    /// neighbours one spacing apart (the body generator's own packing) must both be allowed,
+    /// anything nearer would overlap a particle already there.
+    static constexpr double kMinimumGap = 0.99;
+
+    SourceSet() = default;
+    /// The [[sph.source]] tables of `sph`. `body_material[b]` and `body_density[b]` describe
+    /// body b; every body has `spacing`.
+    SourceSet(const io::CaseTable& sph, const std::vector<std::string>& body_names,
+              const std::vector<int>& body_material, const std::vector<double>& body_density,
+              double spacing, int dimension);
+    SourceSet(std::vector<Source> sources, double spacing)
+        : sources_(std::move(sources)), spacing_(spacing) {}
+
+    bool empty() const { return sources_.empty(); }
+    const std::vector<Source>& sources() const { return sources_; }
+    /// The lattice of a box at `spacing`: site centres half a spacing in from the faces.
+    static std::vector<Vec3> lattice(const io::Region& box, double spacing, int dimension);
+    /// The particles to create over the step [t, t + dt], given the particles there now; books
+    /// their mass as created.
+    std::vector<Arrival> collect(const ParticleSet& particles, double t, double dt);
+    /// Total mass created so far (kg, in plane strain kg/m).
+    double created() const;
+
+    /// For checkpoints: owed mass, created mass and cursor of each source.
+    std::vector<double> state() const;
+    void set_state(const std::vector<double>& state);
+
+  private:
+    void collect_one(Source& source, const ParticleSet& particles, std::vector<Arrival>& arrivals,
+                     int index) const;
+
+    std::vector<Source> sources_;
+    double spacing_ = 0.0;
+    int dimension_ = 3;
+};
+
+} // namespace grainload::sph
