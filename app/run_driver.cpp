@@ -196,6 +196,11 @@ int run_case(const CommandLine& line) {
         std::optional<std::string> failure = advance(*scene, clock.t, dt);
         clock.t += dt;
         ++clock.step;
+        for (const auto& stepper : scene->steppers) {
+            for (const std::string& event : stepper->take_events()) {
+                progress.message(event);
+            }
+        }
         if (auto problem = failure ? failure : diagnose(*scene)) {
             return stop_unstable(*scene, line, clock, *problem, writer.last_frame_path(), estimate,
                                  progress);

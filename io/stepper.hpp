@@ -35,6 +35,9 @@ class Stepper {
     /// that was never reached, a shell that hardly moved), for the log and summary.json's
     /// "hints". Nothing by default.
     virtual void append_hints(std::vector<std::string>& hints) const { (void)hints; }
+    /// Events of the steps since the last call (a phase that ended: "settled at 2.1 s"), one
+    /// line each, which the driver writes to the run's log. None by default.
+    virtual std::vector<std::string> take_events() { return {}; }
     /// Write the module's own logs into the output directory (the shell FEM's per-step
     /// convergence CSV); called at every output instant. Nothing by default.
     virtual void write_logs(const std::string& /*directory*/) const {}

@@ -31,8 +31,9 @@ inline constexpr std::array<io::KeySpec, 7> kSinkKeys{{
 
 /// The key of [[sph.wall]] that opens an outlet (docs/user-guide/sph.md, "Outlets and gates").
 inline constexpr std::array<io::KeySpec, 1> kWallOutletKeys{{
-    {"remove_at", "time", "never",
-     "the wall leaves the scene at the end of the first step that reaches this time"},
+    {"remove_at", "time or `settled`", "never",
+     "the wall leaves the scene at the end of the first step that reaches this time, or "
+     "(`settled`) that settles the scene ([sph.settle])"},
 }};
 
 /// Particles leaving the scene through regions (io::Region), and the books of what left: the

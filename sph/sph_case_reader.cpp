@@ -178,7 +178,11 @@ std::vector<Wall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& partic
                 ? table.vector_or("angular_velocity", dim::kAngularVelocity, Vec3::Zero())
                 : history_value(angular_history, 0.0);
         if (table.has("remove_at")) {
-            wall.removal_time = table.positive_quantity("remove_at", dim::kTime, true);
+            if (table.string("remove_at") == "settled") {
+                wall.removal_on_settle = true;
+            } else {
+                wall.removal_time = table.positive_quantity("remove_at", dim::kTime, true);
+            }
         }
         RigidMotion& motion = attach_rigid_motion(particles, wall, velocity, angular_velocity);
         motion.velocity_history = std::move(velocity_history);

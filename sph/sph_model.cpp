@@ -11,6 +11,7 @@
 #include <iostream>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 namespace grainload::sph {
 
@@ -309,6 +310,13 @@ void SphModel::advance(double t, double dt) {
     if (solver_) {
         solver_->set_time(t);
         solver_->step(dt);
+        if (settle_ && settle_->record(t + dt, solver_->kinetic_energy())) {
+            std::ostringstream event;
+            event << "settled at t = " << t + dt << " s: the material's kinetic energy "
+                  << solver_->kinetic_energy() << " J is below " << settle_->fraction()
+                  << " of its peak " << settle_->peak() << " J";
+            events_.push_back(event.str());
+        }
         remove_departed(t + dt);
         create_arrivals(t, dt);
         if (heap_) {
@@ -421,6 +429,14 @@ void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) 
     if (audit_) {
         sinks_.append_results(scene_mass(), sources_.created(), results);
     }
+    if (settle_) {
+        // null (NaN) when the scene never settled.
+        results.push_back(
+            {"settle_time",
+             settle_->settled() ? settle_->settle_time() : std::numeric_limits<double>::quiet_NaN(),
+             "s", std::nullopt, ""});
+        results.push_back({"settle_peak_kinetic_energy", settle_->peak(), "J", std::nullopt, ""});
+    }
     if (solver_) {
         results.push_back({"kinetic_energy", solver_->kinetic_energy(), "J", std::nullopt, ""});
         results.push_back({"internal_energy", solver_->internal_energy(), "J", std::nullopt, ""});
@@ -469,6 +485,10 @@ void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) 
     }
     results.push_back({"centre_height", mean_z, "m", mean_z_exact, "z0 + v0 t + g t^2/2"});
     results.push_back({"max_position_error", max_error, "m", std::nullopt, ""});
+}
+
+std::vector<std::string> SphModel::take_events() {
+    return std::exchange(events_, {});
 }
 
 void SphModel::write_checkpoint(std::ostream& out) const {

@@ -7,6 +7,7 @@
 #include "sph/heap_monitor.hpp"
 #include "sph/particle_set.hpp"
 #include "sph/rigid_wall.hpp"
+#include "sph/settle_watch.hpp"
 #include "sph/sink.hpp"
 #include "sph/source.hpp"
 #include "sph/sph_solver.hpp"
@@ -81,6 +82,7 @@ class SphModel final : public io::Stepper {
     void describe_model(std::vector<io::ModelChoice>& choices) const override;
     /// Generalized-cap materials whose cap was never reached (sph/model_report.cpp).
     void append_hints(std::vector<std::string>& hints) const override;
+    std::vector<std::string> take_events() override;
     void write_checkpoint(std::ostream& out) const override;
     void read_checkpoint(std::istream& in) override;
 
@@ -165,6 +167,9 @@ class SphModel final : public io::Stepper {
     Index built_count_ = 0;
     /// The material of each body, for sources.
     std::vector<int> body_material_;
+    /// [sph.settle]: the settle phase, and the events (its end) not yet taken by the driver.
+    std::optional<SettleWatch> settle_;
+    std::vector<std::string> events_;
     bool audit_ = false; ///< a sink, remove_at or a source: the mass audit and energy books
     /// The materials of the particles as the case built them, for describe_model (particles,
     /// and with them a material, may leave through a sink).

@@ -24,10 +24,22 @@ constexpr double kRemovalTimeTolerance = 1e-12;
 void SphModel::build_outlets(const io::CaseTable& sph) {
     sinks_ = SinkSet(sph, body_names_, dimension_);
     bool walls_go = false;
+    bool on_settle = false;
     if (solver_) {
         for (const Wall& wall : solver_->walls()) {
-            walls_go = walls_go || std::isfinite(wall.removal_time);
+            walls_go = walls_go || std::isfinite(wall.removal_time) || wall.removal_on_settle;
+            on_settle = on_settle || wall.removal_on_settle;
         }
+    }
+    if (const auto settle = sph.optional_table("settle")) {
+        if (!solver_) {
+            settle->fail("kinetic_energy_fraction",
+                         "the settle watch needs the SPH solver: expected interactions = true");
+        }
+        settle_.emplace(*settle);
+    } else if (on_settle) {
+        sph.fail("wall", "a wall with remove_at = \"settled\" needs an [sph.settle] table "
+                         "saying when the scene has settled");
     }
     removals_ = !sinks_.empty() || walls_go;
     build_sources(sph);
@@ -81,9 +93,10 @@ void SphModel::remove_departed(double time) {
     const ParticleSet& p = solver_->particles();
     std::vector<char> gone(static_cast<std::size_t>(p.size()), 0);
     Index count = sinks_.collect(p, gone);
+    const bool settled = settle_ && settle_->settled();
     for (const Wall& wall : solver_->walls()) {
         const double due = wall.removal_time * (1.0 - kRemovalTimeTolerance);
-        if (wall.count > 0 && time >= due) {
+        if (wall.count > 0 && (time >= due || (wall.removal_on_settle && settled))) {
             std::fill_n(gone.begin() + wall.first, wall.count, char{1});
             count += wall.count;
         }
@@ -118,6 +131,9 @@ void SphModel::write_outlet_state(std::ostream& out) const {
     }
     if (!sources_.empty()) {
         io::write_array(out, sources_.state());
+    }
+    if (settle_) {
+        io::write_array(out, settle_->state());
     }
 }
 
@@ -156,6 +172,11 @@ void SphModel::read_outlet_state(std::istream& in) {
         std::vector<double> state;
         io::read_array(in, state);
         sources_.set_state(state);
+    }
+    if (settle_) {
+        std::vector<double> state;
+        io::read_array(in, state);
+        settle_->set_state(state);
     }
 }
 

@@ -78,6 +78,9 @@ struct Wall {
     /// outlet opened at once, [[sph.wall]] remove_at): its particles are removed, and the wall
     /// stays in the list with count 0. Infinity: never.
     double removal_time = std::numeric_limits<double>::infinity();
+    /// remove_at = "settled": the wall leaves at the end of the step that settles the scene
+    /// ([sph.settle]).
+    bool removal_on_settle = false;
 
     /// Velocity of the wall at point x seen from its particle k (an index into the
     /// ParticleSet): v_k + omega_k x (x - x_k).
