@@ -1,0 +1,110 @@
+#include "support/case_runner.hpp"
+#include "support/frame_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vtkPoints.h>
+
+namespace grainload::testing {
+namespace {
+
+// The CI slot silo at rest (cases/silo/silo_rest_small.toml, docs/validation/silo.md): filled
+// by its source to 1.7 s, settled, read at 3 s.
+constexpr double kGravity = 9.81;
+constexpr double kMu = 0.4;              // wall friction of the case
+constexpr double kSinPhi = 0.5;          // phi = 30 deg
+constexpr double kSpacing = 0.025;       // m
+constexpr double kParticleMass = 0.9375; // kg/m
+constexpr double kBand = 0.2;            // m, the left wall's bands left0 .. left5
+
+/// The last row of wall_forces.csv per wall: (F_x, F_y).
+std::map<std::string, std::pair<double, double>> final_forces(const std::string& out) {
+    std::stringstream in(read_file(out + "/wall_forces.csv"));
+    std::string line;
+    std::getline(in, line);
+    std::map<std::string, std::pair<double, double>> forces;
+    while (std::getline(in, line)) {
+        std::stringstream fields(line);
+        std::string time, wall, fx, fy;
+        std::getline(fields, time, ',');
+        std::getline(fields, wall, ',');
+        std::getline(fields, fx, ',');
+        std::getline(fields, fy, ',');
+        forces[wall] = {std::stod(fx), std::stod(fy)};
+    }
+    return forces;
+}
+
+/// Janssen's p_h (silo_hopper_references.md; plane-strain slot, A/U = D/2) averaged over the
+/// depths [a, b] below the surface: gamma D/(2 mu) (1 - exp(-z/z0)), z0 = D/(2 K mu), with
+/// gamma D = the weight per metre of height.
+double janssen_band(double weight_per_height, double width, double k, double a, double b) {
+    const double z0 = width / (2.0 * k * kMu);
+    const double integral = (b - a) - z0 * (std::exp(-a / z0) - std::exp(-b / z0));
+    return weight_per_height / (2.0 * kMu) * integral / (b - a);
+}
+
+// - Vertical equilibrium at rest: the floor and the walls' friction carry the weight of what
+//   is in the silo (kinetic energy 1e-13 J at 3 s): to 0.1 % (measured 1e-5; the contact
+//   dashpot and the last ringing are below that).
+// - Wall friction fully mobilised, as Janssen assumes: friction / (mu p_h) per band between
+//   0.85 and 1 (Coulomb's bound; measured 0.92-0.97 in the bands clear of floor and surface).
+// - p_h per band against Janssen with K = 1 - sin(phi) (0.5) and EN 1991-4's 1.1 (1 - sin
+//   phi) (0.55): at 25 mm (15 particles across) the run's p_h is 0.74-0.89 of the bracket's
+//   mean in the bands 0.2-1.0 m, because the continuum's own K, p_h / p_v, is 0.27-0.31, below
+//   the bracket (docs/validation/silo.md). Asserted: p_h below Janssen with K = 0.55 (the
+//   design bound stays conservative) and above 0.6 of Janssen with K = 0.5 (0.74 measured,
+//   leaving 20 % for the particle-scale scatter of one band of 8 rows).
+TEST(SiloRestSmall, WallPressureAtRestAgainstJanssen) {
+    const CaseRun run = run_case_file("cases/silo/silo_rest_small.toml", "silo_rest_small");
+    ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
+    const std::string summary = read_file(run.out + "/summary.json");
+    EXPECT_LT(result_value(summary, "settle_time"), 3.0);
+    const auto sand = read_named_block(run.out + "/frames/silo_rest_small_000030.vtm", "sand");
+    ASSERT_TRUE(sand);
+    double x_min = 1e9, x_max = -1e9, y_min = 1e9, y_max = -1e9;
+    for (vtkIdType i = 0; i < sand->GetNumberOfPoints(); ++i) {
+        const double* x = sand->GetPoint(i);
+        x_min = std::min(x_min, x[0]);
+        x_max = std::max(x_max, x[0]);
+        y_min = std::min(y_min, x[1]);
+        y_max = std::max(y_max, x[1]);
+    }
+    const double mass = kParticleMass * static_cast<double>(sand->GetNumberOfPoints());
+    const double width = x_max - x_min + kSpacing;
+    const double surface = y_max + 0.5 * kSpacing;
+    const double weight_per_height = mass * kGravity / (surface - (y_min - 0.5 * kSpacing));
+    const auto forces = final_forces(run.out);
+    double carried = -forces.at("floor").second - forces.at("right").second;
+    for (const auto& [wall, force] : forces) {
+        carried -= wall.rfind("left", 0) == 0 ? force.second : 0.0;
+    }
+    constexpr double kEquilibrium = 1e-3;
+    EXPECT_NEAR(carried / (mass * kGravity), 1.0, kEquilibrium);
+    const double k_low = 1.0 - kSinPhi;
+    const double k_high = 1.1 * (1.0 - kSinPhi);
+    constexpr double kLowestFraction = 0.6;
+    constexpr double kMobilised = 0.85;
+    for (int band = 1; band <= 4; ++band) {
+        const auto [fx, fy] = forces.at("left" + std::to_string(band));
+        const double p_h = -fx / kBand;
+        const double a = surface - kBand * (band + 1);
+        const double b = surface - kBand * band;
+        const double low = janssen_band(weight_per_height, width, k_low, a, b);
+        const double high = janssen_band(weight_per_height, width, k_high, a, b);
+        std::cout << "band " << band << ": p_h " << p_h << " Pa, Janssen K=0.5 " << low
+                  << " Pa, K=0.55 " << high << " Pa, friction/(mu p_h) "
+                  << -fy / (kMu * p_h * kBand) << '\n';
+        EXPECT_LT(p_h, high) << "band " << band;
+        EXPECT_GT(p_h, kLowestFraction * low) << "band " << band;
+        EXPECT_GT(-fy / (kMu * p_h * kBand), kMobilised) << "band " << band;
+        EXPECT_LE(-fy / (kMu * p_h * kBand), 1.0 + 1e-9) << "band " << band;
+    }
+}
+
+} // namespace
+} // namespace grainload::testing
