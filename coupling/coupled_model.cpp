@@ -335,8 +335,8 @@ void CoupledModel::append_results(double t, std::vector<io::ResultFigure>& resul
                        static_cast<double>(monitor_.largest_subcycles()), "", std::nullopt, ""});
     // The run's `steps` count windows; the SPH steps behind them (every pass of an iterated
     // window) are these.
-    results.push_back({"coupling_sph_steps", static_cast<double>(monitor_.subcycles()), "",
-                       std::nullopt, ""});
+    results.push_back(
+        {"coupling_sph_steps", static_cast<double>(monitor_.subcycles()), "", std::nullopt, ""});
     const Vec3 load = force_sum(load_);
     const Vec3 momentum = sph_->solver()->linear_momentum();
     for (int a = 0; a < 3; ++a) {
