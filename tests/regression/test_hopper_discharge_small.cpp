@@ -69,22 +69,9 @@ TEST(HopperDischargeSmall, MassAuditClosesAndTheRateLiesWithinBeverloosSpread) {
 // the checkpoint says which particles are left, and the sink's books and history go with it.
 TEST(HopperDischargeSmall, RestartAcrossRemovalsReproducesTheUninterruptedRun) {
     const std::string base = ::testing::TempDir() + "grainload_hopper_restart";
-    const std::string kase =
-        "'" + source_path("cases/hopper_discharge/hopper_discharge_small.toml") + "'";
-    const std::string to_end = " --set 'case.end_time=1.2 s'";
-    std::filesystem::remove_all(base + "_whole");
-    std::filesystem::remove_all(base + "_split");
-    ASSERT_EQ(run_cli("run " + kase + to_end + " --out '" + base + "_whole'", base + "_whole.log")
-                  .exit_code,
-              0);
-    const auto first =
-        run_cli("run " + kase + " --set 'case.end_time=0.85 s' --out '" + base + "_split'",
-                base + "_first.log");
-    ASSERT_EQ(first.exit_code, 0) << first.output;
-    const auto second = run_cli("run " + kase + to_end + " --out '" + base + "_split' --restart '" +
-                                    base + "_split/checkpoint.bin'",
-                                base + "_second.log");
-    ASSERT_EQ(second.exit_code, 0) << second.output;
+    ASSERT_EQ(run_whole_and_split("cases/hopper_discharge/hopper_discharge_small.toml", base,
+                                  "0.85 s", "1.2 s"),
+              "");
     const std::string frame = "/frames/hopper_discharge_small_000024/fill.vtp";
     const std::string whole = read_file(base + "_whole" + frame);
     ASSERT_GT(whole.size(), 1000u);

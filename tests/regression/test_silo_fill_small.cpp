@@ -37,21 +37,7 @@ TEST(SiloFillSmall, SourceCreatesItsRateAndTheBooksCloseOverIt) {
 // particles and holds what the source still owes and where its round-robin stands.
 TEST(SiloFillSmall, RestartDuringCreationReproducesTheUninterruptedRun) {
     const std::string base = ::testing::TempDir() + "grainload_silo_fill_restart";
-    const std::string kase = "'" + source_path("cases/silo/silo_rest_small.toml") + "'";
-    const std::string to_end = " --set 'case.end_time=0.6 s'";
-    std::filesystem::remove_all(base + "_whole");
-    std::filesystem::remove_all(base + "_split");
-    ASSERT_EQ(run_cli("run " + kase + to_end + " --out '" + base + "_whole'", base + "_whole.log")
-                  .exit_code,
-              0);
-    const auto first =
-        run_cli("run " + kase + " --set 'case.end_time=0.3 s' --out '" + base + "_split'",
-                base + "_first.log");
-    ASSERT_EQ(first.exit_code, 0) << first.output;
-    const auto second = run_cli("run " + kase + to_end + " --out '" + base + "_split' --restart '" +
-                                    base + "_split/checkpoint.bin'",
-                                base + "_second.log");
-    ASSERT_EQ(second.exit_code, 0) << second.output;
+    ASSERT_EQ(run_whole_and_split("cases/silo/silo_rest_small.toml", base, "0.3 s", "0.6 s"), "");
     const std::string frame = "/frames/silo_rest_small_000006/sand.vtp";
     const std::string whole = read_file(base + "_whole" + frame);
     ASSERT_GT(whole.size(), 1000u);

@@ -38,4 +38,28 @@ inline double result_value(const std::string& summary, const std::string& name) 
     return match.empty() ? std::nan("") : std::stod(match[1]);
 }
 
+/// The restart check's two runs of `case_file`: to `end_time` in one go into `<base>_whole`, and
+/// stopped at `stop_time`, then continued from its checkpoint to `end_time`, into `<base>_split`.
+/// Returns the output of the first run that failed, empty when all three exited with 0.
+inline std::string run_whole_and_split(const std::string& case_file, const std::string& base,
+                                       const std::string& stop_time, const std::string& end_time) {
+    const std::string kase = "'" + source_path(case_file) + "'";
+    const std::string to_end = " --set 'case.end_time=" + end_time + "'";
+    std::filesystem::remove_all(base + "_whole");
+    std::filesystem::remove_all(base + "_split");
+    for (const auto& [options, log] :
+         {std::pair{to_end + " --out '" + base + "_whole'", base + "_whole.log"},
+          std::pair{" --set 'case.end_time=" + stop_time + "' --out '" + base + "_split'",
+                    base + "_first.log"},
+          std::pair{to_end + " --out '" + base + "_split' --restart '" + base +
+                        "_split/checkpoint.bin'",
+                    base + "_second.log"}}) {
+        const auto run = run_cli("run " + kase + options, log);
+        if (run.exit_code != 0) {
+            return run.output.empty() ? "exit code " + std::to_string(run.exit_code) : run.output;
+        }
+    }
+    return "";
+}
+
 } // namespace grainload::testing
