@@ -39,6 +39,7 @@ CoupledModel::CoupledModel(std::unique_ptr<sph::SphModel> sph, std::unique_ptr<f
     : sph_(std::move(sph)), fem_(std::move(fem)), parts_(std::move(parts)), settings_(settings),
       load_(Eigen::VectorXd::Zero(6 * fem_->analysis().mesh().node_count())), start_load_(load_),
       end_load_(load_) {
+    sph_->exchange_particles_per_window();
     const fem::ShellMesh& mesh = fem_->analysis().mesh();
     node_area_.assign(static_cast<std::size_t>(mesh.node_count()), 0.0);
     node_normal_.assign(static_cast<std::size_t>(mesh.node_count()), Vec3::Zero());
@@ -183,11 +184,12 @@ void CoupledModel::advance(double t, double dt) {
         pending_.load_change = relative_change(produced, load_);
         load_ += settings_.relaxation * (produced - load_);
         pending_.map_seconds += seconds_since(start);
-        monitor_.add(pending_);
-        track_extremes();
-        return;
+    } else {
+        iterate_window(t, dt);
     }
-    iterate_window(t, dt);
+    // Particles leave and enter once the window is final: every pass above ran on the same
+    // particles.
+    sph_->exchange_particles(t, dt);
     monitor_.add(pending_);
     track_extremes();
 }

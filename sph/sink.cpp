@@ -144,6 +144,7 @@ void SinkSet::append_results(double scene_mass, double created,
         results.push_back(
             {prefix + "_steady_window_end", fit ? fit->end : nan, "s", std::nullopt, ""});
     }
+    results.push_back({"scene_mass", scene_mass, mass_unit, std::nullopt, "material in the scene"});
     results.push_back({"discharged_mass", discharged(), mass_unit, std::nullopt, ""});
     results.push_back({"initial_mass", initial_mass_, mass_unit, std::nullopt, ""});
     results.push_back({"created_mass", created, mass_unit, std::nullopt, ""});

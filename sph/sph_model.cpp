@@ -317,8 +317,9 @@ void SphModel::advance(double t, double dt) {
                   << " of its peak " << settle_->peak() << " J";
             events_.push_back(event.str());
         }
-        remove_departed(t + dt);
-        create_arrivals(t, dt);
+        if (!per_window_) {
+            exchange_particles(t, dt);
+        }
         if (heap_) {
             heap_->record(t + dt, solver_->particles());
         }

@@ -86,6 +86,14 @@ class SphModel final : public io::Stepper {
     void write_checkpoint(std::ostream& out) const override;
     void read_checkpoint(std::istream& in) override;
 
+    /// Particles leave (sinks, remove_at) and enter (sources) only when exchange_particles()
+    /// is called, not after every step: a coupled scene calls it once per window, after the
+    /// window's last pass, so that every pass of an iterated window restarts from the same
+    /// particles.
+    void exchange_particles_per_window() { per_window_ = true; }
+    /// The removals and arrivals of the interval [t, t + dt] (see above).
+    void exchange_particles(double t, double dt);
+
     const ParticleSet& particles() const { return solver_ ? solver_->particles() : particles_; }
     const SphSolver* solver() const { return solver_.get(); }
     const SinkSet& sinks() const { return sinks_; }
@@ -170,6 +178,7 @@ class SphModel final : public io::Stepper {
     /// [sph.settle]: the settle phase, and the events (its end) not yet taken by the driver.
     std::optional<SettleWatch> settle_;
     std::vector<std::string> events_;
+    bool per_window_ = false; ///< exchange_particles_per_window() was called
     bool audit_ = false; ///< a sink, remove_at or a source: the mass audit and energy books
     /// The materials of the particles as the case built them, for describe_model (particles,
     /// and with them a material, may leave through a sink).

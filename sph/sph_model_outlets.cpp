@@ -68,12 +68,6 @@ void SphModel::build_outlets(const io::CaseTable& sph) {
                       "ever, so no particle can leave or enter: expected formulation = "
                       "\"updated_lagrangian\" with sinks, sources or remove_at");
     }
-    if (!added_walls_.empty()) {
-        sph.fail(key, "sinks, sources and remove_at are not yet available in a coupled scene "
-                      "(the coupling's iterated windows restore the particles they started "
-                      "with): expected no [[sph.sink]], [[sph.source]] or remove_at with "
-                      "[coupling]");
-    }
     sinks_.set_initial_mass(scene_mass());
 }
 
@@ -84,6 +78,11 @@ double SphModel::scene_mass() const {
         sum += p.is_wall(i) ? 0.0 : p.mass[i];
     }
     return sum;
+}
+
+void SphModel::exchange_particles(double t, double dt) {
+    remove_departed(t + dt);
+    create_arrivals(t, dt);
 }
 
 void SphModel::remove_departed(double time) {

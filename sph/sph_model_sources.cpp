@@ -66,6 +66,13 @@ void SphModel::read_created(std::istream& in) {
     }
     // The created particles in creation order, after the case's: the removals that follow
     // (read_removals) then name them by original index like the case's own.
+    if (log == created_log_) {
+        return; // a live scene going back to a state with the same particles (a coupling pass)
+    }
+    if (!created_log_.empty()) {
+        throw std::runtime_error("checkpoint: the scene has created other particles than the "
+                                 "checkpoint's; only a freshly built scene can read it");
+    }
     std::vector<Arrival> arrivals;
     for (std::size_t k = 0; k < log.size(); k += kLogEntry) {
         const auto source = static_cast<int>(log[k]);
@@ -75,7 +82,6 @@ void SphModel::read_created(std::istream& in) {
         arrivals.push_back({Vec3(log[k + 1], log[k + 2], log[k + 3]),
                             sources_.sources()[static_cast<std::size_t>(source)].velocity, source});
     }
-    created_log_.clear();
     if (!arrivals.empty()) {
         apply_creation(arrivals, false);
     }

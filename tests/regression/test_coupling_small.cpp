@@ -1,4 +1,5 @@
 #include "support/case_runner.hpp"
+#include "support/csv_rows.hpp"
 #include "support/frame_reader.hpp"
 
 #include <cstdio>
@@ -17,22 +18,9 @@ std::string read_text(const std::string& path) {
     return text.str();
 }
 
-/// Rows of coupling.csv as numbers (the header skipped).
+/// Rows of coupling.csv as numbers.
 std::vector<std::vector<double>> coupling_rows(const std::string& out) {
-    std::ifstream in(out + "/coupling.csv");
-    std::string line;
-    std::getline(in, line);
-    std::vector<std::vector<double>> rows;
-    while (std::getline(in, line)) {
-        std::vector<double> row;
-        std::stringstream fields(line);
-        std::string field;
-        while (std::getline(fields, field, ',')) {
-            row.push_back(std::stod(field));
-        }
-        rows.push_back(std::move(row));
-    }
-    return rows;
+    return numeric_csv_rows(out + "/coupling.csv");
 }
 
 constexpr double kGravity = 9.81;
