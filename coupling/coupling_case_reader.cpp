@@ -64,20 +64,58 @@ int part_index(const io::CaseTable& table, const std::string& key,
     table.fail(key, "expected the name of a [[fem.shell]] part (" + known + ")");
 }
 
-void read_friction(const io::CaseTable& coupling, const std::vector<std::string>& parts,
-                   const sph::SphModel& sph, std::vector<sph::SphModel::WallDefinition>& walls) {
+/// The elements of one interface: its part's, or those of its `element_sets`; none may
+/// belong to an interface before it (`coupled` flags them).
+std::vector<Index> interface_elements(const io::CaseTable& table, const fem::ShellMesh& mesh,
+                                      int part, std::vector<char>& coupled) {
+    std::vector<Index> elements = mesh.part_elements(part);
+    if (table.has("element_sets")) {
+        std::vector<char> chosen(coupled.size(), 0);
+        for (const std::string& set : table.name_list("element_sets")) {
+            if (!mesh.has_element_set(set)) {
+                std::string known;
+                for (const auto& entry : mesh.element_sets()) {
+                    known += (known.empty() ? "\"" : ", \"") + entry.first + "\"";
+                }
+                table.fail("element_sets", "no element set \"" + set + "\" in the mesh (" +
+                                               known + ")");
+            }
+            for (const Index e : mesh.element_set(set)) {
+                chosen[static_cast<std::size_t>(e)] = 1;
+            }
+        }
+        std::erase_if(elements, [&](Index e) { return !chosen[static_cast<std::size_t>(e)]; });
+        if (elements.empty()) {
+            table.fail("element_sets", "the sets hold no element of the part");
+        }
+    }
+    for (const Index e : elements) {
+        if (coupled[static_cast<std::size_t>(e)]) {
+            table.fail(table.has("element_sets") ? "element_sets" : "part",
+                       "element " + std::to_string(e) +
+                           " already belongs to an interface: expected each element in one");
+        }
+        coupled[static_cast<std::size_t>(e)] = 1;
+    }
+    return elements;
+}
+
+void read_friction(const io::CaseTable& coupling, const sph::SphModel& sph,
+                   std::vector<sph::SphModel::WallDefinition>& walls) {
     for (const io::CaseTable& table : coupling.array_of_tables("friction")) {
         const std::string body = table.string("body");
         if (sph.body_id(body) < 0) {
             table.fail("body", "expected the name of an [[sph.body]]");
         }
-        const std::string part = parts[static_cast<std::size_t>(part_index(table, "part", parts))];
+        const std::string name = table.string("part");
         sph::SphModel::WallDefinition* wall = nullptr;
+        std::string known;
         for (auto& w : walls) {
-            wall = w.name == part ? &w : wall;
+            wall = w.name == name ? &w : wall;
+            known += (known.empty() ? "\"" : ", \"") + w.name + "\"";
         }
         if (wall == nullptr) {
-            table.fail("part", "the part has no [[coupling.interface]]");
+            table.fail("part", "expected the name of a [[coupling.interface]] (" + known + ")");
         }
         sph::SphModel::WallDefinition::Friction friction{body, table.number("mu_static"), 0.0};
         friction.mu_kinetic = table.number_or("mu_kinetic", friction.mu_static);
@@ -114,18 +152,23 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
     std::vector<CoupledPart> parts;
     std::vector<sph::SphModel::WallDefinition> walls;
     const auto interfaces = coupling.array_of_tables("interface");
+    std::vector<char> coupled(static_cast<std::size_t>(fem->analysis().mesh().element_count()), 0);
     if (interfaces.empty()) {
         coupling.fail("interface", "expected at least one [[coupling.interface]] table");
     }
     for (const io::CaseTable& table : interfaces) {
         CoupledPart part;
         const int index = part_index(table, "part", names);
-        part.name = names[static_cast<std::size_t>(index)];
+        part.name = table.string_or("name", names[static_cast<std::size_t>(index)]);
         for (const sph::SphModel::WallDefinition& other : walls) {
             if (other.name == part.name) {
-                table.fail("part", "the part \"" + part.name + "\" is coupled twice");
+                table.fail(table.has("name") ? "name" : "part",
+                           "an interface called \"" + part.name +
+                               "\" already exists: expected one interface per part, or a "
+                               "`name` for each");
             }
         }
+        part.elements = interface_elements(table, fem->analysis().mesh(), index, coupled);
         ShellWallLayout layout;
         layout.side = table.choice("side", {"positive", "negative"}) == "positive"
                           ? ContactSide::positive
@@ -143,7 +186,6 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
         }
         layout.layers = static_cast<int>(layers);
         part.side = layout.side;
-        part.elements = fem->analysis().mesh().part_elements(index);
         part.wall = std::make_shared<ShellWall>(fem->analysis(), part.elements, layout);
         sph::SphModel::WallDefinition wall;
         wall.name = part.name;
@@ -161,7 +203,7 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
             parts.push_back(std::move(part));
         }
     }
-    read_friction(coupling, names, *sph, walls);
+    read_friction(coupling, *sph, walls);
     for (auto& wall : walls) {
         sph->add_wall(std::move(wall));
     }

@@ -37,8 +37,13 @@ inline constexpr std::array<io::KeySpec, 7> kCouplingKeys{{
 }};
 
 /// The keys of each [[coupling.interface]] table.
-inline constexpr std::array<io::KeySpec, 5> kInterfaceKeys{{
+inline constexpr std::array<io::KeySpec, 7> kInterfaceKeys{{
     {"part", "string", "", "a [[fem.shell]] part name"},
+    {"name", "string", "the part name",
+     "the interface's wall name (needed when a part has several interfaces)"},
+    {"element_sets", "list of strings", "the whole part",
+     "only these element sets of the part (Gmsh physical surfaces, *SET_SHELL_LIST); each "
+     "element in one interface at most"},
     {"side", "`positive` or `negative`", "",
      "the side of the part's element normals (right-hand rule of the node order) the sand is on"},
     {"spacing", "length", "the bodies' spacing", "wall particle spacing on the shell"},
@@ -51,8 +56,8 @@ inline constexpr std::array<io::KeySpec, 5> kInterfaceKeys{{
 }};
 
 /// A scene with [sph], [fem] and [coupling]: the bodies, the shell parts, one wall per
-/// [[coupling.interface]] on the shell (named after its part), friction from
-/// [[coupling.friction]] (body, part, mu_static, mu_kinetic), joined in one CoupledModel.
+/// [[coupling.interface]] on the shell (named after its part or its `name`), friction from
+/// [[coupling.friction]] (body, interface name as `part`, mu_static, mu_kinetic), joined in one CoupledModel.
 std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
                                                  const io::SceneSettings& scene,
                                                  const materials::MaterialLibrary& materials);

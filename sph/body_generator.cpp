@@ -114,6 +114,25 @@ void jitter_points(std::vector<Vec3>& points, double spacing, double fraction, s
     }
 }
 
+void cut_points(const io::CaseTable& shape, std::vector<Vec3>& points, int dimension) {
+    namespace dim = io::dimension;
+    for (const io::CaseTable& cut : shape.array_of_tables("cut")) {
+        const Vec3 point = cut.vector("point", dim::kLength);
+        Vec3 normal = cut.vector("normal", dim::kNone);
+        if (dimension == 2) {
+            normal.z() = 0.0;
+        }
+        if (!(normal.norm() > 0.0)) {
+            cut.fail("normal", "expected a non-zero normal (towards the particles kept)");
+        }
+        std::erase_if(points, [&](const Vec3& x) { return (x - point).dot(normal) < 0.0; });
+        if (points.empty()) {
+            cut.fail("normal", "the cut removes every particle of the shape: expected the "
+                               "normal to point towards the particles kept");
+        }
+    }
+}
+
 std::vector<Vec3> generate_body_points(const io::CaseTable& shape, double spacing, int dimension,
                                        double density) {
     namespace dim = io::dimension;
@@ -163,6 +182,7 @@ std::vector<Vec3> generate_body_points(const io::CaseTable& shape, double spacin
         shape.fail("type", "the shape holds no lattice cell centre: make it larger than the "
                            "spacing");
     }
+    cut_points(shape, points, dimension);
     if (shape.choice_or("lattice", {"regular", "jittered"}, "regular") == "jittered") {
         const double fraction = shape.number_or("jitter", 0.1);
         if (!(fraction >= 0.0 && fraction < 0.5)) {

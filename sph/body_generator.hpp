@@ -21,6 +21,11 @@ namespace grainload::sph {
 std::vector<Vec3> generate_body_points(const io::CaseTable& shape, double spacing, int dimension,
                                        double density);
 
+/// [[sph.body.shape.cut]] tables (point, normal): each keeps the points on the side its normal
+/// points to, (x - point) . normal >= 0, so a box cut by planes fills a convex polyhedron (the
+/// load of a hopper or wagon above its slope sheets).
+void cut_points(const io::CaseTable& shape, std::vector<Vec3>& points, int dimension);
+
 /// Points of a box [min, max] on a lattice whose cells have their centres inside the box.
 std::vector<Vec3> fill_box(const Vec3& min, const Vec3& max, double spacing, int dimension);
 
