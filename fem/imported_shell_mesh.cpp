@@ -31,8 +31,14 @@ ShellMesh read_gmsh_shell(const io::CaseTable& shell) {
         shell.has("geo") ? shell.resolved_path("file") : shell.file_path("file");
     if (shell.has("geo")) {
         const std::string geo = shell.file_path("geo");
+        std::vector<std::pair<std::string, double>> numbers;
+        if (const auto table = shell.optional_table("geo_numbers")) {
+            for (const std::string& name : table->keys()) {
+                numbers.emplace_back(name, table->number(name));
+            }
+        }
         try {
-            if (io::ensure_gmsh_mesh(geo, msh)) {
+            if (io::ensure_gmsh_mesh(geo, msh, numbers)) {
                 std::cerr << "grainload: meshed " << geo << " with gmsh into " << msh << '\n';
             }
         } catch (const std::invalid_argument& e) {

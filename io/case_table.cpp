@@ -2,6 +2,7 @@
 
 #include "io/units.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 #include <toml++/toml.h>
@@ -348,6 +349,22 @@ std::string CaseTable::choice_or(std::string_view key,
                                  std::initializer_list<std::string_view> allowed,
                                  std::string fallback) const {
     return has(key) ? choice(key, allowed) : fallback;
+}
+
+std::vector<std::string> CaseTable::keys() const {
+    std::vector<std::pair<toml::source_position, std::string>> found;
+    for (const auto& [key, node] : *table_) {
+        found.emplace_back(node.source().begin, std::string(key.str()));
+    }
+    std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) {
+        return a.first.line != b.first.line ? a.first.line < b.first.line
+                                            : a.first.column < b.first.column;
+    });
+    std::vector<std::string> names;
+    for (auto& entry : found) {
+        names.push_back(std::move(entry.second));
+    }
+    return names;
 }
 
 CaseTable CaseTable::table(std::string_view key) const {

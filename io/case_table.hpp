@@ -79,6 +79,8 @@ class CaseTable {
     std::string choice_or(std::string_view key, std::initializer_list<std::string_view> allowed,
                           std::string fallback) const;
 
+    /// The table's own keys, in file order (for tables whose keys are the user's names).
+    std::vector<std::string> keys() const;
     CaseTable table(std::string_view key) const;
     std::optional<CaseTable> optional_table(std::string_view key) const;
     /// [[key]] arrays of tables; empty when absent.

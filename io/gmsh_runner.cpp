@@ -7,6 +7,7 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <spawn.h>
 #include <stdexcept>
 #include <sys/wait.h>
@@ -77,7 +78,8 @@ bool gmsh_mesh_outdated(const std::string& geo, const std::string& msh) {
     return error || mesh_time < fs::last_write_time(geo);
 }
 
-bool ensure_gmsh_mesh(const std::string& geo, const std::string& msh) {
+bool ensure_gmsh_mesh(const std::string& geo, const std::string& msh,
+                      const std::vector<std::pair<std::string, double>>& numbers) {
     if (!gmsh_mesh_outdated(geo, msh)) {
         return false;
     }
@@ -86,8 +88,14 @@ bool ensure_gmsh_mesh(const std::string& geo, const std::string& msh) {
     const std::string temporary = msh + tag + ".msh";
     const std::string log = msh + tag + ".log";
     int spawn_error = 0;
-    const int status =
-        run_gmsh({"gmsh", geo, "-2", "-format", "msh41", "-o", temporary}, log, &spawn_error);
+    std::vector<std::string> args{"gmsh", geo, "-2", "-format", "msh41", "-o", temporary};
+    for (const auto& [name, value] : numbers) {
+        std::ostringstream text;
+        text.precision(17);
+        text << value;
+        args.insert(args.end(), {"-setnumber", name, text.str()});
+    }
+    const int status = run_gmsh(std::move(args), log, &spawn_error);
     const std::string complaint = gmsh_complaint(log);
     std::error_code ignored;
     fs::remove(log, ignored);

@@ -1,6 +1,8 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace grainload::io {
 
@@ -13,6 +15,9 @@ bool gmsh_mesh_outdated(const std::string& geo, const std::string& msh);
 /// file at once never sees half a mesh. Gmsh's own failure (its exit status, an "Error" line,
 /// no output) throws std::invalid_argument quoting Gmsh's error lines; so does a missing gmsh.
 /// Returns true when it meshed.
-bool ensure_gmsh_mesh(const std::string& geo, const std::string& msh);
+/// `numbers` are passed as `-setnumber NAME VALUE` (the script's DefineConstant values, such
+/// as a mesh size).
+bool ensure_gmsh_mesh(const std::string& geo, const std::string& msh,
+                      const std::vector<std::pair<std::string, double>>& numbers = {});
 
 } // namespace grainload::io

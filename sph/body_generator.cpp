@@ -125,7 +125,9 @@ void cut_points(const io::CaseTable& shape, std::vector<Vec3>& points, int dimen
         if (!(normal.norm() > 0.0)) {
             cut.fail("normal", "expected a non-zero normal (towards the particles kept)");
         }
-        std::erase_if(points, [&](const Vec3& x) { return (x - point).dot(normal) < 0.0; });
+        normal.normalize();
+        const double offset = cut.quantity_or("offset", dim::kLength, 0.0);
+        std::erase_if(points, [&](const Vec3& x) { return (x - point).dot(normal) < offset; });
         if (points.empty()) {
             cut.fail("normal", "the cut removes every particle of the shape: expected the "
                                "normal to point towards the particles kept");

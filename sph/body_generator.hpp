@@ -21,8 +21,8 @@ namespace grainload::sph {
 std::vector<Vec3> generate_body_points(const io::CaseTable& shape, double spacing, int dimension,
                                        double density);
 
-/// [[sph.body.shape.cut]] tables (point, normal): each keeps the points on the side its normal
-/// points to, (x - point) . normal >= 0, so a box cut by planes fills a convex polyhedron (the
+/// [[sph.body.shape.cut]] tables (point, normal, offset): each keeps the points on the side its
+/// normal points to, at least `offset` (default 0) from the plane, (x - point) . n >= offset, so a box cut by planes fills a convex polyhedron (the
 /// load of a hopper or wagon above its slope sheets).
 void cut_points(const io::CaseTable& shape, std::vector<Vec3>& points, int dimension);
 

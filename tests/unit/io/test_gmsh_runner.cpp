@@ -1,6 +1,7 @@
 #include "io/gmsh_file.hpp"
 #include "io/gmsh_runner.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -53,6 +54,28 @@ TEST(GmshRunner, MeshesWhenMissingOrOlderThanTheGeometry) {
     EXPECT_TRUE(ensure_gmsh_mesh(geo, msh));
     // Only the two files remain: the temporary mesh and Gmsh's log are gone.
     EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 2);
+}
+
+// The rectangle with its size a DefineConstant: -setnumber h 0.125 (geo_numbers) halves the
+// quadrangles' size, 8 x 4 of them, against 4 x 2 at the script's own 0.25.
+TEST(GmshRunner, NumbersOverrideTheScriptsConstants) {
+    const std::string dir = fresh_directory("numbers");
+    const std::string geo = dir + "/plate.geo";
+    std::string text = kRectangle;
+    for (std::size_t at = text.find("0.25}"); at != std::string::npos; at = text.find("0.25}")) {
+        text.replace(at, 4, "h");
+    }
+    std::ofstream(geo) << "DefineConstant[ h = {0.25, Name \"size\"} ];\n" << text;
+    auto quads = [](const std::string& msh) {
+        std::ifstream in(msh);
+        const GmshFile file = read_gmsh_file_content(in, msh);
+        return std::count_if(file.elements.begin(), file.elements.end(),
+                             [](const GmshElement& e) { return e.node_count == 4; });
+    };
+    ASSERT_TRUE(ensure_gmsh_mesh(geo, dir + "/own.msh"));
+    ASSERT_TRUE(ensure_gmsh_mesh(geo, dir + "/fine.msh", {{"h", 0.125}}));
+    EXPECT_EQ(quads(dir + "/own.msh"), 8);
+    EXPECT_EQ(quads(dir + "/fine.msh"), 32);
 }
 
 TEST(GmshRunner, GmshErrorsAreQuoted) {

@@ -145,6 +145,50 @@ jitter = 0.7
     EXPECT_THROW(generate_body_points(root.table("bad"), dx, 3, 1000.0), io::CaseError);
 }
 
+// A cube of n^3 cells cut by the plane x + y = L (normal (1, 1, 0), towards the kept side)
+// keeps the cells whose centres (i + 1/2, j + 1/2) s satisfy i + j + 1 >= n: n (n + 1) / 2 per
+// layer, counted here without the generator. With an offset of one cell diagonal, s sqrt(2),
+// the kept centres satisfy i + j + 1 >= n + 2: (n - 1)(n - 2) / 2 per layer. A cut that keeps
+// nothing, or has no normal, is an input error.
+TEST(BodyGenerator, ShapesCutByPlanesKeepTheSideTheNormalPointsTo) {
+    const auto document = io::CaseDocument::from_string(R"(
+[cut]
+type = "box"
+min = "0 0 0 m"
+max = "1 1 1 m"
+[[cut.cut]]
+point = "1 0 0 m"
+normal = "1 1 0"
+[offset]
+type = "box"
+min = "0 0 0 m"
+max = "1 1 1 m"
+[[offset.cut]]
+point = "1 0 0 m"
+normal = "1 1 0"
+offset = "0.141421356237309 m"
+[empty]
+type = "box"
+min = "0 0 0 m"
+max = "1 1 1 m"
+[[empty.cut]]
+point = "3 0 0 m"
+normal = "1 0 0"
+)",
+                                                        "cuts.toml");
+    auto root = document->root();
+    constexpr int n = 10;
+    const double s = 0.1;
+    const auto cut = generate_body_points(root.table("cut"), s, 3, 1000.0);
+    EXPECT_EQ(cut.size(), static_cast<std::size_t>(n * n * (n + 1) / 2));
+    for (const Vec3& x : cut) {
+        EXPECT_GE(x.x() + x.y(), 1.0);
+    }
+    const auto offset = generate_body_points(root.table("offset"), s, 3, 1000.0);
+    EXPECT_EQ(offset.size(), static_cast<std::size_t>(n * (n - 1) * (n - 2) / 2));
+    EXPECT_THROW(generate_body_points(root.table("empty"), s, 3, 1000.0), io::CaseError);
+}
+
 // A layer two particles thick is named with its axis and count; three across (the kernel
 // support of h = 1.3 dp filled from the middle row) passes; in plane strain z is not an axis.
 TEST(BodyGenerator, ThinBodiesAreWarnedAbout) {
