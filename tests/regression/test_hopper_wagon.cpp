@@ -84,6 +84,7 @@ TEST(HopperWagon, ExportedDeckMatchesTheGmshMesh) {
 std::map<std::string, double> part_areas() {
     const double a = 6.33, b = 1.5, z_top = 3.5, z_sill = 0.9, x_mid = 0.35, x_end = 5.78;
     const double z_hinge = 1.6, z_pivot = 1.0, y_bolster = 1.0, y_ridge = 0.2;
+    const double w_chord = 0.2, d_tie = 0.2; // top chord flange width, tie depth (four ties)
     const double alpha = 49.0 * std::numbers::pi / 180.0;
     const double t = std::tan(alpha), c = std::cos(alpha);
     const double d = a - x_end;            // end slope sheet, plan leg
@@ -98,6 +99,8 @@ std::map<std::string, double> part_areas() {
         {"side_wall", a * (z_top - z_sill) - t * (x_mid * x_mid + d * d) / 2 - door},
         {"end_wall", b * (z_top - z_sill) - t * (b * b - d * d) / 2 - t * d * d},
         {"bolster", (z_ridge - z_pivot) * y_bolster - t * y_bolster * y_bolster / 2},
+        {"top_chord", a * w_chord + w_chord * (b + w_chord)},
+        {"tie", 4 * b * d_tie},
     };
 }
 
@@ -138,7 +141,9 @@ void expect_reactions_equal_weight(const std::string& dir, const std::string& ca
                                                      {"end_slope_sheet", 6e-3},
                                                      {"ridge", 8e-3},
                                                      {"door", 6e-3},
-                                                     {"bolster", 12e-3}};
+                                                     {"bolster", 12e-3},
+                                                     {"top_chord", 10e-3},
+                                                     {"tie", 10e-3}};
     double weight = 0.0;
     for (const auto& [part, area] : part_areas()) {
         weight += 7850.0 * 9.81 * area * thickness.at(part);
