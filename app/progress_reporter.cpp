@@ -5,8 +5,8 @@
 
 namespace grainload::app {
 
-ProgressReporter::ProgressReporter(std::ostream& log, double end_time, long long points)
-    : log_(log), end_time_(end_time), points_(points), start_(Clock::now()), last_print_(start_) {}
+ProgressReporter::ProgressReporter(std::ostream& log, double end_time)
+    : log_(log), end_time_(end_time), start_(Clock::now()), last_print_(start_) {}
 
 double ProgressReporter::elapsed_seconds() const {
     return std::chrono::duration<double>(Clock::now() - start_).count();
@@ -17,10 +17,11 @@ void ProgressReporter::message(const std::string& text) {
     log_ << text << '\n' << std::flush;
 }
 
-void ProgressReporter::update(double t, long long step, double dt, bool force) {
+void ProgressReporter::update(double t, long long step, double dt, double point_steps,
+                              bool force) {
     if (start_time_ < 0.0) {
         start_time_ = t; // a restarted run measures its rate from where it resumed
-        start_step_ = step;
+        start_point_steps_ = point_steps;
     }
     const auto now = Clock::now();
     if (!force && now - last_print_ < std::chrono::seconds(1)) {
@@ -30,9 +31,7 @@ void ProgressReporter::update(double t, long long step, double dt, bool force) {
     const double elapsed = elapsed_seconds();
     const double done = (t - start_time_) / (end_time_ - start_time_);
     const double eta = done > 0.0 ? elapsed * (1.0 - done) / done : 0.0;
-    const double rate = elapsed > 0.0 ? static_cast<double>(points_) *
-                                            static_cast<double>(step - start_step_) / elapsed
-                                      : 0.0;
+    const double rate = elapsed > 0.0 ? (point_steps - start_point_steps_) / elapsed : 0.0;
     char line[200];
     std::snprintf(line, sizeof line,
                   "t = %.5g / %.5g s  step %lld  dt = %.3e s  ETA %.0f s  %.3e particle-steps/s", t,

@@ -10,9 +10,11 @@ namespace grainload::app {
 /// simulated time / end time, step, dt, ETA and particle-steps per second.
 class ProgressReporter {
   public:
-    ProgressReporter(std::ostream& log, double end_time, long long points);
+    ProgressReporter(std::ostream& log, double end_time);
 
-    void update(double t, long long step, double dt, bool force = false);
+    /// `point_steps`: the run's material point-steps so far (sub-steps of coupled windows
+    /// counted), for the particle-steps per second it prints.
+    void update(double t, long long step, double dt, double point_steps, bool force = false);
     /// A message for both stderr and the log.
     void message(const std::string& text);
     double elapsed_seconds() const;
@@ -21,11 +23,10 @@ class ProgressReporter {
     using Clock = std::chrono::steady_clock;
     std::ostream& log_;
     double end_time_;
-    long long points_;
     Clock::time_point start_;
     Clock::time_point last_print_;
     double start_time_ = -1.0;
-    long long start_step_ = 0;
+    double start_point_steps_ = 0.0;
 };
 
 } // namespace grainload::app

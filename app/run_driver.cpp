@@ -160,7 +160,7 @@ int run_case(const CommandLine& line) {
         clock = read_checkpoint(*scene, *line.restart);
         writer.set_history(clock.frame_times);
     }
-    ProgressReporter progress(log, scene->settings.end_time, scene->material_point_count());
+    ProgressReporter progress(log, scene->settings.end_time);
     progress.message("grainload " + std::string(kVersion) + " (" + kGitHash + "): case " +
                      scene->settings.name + ", " + std::to_string(scene->point_count()) +
                      " points, " + std::to_string(omp_get_max_threads()) + " threads, output " +
@@ -192,8 +192,12 @@ int run_case(const CommandLine& line) {
     while (clock.t < scene->settings.end_time - end_tolerance) {
         const double next_output = next_output_time();
         dt = std::min(stable_step(*scene), next_output - clock.t);
-        clock.material_point_steps += static_cast<double>(scene->material_point_count());
+        const auto points = static_cast<double>(scene->material_point_count());
+        const long long inner_before = scene->inner_steps();
         std::optional<std::string> failure = advance(*scene, clock.t, dt);
+        // A coupled window holds many SPH steps: count those, not the window.
+        const long long inner = scene->inner_steps() - inner_before;
+        clock.material_point_steps += points * static_cast<double>(inner > 0 ? inner : 1);
         clock.t += dt;
         ++clock.step;
         for (const auto& stepper : scene->steppers) {
@@ -209,9 +213,9 @@ int run_case(const CommandLine& line) {
             clock.t = next_output;
             write_output();
         }
-        progress.update(clock.t, clock.step, dt);
+        progress.update(clock.t, clock.step, dt, clock.material_point_steps);
     }
-    progress.update(clock.t, clock.step, dt, true);
+    progress.update(clock.t, clock.step, dt, clock.material_point_steps, true);
     auto summary = make_summary(*scene, line, clock, progress.elapsed_seconds());
     attach(summary, estimate);
     io::write_run_summary(summary, out + "/summary.json");

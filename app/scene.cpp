@@ -54,6 +54,14 @@ Index material_particles(const sph::SphModel& model) {
 
 } // namespace
 
+long long Scene::inner_steps() const {
+    long long sum = 0;
+    for (const auto& stepper : steppers) {
+        sum += stepper->inner_steps();
+    }
+    return sum;
+}
+
 Index Scene::material_point_count() const {
     // io::Stepper counts all its points; the SPH models' are looked into here.
     Index count = 0;

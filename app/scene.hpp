@@ -26,6 +26,8 @@ struct Scene {
     Index point_count() const;
     /// point_count() less the wall particles: what particle-steps per second count.
     Index material_point_count() const;
+    /// The steppers' inner steps so far (io::Stepper::inner_steps).
+    long long inner_steps() const;
 };
 
 } // namespace grainload::app

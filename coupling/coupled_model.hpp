@@ -61,6 +61,7 @@ class CoupledModel final : public io::Stepper {
     double stable_time_step() const override;
     void advance(double t, double dt) override;
     Index point_count() const override { return sph_->point_count() + fem_->point_count(); }
+    long long inner_steps() const override { return monitor_.subcycles(); }
     std::optional<std::string> diagnose() const override;
     void append_blocks(io::Frame& frame) const override;
     void append_results(double t, std::vector<io::ResultFigure>& results) const override;

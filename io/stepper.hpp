@@ -23,6 +23,10 @@ class Stepper {
     virtual void advance(double t, double dt) = 0;
     /// Number of computational points (particles, nodes) for particle-steps per second.
     virtual Index point_count() const = 0;
+    /// Steps its own integrator has taken so far when they are not the driver's (a coupled
+    /// model's SPH sub-steps of every window and pass): particle-steps per second count those.
+    /// 0 by default: the module steps with the driver.
+    virtual long long inner_steps() const { return 0; }
     /// std::nullopt when every field is finite and bounded; otherwise a diagnosis naming the
     /// particle/element and quantity ("particle 812 (body sand): velocity is NaN").
     virtual std::optional<std::string> diagnose() const = 0;

@@ -38,6 +38,14 @@ inline double result_value(const std::string& summary, const std::string& name) 
     return match.empty() ? std::nan("") : std::stod(match[1]);
 }
 
+/// A top-level number of a summary.json text ("wall_time_s", "material_points", ...).
+inline double summary_number(const std::string& summary, const std::string& name) {
+    const std::regex pattern("\"" + name + "\": ([-+0-9.eE]+)");
+    std::smatch match;
+    EXPECT_TRUE(std::regex_search(summary, match, pattern)) << name << " missing";
+    return match.empty() ? std::nan("") : std::stod(match[1]);
+}
+
 /// The restart check's two runs of `case_file`: to `end_time` in one go into `<base>_whole`, and
 /// stopped at `stop_time`, then continued from its checkpoint to `end_time`, into `<base>_split`.
 /// Returns the output of the first run that failed, empty when all three exited with 0.
