@@ -13,7 +13,27 @@ CaseTable::CaseTable(CaseDocument* document, const toml::table* table, std::stri
     : document_(document), table_(table), path_(std::move(path)) {}
 
 bool CaseTable::has(std::string_view key) const {
-    return table_->contains(key);
+    return (overlay_ != nullptr && overlay_->contains(key)) || table_->contains(key);
+}
+
+CaseTable CaseTable::with_sub_table(std::string_view key) const {
+    const toml::node* node = table_->get(key);
+    if (node == nullptr) {
+        return *this;
+    }
+    if (!node->is_table()) {
+        fail_at(node, key, "expected a table [" + key_path(key) + "] of the model's own keys");
+    }
+    document_->mark_used(node);
+    CaseTable view = *this;
+    view.overlay_ = node->as_table();
+    for (const auto& [name, value] : *view.overlay_) {
+        if (table_->contains(name.str())) {
+            fail_at(&value, std::string(key) + "." + std::string(name.str()),
+                    "given both here and in the table above: expected it once");
+        }
+    }
+    return view;
 }
 
 std::string CaseTable::key_path(std::string_view key) const {
@@ -28,7 +48,8 @@ int CaseTable::spatial_dimension() const {
 }
 
 const toml::node* CaseTable::lookup(std::string_view key) const {
-    const toml::node* node = table_->get(key);
+    const toml::node* node = overlay_ != nullptr ? overlay_->get(key) : nullptr;
+    node = node != nullptr ? node : table_->get(key);
     if (node != nullptr) {
         document_->mark_used(node);
     }
@@ -44,7 +65,9 @@ const toml::node& CaseTable::require(std::string_view key) const {
 }
 
 void CaseTable::fail(std::string_view key, std::string_view message) const {
-    const toml::node* node = key.empty() ? nullptr : table_->get(key);
+    const toml::node* node =
+        key.empty() ? nullptr : (overlay_ != nullptr ? overlay_->get(key) : nullptr);
+    node = node != nullptr || key.empty() ? node : table_->get(key);
     fail_at(node != nullptr ? node : table_, key, message);
 }
 

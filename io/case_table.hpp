@@ -81,6 +81,11 @@ class CaseTable {
 
     /// The table's own keys, in file order (for tables whose keys are the user's names).
     std::vector<std::string> keys() const;
+    /// This table seen through its sub-table `key` when it has one (keys are looked up in the
+    /// sub-table first, then here): a material's keys of one model in [material.MODEL], so
+    /// that `--set material[0].model=...` switches between models whose own keys differ. A key
+    /// given both there and here is an error. Without the sub-table: this table.
+    CaseTable with_sub_table(std::string_view key) const;
     CaseTable table(std::string_view key) const;
     std::optional<CaseTable> optional_table(std::string_view key) const;
     /// [[key]] arrays of tables; empty when absent.
@@ -101,6 +106,7 @@ class CaseTable {
 
     CaseDocument* document_;
     const toml::table* table_;
+    const toml::table* overlay_ = nullptr; ///< with_sub_table(): looked up before table_
     std::string path_;
 };
 

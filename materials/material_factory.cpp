@@ -7,14 +7,16 @@
 #include "materials/lsdyna_material.hpp"
 #include "materials/von_mises.hpp"
 
+#include <array>
+
 namespace grainload::materials {
 
-std::unique_ptr<Material> make_material(const io::CaseTable& table) {
-    if (table.has("from_lsdyna")) {
-        return material_from_lsdyna(table);
-    }
-    const std::string model =
-        table.choice("model", {"linear_elastic", "von_mises", "drucker_prager", "generalized_cap"});
+namespace {
+
+constexpr std::array<std::string_view, 4> kModels{"linear_elastic", "von_mises", "drucker_prager",
+                                                  "generalized_cap"};
+
+std::unique_ptr<Material> build(const io::CaseTable& table, std::string_view model) {
     if (model == "linear_elastic") {
         return LinearElastic::from_case(table);
     }
@@ -24,10 +26,25 @@ std::unique_ptr<Material> make_material(const io::CaseTable& table) {
     if (model == "drucker_prager") {
         return DruckerPrager::from_case(table);
     }
-    if (model == "generalized_cap") {
-        return GeneralizedCap::from_case(table);
+    return GeneralizedCap::from_case(table);
+}
+
+} // namespace
+
+std::unique_ptr<Material> make_material(const io::CaseTable& table) {
+    if (table.has("from_lsdyna")) {
+        return material_from_lsdyna(table);
     }
-    table.fail("model", "unknown material model");
+    const std::string model =
+        table.choice("model", {kModels[0], kModels[1], kModels[2], kModels[3]});
+    // The other models' sub-tables are built too, and dropped: a mistake in the keys of a
+    // model the case can be switched to is reported now, not when it is switched.
+    for (const std::string_view other : kModels) {
+        if (other != model && table.has(other)) {
+            (void)build(table.with_sub_table(other), other);
+        }
+    }
+    return build(table.with_sub_table(model), model);
 }
 
 } // namespace grainload::materials

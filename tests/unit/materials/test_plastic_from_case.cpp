@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <numbers>
 #include <string>
+#include <vector>
 
 namespace grainload::materials {
 namespace {
@@ -78,6 +79,60 @@ TEST(PlasticFromCase, DruckerPragerRefusesMixedFormsAndCutoffBeyondApex) {
     EXPECT_THROW(build(base + "friction_angle = \"30 deg\"\ncohesion = \"1 kPa\"\n"
                               "dilatancy_angle = \"0 deg\"\ncone_fit = \"outer\"\n"),
                  io::CaseError);
+}
+
+// One material, two models' keys in [material.MODEL] sub-tables: `model` picks one, and
+// --set switches it (issue 18, section 3). The other sub-table is checked too, a key given
+// both in a sub-table and above it is an error, and nothing is left unread.
+constexpr const char* kSwitchable = R"([[material]]
+model = "generalized_cap"
+density = "2099 kg/m^3"
+bulk_modulus = "30.62 MPa"
+shear_modulus = "8.23 MPa"
+[material.drucker_prager]
+dp_k = "0.03858 MPa"
+dp_theta = 0.03
+[material.generalized_cap]
+cap_k = "0.03858 MPa"
+cap_theta = 0.03
+cap_gamma = "0.03858 MPa"
+cap_beta = "9.0 1/MPa"
+cap_D = "7.25 1/MPa"
+cap_W = 0.18
+cap_X0 = "0 MPa"
+cap_R = 2.0
+)";
+
+std::unique_ptr<Material> build_document(const std::string& text,
+                                         const std::vector<std::string>& sets = {}) {
+    const auto document = io::CaseDocument::from_string(text, "case.toml");
+    for (const std::string& assignment : sets) {
+        document->set(assignment);
+    }
+    auto material = make_material(document->root().array_of_tables("material").front());
+    document->reject_unknown_keys();
+    return material;
+}
+
+TEST(PlasticFromCase, ModelSubTablesLetSetSwitchTheModel) {
+    const auto cap = build_document(kSwitchable);
+    EXPECT_EQ(cap->model(), "generalized_cap");
+    EXPECT_DOUBLE_EQ(cap->density(), 2099.0);
+    const auto dp = build_document(kSwitchable, {"material[0].model=\"drucker_prager\""});
+    ASSERT_EQ(dp->model(), "drucker_prager");
+    const auto& p = dynamic_cast<const DruckerPrager&>(*dp).parameters();
+    EXPECT_DOUBLE_EQ(p.k, 0.03858e6); // the sub-table's key
+    EXPECT_DOUBLE_EQ(p.alpha, 0.03);
+    EXPECT_DOUBLE_EQ(dp->density(), 2099.0); // the shared key above it
+    // A mistake in the model not chosen is still reported.
+    std::string typo = kSwitchable;
+    typo.replace(typo.find("dp_theta"), 8, "dp_thetta");
+    EXPECT_THROW(build_document(typo), io::CaseError);
+    // A key both in a sub-table and above it.
+    std::string twice = kSwitchable;
+    twice.replace(twice.find("[material.drucker_prager]"), 25,
+                  "[material.drucker_prager]\ndensity = \"2000 kg/m^3\"");
+    EXPECT_THROW(build_document(twice), io::CaseError);
 }
 
 TEST(PlasticFromCase, StiffnessScaleScalesTheModuliAndNothingElse) {
