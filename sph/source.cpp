@@ -1,6 +1,7 @@
 #include "sph/source.hpp"
 
 #include "io/case_table.hpp"
+#include "sph/body_generator.hpp"
 #include "sph/sph_case_reader.hpp"
 
 #include <algorithm>
@@ -27,7 +28,7 @@ io::Dimension mass_rate_dimension(int dimension) {
 
 SourceSet::SourceSet(const io::CaseTable& sph, const std::vector<std::string>& body_names,
                      const std::vector<int>& body_material, const std::vector<double>& body_density,
-                     double spacing, int dimension)
+                     double spacing, int dimension, const Vec3& gravity)
     : spacing_(spacing), dimension_(dimension) {
     for (const auto& table : sph.array_of_tables("source")) {
         Source source;
@@ -41,16 +42,42 @@ SourceSet::SourceSet(const io::CaseTable& sph, const std::vector<std::string>& b
         const auto b = static_cast<std::size_t>(source.body);
         source.material = body_material[b];
         source.particle_mass = body_density[b] * std::pow(spacing, dimension);
-        const Vec3 lower = table.vector("min", dim::kLength);
-        const Vec3 upper = table.vector("max", dim::kLength);
-        for (int a = 0; a < dimension; ++a) {
-            if (!(upper[a] - lower[a] >= spacing)) {
-                table.fail("max", "expected max above min by at least the body's spacing (" +
-                                      std::to_string(spacing) + " m) in every direction");
+        if (table.has("shape")) {
+            if (table.has("min") || table.has("max")) {
+                table.fail(table.has("min") ? "min" : "max",
+                           "expected either min and max (a box) or a [sph.source.shape] table");
             }
+            source.sites = generate_body_points(table.table("shape"), spacing, dimension,
+                                                body_density[b]);
+            Vec3 lower = source.sites.front(), upper = lower;
+            for (const Vec3& x : source.sites) {
+                lower = lower.cwiseMin(x);
+                upper = upper.cwiseMax(x);
+            }
+            // The sites' box, grown by half a spacing: the cells they stand for.
+            const Vec3 half = Vec3::Constant(0.5 * spacing);
+            source.region = io::Region::box(lower - half, upper + half, dimension);
+        } else {
+            const Vec3 lower = table.vector("min", dim::kLength);
+            const Vec3 upper = table.vector("max", dim::kLength);
+            for (int a = 0; a < dimension; ++a) {
+                if (!(upper[a] - lower[a] >= spacing)) {
+                    table.fail("max", "expected max above min by at least the body's spacing (" +
+                                          std::to_string(spacing) + " m) in every direction");
+                }
+            }
+            source.region = io::Region::box(lower, upper, dimension);
+            source.sites = lattice(source.region, spacing, dimension);
         }
-        source.region = io::Region::box(lower, upper, dimension);
-        source.sites = lattice(source.region, spacing, dimension);
+        // Lowest sites first (against gravity), so that a source as tall as the fill creates
+        // its particles row by row from the bottom up; the order within a row is the lattice's.
+        if (gravity.squaredNorm() > 0.0) {
+            const Vec3 up = -gravity.normalized();
+            std::stable_sort(source.sites.begin(), source.sites.end(),
+                             [&](const Vec3& p, const Vec3& q) {
+                                 return p.dot(up) < q.dot(up) - 1e-9 * spacing;
+                             });
+        }
         source.mass_rate = table.positive_quantity("mass_rate", mass_rate_dimension(dimension));
         source.start = table.quantity_or("start", dim::kTime, 0.0);
         if (table.has("end")) {

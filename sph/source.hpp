@@ -16,11 +16,12 @@ class CaseTable;
 namespace grainload::sph {
 
 /// The keys of each [[sph.source]] table (docs/user-guide/sph.md, "Sources").
-inline constexpr std::array<io::KeySpec, 8> kSourceKeys{{
+inline constexpr std::array<io::KeySpec, 9> kSourceKeys{{
     {"name", "string", "", "names the source in log.txt and summary.json"},
     {"body", "string", "", "the [[sph.body]] whose particles (material, spacing) it creates"},
     {"min", "length vector", "", "the lower corner of the box the particles are created in"},
     {"max", "length vector", "", "the box's upper corner, above min by a spacing on every axis"},
+    {"shape", "table", "", "instead of min and max: any [sph.body.shape] (cylinder, cone, mesh, cuts)"},
     {"mass_rate", "mass rate", "", "kg/s created (in plane strain per metre of depth, kg/(m s))"},
     {"start", "time", "0 s", "creation starts"},
     {"end", "time", "never", "creation ends"},
@@ -65,10 +66,12 @@ class SourceSet {
 
     SourceSet() = default;
     /// The [[sph.source]] tables of `sph`. `body_material[b]` and `body_density[b]` describe
-    /// body b; every body has `spacing`.
+    /// body b; every body has `spacing`. A source's region is its box (min, max) or any body
+    /// shape ([sph.source.shape]: a cylinder for a silo); its sites are taken lowest first
+    /// against `gravity`.
     SourceSet(const io::CaseTable& sph, const std::vector<std::string>& body_names,
               const std::vector<int>& body_material, const std::vector<double>& body_density,
-              double spacing, int dimension);
+              double spacing, int dimension, const Vec3& gravity);
     SourceSet(std::vector<Source> sources, double spacing)
         : sources_(std::move(sources)), spacing_(spacing) {}
 
