@@ -311,16 +311,6 @@ void ShellModel::append_element_fields(io::Block& block, const std::vector<Index
 }
 
 void ShellModel::append_results(double, std::vector<io::ResultFigure>& results) const {
-    // Every support's force on the structure, each node once: the parts' reactions on node sets
-    // count a seam node shared by two parts in both.
-    Vec3 total = Vec3::Zero();
-    for (Eigen::Index n = 0; n + 5 < reactions_.size(); n += 6) {
-        total += reactions_.segment<3>(n);
-    }
-    for (int a = 0; a < 3; ++a) {
-        results.push_back({"support_reaction_" + std::string(1, static_cast<char>('x' + a)),
-                           total[a], "N", std::nullopt, "all supports, each node once"});
-    }
     for (const ShellReaction& r : support_reactions_) {
         Vec3 sum = Vec3::Zero();
         for (const Index n : r.nodes) {
@@ -358,6 +348,16 @@ void ShellModel::append_results(double, std::vector<io::ResultFigure>& results) 
             results.push_back({"fem_steps_solved_by_" + solver_identifier(solver),
                                static_cast<double>(steps), "", std::nullopt, solver});
         }
+    }
+    // Every support's force on the structure, each node once: the parts' reactions on node sets
+    // count a seam node shared by two parts in both.
+    Vec3 total = Vec3::Zero();
+    for (Eigen::Index n = 0; n + 5 < reactions_.size(); n += 6) {
+        total += reactions_.segment<3>(n);
+    }
+    for (int a = 0; a < 3; ++a) {
+        results.push_back({"support_reaction_" + std::string(1, static_cast<char>('x' + a)),
+                           total[a], "N", std::nullopt, "all supports, each node once"});
     }
 }
 
