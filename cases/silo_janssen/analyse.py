@@ -45,6 +45,28 @@ def array(block, name):
     return vtk_to_numpy(block.GetPointData().GetArray(name))
 
 
+def hoop_force_table(shells):
+    """Membrane theory of a cylinder under wall pressure: the hoop force N_theta = p_h R (the
+    elements' first membrane axis runs along the hoop), and the axial force at the base carries
+    the wall's friction load: N_y = -F_wall / (2 pi R)."""
+    print(" y m   N_theta N/m  p_h R N/m  N_y N/m")
+    centres, hoop, axial, pressure = [], [], [], []
+    for shell in shells:
+        filt = vtk.vtkCellCenters()
+        filt.SetInputData(shell)
+        filt.Update()
+        centres.append(vtk_to_numpy(filt.GetOutput().GetPoints().GetData())[:, 1])
+        membrane = vtk_to_numpy(shell.GetCellData().GetArray("membrane_force"))
+        hoop.append(membrane[:, 0])
+        axial.append(membrane[:, 1])
+        pressure.append(vtk_to_numpy(shell.GetCellData().GetArray("contact_pressure")))
+    y, hoop, axial, pressure = (np.concatenate(a) for a in (centres, hoop, axial, pressure))
+    for y0 in np.arange(0.0, y.max(), BIN):
+        inside = (y >= y0) & (y < y0 + BIN)
+        print(f"{y0 + BIN / 2:5.3f} {hoop[inside].mean():10.2f} {pressure[inside].mean() * R:10.2f} "
+              f"{axial[inside].mean():8.2f}")
+
+
 def main(out):
     sand, shells = last_frame(out)
     x = vtk_to_numpy(sand.GetPoints().GetData())
@@ -83,6 +105,7 @@ def main(out):
     y = np.array([r[0] for r in rows])
     depth = top - y
     janssen_pv = gamma * z0 * (1 - np.exp(-depth / z0))
+    hoop_force_table(shells)
     plt.figure(figsize=(5, 4))
     plt.plot([r[1] for r in rows], y, "o", label="sand p_v (run)")
     plt.plot(janssen_pv, y, "-", label=f"Janssen p_v, K = {k:.2f}, μ = {mu:.2f}")
