@@ -17,8 +17,7 @@ void ProgressReporter::message(const std::string& text) {
     log_ << text << '\n' << std::flush;
 }
 
-void ProgressReporter::update(double t, long long step, double dt, double point_steps,
-                              bool force) {
+void ProgressReporter::update(double t, long long step, double dt, double point_steps, bool force) {
     if (start_time_ < 0.0) {
         start_time_ = t; // a restarted run measures its rate from where it resumed
         start_point_steps_ = point_steps;

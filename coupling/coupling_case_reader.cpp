@@ -77,8 +77,8 @@ std::vector<Index> interface_elements(const io::CaseTable& table, const fem::She
                 for (const auto& entry : mesh.element_sets()) {
                     known += (known.empty() ? "\"" : ", \"") + entry.first + "\"";
                 }
-                table.fail("element_sets", "no element set \"" + set + "\" in the mesh (" +
-                                               known + ")");
+                table.fail("element_sets",
+                           "no element set \"" + set + "\" in the mesh (" + known + ")");
             }
             for (const Index e : mesh.element_set(set)) {
                 chosen[static_cast<std::size_t>(e)] = 1;

@@ -57,7 +57,8 @@ inline constexpr std::array<io::KeySpec, 7> kInterfaceKeys{{
 
 /// A scene with [sph], [fem] and [coupling]: the bodies, the shell parts, one wall per
 /// [[coupling.interface]] on the shell (named after its part or its `name`), friction from
-/// [[coupling.friction]] (body, interface name as `part`, mu_static, mu_kinetic), joined in one CoupledModel.
+/// [[coupling.friction]] (body, interface name as `part`, mu_static, mu_kinetic), joined in one
+/// CoupledModel.
 std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
                                                  const io::SceneSettings& scene,
                                                  const materials::MaterialLibrary& materials);

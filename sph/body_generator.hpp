@@ -22,8 +22,9 @@ std::vector<Vec3> generate_body_points(const io::CaseTable& shape, double spacin
                                        double density);
 
 /// [[sph.body.shape.cut]] tables (point, normal, offset): each keeps the points on the side its
-/// normal points to, at least `offset` (default 0) from the plane, (x - point) . n >= offset, so a box cut by planes fills a convex polyhedron (the
-/// load of a hopper or wagon above its slope sheets).
+/// normal points to, at least `offset` (default 0) from the plane, (x - point) . n >= offset, so a
+/// box cut by planes fills a convex polyhedron (the load of a hopper or wagon above its slope
+/// sheets).
 void cut_points(const io::CaseTable& shape, std::vector<Vec3>& points, int dimension);
 
 /// Points of a box [min, max] on a lattice whose cells have their centres inside the box.

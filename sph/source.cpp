@@ -47,8 +47,8 @@ SourceSet::SourceSet(const io::CaseTable& sph, const std::vector<std::string>& b
                 table.fail(table.has("min") ? "min" : "max",
                            "expected either min and max (a box) or a [sph.source.shape] table");
             }
-            source.sites = generate_body_points(table.table("shape"), spacing, dimension,
-                                                body_density[b]);
+            source.sites =
+                generate_body_points(table.table("shape"), spacing, dimension, body_density[b]);
             Vec3 lower = source.sites.front(), upper = lower;
             for (const Vec3& x : source.sites) {
                 lower = lower.cwiseMin(x);

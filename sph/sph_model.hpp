@@ -179,7 +179,7 @@ class SphModel final : public io::Stepper {
     std::optional<SettleWatch> settle_;
     std::vector<std::string> events_;
     bool per_window_ = false; ///< exchange_particles_per_window() was called
-    bool audit_ = false; ///< a sink, remove_at or a source: the mass audit and energy books
+    bool audit_ = false;      ///< a sink, remove_at or a source: the mass audit and energy books
     /// The materials of the particles as the case built them, for describe_model (particles,
     /// and with them a material, may leave through a sink).
     std::vector<int> built_materials_;

@@ -20,8 +20,7 @@ void SphModel::build_sources(const io::CaseTable& sph) {
     for (const int material : body_material_) {
         density.push_back((*materials_)[material].density());
     }
-    sources_ =
-        SourceSet(sph, body_names_, body_material_, density, spacing_, dimension_, gravity_);
+    sources_ = SourceSet(sph, body_names_, body_material_, density, spacing_, dimension_, gravity_);
 }
 
 void SphModel::create_arrivals(double t, double dt) {

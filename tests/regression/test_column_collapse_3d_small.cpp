@@ -97,13 +97,12 @@ TEST(ColumnCollapse3dSmall, InTheContainerNoParticleLeavesIt) {
 // model that ran, and every particle is accounted for. (The physics of the switch is in
 // docs/validation/column_collapse.md: the cone holds the column far higher than the cap.)
 TEST(ColumnCollapse3dSmall, TheMaterialModelSwitchesFromTheCommandLine) {
-    const CaseRun run = run_case_file("cases/column_collapse/column_collapse_small.toml",
-                                      "column_collapse_small_dp",
-                                      "--set 'material[0].model=\"drucker_prager\"'");
+    const CaseRun run =
+        run_case_file("cases/column_collapse/column_collapse_small.toml",
+                      "column_collapse_small_dp", "--set 'material[0].model=\"drucker_prager\"'");
     ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
     const std::string summary = read_file(run.out + "/summary.json");
-    EXPECT_NE(summary.find("\"material sand\": \"drucker_prager\""), std::string::npos)
-        << summary;
+    EXPECT_NE(summary.find("\"material sand\": \"drucker_prager\""), std::string::npos) << summary;
     EXPECT_EQ(result_value(summary, "heap_particles") +
                   result_value(summary, "heap_particles_outside"),
               kParticles);

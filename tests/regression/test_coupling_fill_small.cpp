@@ -9,10 +9,10 @@ namespace {
 // cases/sand_on_plate/sand_fill_plate_small.toml: a coupled tray filled by a source while a
 // spilled row falls into a sink. Particles of 1600 kg/m^3 x (20 mm)^3.
 constexpr const char* kCase = "cases/sand_on_plate/sand_fill_plate_small.toml";
-constexpr double kParticleMass = 0.0128;      // kg
-constexpr double kGravity = 9.81;             // m/s^2
-constexpr double kTrayMass = 2000 * 0.0128;   // the first layer and the four created
-constexpr double kSpillMass = 20 * 0.0128;    // the row below the plate
+constexpr double kParticleMass = 0.0128;          // kg
+constexpr double kGravity = 9.81;                 // m/s^2
+constexpr double kTrayMass = 2000 * 0.0128;       // the first layer and the four created
+constexpr double kSpillMass = 20 * 0.0128;        // the row below the plate
 constexpr double kAuditRoundOff = 2100 * 2.2e-16; // sums of about 2000 equal masses
 
 // The source owes 102.4 kg/s over its 0.2 s, exactly 1600 particles, and every site is free
@@ -54,8 +54,9 @@ TEST(CouplingFillSmall, ATrayFilledByASourceCarriesWhatTheSourceCreated) {
 // created minus the discharged, counted in particles (a pass that created twice would add
 // a row).
 TEST(CouplingFillSmall, IteratedWindowsCreateAndRemoveEachParticleOnce) {
-    const CaseRun run = run_case_file(kCase, "sand_fill_plate_iterated",
-                                      "--set coupling.max_iterations=4 --set 'case.end_time=0.3 s'");
+    const CaseRun run =
+        run_case_file(kCase, "sand_fill_plate_iterated",
+                      "--set coupling.max_iterations=4 --set 'case.end_time=0.3 s'");
     ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
     const std::string summary = read_file(run.out + "/summary.json");
     EXPECT_LT(std::abs(result_value(summary, "mass_audit_error")), kAuditRoundOff);

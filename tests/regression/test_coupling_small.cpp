@@ -87,8 +87,8 @@ TEST(CouplingSmall, SandLayerOnAPlateWeighsOnItAndBendsItLikeAUniformLoad) {
     // count is constant here), to the printed digits (12).
     const double point_steps = summary_number(summary, "particle_steps_per_second") *
                                summary_number(summary, "wall_time_s");
-    const double expected = summary_number(summary, "material_points") *
-                            result_value(summary, "coupling_sph_steps");
+    const double expected =
+        summary_number(summary, "material_points") * result_value(summary, "coupling_sph_steps");
     EXPECT_NEAR(point_steps, expected, 1e-9 * expected);
 }
 

@@ -34,8 +34,9 @@ TEST(ModelHints, ACapAtTheOriginIsReachedAndSaysSo) {
 // transients), four orders of magnitude below the cap, so no particle can compact on it and the
 // hint must offer Drucker-Prager.
 TEST(ModelHints, ACapFarAboveTheStressesIsNeverReachedAndSaysSo) {
-    const CaseRun run = run_case_file(kCase, "hints_cap_unreached",
-                                      std::string(kShort) + " --set 'material[0].generalized_cap.cap_X0=10 MPa'");
+    const CaseRun run =
+        run_case_file(kCase, "hints_cap_unreached",
+                      std::string(kShort) + " --set 'material[0].generalized_cap.cap_X0=10 MPa'");
     ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
     const std::string summary = read_file(run.out + "/summary.json");
     EXPECT_NE(summary.find("none of its 325 particles compacted on the cap; a drucker_prager "

@@ -30,11 +30,12 @@ double janssen_wall_share(double k, double height, double diameter) {
 // particles stand off the wall by the contact potential's reach (2h = 65 mm), so its diameter
 // lies between the sand's, 0.225 m, and the wall's, 0.30 m; K between Rankine's active
 // (1 - sin phi) / (1 + sin phi) and EN 1991-4's 1.1 (1 - sin phi). The bracket of Janssen's
-// share over those is [0.29, 0.50] (measured 0.345). The column placed and dropped (silo_janssen_small.toml)
-// ended with the wall pushing the sand down (a negative share); filled, it must lie inside.
+// share over those is [0.29, 0.50] (measured 0.345). The column placed and dropped
+// (silo_janssen_small.toml) ended with the wall pushing the sand down (a negative share); filled,
+// it must lie inside.
 TEST(SiloJanssenFillSmall, FilledRowByRowTheWallCarriesJanssensShare) {
-    const CaseRun run = run_case_file("cases/silo_janssen/silo_janssen_fill_small.toml",
-                                      "silo_janssen_fill_small");
+    const CaseRun run =
+        run_case_file("cases/silo_janssen/silo_janssen_fill_small.toml", "silo_janssen_fill_small");
     ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
     const std::string summary = read_file(run.out + "/summary.json");
     EXPECT_LT(std::abs(result_value(summary, "mass_audit_error")), 1e-13);
@@ -43,8 +44,8 @@ TEST(SiloJanssenFillSmall, FilledRowByRowTheWallCarriesJanssensShare) {
     const double floor = -result_value(summary, "wall_floor_force_y");
     const double wall = result_value(summary, "support_reaction_y");
     const double share = wall / weight;
-    const double rows = result_value(summary, "scene_mass") /
-                        (kDensity * std::pow(kSpacing, 3)) / 52.0; // 52 particles per row
+    const double rows = result_value(summary, "scene_mass") / (kDensity * std::pow(kSpacing, 3)) /
+                        52.0; // 52 particles per row
     const double height = rows * kSpacing;
     const double k_active = (1.0 - kSinPhi) / (1.0 + kSinPhi);
     const double k_en = 1.1 * (1.0 - kSinPhi);
