@@ -6,6 +6,7 @@
 #include "app/scene.hpp"
 #include "io/atomic_file.hpp"
 #include "io/run_summary.hpp"
+#include "io/step_collapse.hpp"
 #include "io/version.hpp"
 #include "io/vtk_frame_writer.hpp"
 
@@ -189,9 +190,15 @@ int run_case(const CommandLine& line) {
                                                                   : scene->settings.end_time;
     };
     double dt = 0.0;
+    io::StepCollapseWatch step_watch;
     while (clock.t < scene->settings.end_time - end_tolerance) {
         const double next_output = next_output_time();
-        dt = std::min(stable_step(*scene), next_output - clock.t);
+        const double stable = stable_step(*scene);
+        if (auto collapse = step_watch.record(stable, clock.t)) {
+            return stop_unstable(*scene, line, clock, *collapse, writer.last_frame_path(),
+                                 estimate, progress);
+        }
+        dt = std::min(stable, next_output - clock.t);
         const auto points = static_cast<double>(scene->material_point_count());
         const long long inner_before = scene->inner_steps();
         std::optional<std::string> failure = advance(*scene, clock.t, dt);

@@ -103,6 +103,10 @@ int CoupledModel::subcycle(double t, double dt, WindowRecord& record) {
     int steps = 0;
     while (time < end) {
         const double limit = sph_->stable_time_step();
+        if (auto collapse = step_watch_.record(limit, time)) {
+            collapse_ = "sph, within a coupling window: " + *collapse;
+            break; // the window stays unfinished: the watchdog stops the run after it
+        }
         const double remaining = end - time;
         const auto n = static_cast<long long>(std::ceil(remaining / limit * (1.0 - 1e-12)));
         const double step = n <= 1 ? remaining : remaining / static_cast<double>(n);
@@ -274,6 +278,9 @@ void CoupledModel::iterate_window(double t, double dt) {
 }
 
 std::optional<std::string> CoupledModel::diagnose() const {
+    if (collapse_) {
+        return collapse_;
+    }
     if (auto problem = sph_->diagnose()) {
         return "sph: " + *problem;
     }

@@ -4,10 +4,12 @@
 #include "coupling/model_hints.hpp"
 #include "coupling/shell_wall.hpp"
 #include "fem/shell_model.hpp"
+#include "io/step_collapse.hpp"
 #include "io/stepper.hpp"
 #include "sph/sph_model.hpp"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -106,6 +108,9 @@ class CoupledModel final : public io::Stepper {
     Eigen::VectorXd start_load_;
     Eigen::VectorXd end_load_;
     CouplingMonitor monitor_;
+    /// The SPH step within windows: a collapse ends the window and is the diagnosis.
+    io::StepCollapseWatch step_watch_;
+    std::optional<std::string> collapse_;
     WindowRecord pending_;
     ShellExtremes extremes_; ///< over the run, for the hints
     bool restarted_ = false;

@@ -137,6 +137,19 @@ TEST(Watchdog, CouplingOfAStableSceneIsNotStopped) {
     EXPECT_EQ(run.cli.exit_code, 0) << run.cli.output;
 }
 
+// A blow-up that makes no NaN: the coupled plate at CFL factor 1.0 (its contact dashpot is
+// critically damped, which the explicit step cannot follow there) sees the SPH step fall from
+// 1.0e-3 s to below 1e-6 s within its second window, where it used to take ever shorter
+// sub-steps for hours. The collapse below a thousandth of the largest step is the diagnosis,
+// inside the window, and the run stops at that window's end.
+TEST(Watchdog, CollapsingStepWithinACouplingWindowIsStopped) {
+    const CaseRun run =
+        run_case_file("cases/sand_on_plate/sand_on_plate_small.toml", "watchdog_step_collapse",
+                      "--set sph.cfl_safety=1.0 --set 'case.end_time=0.1 s' --threads 1");
+    expect_stopped(run, {"sph, within a coupling window", "the stable time step fell to",
+                         "below a thousandth of the largest so far"});
+}
+
 // Escaping particles: two blocks placed 5 mm into each other (overlapping_bodies.toml) fling
 // particles out of the scene at over 100 m/s; the diagnosis names the particle, its body, its
 // distance outside the scene box and its speed against the limit.
