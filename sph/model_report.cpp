@@ -44,6 +44,13 @@ void SphModel::describe_model(std::vector<io::ModelChoice>& choices) const {
         }
         choices.push_back({"wall " + wall.name, what});
     }
+    for (const SymmetryPlane& plane : solver_->options().symmetry) {
+        const char* axis = plane.axis == 0 ? "x" : (plane.axis == 1 ? "y" : "z");
+        char text[96];
+        std::snprintf(text, sizeof text, "mirror plane %s = %g m, material on the %s side", axis,
+                      plane.at, plane.side > 0 ? "+" : "-");
+        choices.push_back({std::string("symmetry ") + axis, text});
+    }
     for (const SinkSet::Sink& sink : sinks_.sinks()) {
         choices.push_back({"sink " + sink.name, sink.region.kind == io::Region::Kind::half_space
                                                     ? "half-space beyond a plane"

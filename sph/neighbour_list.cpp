@@ -24,17 +24,22 @@ double NeighbourList::max_displacement(std::span<const Vec3> positions) const {
     return std::sqrt(largest_squared);
 }
 
-bool NeighbourList::update(std::span<const Vec3> positions, std::span<const char> frozen,
-                           bool force) {
-    const bool stale = force || skin_ == 0.0 || reference_.size() != positions.size() ||
-                       2.0 * max_displacement(positions) > skin_;
-    if (stale) {
-        rebuild(positions, frozen);
-    }
-    return stale;
+bool NeighbourList::stale(std::span<const Vec3> positions) const {
+    return skin_ == 0.0 || reference_.size() != positions.size() ||
+           2.0 * max_displacement(positions) > skin_;
 }
 
-void NeighbourList::rebuild(std::span<const Vec3> positions, std::span<const char> frozen) {
+bool NeighbourList::update(std::span<const Vec3> positions, std::span<const char> frozen,
+                           bool force, Index rows) {
+    const bool rebuild_now = force || stale(positions);
+    if (rebuild_now) {
+        rebuild(positions, frozen, rows < 0 ? static_cast<Index>(positions.size()) : rows);
+    }
+    return rebuild_now;
+}
+
+void NeighbourList::rebuild(std::span<const Vec3> positions, std::span<const char> frozen,
+                            Index rows) {
     const auto n = static_cast<Index>(positions.size());
     if (n > std::numeric_limits<std::int32_t>::max()) {
         throw std::length_error("NeighbourList: more than 2^31 particles");
@@ -64,7 +69,7 @@ void NeighbourList::rebuild(std::span<const Vec3> positions, std::span<const cha
     offset_.assign(static_cast<std::size_t>(n + 1), 0);
     // Two passes (count, then fill) keep the list in one allocation with no per-thread buffers.
 #pragma omp parallel for schedule(dynamic, 256)
-    for (Index i = 0; i < n; ++i) {
+    for (Index i = 0; i < rows; ++i) {
         const CellList& grid = grid_of(i);
         const Vec3 x = positions[i];
         const double* gx = grid.sorted_coordinate(0);
@@ -99,7 +104,7 @@ void NeighbourList::rebuild(std::span<const Vec3> positions, std::span<const cha
     }
     index_.resize(static_cast<std::size_t>(offset_[n]));
 #pragma omp parallel for schedule(dynamic, 256)
-    for (Index i = 0; i < n; ++i) {
+    for (Index i = 0; i < rows; ++i) {
         const CellList& grid = grid_of(i);
         const Vec3 x = positions[i];
         Index entry = offset_[i];

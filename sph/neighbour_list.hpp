@@ -21,8 +21,13 @@ class NeighbourList {
 
     /// Rebuild if needed (or always when `force`). `frozen[i] && frozen[j]` pairs are left out
     /// (wall particles do not interact with each other); pass an empty span to keep all.
+    /// Rows i >= `rows` (when >= 0) are left empty: mirror images (sph/symmetry.hpp) are seen
+    /// by the particles before them but have no neighbours of their own.
     /// Returns whether the list was rebuilt.
-    bool update(std::span<const Vec3> positions, std::span<const char> frozen, bool force = false);
+    bool update(std::span<const Vec3> positions, std::span<const char> frozen, bool force = false,
+                Index rows = -1);
+    /// Whether update() would rebuild without `force`.
+    bool stale(std::span<const Vec3> positions) const;
 
     /// 32-bit entries: the list is most of the memory per particle (4 bytes per pair entry).
     std::span<const std::int32_t> neighbours(Index i) const {
@@ -41,7 +46,7 @@ class NeighbourList {
     std::size_t bytes() const;
 
   private:
-    void rebuild(std::span<const Vec3> positions, std::span<const char> frozen);
+    void rebuild(std::span<const Vec3> positions, std::span<const char> frozen, Index rows);
     double max_displacement(std::span<const Vec3> positions) const;
 
     double support_;

@@ -93,6 +93,10 @@ int SphModel::body_id(const std::string& name) const {
 
 void SphModel::build(const io::CaseTable& root) {
     const io::CaseTable sph = root.table("sph");
+    if (sph.has("symmetry") && !interactions_) {
+        sph.fail("symmetry", "mirror images act through the particle interactions: expected "
+                             "interactions = true with [[sph.symmetry]]");
+    }
     if (!added_walls_.empty() && !interactions_) {
         sph.fail("interactions", "walls coupled to shells need the SPH solver: expected "
                                  "interactions = true");
@@ -154,6 +158,13 @@ void SphModel::build_solver(const io::CaseTable& sph) {
     options.friction = read_friction_pairs(sph, body_names_, walls);
     for (const FrictionPair& pair : added_wall_friction(walls)) {
         options.friction.push_back(pair);
+    }
+    options.symmetry = read_symmetry_planes(sph, particles_, walls, body_names_, dimension_,
+                                            spacing_, kernel.support_radius());
+    if (!options.symmetry.empty() && options.formulation == Formulation::total_lagrangian) {
+        sph.fail("symmetry", "mirror images are found anew as particles move, which the "
+                             "total-Lagrangian reference pairs do not do: expected formulation = "
+                             "\"updated_lagrangian\" with [[sph.symmetry]]");
     }
     if (!options.friction.empty() && !(options.contact.stiffness > 0.0)) {
         sph.fail("friction", "wall friction acts through the contact force: expected an "
@@ -518,7 +529,7 @@ void SphModel::write_checkpoint(std::ostream& out) const {
                                           solver_->wall_contact().friction_work(),
                                           solver_->forces_valid() ? 1.0 : 0.0};
         io::write_array(out, scalars);
-        const auto reference = solver_->neighbours().reference();
+        const auto reference = solver_->neighbour_reference();
         io::write_array(out, std::vector<Vec3>(reference.begin(), reference.end()));
         io::write_array(out, solver_->energy_ledger().state());
     }

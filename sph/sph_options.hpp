@@ -2,6 +2,7 @@
 
 #include "io/types.hpp"
 #include "sph/kernels.hpp"
+#include "sph/symmetry.hpp"
 
 #include <vector>
 
@@ -75,6 +76,8 @@ struct SphOptions {
     Formulation formulation = Formulation::updated_lagrangian;
     double cfl_safety = 0.3;         ///< dt = safety * h / (c + |v|)
     double verlet_skin_factor = 0.1; ///< Verlet skin as a fraction of h (0: rebuild each step)
+    /// Mirror planes ([[sph.symmetry]]), at most one per axis; empty: none.
+    std::vector<SymmetryPlane> symmetry;
 };
 
 } // namespace grainload::sph

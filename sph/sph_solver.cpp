@@ -41,10 +41,15 @@ SphSolver::SphSolver(ParticleSet particles, MaterialList materials, SphOptions o
         }
     }
     if (options_.formulation == Formulation::total_lagrangian) {
+        if (!options_.symmetry.empty()) {
+            throw std::invalid_argument("SphSolver: symmetry planes need the updated-Lagrangian "
+                                        "formulation (its neighbours are found anew)");
+        }
         total_lagrangian_.emplace(particles_, kernel_);
     }
+    plane_at_ = plane_coordinates(options_.symmetry);
     hold_clamped();
-    refresh_neighbours();
+    rebuild_neighbours(particles_.position);
 }
 
 double SphSolver::stable_time_step() const {
@@ -71,10 +76,14 @@ void SphSolver::check_time_step(double dt) const {
 }
 
 void SphSolver::restart(std::span<const Vec3> neighbour_reference, bool forces_valid) {
-    neighbours_.update(neighbour_reference.empty() ? std::span<const Vec3>(particles_.position)
-                                                   : neighbour_reference,
-                       is_wall_, true);
+    rebuild_neighbours(neighbour_reference.empty() ? std::span<const Vec3>(particles_.position)
+                                                   : neighbour_reference);
     forces_valid_ = forces_valid;
+}
+
+std::span<const Vec3> SphSolver::neighbour_reference() const {
+    const auto reference = neighbours_.reference();
+    return reference.first(std::min(reference.size(), static_cast<std::size_t>(particles_.size())));
 }
 
 void SphSolver::remove_particles(std::span<const char> gone) {
@@ -96,7 +105,7 @@ void SphSolver::remove_particles(std::span<const char> gone) {
     compact(is_wall_, gone);
     compact(wave_speed_, gone);
     compact(force_inputs_.sound_speed, gone);
-    neighbours_.update(particles_.position, is_wall_, true);
+    rebuild_neighbours(particles_.position);
 }
 
 void SphSolver::add_particles(std::span<const NewParticle> arrivals, bool book_energy) {
@@ -120,7 +129,7 @@ void SphSolver::add_particles(std::span<const NewParticle> arrivals, bool book_e
         force_inputs_.sound_speed.push_back(law.elastic().unscaled_p_wave_speed());
         held += a.mass * 0.5 * a.velocity.squaredNorm();
     }
-    neighbours_.update(particles_.position, is_wall_, true);
+    rebuild_neighbours(particles_.position);
     if (book_energy && energy_.is_open()) {
         std::vector<char> flagged(static_cast<std::size_t>(particles_.size()), 0);
         std::fill(flagged.begin() + static_cast<std::ptrdiff_t>(first), flagged.end(), char{1});
@@ -129,7 +138,71 @@ void SphSolver::add_particles(std::span<const NewParticle> arrivals, bool book_e
 }
 
 void SphSolver::refresh_neighbours() {
-    neighbours_.update(particles_.position, is_wall_);
+    if (options_.symmetry.empty()) {
+        neighbours_.update(particles_.position, is_wall_);
+        return;
+    }
+    // The images move with their sources, so the list's displacement test covers them; when it
+    // is stale the images are selected anew from the particles' current positions.
+    if (neighbours_.stale(particles_.position)) {
+        detach_images();
+        rebuild_neighbours(particles_.position);
+        attach_images();
+    }
+}
+
+void SphSolver::rebuild_neighbours(std::span<const Vec3> positions) {
+    if (options_.symmetry.empty()) {
+        neighbours_.update(positions, is_wall_, true);
+        return;
+    }
+    // An image within the support of a particle is within the support of the plane, and during
+    // the list's life a particle moves less than half the skin: images of the particles within
+    // support + skin of a plane cover every pair the list can need.
+    const auto n = static_cast<Index>(positions.size());
+    images_ = select_images(options_.symmetry, positions, is_wall_, neighbours_.search_radius());
+    std::vector<Vec3> all(positions.begin(), positions.end());
+    all.reserve(all.size() + images_.size());
+    for (const MirrorImage& image : images_) {
+        all.push_back(mirror_position(positions[image.source], image.mask, plane_at_));
+    }
+    frozen_.assign(is_wall_.begin(), is_wall_.end());
+    frozen_.resize(all.size(), char{1});
+    neighbours_.update(all, frozen_, true, n);
+}
+
+void SphSolver::attach_images(bool kinematics) {
+    if (options_.symmetry.empty()) {
+        return;
+    }
+    if (!images_attached_) {
+        real_count_ = particles_.size();
+        images_attached_ = true;
+    }
+    write_images(particles_, real_count_, images_, plane_at_);
+    auto& speed = force_inputs_.sound_speed;
+    speed.resize(static_cast<std::size_t>(real_count_));
+    for (const MirrorImage& image : images_) {
+        speed.push_back(speed[static_cast<std::size_t>(image.source)]);
+    }
+    auto& correction = force_inputs_.gradient_correction;
+    if (kinematics && !correction.empty()) {
+        const auto count = static_cast<Index>(images_.size());
+#pragma omp parallel for schedule(static)
+        for (Index k = 0; k < count; ++k) {
+            correction[real_count_ + k] =
+                mirror_matrix(correction[images_[k].source], images_[k].mask);
+        }
+    }
+}
+
+void SphSolver::detach_images() {
+    if (!images_attached_) {
+        return;
+    }
+    drop_images(particles_, real_count_);
+    force_inputs_.sound_speed.resize(static_cast<std::size_t>(real_count_));
+    images_attached_ = false;
 }
 
 void SphSolver::compute_forces(double dt) {
@@ -189,9 +262,12 @@ void SphSolver::compute_kinematics() {
 
 void SphSolver::step(double dt) {
     if (!forces_valid_) {
+        attach_images();
         refresh_neighbours();
         compute_kinematics();
+        attach_images(true);
         compute_forces(last_dt_ > 0.0 ? last_dt_ : dt);
+        detach_images();
     }
     if (!energy_.is_open()) {
         energy_.open(held_energy(), elastic_strain_energy(), contact_energy());
@@ -216,8 +292,13 @@ void SphSolver::step(double dt) {
             wall.driver->move(p, wall, time_, dt);
         }
     }
+    // Mirror images (symmetry planes) join the particle set for the passes of this step: they
+    // take part in every neighbour sum but are never integrated, and are copied from their
+    // sources after each update of the fields the passes read.
+    attach_images();
     refresh_neighbours();
     compute_kinematics();
+    attach_images(true);
     if (!total_lagrangian_) { // the total-Lagrangian density is rho0 / det F, already set
 #pragma omp parallel for schedule(static)
         for (Index i = 0; i < n; ++i) {
@@ -226,9 +307,11 @@ void SphSolver::step(double dt) {
             }
         }
     }
-    update_stresses(p, materials_, dt);
+    update_stresses(p, materials_, dt, n);
+    attach_images(true);
     compute_forces(dt);
     energy_.add_wall_work(wall_work(dt));
+    detach_images();
     kick(0.5 * dt);
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
@@ -274,18 +357,29 @@ double SphSolver::contact_energy_of(std::span<const char> flagged) const {
         if (!all && !flagged[i]) {
             continue;
         }
-        for (const Index j : neighbours_.neighbours(i)) {
+        for (const Index entry : neighbours_.neighbours(i)) {
+            // Entries from n on are mirror images (outside a step the particle set holds none).
+            const bool image = entry >= n;
+            const MirrorImage mirror = image ? images_[entry - n] : MirrorImage{entry, 0};
+            const Index j = mirror.source;
             // The list holds each pair twice (i in j's list and j in i's): count it once, from
             // the lower index when both are counted from.
             const bool j_counts = all || flagged[j];
-            if ((j < i && j_counts) || p.body_id[i] == p.body_id[j]) {
+            if ((!image && j < i && j_counts) || p.body_id[i] == p.body_id[j]) {
                 continue;
             }
-            const double r2 = (p.position[i] - p.position[j]).squaredNorm();
+            // A pair of i and the image of j has the energy of the pair of j and the image of
+            // i, and the full model holds each such pair once for two halves: half of it is
+            // this side's. Counted from flagged particles only, a pair whose mirror pair is
+            // not counted (j not flagged) stands for both.
+            const double share = image ? (j_counts ? 0.5 : 1.0) : 1.0;
+            const Vec3 xj =
+                image ? mirror_position(p.position[j], mirror.mask, plane_at_) : p.position[j];
+            const double r2 = (p.position[i] - xj).squaredNorm();
             if (r2 < support_squared && r2 > 0.0) {
                 const double volumes = p.mass[i] / p.density[i] * p.mass[j] / p.density[j];
-                sum += sph::contact_energy(kernel_, options_.contact, w_reference, volumes,
-                                           std::sqrt(r2));
+                sum += share * sph::contact_energy(kernel_, options_.contact, w_reference, volumes,
+                                                   std::sqrt(r2));
             }
         }
     }

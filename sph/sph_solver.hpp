@@ -88,7 +88,16 @@ class SphSolver {
     const ParticleSet& particles() const { return particles_; }
     const SphOptions& options() const { return options_; }
     const SmoothingKernel& kernel() const { return kernel_; }
+    /// With symmetry planes the list's rows beyond particles().size() are empty and its entries
+    /// there name mirror images (mirror_images()), which exist in the particle set only during
+    /// a step.
     const NeighbourList& neighbours() const { return neighbours_; }
+    /// The positions of the particles (mirror images left out) at the last list build, which a
+    /// checkpoint stores: restart() selects the same images from them and rebuilds the same list.
+    std::span<const Vec3> neighbour_reference() const;
+    /// The mirror images of the current neighbour list: entry k is particle size() + k of the
+    /// list (sph/symmetry.hpp); empty without symmetry planes.
+    const std::vector<MirrorImage>& mirror_images() const { return images_; }
     /// The per-particle inputs of the force pass (sound speeds of the viscosity, ...).
     const ForceInputs& force_inputs() const { return force_inputs_; }
     std::vector<Wall>& walls() { return walls_; }
@@ -116,7 +125,16 @@ class SphSolver {
     std::size_t bytes() const;
 
   private:
+    /// Rebuild the list if stale (mirror images attached, when there are planes).
     void refresh_neighbours();
+    /// Rebuild the list at `positions` (of the particles without images): with symmetry planes
+    /// the images are selected anew, within the list's search radius of a plane.
+    void rebuild_neighbours(std::span<const Vec3> positions);
+    /// Append the mirror images to the particle set (and the sound speeds), copied from their
+    /// sources; with `kinematics` also the gradient correction. No-op without planes.
+    void attach_images(bool kinematics = false);
+    /// Drop the mirror images again: outside a step the particle set holds no ghosts.
+    void detach_images();
     void compute_kinematics();
     void compute_forces(double dt);
     void kick(double half_dt);
@@ -143,6 +161,13 @@ class SphSolver {
     std::vector<double> wave_speed_;
     std::vector<Mat3> velocity_gradient_;
     std::vector<double> heating_rate_;
+    /// Mirror images of the symmetry planes (options_.symmetry), selected at each list build.
+    std::vector<MirrorImage> images_;
+    Vec3 plane_at_ = Vec3::Zero();
+    /// is_wall_ followed by a 1 per image: images pair neither with walls nor with each other.
+    std::vector<char> frozen_;
+    Index real_count_ = 0; ///< particles without images while they are attached
+    bool images_attached_ = false;
     bool forces_valid_ = false;
     double time_ = 0.0;
     double last_dt_ = 0.0;

@@ -14,8 +14,8 @@ Mat3 jaumann_rotation(const Vec3& spin, double dt) {
 }
 
 void update_stresses(ParticleSet& p, std::span<const materials::Material* const> materials,
-                     double dt) {
-    const Index n = p.size();
+                     double dt, Index count) {
+    const Index n = count < 0 ? p.size() : count;
     // Dynamic: wall particles are skipped and plastic returns cost more than elastic steps, so
     // equal index ranges are unequal work (a static split gave one thread every grain of the
     // column collapse, whose walls come after its grains).

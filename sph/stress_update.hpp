@@ -19,7 +19,9 @@ Mat3 jaumann_rotation(const Vec3& spin, double dt);
 /// material with strain increment strain_rate * dt (engineering shear). The specific internal
 /// energy advances by the stress power at the mid-step stress, thesis eq. (4.5.5.9) in the
 /// form de/dt = sigma : D / rho. Plastic strain and plastic region are stored for output.
+/// Only the first `count` particles (< 0: all): mirror images after them (sph/symmetry.hpp)
+/// share their sources' material state and are copied from them instead.
 void update_stresses(ParticleSet& particles, std::span<const materials::Material* const> materials,
-                     double dt);
+                     double dt, Index count = -1);
 
 } // namespace grainload::sph

@@ -1,0 +1,282 @@
+// Symmetry planes ([[sph.symmetry]]): a half (2D) and a quarter (3D) model against the full
+// model they cut. The reference is the full model itself: for a scene symmetric about the
+// plane, every neighbour a particle of the cut model misses is the mirror image of one it has,
+// so the cut model computes the same sums as the full one, in another order.
+#include "io/case_table.hpp"
+#include "sph/sph_model.hpp"
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <string>
+
+namespace grainload::sph {
+namespace {
+
+struct Scene {
+    std::unique_ptr<io::CaseDocument> document;
+    materials::MaterialLibrary materials;
+    std::unique_ptr<SphModel> model;
+};
+
+Scene build(const std::string& text) {
+    Scene run;
+    run.document = io::CaseDocument::from_string(text, "symmetry.toml");
+    const io::SceneSettings scene = io::read_scene_settings(*run.document, "symmetry");
+    run.materials = materials::MaterialLibrary::from_case(run.document->root());
+    run.model = SphModel::from_case(run.document->root(), scene, run.materials);
+    return run;
+}
+
+/// For each material particle of `cut`, the particle of `full` that started at its place.
+std::vector<Index> match(const ParticleSet& cut, const ParticleSet& full, double spacing) {
+    std::vector<Index> partner;
+    for (Index i = 0; i < cut.size(); ++i) {
+        if (cut.is_wall(i)) {
+            continue;
+        }
+        Index found = -1;
+        for (Index j = 0; j < full.size(); ++j) {
+            if (!full.is_wall(j) && (full.position[j] - cut.position[i]).norm() < 1e-6 * spacing) {
+                found = j;
+            }
+        }
+        EXPECT_GE(found, 0) << "particle " << i << " of the cut model has no partner";
+        partner.push_back(found);
+    }
+    return partner;
+}
+
+double largest_gap(const ParticleSet& cut, const ParticleSet& full,
+                   const std::vector<Index>& partner) {
+    double gap = 0.0;
+    for (std::size_t k = 0; k < partner.size(); ++k) {
+        gap =
+            std::max(gap, (cut.position[static_cast<Index>(k)] - full.position[partner[k]]).norm());
+    }
+    return gap;
+}
+
+// 2D: a Drucker-Prager column 200 mm wide and 100 mm high centred on x = 0 collapsing both ways
+// on a rough floor (the material of cases/column_collapse_2d), and its right half with a plane
+// x = 0. The floor extends past the plane in both.
+const char* kColumn2d = R"(
+[case]
+dimension = 2
+end_time = "1 s"
+gravity = "0 -9.81 m/s^2"
+[[material]]
+name = "bars"
+model = "drucker_prager"
+density = "2040 kg/m^3"
+youngs_modulus = "5.84 MPa"
+poisson_ratio = 0.3
+friction_angle = "21.9 deg"
+cohesion = "0 Pa"
+dilatancy_angle = "0 deg"
+cone_fit = "plane_strain"
+[sph]
+kernel_gradient_correction = true
+[sph.artificial_viscosity]
+alpha = 0.1
+beta = 0.1
+[sph.contact]
+stiffness = "5.84 MPa"
+damping_ratio = 0.5
+[[sph.body]]
+name = "column"
+material = "bars"
+spacing = "10 mm"
+[sph.body.shape]
+type = "box"
+max = "100 118.5 mm"
+[[sph.wall]]
+name = "floor"
+type = "plane"
+spacing = "5 mm"
+origin = "-400 0 mm"
+edge_u = "800 0 mm"
+normal = "0 1"
+[[sph.friction]]
+body = "column"
+wall = "floor"
+mu_static = 0.402
+mu_kinetic = 0.402
+)";
+
+std::string column(bool half) {
+    std::string text = kColumn2d;
+    const std::string anchor = "max = \"100 118.5 mm\"";
+    text.replace(text.find(anchor), anchor.size(),
+                 anchor + (half ? "\nmin = \"0 18.5 mm\"" : "\nmin = \"-100 18.5 mm\""));
+    if (half) {
+        text += "[[sph.symmetry]]\naxis = \"x\"\nat = \"0 m\"\n";
+    }
+    return text;
+}
+
+// The positions differ only by the order of the neighbour sums (and of the eigen-solves of the
+// yield surface's return on mirrored stresses), about 1e-16 of each term; over 50 steps that
+// round-off stays below 1e-12 m (measured 1e-16 to 1e-15 m), a ten-billionth of the spacing.
+constexpr double kRoundOffGap = 1e-12;
+// After 0.4 s of plastic flow, which could amplify round-off (a yield-or-not decision that
+// flips), the positions still agree to 1e-14 m (measured); 1e-9 m, a ten-millionth of the
+// spacing, leaves room for another compiler's rounding and still fails on any physical
+// difference (a missing image moves the particles near the plane by millimetres).
+constexpr double kLateGap = 1e-9;
+// The floor loads of half and full: the half carries the reactions of its own particles, exactly
+// half of the full's for a symmetric motion; 1e-9 relative over the first steps (round-off).
+constexpr double kEarlyLoadRatio = 1e-9;
+// Averaged over the last 0.05 s of the run: the same round-off argument as kLateGap.
+constexpr double kLateLoadRatio = 1e-9;
+
+TEST(SymmetryModel, HalfColumnCollapseReproducesTheFullColumn) {
+    Scene full = build(column(false));
+    Scene half = build(column(true));
+    const double spacing = 0.01;
+    const auto partner = match(half.model->particles(), full.model->particles(), spacing);
+    ASSERT_EQ(partner.size(), 100U);
+    const double dt = 4e-5;
+    double t = 0.0;
+    double worst_early_load = 0.0;
+    for (int step = 0; step < 50; ++step, t += dt) {
+        full.model->advance(t, dt);
+        half.model->advance(t, dt);
+        const double full_load = full.model->solver()->walls()[0].force.y();
+        const double half_load = half.model->solver()->walls()[0].force.y();
+        if (std::abs(full_load) > 0.0) {
+            worst_early_load =
+                std::max(worst_early_load, std::abs(2.0 * half_load / full_load - 1.0));
+        }
+    }
+    const double early_gap = largest_gap(half.model->particles(), full.model->particles(), partner);
+    std::cout << "after 50 steps: largest position gap " << early_gap
+              << " m, largest floor-load mismatch " << worst_early_load << '\n';
+    EXPECT_LT(early_gap, kRoundOffGap);
+    EXPECT_LT(worst_early_load, kEarlyLoadRatio);
+
+    const int steps = 10000; // to 0.4 s: the heap has come to rest (cases/column_collapse_2d)
+    double full_sum = 0.0;
+    double half_sum = 0.0;
+    for (int step = 50; step < steps; ++step, t += dt) {
+        full.model->advance(t, dt);
+        half.model->advance(t, dt);
+        if (step >= steps - 1250) {
+            full_sum += full.model->solver()->walls()[0].force.y();
+            half_sum += half.model->solver()->walls()[0].force.y();
+        }
+    }
+    double full_runout = 0.0;
+    double half_runout = 0.0;
+    const ParticleSet& f = full.model->particles();
+    const ParticleSet& h = half.model->particles();
+    for (Index j = 0; j < f.size(); ++j) {
+        full_runout =
+            f.is_wall(j) ? full_runout : std::max(full_runout, std::abs(f.position[j].x()));
+    }
+    for (Index i = 0; i < h.size(); ++i) {
+        half_runout = h.is_wall(i) ? half_runout : std::max(half_runout, h.position[i].x());
+    }
+    std::cout << "at " << t << " s: runout full " << full_runout << " m, half " << half_runout
+              << " m; floor load full " << full_sum / 1250 << " N/m, half " << half_sum / 1250
+              << " N/m; largest position gap " << largest_gap(h, f, partner) << " m\n";
+    EXPECT_GT(full_runout, 0.15); // it did collapse (from 0.1 m)
+    EXPECT_LT(largest_gap(h, f, partner), kLateGap);
+    EXPECT_NEAR(half_runout, full_runout, kLateGap);
+    EXPECT_NEAR(2.0 * half_sum / full_sum, 1.0, kLateLoadRatio);
+}
+
+// 3D: an elastic block 60 x 60 x 40 mm at rest (geostatic stress) on a floor, and its quarter
+// x > 0, y > 0 with the planes x = 0 and y = 0, whose particles near the edge x = y = 0 see
+// three images each (the image of the image included).
+std::string block(bool quarter) {
+    std::string text = R"(
+[case]
+dimension = 3
+end_time = "1 s"
+gravity = "0 0 -9.81 m/s^2"
+[[material]]
+name = "grain"
+model = "linear_elastic"
+density = "1600 kg/m^3"
+youngs_modulus = "2 MPa"
+poisson_ratio = 0.3
+[sph]
+[sph.artificial_viscosity]
+alpha = 0.2
+beta = 0.2
+[sph.contact]
+stiffness = "2 MPa"
+damping_ratio = 0.5
+[[sph.body]]
+name = "block"
+material = "grain"
+spacing = "10 mm"
+[sph.body.shape]
+type = "box"
+max = "30 30 58.5 mm"
+[sph.body.initial_stress]
+type = "geostatic"
+lateral_ratio = 0.43
+[[sph.wall]]
+name = "floor"
+type = "plane"
+spacing = "5 mm"
+origin = "-50 -50 0 mm"
+edge_u = "100 0 0 mm"
+edge_v = "0 100 0 mm"
+normal = "0 0 1"
+)";
+    const std::string anchor = "max = \"30 30 58.5 mm\"";
+    text.replace(text.find(anchor), anchor.size(),
+                 anchor + (quarter ? "\nmin = \"0 0 18.5 mm\"" : "\nmin = \"-30 -30 18.5 mm\""));
+    if (quarter) {
+        text += "[[sph.symmetry]]\naxis = \"x\"\n[[sph.symmetry]]\naxis = \"y\"\nside = \"+\"\n";
+    }
+    return text;
+}
+
+// The floor loads of quarter and full over the whole run: round-off only (measured 1e-15).
+constexpr double kQuarterLoadRatio = 1e-9;
+// The full block's floor carries its weight once it has settled: averaged over the last 0.03 s
+// of 0.15 s, the ringing of the first contact (damped by the contact dashpot and the viscosity)
+// is within 2 % of the mean.
+constexpr double kWeightTolerance = 0.02;
+
+TEST(SymmetryModel, QuarterBlockCarriesAQuarterOfTheFloorLoad) {
+    Scene full = build(block(false));
+    Scene quarter = build(block(true));
+    const auto partner = match(quarter.model->particles(), full.model->particles(), 0.01);
+    ASSERT_EQ(partner.size(), 36U);
+    const double dt = 5e-5;
+    const int steps = 3000;
+    const int averaged = 600;
+    double worst = 0.0;
+    double full_sum = 0.0;
+    double quarter_sum = 0.0;
+    double t = 0.0;
+    for (int step = 0; step < steps; ++step, t += dt) {
+        full.model->advance(t, dt);
+        quarter.model->advance(t, dt);
+        const double full_load = -full.model->solver()->walls()[0].force.z();
+        const double quarter_load = -quarter.model->solver()->walls()[0].force.z();
+        if (full_load > 0.0) {
+            worst = std::max(worst, std::abs(4.0 * quarter_load / full_load - 1.0));
+        }
+        if (step >= steps - averaged) {
+            full_sum += full_load / averaged;
+            quarter_sum += quarter_load / averaged;
+        }
+    }
+    const double weight = 1600.0 * 144 * 1e-6 * 9.81;
+    const double gap = largest_gap(quarter.model->particles(), full.model->particles(), partner);
+    std::cout << "at " << t << " s: floor load quarter " << quarter_sum << " N, full " << full_sum
+              << " N (weight " << weight << " N); largest mismatch " << worst << ", position gap "
+              << gap << " m\n";
+    EXPECT_LT(worst, kQuarterLoadRatio);
+    EXPECT_LT(gap, kLateGap);
+    EXPECT_NEAR(4.0 * quarter_sum / full_sum, 1.0, kQuarterLoadRatio);
+    EXPECT_NEAR(full_sum / weight, 1.0, kWeightTolerance);
+}
+
+} // namespace
+} // namespace grainload::sph
