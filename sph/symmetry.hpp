@@ -1,12 +1,23 @@
 #pragma once
 
+#include "io/key_spec.hpp"
 #include "sph/particle_set.hpp"
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
 
 namespace grainload::sph {
+
+/// The keys of each [[sph.symmetry]] table (docs/user-guide/sph.md, "Symmetry planes").
+inline constexpr std::array<io::KeySpec, 3> kSymmetryKeys{{
+    {"axis", "`x`, `y` or `z`", "",
+     "the plane's normal: a coordinate axis (z only in 3D; at most one plane per axis)"},
+    {"at", "length", "0 m", "the plane's coordinate on that axis", 0.0},
+    {"side", "`+` or `-`", "the bodies' side",
+     "which side holds the material; every body must lie on it"},
+}};
 
 /// A plane of mirror symmetry, normal to a coordinate axis: the material lies on one side and
 /// sees its mirror image on the other ([[sph.symmetry]], docs/user-guide/sph.md).

@@ -119,7 +119,8 @@ read_symmetry_planes(const io::CaseTable& sph, const ParticleSet& particles,
                                        "axis (three in all)");
             }
         }
-        plane.at = table.quantity_or("at", io::dimension::kLength, 0.0);
+        plane.at =
+            table.quantity_or("at", io::dimension::kLength, io::default_value(kSymmetryKeys, "at"));
         plane.side = material_side(table, plane, particles, body_names, spacing);
         check_walls(table, plane, particles, walls, spacing, support_radius);
         planes.push_back(plane);
