@@ -289,6 +289,39 @@ TEST(SymmetryModel, HalfHoldsHalfTheContactEnergyBetweenBodies) {
     }
 }
 
+// A source pouring grains next to the plane onto the half column: the new particles get
+// images at the list build that follows their creation, and none crosses the plane (in the full
+// model the grains from the two halves meet at x = 0 and, by symmetry, none crosses it).
+TEST(SymmetryModel, GrainsFromASourceStayOnTheirSideOfThePlane) {
+    Scene half = build(column(true) + R"(
+[[sph.source]]
+name = "pour"
+body = "column"
+min = "0 160 mm"
+max = "60 200 mm"
+mass_rate = "40 kg/m/s"
+velocity = "0 -1 m/s"
+)");
+    const double dt = 4e-5;
+    double t = 0.0;
+    for (int step = 0; step < 6000; ++step, t += dt) {
+        half.model->advance(t, dt);
+    }
+    const ParticleSet& p = half.model->particles();
+    double nearest = std::numeric_limits<double>::infinity();
+    double mass = 0.0;
+    for (Index i = 0; i < p.size(); ++i) {
+        if (!p.is_wall(i)) {
+            nearest = std::min(nearest, p.position[i].x());
+            mass += p.mass[i];
+        }
+    }
+    std::cout << "with a source at " << t << " s: material mass " << mass
+              << " kg/m, nearest particle to the plane at x = " << nearest << " m\n";
+    EXPECT_GT(mass, 100 * 2040.0 * 1e-4 + 40.0 * 0.2); // created at least 0.2 s of the rate
+    EXPECT_GT(nearest, 0.0);
+}
+
 // 3D: an elastic block 60 x 60 x 40 mm at rest (geostatic stress) on a floor, and its quarter
 // x > 0, y > 0 with the planes x = 0 and y = 0, whose particles near the edge x = y = 0 see
 // three images each (the image of the image included).
