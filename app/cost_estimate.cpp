@@ -68,10 +68,12 @@ std::pair<Index, Index> count_entries(const sph::SphModel& sph) {
     const sph::NeighbourList& list = sph.solver()->neighbours();
     Index bodies = 0;
     Index contacts = 0;
-    for (Index i = 0; i < sph.particles().size(); ++i) {
+    const Index n = sph.particles().size();
+    for (Index i = 0; i < n; ++i) {
         for (const auto j : list.neighbours(i)) {
+            // Entries from n on are mirror images of material particles (symmetry planes).
             const bool contact = wall_id[static_cast<std::size_t>(i)] >= 0 ||
-                                 wall_id[static_cast<std::size_t>(j)] >= 0;
+                                 (j < n && wall_id[static_cast<std::size_t>(j)] >= 0);
             (contact ? contacts : bodies) += 1;
         }
     }
