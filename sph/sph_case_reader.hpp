@@ -47,13 +47,14 @@ std::vector<FrictionPair> read_friction_pairs(const io::CaseTable& sph,
                                               const std::vector<Wall>& walls);
 
 /// The [[sph.symmetry]] planes (`axis` x, y or z, `at`, optional `side`; at most one per axis,
-/// z only in 3D), checked against the scene built so far: every material particle must lie on the
-/// material side, at least a quarter spacing off the plane, and every wall that comes within
-/// `support_radius` of a plane on the material side must reach `support_radius` - `spacing` past it
-/// (walls are not mirrored: see docs/theory/sph.md).
+/// z only in 3D), checked against the scene built so far: every material particle must lie on
+/// the material side, at least a quarter spacing off the plane. A wall that comes within
+/// `support_radius` of a plane on the material side either ends at it (within a quarter
+/// spacing; it is then mirrored across it: Wall::mirror_planes) or runs on past it by at least
+/// `support_radius` - `spacing` (not mirrored); one in between is refused.
 std::vector<SymmetryPlane>
 read_symmetry_planes(const io::CaseTable& sph, const ParticleSet& particles,
-                     const std::vector<Wall>& walls, const std::vector<std::string>& body_names,
+                     std::vector<Wall>& walls, const std::vector<std::string>& body_names,
                      int dimension, double spacing, double support_radius);
 
 } // namespace grainload::sph

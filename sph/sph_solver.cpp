@@ -160,7 +160,17 @@ void SphSolver::rebuild_neighbours(std::span<const Vec3> positions) {
     // the list's life a particle moves less than half the skin: images of the particles within
     // support + skin of a plane cover every pair the list can need.
     const auto n = static_cast<Index>(positions.size());
-    images_ = select_images(options_.symmetry, positions, is_wall_, neighbours_.search_radius());
+    std::vector<MirrorMask> allowed(static_cast<std::size_t>(n), MirrorMask{7});
+    for (const Wall& wall : walls_) {
+        std::fill_n(allowed.begin() + wall.first, wall.count, wall.mirror_planes);
+    }
+    images_ =
+        select_images(options_.symmetry, positions, is_wall_, allowed, neighbours_.search_radius());
+    wall_image_count_ = 0;
+    while (wall_image_count_ < static_cast<Index>(images_.size()) &&
+           is_wall_[images_[wall_image_count_].source]) {
+        ++wall_image_count_;
+    }
     std::vector<Vec3> all(positions.begin(), positions.end());
     all.reserve(all.size() + images_.size());
     for (const MirrorImage& image : images_) {
@@ -168,7 +178,9 @@ void SphSolver::rebuild_neighbours(std::span<const Vec3> positions) {
     }
     frozen_.assign(is_wall_.begin(), is_wall_.end());
     frozen_.resize(all.size(), char{1});
-    neighbours_.update(all, frozen_, true, n);
+    // Images of grains need no row (nothing reads their rates); images of wall particles carry
+    // the loads of the real grains on them (fold_wall_image_loads).
+    neighbours_.update(all, frozen_, true, n + wall_image_count_);
 }
 
 void SphSolver::attach_images(bool kinematics) {
@@ -180,6 +192,20 @@ void SphSolver::attach_images(bool kinematics) {
         images_attached_ = true;
     }
     write_images(particles_, real_count_, images_, plane_at_);
+    wall_images_.first = real_count_;
+    wall_images_.normals.resize(static_cast<std::size_t>(wall_image_count_));
+    wall_images_.angular_velocities.resize(static_cast<std::size_t>(wall_image_count_));
+    for (Index k = 0; k < wall_image_count_; ++k) {
+        const MirrorImage& image = images_[k];
+        const Wall& wall = walls_[static_cast<std::size_t>(particles_.wall_id[image.source])];
+        const auto local = static_cast<std::size_t>(image.source - wall.first);
+        wall_images_.normals[k] =
+            wall.normals.empty() ? Vec3::Zero() : mirror_vector(wall.normals[local], image.mask);
+        wall_images_.angular_velocities[k] =
+            wall.angular_velocities.empty()
+                ? Vec3::Zero()
+                : mirror_axial(wall.angular_velocities[local], image.mask);
+    }
     auto& speed = force_inputs_.sound_speed;
     speed.resize(static_cast<std::size_t>(real_count_));
     for (const MirrorImage& image : images_) {
@@ -202,7 +228,17 @@ void SphSolver::detach_images() {
     }
     drop_images(particles_, real_count_);
     force_inputs_.sound_speed.resize(static_cast<std::size_t>(real_count_));
+    wall_images_.first = std::numeric_limits<Index>::max();
     images_attached_ = false;
+}
+
+void SphSolver::fold_wall_image_loads() {
+    // Serial: the images of one source across several planes add to the same particle.
+    ParticleSet& p = particles_;
+    for (Index k = 0; k < wall_image_count_; ++k) {
+        const MirrorImage& image = images_[k];
+        p.acceleration[image.source] += mirror_vector(p.acceleration[real_count_ + k], image.mask);
+    }
 }
 
 void SphSolver::compute_forces(double dt) {
@@ -213,7 +249,11 @@ void SphSolver::compute_forces(double dt) {
     if (total_lagrangian_) {
         total_lagrangian_->add_stress_forces(particles_);
     }
-    wall_contact_.apply(particles_, neighbours_, kernel_, options_, walls_, dt, heating_rate_);
+    wall_contact_.apply(particles_, neighbours_, kernel_, options_, walls_, dt, heating_rate_,
+                        wall_images_);
+    if (images_attached_) {
+        fold_wall_image_loads();
+    }
     for (Wall& wall : walls_) {
         accumulate_wall_load(particles_, wall);
     }
@@ -354,7 +394,10 @@ double SphSolver::contact_energy_of(std::span<const char> flagged) const {
     double sum = 0.0;
 #pragma omp parallel for schedule(dynamic, 256) reduction(+ : sum)
     for (Index i = 0; i < n; ++i) {
-        if (!all && !flagged[i]) {
+        const bool i_counts = all || flagged[i];
+        // Pairs with images are held by the real particle's row only, so with images every row
+        // is visited for them.
+        if (!i_counts && images_.empty()) {
             continue;
         }
         for (const Index entry : neighbours_.neighbours(i)) {
@@ -362,17 +405,19 @@ double SphSolver::contact_energy_of(std::span<const char> flagged) const {
             const bool image = entry >= n;
             const MirrorImage mirror = image ? images_[entry - n] : MirrorImage{entry, 0};
             const Index j = mirror.source;
-            // The list holds each pair twice (i in j's list and j in i's): count it once, from
-            // the lower index when both are counted from.
             const bool j_counts = all || flagged[j];
-            if ((!image && j < i && j_counts) || p.body_id[i] == p.body_id[j]) {
+            // The list holds each pair of real particles twice (i in j's list and j in i's):
+            // count it once, from a flagged row, the lower index when both are flagged.
+            const bool skip = image ? !(i_counts || j_counts) : !i_counts || (j < i && j_counts);
+            if (skip || p.body_id[i] == p.body_id[j]) {
                 continue;
             }
-            // A pair of i and the image of j has the energy of the pair of j and the image of
-            // i, and the full model holds each such pair once for two halves: half of it is
-            // this side's. Counted from flagged particles only, a pair whose mirror pair is
-            // not counted (j not flagged) stands for both.
-            const double share = image ? (j_counts ? 0.5 : 1.0) : 1.0;
+            // A pair of i and the image of grain j has the energy of the pair of j and the
+            // image of i, and the full model holds each such pair once for two halves: half of
+            // it is this side's. The image of a wall particle stands for that pair and for the
+            // pair of the wall's real particle and the image of i, which no row holds: all of
+            // it is this side's.
+            const double share = image && !is_wall_[j] ? 0.5 : 1.0;
             const Vec3 xj =
                 image ? mirror_position(p.position[j], mirror.mask, plane_at_) : p.position[j];
             const double r2 = (p.position[i] - xj).squaredNorm();

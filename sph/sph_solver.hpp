@@ -135,6 +135,9 @@ class SphSolver {
     void attach_images(bool kinematics = false);
     /// Drop the mirror images again: outside a step the particle set holds no ghosts.
     void detach_images();
+    /// Add the loads on the images of wall particles, mirrored, to their sources: the load a
+    /// real wall particle gets from the images of grains in the full model.
+    void fold_wall_image_loads();
     void compute_kinematics();
     void compute_forces(double dt);
     void kick(double half_dt);
@@ -163,8 +166,11 @@ class SphSolver {
     std::vector<double> heating_rate_;
     /// Mirror images of the symmetry planes (options_.symmetry), selected at each list build.
     std::vector<MirrorImage> images_;
+    Index wall_image_count_ = 0; ///< images_ of wall particles, which come first
+    WallImages wall_images_;     ///< their normals and angular velocities while attached
     Vec3 plane_at_ = Vec3::Zero();
-    /// is_wall_ followed by a 1 per image: images pair neither with walls nor with each other.
+    /// is_wall_ followed by a 1 per image: images pair neither with walls nor with each other;
+    /// images of grains have no list row, images of wall particles one (of real grains).
     std::vector<char> frozen_;
     Index real_count_ = 0; ///< particles without images while they are attached
     bool images_attached_ = false;

@@ -59,28 +59,31 @@ Vec3 plane_coordinates(std::span<const SymmetryPlane> planes) {
 
 std::vector<MirrorImage> select_images(std::span<const SymmetryPlane> planes,
                                        std::span<const Vec3> positions,
-                                       std::span<const char> is_wall, double cutoff) {
+                                       std::span<const char> is_wall,
+                                       std::span<const MirrorMask> allowed, double cutoff) {
     std::vector<MirrorImage> images;
     if (planes.empty()) {
         return images;
     }
     const auto n = static_cast<Index>(positions.size());
+    const double on_plane = 1e-9 * cutoff;
     // Per particle, which planes it is near; then one image per non-empty subset of them.
     std::vector<MirrorMask> near(static_cast<std::size_t>(n), 0);
     for (Index i = 0; i < n; ++i) {
-        if (is_wall[i]) {
-            continue;
-        }
         for (const SymmetryPlane& plane : planes) {
-            if (std::abs(positions[i][plane.axis] - plane.at) < cutoff) {
+            const double d = std::abs(positions[i][plane.axis] - plane.at);
+            if (d < cutoff && d >= on_plane) {
                 near[i] = static_cast<MirrorMask>(near[i] | (1U << plane.axis));
             }
         }
+        near[i] = static_cast<MirrorMask>(near[i] & allowed[i]);
     }
-    for (unsigned mask = 1; mask < 8; ++mask) {
-        for (Index i = 0; i < n; ++i) {
-            if (near[i] != 0 && (near[i] & mask) == mask) {
-                images.push_back({i, static_cast<MirrorMask>(mask)});
+    for (const char walls : {char{1}, char{0}}) {
+        for (unsigned mask = 1; mask < 8; ++mask) {
+            for (Index i = 0; i < n; ++i) {
+                if (is_wall[i] == walls && near[i] != 0 && (near[i] & mask) == mask) {
+                    images.push_back({i, static_cast<MirrorMask>(mask)});
+                }
             }
         }
     }
@@ -140,7 +143,7 @@ void write_images(ParticleSet& p, Index real_count, std::span<const MirrorImage>
         p.plastic_region[g] = p.plastic_region[s];
         p.body_id[g] = p.body_id[s];
         p.material_id[g] = p.material_id[s];
-        p.wall_id[g] = -1;
+        p.wall_id[g] = p.wall_id[s];
         p.clamped[g] = 0;
         p.state_offset[g] = p.state_offset[s];
     }

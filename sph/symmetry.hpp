@@ -55,11 +55,15 @@ Voigt6 mirror_tensor(const Voigt6& t, MirrorMask mask);
 Mat3 mirror_matrix(const Mat3& m, MirrorMask mask);
 
 /// The images the planes need at a neighbour-list build: every non-empty combination of planes
-/// for each material particle (not wall, index < count) within `cutoff` of all the planes of the
-/// combination. Sorted by mask, then source, so the ghosts' order depends only on the positions.
+/// for each particle within `cutoff` of all the planes of the combination, across the planes in
+/// its `allowed` mask only (material particles: all; walls: those they are mirrored across, see
+/// Wall::mirror_planes). A particle on a plane (closer than 1e-9 cutoff: a wall lattice point)
+/// has no image across it, which would coincide with it. Wall particles' images come first,
+/// then sorted by mask and source, so the order depends only on the positions.
 std::vector<MirrorImage> select_images(std::span<const SymmetryPlane> planes,
                                        std::span<const Vec3> positions,
-                                       std::span<const char> is_wall, double cutoff);
+                                       std::span<const char> is_wall,
+                                       std::span<const MirrorMask> allowed, double cutoff);
 
 /// The planes' coordinates as a vector (at of the plane normal to axis a in component a; 0 for
 /// an axis without a plane).
@@ -68,8 +72,8 @@ Vec3 plane_coordinates(std::span<const SymmetryPlane> planes);
 /// Resize every particle field to `real_count + images.size()` and set particle real_count + k
 /// to the mirror image of images[k].source: position, velocity, acceleration mirrored as polar
 /// vectors, stress and strain rate as tensors, spin as an axial vector; mass, density and its
-/// rate, energies, plastic strain, body, material and state offset copied. Ghosts are never
-/// walls nor clamped. Parallel over the images.
+/// rate, energies, plastic strain, body, material, wall and state offset copied. Ghosts are
+/// never clamped. Parallel over the images.
 void write_images(ParticleSet& particles, Index real_count, std::span<const MirrorImage> images,
                   const Vec3& plane_at);
 

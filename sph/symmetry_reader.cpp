@@ -73,11 +73,14 @@ int material_side(const io::CaseTable& table, const SymmetryPlane& plane,
     return side == 0 ? 1 : side;
 }
 
-/// Walls are not mirrored: one that reaches the plane's neighbourhood must run on past it.
+/// A wall that reaches the plane is either mirrored (it ends at the plane: a floor or a shell
+/// cut there) or runs on past it far enough for the particles near the plane to see it as in
+/// the full model (then it is not mirrored, which would double it); between the two it is
+/// refused.
 void check_walls(const io::CaseTable& table, const SymmetryPlane& plane,
-                 const ParticleSet& particles, const std::vector<Wall>& walls, double spacing,
+                 const ParticleSet& particles, std::vector<Wall>& walls, double spacing,
                  double support_radius) {
-    for (const Wall& wall : walls) {
+    for (Wall& wall : walls) {
         Extent e;
         for (Index k = wall.first; k < wall.first + wall.count; ++k) {
             e.add(plane.side * (particles.position[k][plane.axis] - plane.at));
@@ -85,15 +88,20 @@ void check_walls(const io::CaseTable& table, const SymmetryPlane& plane,
         if (e.empty() || e.low >= support_radius || e.high < 0.0) {
             continue; // clear of the plane, or wholly on the empty side
         }
+        const double past = -e.low; // how far the wall runs on past the plane
         const double needed = support_radius - spacing;
-        if (-e.low < needed) {
+        // A quarter spacing: lattice points on the plane itself (they get no image) or half a
+        // wall spacing before it count as ending at the plane.
+        if (past <= 0.25 * spacing) {
+            wall.mirror_planes = static_cast<std::uint8_t>(wall.mirror_planes | (1U << plane.axis));
+        } else if (past < needed) {
             std::ostringstream message;
-            message << "wall \"" << wall.name << "\" comes within the kernel support ("
-                    << support_radius << " m) of the plane " << plane_text(plane) << " but ends "
-                    << -e.low
-                    << " m past it: walls are not mirrored, so expected it to extend at least "
-                    << needed << " m past the plane (support minus one spacing), or to stay "
-                    << support_radius << " m clear of it";
+            message << "wall \"" << wall.name << "\" runs " << past << " m past the plane "
+                    << plane_text(plane)
+                    << ": expected it to end at the plane (it is then mirrored) or to run at "
+                       "least "
+                    << needed << " m past it (the kernel support " << support_radius
+                    << " m less one spacing; it is then not mirrored)";
             table.fail("at", message.str());
         }
     }
@@ -103,7 +111,7 @@ void check_walls(const io::CaseTable& table, const SymmetryPlane& plane,
 
 std::vector<SymmetryPlane>
 read_symmetry_planes(const io::CaseTable& sph, const ParticleSet& particles,
-                     const std::vector<Wall>& walls, const std::vector<std::string>& body_names,
+                     std::vector<Wall>& walls, const std::vector<std::string>& body_names,
                      int dimension, double spacing, double support_radius) {
     std::vector<SymmetryPlane> planes;
     const auto tables = sph.array_of_tables("symmetry");

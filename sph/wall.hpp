@@ -3,6 +3,7 @@
 #include "sph/particle_set.hpp"
 
 #include <array>
+#include <cstdint>
 #include <iosfwd>
 #include <limits>
 #include <memory>
@@ -81,6 +82,9 @@ struct Wall {
     /// remove_at = "settled": the wall leaves at the end of the step that settles the scene
     /// ([sph.settle]).
     bool removal_on_settle = false;
+    /// Symmetry planes ([[sph.symmetry]]) the wall is mirrored across: bit a for the plane
+    /// normal to axis a (a wall that ends at the plane; one that runs on past it is not).
+    std::uint8_t mirror_planes = 0;
 
     /// Velocity of the wall at point x seen from its particle k (an index into the
     /// ParticleSet): v_k + omega_k x (x - x_k).

@@ -55,7 +55,8 @@ WallTouch& touch_of(std::array<WallTouch, kMaxWalls>& walls, int& count, int wal
 
 int gather_walls(const ParticleSet& p, Index i, const NeighbourList& neighbours,
                  const SmoothingKernel& kernel, const SphOptions& options,
-                 const std::vector<Wall>& rigid_walls, std::array<WallTouch, kMaxWalls>& walls) {
+                 const std::vector<Wall>& rigid_walls, const WallImages& images,
+                 std::array<WallTouch, kMaxWalls>& walls) {
     const double support_squared = kernel.support_radius() * kernel.support_radius();
     const double w_reference = kernel.value(options.particle_spacing);
     const double volume_i = p.mass[i] / p.density[i];
@@ -80,11 +81,18 @@ int gather_walls(const ParticleSet& p, Index i, const NeighbourList& neighbours,
         touch.stiffness.noalias() +=
             contact_stiffness(kernel, options.contact, w_reference, volumes, r) * e * e.transpose();
         const Wall& wall = rigid_walls[static_cast<std::size_t>(p.wall_id[j])];
-        if (!wall.normals.empty()) {
-            touch.weighted_normal +=
-                volume_j * w * wall.normals[static_cast<std::size_t>(j - wall.first)];
+        if (j >= images.first) { // a mirror image of a wall particle (symmetry planes)
+            const auto k = static_cast<std::size_t>(j - images.first);
+            touch.weighted_normal += volume_j * w * images.normals[k]; // zero: none known
+            touch.weighted_velocity +=
+                volume_j * w * (p.velocity[j] + images.angular_velocities[k].cross(x_ij));
+        } else {
+            if (!wall.normals.empty()) {
+                touch.weighted_normal +=
+                    volume_j * w * wall.normals[static_cast<std::size_t>(j - wall.first)];
+            }
+            touch.weighted_velocity += volume_j * w * wall.velocity_at(p, j, p.position[i]);
         }
-        touch.weighted_velocity += volume_j * w * wall.velocity_at(p, j, p.position[i]);
         touch.weight_sum += volume_j * w;
     }
     return count;
@@ -105,7 +113,7 @@ Vec3 coulomb_force(const FrictionPair& pair, double load, double mass, const Vec
 void WallContact::apply(ParticleSet& p, const NeighbourList& neighbours,
                         const SmoothingKernel& kernel, const SphOptions& options,
                         const std::vector<Wall>& rigid_walls, double dt,
-                        std::vector<double>& heating_rate) {
+                        std::vector<double>& heating_rate, const WallImages& images) {
     sticking_ = 0;
     slipping_ = 0;
     reaction_power_correction_ = 0.0;
@@ -137,7 +145,8 @@ void WallContact::apply(ParticleSet& p, const NeighbourList& neighbours,
             if (p.wall_id[i] >= 0) {
                 continue;
             }
-            const int count = gather_walls(p, i, neighbours, kernel, options, rigid_walls, walls);
+            const int count =
+                gather_walls(p, i, neighbours, kernel, options, rigid_walls, images, walls);
             double heat = 0.0;
             for (int k = 0; k < count; ++k) {
                 const WallTouch& touch = walls[k];

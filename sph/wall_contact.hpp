@@ -6,6 +6,7 @@
 #include "sph/sph_options.hpp"
 #include "sph/wall.hpp"
 
+#include <limits>
 #include <vector>
 
 namespace grainload::sph {
@@ -36,14 +37,25 @@ namespace grainload::sph {
 ///   force at the onset of sliding (u_t = 0).
 /// The reaction -(D n + F) goes to the wall particles j in proportion to V_j W_ij, so wall
 /// forces and moments include damping and friction. The heat of both goes to particle i.
+/// The wall particles' mirror images of the symmetry planes (sph/symmetry.hpp), particles
+/// first, first + 1, ... of the particle set: what Wall::normals and Wall::angular_velocities
+/// hold for real wall particles (zero normals where the wall has none, zero angular velocities
+/// where it does not turn).
+struct WallImages {
+    Index first = std::numeric_limits<Index>::max();
+    std::vector<Vec3> normals;
+    std::vector<Vec3> angular_velocities;
+};
+
 class WallContact {
   public:
     /// Adds damping and friction to p.acceleration of body particles, their heat to
     /// heating_rate, and the reaction to wall particles. Call after the contact-potential
     /// force pass, with the step about to be taken.
+    /// Reactions on images of wall particles stay on the images (the solver folds them back).
     void apply(ParticleSet& p, const NeighbourList& neighbours, const SmoothingKernel& kernel,
                const SphOptions& options, const std::vector<Wall>& walls, double dt,
-               std::vector<double>& heating_rate);
+               std::vector<double>& heating_rate, const WallImages& images = {});
 
     /// Work done against wall friction so far (J, or J/m in plane strain), positive.
     double friction_work() const { return friction_work_; }

@@ -130,9 +130,31 @@ constexpr double kEarlyLoadRatio = 1e-9;
 // Averaged over the last 0.05 s of the run: the same round-off argument as kLateGap.
 constexpr double kLateLoadRatio = 1e-9;
 
-TEST(SymmetryModel, HalfColumnCollapseReproducesTheFullColumn) {
-    Scene full = build(column(false));
-    Scene half = build(column(true));
+/// The floor of `text` cut at the plane x = 0 (or x = 0 and y = 0): the cut model's floor is
+/// then mirrored there (Wall::mirror_planes) instead of running on past the plane.
+std::string cut_floor(std::string text, const std::string& whole, const std::string& cut) {
+    text.replace(text.find(whole), whole.size(), cut);
+    return text;
+}
+
+/// A floor of wall particles at a quarter of the bodies' spacing (2.5 mm, the first layer
+/// 0.625 mm below the floor plane): the grains of the first row, which rest about 2h above the
+/// first layer, then reach the floor's particles on the other side of the plane.
+std::string fine_floor(std::string text) {
+    const std::string from = "spacing = \"5 mm\"";
+    text.replace(text.find(from), from.size(), "spacing = \"2.5 mm\"");
+    return text;
+}
+
+std::string column_on_cut_floor() {
+    return cut_floor(fine_floor(column(true)), "origin = \"-400 0 mm\"\nedge_u = \"800 0 mm\"",
+                     "origin = \"0 0 mm\"\nedge_u = \"400 0 mm\"");
+}
+
+void expect_half_column_is_the_full_column(const std::string& full_text,
+                                           const std::string& half_text) {
+    Scene full = build(full_text);
+    Scene half = build(half_text);
     const double spacing = 0.01;
     const auto partner = match(half.model->particles(), full.model->particles(), spacing);
     ASSERT_EQ(partner.size(), 100U);
@@ -184,6 +206,17 @@ TEST(SymmetryModel, HalfColumnCollapseReproducesTheFullColumn) {
     EXPECT_LT(largest_gap(h, f, partner), kLateGap);
     EXPECT_NEAR(half_runout, full_runout, kLateGap);
     EXPECT_NEAR(2.0 * half_sum / full_sum, 1.0, kLateLoadRatio);
+}
+
+TEST(SymmetryModel, HalfColumnCollapseReproducesTheFullColumn) {
+    expect_half_column_is_the_full_column(column(false), column(true));
+}
+
+// The floor ends at the plane and is mirrored: the grains near the plane see the floor's
+// images, and the floor's real particles carry, folded back, the loads on its images (the
+// contact, the dashpot and the friction of the grains' images in the full model).
+TEST(SymmetryModel, HalfColumnOnAFloorCutAtThePlaneReproducesTheFullColumn) {
+    expect_half_column_is_the_full_column(fine_floor(column(false)), column_on_cut_floor());
 }
 
 const char* kRightSink = R"(
@@ -379,9 +412,10 @@ constexpr double kQuarterLoadRatio = 1e-9;
 // is within 2 % of the mean.
 constexpr double kWeightTolerance = 0.02;
 
-TEST(SymmetryModel, QuarterBlockCarriesAQuarterOfTheFloorLoad) {
-    Scene full = build(block(false));
-    Scene quarter = build(block(true));
+void expect_quarter_block_carries_a_quarter(const std::string& full_text,
+                                            const std::string& quarter_text) {
+    Scene full = build(full_text);
+    Scene quarter = build(quarter_text);
     const auto partner = match(quarter.model->particles(), full.model->particles(), 0.01);
     ASSERT_EQ(partner.size(), 36U);
     const double dt = 5e-5;
@@ -413,6 +447,20 @@ TEST(SymmetryModel, QuarterBlockCarriesAQuarterOfTheFloorLoad) {
     EXPECT_LT(gap, kLateGap);
     EXPECT_NEAR(4.0 * quarter_sum / full_sum, 1.0, kQuarterLoadRatio);
     EXPECT_NEAR(full_sum / weight, 1.0, kWeightTolerance);
+}
+
+TEST(SymmetryModel, QuarterBlockCarriesAQuarterOfTheFloorLoad) {
+    expect_quarter_block_carries_a_quarter(block(false), block(true));
+}
+
+// The floor cut at both planes (at the fine spacing, see fine_floor): its particles near the
+// edge x = y = 0 have three images each.
+TEST(SymmetryModel, QuarterBlockOnAFloorCutAtBothPlanesCarriesAQuarter) {
+    expect_quarter_block_carries_a_quarter(
+        fine_floor(block(false)),
+        cut_floor(fine_floor(block(true)),
+                  "origin = \"-50 -50 0 mm\"\nedge_u = \"100 0 0 mm\"\nedge_v = \"0 100 0 mm\"",
+                  "origin = \"0 0 0 mm\"\nedge_u = \"50 0 0 mm\"\nedge_v = \"0 50 0 mm\""));
 }
 
 } // namespace
