@@ -195,8 +195,8 @@ int run_case(const CommandLine& line) {
         const double next_output = next_output_time();
         const double stable = stable_step(*scene);
         if (auto collapse = step_watch.record(stable, clock.t)) {
-            return stop_unstable(*scene, line, clock, *collapse, writer.last_frame_path(),
-                                 estimate, progress);
+            return stop_unstable(*scene, line, clock, *collapse, writer.last_frame_path(), estimate,
+                                 progress);
         }
         dt = std::min(stable, next_output - clock.t);
         const auto points = static_cast<double>(scene->material_point_count());

@@ -11,7 +11,7 @@ using grainload::io::StepCollapseWatch;
 TEST(StepCollapseWatch, AThousandfoldFallFromTheLargestStepIsACollapse) {
     StepCollapseWatch watch;
     EXPECT_FALSE(watch.record(1e-3, 0.0));
-    EXPECT_FALSE(watch.record(5e-4, 0.1));   // a step halved by a faster flow
+    EXPECT_FALSE(watch.record(5e-4, 0.1));    // a step halved by a faster flow
     EXPECT_FALSE(watch.record(1.01e-6, 0.2)); // above 1e-3 of the largest, 1e-3 s
     const auto collapse = watch.record(0.99e-6, 0.3);
     ASSERT_TRUE(collapse);
@@ -20,7 +20,7 @@ TEST(StepCollapseWatch, AThousandfoldFallFromTheLargestStepIsACollapse) {
     StepCollapseWatch growing;
     EXPECT_FALSE(growing.record(1e-6, 0.0));
     EXPECT_FALSE(growing.record(1e-2, 0.1));
-    EXPECT_TRUE(growing.record(5e-6, 0.2)); // below 1e-3 of 1e-2 s
+    EXPECT_TRUE(growing.record(5e-6, 0.2));            // below 1e-3 of 1e-2 s
     EXPECT_TRUE(StepCollapseWatch().record(0.0, 0.0)); // a zero step is never a step
 }
 
