@@ -41,7 +41,10 @@ constexpr double kDensity = 1600.0;
 constexpr double kSpacing = 0.01;
 
 std::vector<Vec3> particles(const std::string& shape_keys, int dimension = 3) {
-    const std::string dir = ::testing::TempDir() + "keyword_body";
+    // One folder per test: ctest runs the tests of this file as parallel processes, and a
+    // deck rewritten by one while another reads it reads as a deck without particles.
+    const std::string dir = ::testing::TempDir() + "keyword_body_" +
+                            ::testing::UnitTest::GetInstance()->current_test_info()->name();
     fs::create_directories(dir);
     std::ofstream(dir + "/sand.k") << kDeck;
     auto document = io::CaseDocument::from_string(
