@@ -1,5 +1,5 @@
 #include "support/case_runner.hpp"
-#include "support/csv_rows.hpp"
+#include "support/coupling_figures.hpp"
 
 #include <string>
 
@@ -29,23 +29,14 @@ TEST(CouplingFillSmall, ATrayFilledByASourceCarriesWhatTheSourceCreated) {
     EXPECT_NEAR(result_value(summary, "created_mass"), 1600 * kParticleMass, kAuditRoundOff);
     EXPECT_NEAR(result_value(summary, "sink_below_discharged_mass"), kSpillMass, kAuditRoundOff);
     EXPECT_LT(std::abs(result_value(summary, "mass_audit_error")), kAuditRoundOff);
-    double impulse = 0.0;
     double time = 0.0;
-    for (const auto& row : numeric_csv_rows(run.out + "/coupling.csv")) {
-        if (row[0] > 0.35 + 1e-9) {
-            impulse += row[13]; // shell_impulse_z: applied load times window
-            time += row[1];
-        }
-    }
+    const double load = -mean_shell_load_z(run.out, 0.35, time);
     ASSERT_GT(time, 0.2);
-    double side_walls = 0.0;
-    for (const char* wall : {"x0", "x1", "y0", "y1"}) {
-        side_walls += result_value(summary, std::string("wall_") + wall + "_force_z");
-    }
+    const double side_walls = walls_force_z(summary, {"x0", "x1", "y0", "y1"});
     const double weight = kTrayMass * kGravity;
-    std::cout << "filled tray: mean plate load " << -impulse / time << " N, side walls "
-              << side_walls << " N, weight " << weight << " N\n";
-    EXPECT_NEAR(-impulse / time - side_walls, weight, 2e-3 * weight);
+    std::cout << "filled tray: mean plate load " << load << " N, side walls " << side_walls
+              << " N, weight " << weight << " N\n";
+    EXPECT_NEAR(load - side_walls, weight, 2e-3 * weight);
 }
 
 // Iterated windows run every pass from the window's start state: the particles created and

@@ -1,27 +1,13 @@
 #include "support/case_runner.hpp"
-#include "support/csv_rows.hpp"
+#include "support/coupling_figures.hpp"
 #include "support/frame_reader.hpp"
 
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 
 namespace grainload::testing {
 namespace {
-
-std::string read_text(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-/// Rows of coupling.csv as numbers.
-std::vector<std::vector<double>> coupling_rows(const std::string& out) {
-    return numeric_csv_rows(out + "/coupling.csv");
-}
 
 constexpr double kGravity = 9.81;
 
@@ -42,31 +28,21 @@ TEST(CouplingSmall, SandLayerOnAPlateWeighsOnItAndBendsItLikeAUniformLoad) {
     const CaseRun run =
         run_case_file("cases/sand_on_plate/sand_on_plate_small.toml", "sand_on_plate_small");
     ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
-    const std::string summary = read_text(run.out + "/summary.json");
+    const std::string summary = read_file(run.out + "/summary.json");
     const double mass = 2000 * 1600.0 * 0.02 * 0.02 * 0.02;
     const double weight = mass * kGravity;
-    const auto rows = coupling_rows(run.out);
-    double impulse = 0.0;
     double time = 0.0;
-    for (const auto& row : rows) {
-        if (row[0] > 0.35 + 1e-9) {
-            impulse += row[13]; // shell_impulse_z: applied load times window
-            time += row[1];
-        }
-    }
+    const double load = -mean_shell_load_z(run.out, 0.35, time);
     ASSERT_GT(time, 0.1);
-    double side_walls = 0.0;
-    for (const char* wall : {"x0", "x1", "y0", "y1"}) {
-        side_walls += result_value(summary, std::string("wall_") + wall + "_force_z");
-    }
-    EXPECT_NEAR(-impulse / time - side_walls, weight, 1e-3 * weight);
+    const double side_walls = walls_force_z(summary, {"x0", "x1", "y0", "y1"});
+    EXPECT_NEAR(load - side_walls, weight, 1e-3 * weight);
     const double d = 210e9 * 0.002 * 0.002 * 0.002 / (12.0 * (1.0 - 0.09));
     const double q = weight / (0.4 * 0.4);
     const double navier = -0.00406 * q * std::pow(0.4, 4) / d;
     const double w = result_value(summary, "centre_deflection");
-    std::cout << "sand on plate: mean interface load " << -impulse / time
-              << " N, side walls' vertical load " << side_walls << " N (weight " << weight
-              << " N), centre deflection " << w << " m (plate under q: " << navier << " m)\n";
+    std::cout << "sand on plate: mean interface load " << load << " N, side walls' vertical load "
+              << side_walls << " N (weight " << weight << " N), centre deflection " << w
+              << " m (plate under q: " << navier << " m)\n";
     EXPECT_NEAR(w, navier, 0.03 * std::abs(navier));
     // The largest deflection over the run (the after-run hint's figure) is at least the final
     // one, and the layer's landing on a static plate cannot push it past twice the static
@@ -101,7 +77,7 @@ TEST(CouplingSmall, ARigidInterfaceCarriesTheLayerAndLeavesTheShellAlone) {
         run_case_file("cases/sand_on_plate/sand_on_plate_small.toml", "sand_on_rigid_plate",
                       "--set coupling.interface[0].rigid=true");
     ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
-    const std::string summary = read_text(run.out + "/summary.json");
+    const std::string summary = read_file(run.out + "/summary.json");
     const double weight = 2000 * 1600.0 * 0.02 * 0.02 * 0.02 * kGravity;
     double walls = 0.0;
     for (const char* wall : {"plate", "x0", "x1", "y0", "y1"}) {
@@ -129,7 +105,7 @@ TEST(CouplingSmall, ARigidInterfaceCarriesTheLayerAndLeavesTheShellAlone) {
 TEST(CouplingSmall, SandDroppedOnAPlateGivesItItsImpulseAndEnergy) {
     const CaseRun run = run_case_file("cases/sand_drop/sand_drop_small.toml", "sand_drop_small");
     ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
-    const std::string summary = read_text(run.out + "/summary.json");
+    const std::string summary = read_file(run.out + "/summary.json");
     const double mass = 500 * 1600.0 * 1e-6;
     const double t = 0.012;
     const double momentum_change = result_value(summary, "sand_momentum_z") - mass * -2.0;
@@ -233,8 +209,8 @@ TEST(CouplingSmall, RestartOfACoupledRunReproducesTheUninterruptedRun) {
         split->GetPoint(i, b);
         EXPECT_TRUE(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) << "particle " << i;
     }
-    const std::string whole_summary = read_text(base + "_whole/summary.json");
-    const std::string split_summary = read_text(base + "_split/summary.json");
+    const std::string whole_summary = read_file(base + "_whole/summary.json");
+    const std::string split_summary = read_file(base + "_split/summary.json");
     for (const char* figure :
          {"centre_deflection", "shell_strain_energy", "interface_impulse_z", "coupling_sand_work",
           "coupling_shell_work", "shell_largest_deflection", "shell_largest_von_mises"}) {
