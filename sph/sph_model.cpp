@@ -54,6 +54,7 @@ std::unique_ptr<SphModel> SphModel::read_bodies(const io::CaseTable& root,
     const io::CaseTable sph = root.table("sph");
     model->gravity_ = scene.gravity;
     model->dimension_ = scene.dimension;
+    model->end_time_ = scene.end_time;
     model->time_step_ = sph.positive_quantity_or("time_step", dim::kTime, 0.0);
     model->interactions_ = sph.boolean_or("interactions", true);
     if (!model->interactions_ && model->time_step_ == 0.0) {
@@ -113,6 +114,11 @@ void SphModel::build(const io::CaseTable& root) {
         }
     }
     build_outlets(sph);
+    if (solver_) {
+        wall_maps_ = WallMapSet(sph, solver_->walls(), dimension_, end_time_);
+    } else if (sph.has("wall_map")) {
+        sph.fail("wall_map", "wall loads come from the SPH solver: expected interactions = true");
+    }
     if (const auto heap = sph.optional_table("heap")) {
         heap_.emplace(*heap, body_names_, particles(), spacing_, gravity_, dimension_);
     }
@@ -235,6 +241,9 @@ void SphModel::write_output_rows(double time) const {
         sinks_.record(time);
         sinks_.write_csv(output_directory_);
     }
+    if (!wall_maps_.empty()) {
+        wall_maps_.record(time, output_directory_);
+    }
     if (probes_.empty()) {
         return;
     }
@@ -321,6 +330,7 @@ void SphModel::advance(double t, double dt) {
     if (solver_) {
         solver_->set_time(t);
         solver_->step(dt);
+        wall_maps_.accumulate(solver_->particles(), solver_->walls(), t, dt);
         if (settle_ && settle_->record(t + dt, solver_->kinetic_energy())) {
             std::ostringstream event;
             event << "settled at t = " << t + dt << " s: the material's kinetic energy "
@@ -441,6 +451,7 @@ void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) 
     if (audit_) {
         sinks_.append_results(scene_mass(), sources_.created(), results);
     }
+    wall_maps_.append_results(results);
     if (settle_) {
         // null (NaN) when the scene never settled.
         results.push_back(
@@ -537,6 +548,7 @@ void SphModel::write_checkpoint(std::ostream& out) const {
         io::write_array(out, heap_->state());
     }
     write_outlet_state(out);
+    io::write_array(out, wall_maps_.state());
 }
 
 void SphModel::read_checkpoint(std::istream& in) {
@@ -600,6 +612,9 @@ void SphModel::read_checkpoint(std::istream& in) {
         heap_->set_state(state);
     }
     read_outlet_state(in);
+    std::vector<double> maps;
+    io::read_array(in, maps);
+    wall_maps_.set_state(maps);
 }
 
 } // namespace grainload::sph

@@ -11,6 +11,7 @@
 #include "sph/sink.hpp"
 #include "sph/source.hpp"
 #include "sph/sph_solver.hpp"
+#include "sph/wall_map.hpp"
 
 #include <fstream>
 #include <memory>
@@ -98,6 +99,7 @@ class SphModel final : public io::Stepper {
     const SphSolver* solver() const { return solver_.get(); }
     const SinkSet& sinks() const { return sinks_; }
     const SourceSet& sources() const { return sources_; }
+    const WallMapSet& wall_maps() const { return wall_maps_; }
     /// Index each current particle had when the case built the scene (particles leave through
     /// sinks and removed walls; the rest keep their order).
     const std::vector<Index>& original_index() const { return origin_; }
@@ -164,6 +166,9 @@ class SphModel final : public io::Stepper {
     /// [[sph.sink]]: mutable because its history is recorded at the output instants, which the
     /// driver reaches through the const append_blocks (as the wall and probe writers above).
     mutable SinkSet sinks_;
+    /// [[sph.wall_map]]: summed every step, written at the output instants (mutable as sinks_).
+    mutable WallMapSet wall_maps_;
+    double end_time_ = 0.0;
     bool removals_ = false; ///< a sink or a wall with remove_at: particles may leave
     std::vector<Index> origin_;
     /// [[sph.source]]: particles entering the scene.

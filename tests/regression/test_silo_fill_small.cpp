@@ -34,7 +34,8 @@ TEST(SiloFillSmall, SourceCreatesItsRateAndTheBooksCloseOverIt) {
 
 // A run stopped at 0.3 s while the source is creating and restarted from its checkpoint ends
 // at 0.6 s bit for bit where the uninterrupted run ends: the checkpoint replays the created
-// particles and holds what the source still owes and where its round-robin stands.
+// particles and holds what the source still owes and where its round-robin stands. The wall
+// map's window (the whole run) spans the restart: its sums travel in the checkpoint.
 TEST(SiloFillSmall, RestartDuringCreationReproducesTheUninterruptedRun) {
     const std::string base = ::testing::TempDir() + "grainload_silo_fill_restart";
     ASSERT_EQ(run_whole_and_split("cases/silo/silo_rest_small.toml", base, "0.3 s", "0.6 s"), "");
@@ -42,6 +43,11 @@ TEST(SiloFillSmall, RestartDuringCreationReproducesTheUninterruptedRun) {
     const std::string whole = read_file(base + "_whole" + frame);
     ASSERT_GT(whole.size(), 1000u);
     EXPECT_TRUE(whole == read_file(base + "_split" + frame)) << "the sand's frame at 0.6 s";
+    for (const char* map : {"/wall_maps/right_window.csv", "/wall_maps/right_000006.csv"}) {
+        const std::string uninterrupted = read_file(base + "_whole" + map);
+        ASSERT_GT(uninterrupted.size(), 100u) << map;
+        EXPECT_TRUE(uninterrupted == read_file(base + "_split" + map)) << map;
+    }
     const std::string a = read_file(base + "_whole/summary.json");
     const std::string b = read_file(base + "_split/summary.json");
     for (const char* figure : {"created_mass", "created_energy", "kinetic_energy", "gravity_work",

@@ -1,4 +1,5 @@
 #include "support/case_runner.hpp"
+#include "support/csv_rows.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -57,6 +58,33 @@ TEST(SiloJanssenFillSmall, FilledRowByRowTheWallCarriesJanssensShare) {
     EXPECT_NEAR(floor + wall, weight, 0.01 * weight);
     EXPECT_GT(share, low);
     EXPECT_LT(share, high);
+
+    // The unrolled wall map ([[sph.wall_map]] "wall", 10 x 12 cells, mean over 1.2-1.4 s)
+    // against the shell: the friction the map puts on the wall, summed over its cells, is the
+    // load the FEM's supports carry (the particles' forces binned directly, against the same
+    // forces mapped onto the shell's nodes and brought down by its equilibrium). The sand is
+    // at rest over the window, so the window's mean and the last window's reaction agree to
+    // the load's drift: 1 %. The scene is symmetric about the axis' planes: no net
+    // circumferential friction beyond 1 % of the axial.
+    const double axial = result_value(summary, "wall_map_wall_shear_axial_force");
+    const double around = result_value(summary, "wall_map_wall_shear_circumferential_force");
+    std::printf("wall map: axial friction %.3f N, circumferential %.4f N\n", axial, around);
+    EXPECT_NEAR(-axial, wall, 0.01 * wall);
+    EXPECT_LT(std::abs(around), 0.01 * std::abs(axial));
+    // Coulomb: on every ring of cells the mobilised friction is at most mu times the pressure
+    // (each particle's friction is bounded by mu times its contact force). 1 % for the
+    // dashpot's share of the normal force, which the bound does not count.
+    const auto cells = numeric_csv_rows(run.out + "/wall_maps/wall_window.csv");
+    ASSERT_EQ(cells.size(), 120u);
+    for (std::size_t ring = 0; ring < 10; ++ring) {
+        double pressure = 0.0;
+        double friction = 0.0;
+        for (std::size_t k = 12 * ring; k < 12 * ring + 12; ++k) {
+            pressure += cells[k][4];
+            friction += cells[k][6];
+        }
+        EXPECT_LE(std::abs(friction), 1.01 * kMu * pressure) << "ring " << ring;
+    }
 }
 
 } // namespace

@@ -1,0 +1,216 @@
+// WallMapSet: binning the walls' loads and keeping their interval and window sums. Reading the
+// [[sph.wall_map]] tables is in wall_map_reader.cpp; the files it writes in wall_map_output.cpp.
+#include "sph/wall_map.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace grainload::sph {
+
+double WallMapSet::Map::cell_area() const {
+    if (cylinder) {
+        return radius * (angle_end - angle_start) / bins_2 * length / bins_1;
+    }
+    // Plane strain: the edge by 1 m of depth, as the particles' masses are per metre.
+    const double area = edge_v.squaredNorm() > 0.0 ? edge_u.cross(edge_v).norm() : edge_u.norm();
+    return area / (bins_1 * bins_2);
+}
+
+std::optional<int> WallMapSet::Map::cell_of(const Vec3& x) const {
+    const Vec3 d = x - origin;
+    double a = 0.0;
+    double b = 0.0;
+    if (cylinder) {
+        const double along = d.dot(axis);
+        const Vec3 radial = d - along * axis;
+        if (std::abs(radial.norm() - radius) > reach) {
+            return std::nullopt;
+        }
+        double angle = std::atan2(radial.dot(axis.cross(reference)), radial.dot(reference));
+        // The arc may start anywhere: measure the angle from its start, in [0, 2 pi).
+        angle = std::fmod(angle - angle_start, 2.0 * std::numbers::pi);
+        if (angle < 0.0) {
+            angle += 2.0 * std::numbers::pi;
+        }
+        a = along / length;
+        b = angle / (angle_end - angle_start);
+    } else if (edge_v.squaredNorm() > 0.0) {
+        // Coordinates on the (possibly skew) grid: the least-squares solution of
+        // d = a edge_u + b edge_v, from the 2 x 2 Gram system; the rest is the distance off it.
+        const double uu = edge_u.dot(edge_u);
+        const double uv = edge_u.dot(edge_v);
+        const double vv = edge_v.dot(edge_v);
+        const double du = d.dot(edge_u);
+        const double dv = d.dot(edge_v);
+        const double det = uu * vv - uv * uv;
+        a = (du * vv - dv * uv) / det;
+        b = (dv * uu - du * uv) / det;
+        if ((d - a * edge_u - b * edge_v).norm() > reach) {
+            return std::nullopt;
+        }
+    } else {
+        a = d.dot(edge_u) / edge_u.squaredNorm();
+        if ((d - a * edge_u).norm() > reach) {
+            return std::nullopt;
+        }
+    }
+    if (!(a >= 0.0 && a < 1.0 && b >= 0.0 && b < 1.0)) {
+        return std::nullopt;
+    }
+    const int i = std::min(static_cast<int>(a * bins_1), bins_1 - 1);
+    const int j = std::min(static_cast<int>(b * bins_2), bins_2 - 1);
+    return i * bins_2 + j;
+}
+
+WallMapSet::Load WallMapSet::Map::split(const Vec3& x, const Vec3& n, const Vec3& f) const {
+    const double normal = f.dot(n);
+    const Vec3 tangential = f - normal * n;
+    Vec3 first;
+    Vec3 second;
+    if (cylinder) {
+        const Vec3 d = x - origin;
+        const Vec3 radial = d - d.dot(axis) * axis;
+        first = axis;
+        second = radial.norm() > 0.0 ? Vec3(axis.cross(radial).normalized()) : Vec3::Zero();
+    } else {
+        first = edge_u.normalized();
+        second = edge_v.squaredNorm() > 0.0 ? Vec3(edge_v.normalized()) : Vec3::Zero();
+    }
+    return {-normal, tangential.dot(first), tangential.dot(second)};
+}
+
+std::array<double, 2> WallMapSet::Map::centre(int cell) const {
+    const double a = (cell / bins_2 + 0.5) / bins_1;
+    const double b = (cell % bins_2 + 0.5) / bins_2;
+    if (cylinder) {
+        return {a * length,
+                (angle_start + b * (angle_end - angle_start)) * 180.0 / std::numbers::pi};
+    }
+    return {a * edge_u.norm(), b * edge_v.norm()};
+}
+
+void WallMapSet::reset() {
+    for (Map& map : maps_) {
+        map.interval.assign(static_cast<std::size_t>(map.cells()), Load{});
+        map.window_sum.assign(static_cast<std::size_t>(map.cells()), Load{});
+        map.window_max.assign(static_cast<std::size_t>(map.cells()), Load{});
+        map.window_seen = false;
+    }
+}
+
+void WallMapSet::accumulate(const ParticleSet& particles, const std::vector<Wall>& walls, double t,
+                            double dt) {
+    for (Map& map : maps_) {
+        // The part of the step inside the window enters the window's sum.
+        const double overlap =
+            std::max(0.0, std::min(t + dt, map.window_end) - std::max(t, map.window_start));
+        for (const int w : map.walls) {
+            const Wall& wall = walls[static_cast<std::size_t>(w)];
+            for (Index k = wall.first; k < wall.first + wall.count; ++k) {
+                const Vec3& x = particles.position[k];
+                const auto cell = map.cell_of(x);
+                if (!cell) {
+                    continue;
+                }
+                const Vec3 f = particles.mass[k] * particles.acceleration[k];
+                const Load load =
+                    map.split(x, wall.normals[static_cast<std::size_t>(k - wall.first)], f);
+                Load& interval = map.interval[static_cast<std::size_t>(*cell)];
+                Load& window = map.window_sum[static_cast<std::size_t>(*cell)];
+                for (int c = 0; c < 3; ++c) {
+                    interval[c] += dt * load[c];
+                    window[c] += overlap * load[c];
+                }
+            }
+        }
+    }
+}
+
+WallMapSet::Load WallMapSet::window_mean(const Map& map, int cell) const {
+    const double elapsed = std::min(last_time_, map.window_end) - map.window_start;
+    Load mean{};
+    if (elapsed > 0.0) {
+        const Load& sum = map.window_sum[static_cast<std::size_t>(cell)];
+        for (int c = 0; c < 3; ++c) {
+            mean[c] = sum[c] / (elapsed * map.cell_area());
+        }
+    }
+    return mean;
+}
+
+void WallMapSet::record(double time, const std::string& directory) {
+    if (recorded_any_ && !(time > last_time_)) {
+        return; // an instant already recorded (a restart writes its first frame again)
+    }
+    const double length = recorded_any_ ? time - last_time_ : 0.0;
+    for (Map& map : maps_) {
+        // An interval that ends inside the window offers its mean to the window's maximum.
+        const bool in_window =
+            length > 0.0 && time > map.window_start && time <= map.window_end * (1.0 + 1e-12);
+        for (int cell = 0; cell < map.cells(); ++cell) {
+            Load& interval = map.interval[static_cast<std::size_t>(cell)];
+            for (int c = 0; c < 3 && length > 0.0; ++c) {
+                interval[c] /= length * map.cell_area();
+            }
+            if (in_window) {
+                Load& top = map.window_max[static_cast<std::size_t>(cell)];
+                for (int c = 0; c < 3; ++c) {
+                    top[c] = map.window_seen ? std::max(top[c], interval[c]) : interval[c];
+                }
+            }
+        }
+        map.window_seen = map.window_seen || in_window;
+        write_interval(map, time, length, directory);
+        std::fill(map.interval.begin(), map.interval.end(), Load{});
+    }
+    last_time_ = time;
+    recorded_any_ = true;
+    for (const Map& map : maps_) {
+        write_window(map, directory);
+    }
+    instants_ += 1.0;
+}
+
+std::vector<double> WallMapSet::state() const {
+    std::vector<double> out{last_time_, instants_, recorded_any_ ? 1.0 : 0.0};
+    for (const Map& map : maps_) {
+        out.push_back(map.window_seen ? 1.0 : 0.0);
+        for (const auto* loads : {&map.interval, &map.window_sum, &map.window_max}) {
+            for (const Load& load : *loads) {
+                out.insert(out.end(), load.begin(), load.end());
+            }
+        }
+    }
+    return out;
+}
+
+void WallMapSet::set_state(const std::vector<double>& state) {
+    std::size_t expected = 3;
+    for (const Map& map : maps_) {
+        expected += 1 + 9 * static_cast<std::size_t>(map.cells());
+    }
+    if (state.size() != expected) {
+        throw std::runtime_error("checkpoint: the wall maps' state has " +
+                                 std::to_string(state.size()) + " numbers, expected " +
+                                 std::to_string(expected));
+    }
+    last_time_ = state[0];
+    instants_ = state[1];
+    recorded_any_ = state[2] != 0.0;
+    std::size_t at = 3;
+    for (Map& map : maps_) {
+        map.window_seen = state[at++] != 0.0;
+        for (auto* loads : {&map.interval, &map.window_sum, &map.window_max}) {
+            for (Load& load : *loads) {
+                for (double& value : load) {
+                    value = state[at++];
+                }
+            }
+        }
+    }
+}
+
+} // namespace grainload::sph

@@ -1,0 +1,133 @@
+#pragma once
+
+#include "io/frame.hpp"
+#include "io/key_spec.hpp"
+#include "sph/particle_set.hpp"
+#include "sph/wall.hpp"
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace grainload::io {
+class CaseTable;
+}
+
+namespace grainload::sph {
+
+/// The keys of each [[sph.wall_map]] table (docs/user-guide/sph.md, "Wall-load maps").
+inline constexpr std::array<io::KeySpec, 14> kWallMapKeys{{
+    {"name", "string", "", "names the map's files, wall_maps/NAME_*.csv, and its summary figures"},
+    {"walls", "string or list of strings", "",
+     "the walls whose loads are mapped: [[sph.wall]] names or coupled shell interfaces"},
+    {"type", "`cylinder` or `plane`", "",
+     "cylinder: the unrolled wall, axial position by angle; plane: a grid on a parallelogram"},
+    {"origin", "length vector", "",
+     "cylinder: the point of the axis where the axial coordinate is 0; plane: a corner"},
+    {"axis", "vector", "required for a cylinder", "the axis; the axial coordinate grows along it"},
+    {"reference", "vector", "a normal to the axis",
+     "cylinder: the direction of angle 0; the angle turns right-handed about the axis"},
+    {"radius", "length", "required for a cylinder", "the wall's radius, for the cells' areas"},
+    {"length", "length", "required for a cylinder", "the mapped length along the axis"},
+    {"angles", "two angles", "0 360 deg", "cylinder: the mapped arc (a quarter model: 0 90 deg)"},
+    {"edge_u", "length vector", "required for a plane", "the grid's first edge from origin"},
+    {"edge_v", "length vector", "required for a plane in 3D",
+     "the grid's second edge; in plane strain the grid is edge_u by 1 m of depth"},
+    {"bins", "two integers", "",
+     "cells along the axis and around it (cylinder) or along edge_u and edge_v (plane; in "
+     "plane strain [n, 1])"},
+    {"reach", "length", "no limit",
+     "only wall particles this near the mapped surface count (one face of a box wall)"},
+    {"window", "two times", "the whole run",
+     "the interval whose mean and maximum maps go into wall_maps/NAME_window.csv"},
+}};
+
+/// Wall loads the way engineers read them (issue 16): the normal pressure and the wall-friction
+/// traction of chosen walls, binned on a grid, as the mean over each output interval and as the
+/// mean and maximum over a time window. A cylinder is unrolled (axial position x angle). The
+/// force of the bodies on a wall particle (mass x acceleration after the force pass,
+/// accumulate_wall_load) is split by the wall's normal n there (into the material):
+///   pressure p = -f . n / A,   traction t = (f - (f . n) n) / A,
+/// A the cell's area; t is given along the axis and around it (cylinder) or along the grid's
+/// edges (plane). The impulses f dt of every step are summed per cell, so a map is the mean
+/// over its interval, not a snapshot of one step's noise.
+class WallMapSet {
+  public:
+    /// Loads of one cell: pressure and two traction components, in Pa (N/m in plane strain
+    /// per metre of depth: the particles' masses are per metre, so are the areas).
+    using Load = std::array<double, 3>;
+
+    struct Map {
+        std::string name;
+        std::vector<int> walls; ///< indices into the solver's walls
+        bool cylinder = true;
+        Vec3 origin = Vec3::Zero();
+        Vec3 axis = Vec3::UnitZ();      ///< cylinder: unit axis
+        Vec3 reference = Vec3::UnitX(); ///< cylinder: unit direction of angle 0
+        double radius = 0.0;
+        double length = 0.0;
+        double angle_start = 0.0;
+        double angle_end = 0.0;
+        Vec3 edge_u = Vec3::Zero();
+        Vec3 edge_v = Vec3::Zero(); ///< plane strain: zero (1 m of depth)
+        int bins_1 = 1;             ///< along the axis, or along edge_u
+        int bins_2 = 1;             ///< around the axis, or along edge_v
+        double reach = 0.0;         ///< infinity: no limit
+        double window_start = 0.0;
+        double window_end = 0.0;
+        // State (checkpointed): impulses of the current interval and of the window per cell,
+        // the window's maximum of the interval means.
+        std::vector<Load> interval;
+        std::vector<Load> window_sum;
+        std::vector<Load> window_max;
+        bool window_seen = false; ///< an interval mean has entered window_max
+
+        int cells() const { return bins_1 * bins_2; }
+        double cell_area() const;
+        /// The cell of point x, or nullopt outside the grid or beyond reach.
+        std::optional<int> cell_of(const Vec3& x) const;
+        /// The load of force f on a wall point x with normal n (into the material), per area.
+        Load split(const Vec3& x, const Vec3& n, const Vec3& f) const;
+        /// Cell centre coordinates: axial position (m) and angle (deg), or u and v (m).
+        std::array<double, 2> centre(int cell) const;
+    };
+
+    WallMapSet() = default;
+    /// The [[sph.wall_map]] tables of `sph`; wall names resolve against `walls`.
+    WallMapSet(const io::CaseTable& sph, const std::vector<Wall>& walls, int dimension,
+               double end_time);
+    explicit WallMapSet(std::vector<Map> maps) : maps_(std::move(maps)) { reset(); }
+
+    bool empty() const { return maps_.empty(); }
+    const std::vector<Map>& maps() const { return maps_; }
+
+    /// Add the impulses of the step [t, t + dt]: the particles hold the forces of its force pass.
+    void accumulate(const ParticleSet& particles, const std::vector<Wall>& walls, double t,
+                    double dt);
+    /// At an output instant: DIR/wall_maps/NAME_NNNNNN.csv (the mean over the interval since
+    /// the last instant; zeros at the first) and NAME_window.csv, written atomically.
+    void record(double time, const std::string& directory);
+    /// Per map: the window's largest mean and maximum pressure and where, and its mean pressure
+    /// and traction resultants.
+    void append_results(std::vector<io::ResultFigure>& results) const;
+
+    /// For checkpoints: every map's sums, the interval clock and the instant count.
+    std::vector<double> state() const;
+    void set_state(const std::vector<double>& state);
+
+  private:
+    void reset();
+    void write_interval(const Map& map, double time, double length,
+                        const std::string& directory) const;
+    void write_window(const Map& map, const std::string& directory) const;
+    /// Mean over the window so far: its impulse over the elapsed part of the window.
+    Load window_mean(const Map& map, int cell) const;
+
+    std::vector<Map> maps_;
+    double last_time_ = 0.0;    ///< the last instant recorded
+    double instants_ = 0.0;     ///< files written per map so far (a count; double for state())
+    bool recorded_any_ = false; ///< an instant has been recorded
+};
+
+} // namespace grainload::sph
