@@ -54,7 +54,6 @@ std::unique_ptr<SphModel> SphModel::read_bodies(const io::CaseTable& root,
     const io::CaseTable sph = root.table("sph");
     model->gravity_ = scene.gravity;
     model->dimension_ = scene.dimension;
-    model->end_time_ = scene.end_time;
     model->time_step_ = sph.positive_quantity_or("time_step", dim::kTime, 0.0);
     model->interactions_ = sph.boolean_or("interactions", true);
     if (!model->interactions_ && model->time_step_ == 0.0) {
@@ -115,7 +114,7 @@ void SphModel::build(const io::CaseTable& root) {
     }
     build_outlets(sph);
     if (solver_) {
-        wall_maps_ = WallMapSet(sph, solver_->walls(), dimension_, end_time_);
+        wall_maps_ = WallMapSet(sph, solver_->particles(), solver_->walls(), dimension_);
     } else if (sph.has("wall_map")) {
         sph.fail("wall_map", "wall loads come from the SPH solver: expected interactions = true");
     }

@@ -168,7 +168,6 @@ class SphModel final : public io::Stepper {
     mutable SinkSet sinks_;
     /// [[sph.wall_map]]: summed every step, written at the output instants (mutable as sinks_).
     mutable WallMapSet wall_maps_;
-    double end_time_ = 0.0;
     bool removals_ = false; ///< a sink or a wall with remove_at: particles may leave
     std::vector<Index> origin_;
     /// [[sph.source]]: particles entering the scene.

@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -19,7 +20,7 @@ double WallMapSet::Map::cell_area() const {
     return area / (bins_1 * bins_2);
 }
 
-std::optional<int> WallMapSet::Map::cell_of(const Vec3& x) const {
+std::optional<std::array<double, 2>> WallMapSet::Map::coordinates(const Vec3& x) const {
     const Vec3 d = x - origin;
     double a = 0.0;
     double b = 0.0;
@@ -35,8 +36,13 @@ std::optional<int> WallMapSet::Map::cell_of(const Vec3& x) const {
         if (angle < 0.0) {
             angle += 2.0 * std::numbers::pi;
         }
+        // Off a partial arc: nearer its start (a negative angle) or its end.
+        const double arc = angle_end - angle_start;
+        if (angle > arc && 2.0 * std::numbers::pi - angle < angle - arc) {
+            angle -= 2.0 * std::numbers::pi;
+        }
         a = along / length;
-        b = angle / (angle_end - angle_start);
+        b = angle / arc;
     } else if (edge_v.squaredNorm() > 0.0) {
         // Coordinates on the (possibly skew) grid: the least-squares solution of
         // d = a edge_u + b edge_v, from the 2 x 2 Gram system; the rest is the distance off it.
@@ -57,12 +63,89 @@ std::optional<int> WallMapSet::Map::cell_of(const Vec3& x) const {
             return std::nullopt;
         }
     }
-    if (!(a >= 0.0 && a < 1.0 && b >= 0.0 && b < 1.0)) {
-        return std::nullopt;
+    return std::array<double, 2>{a, b};
+}
+
+std::array<double, 2> WallMapSet::Map::extents() const {
+    if (cylinder) {
+        return {length, radius * (angle_end - angle_start)};
     }
-    const int i = std::min(static_cast<int>(a * bins_1), bins_1 - 1);
-    const int j = std::min(static_cast<int>(b * bins_2), bins_2 - 1);
-    return i * bins_2 + j;
+    // Plane strain: no second direction to spread a particle's patch over.
+    return {edge_u.norm(), edge_v.squaredNorm() > 0.0 ? edge_v.norm() : 0.0};
+}
+
+bool WallMapSet::Map::periodic() const {
+    return cylinder && angle_end - angle_start >= 2.0 * std::numbers::pi * (1.0 - 1e-12);
+}
+
+namespace {
+
+/// The cells of one direction that a patch [lo, hi] (grid units: the grid is [0, 1] in n
+/// cells) overlaps, each with its overlap over the patch's part inside the grid (periodic: the
+/// patch wraps around instead). Returns their count: at most 2 for a patch no wider than a
+/// cell, 0 when it misses the grid.
+int overlaps(double lo, double hi, int n, bool periodic, std::array<int, 2>& cells,
+             std::array<double, 2>& weights) {
+    if (!periodic) {
+        lo = std::max(lo, 0.0);
+        hi = std::min(hi, 1.0);
+    }
+    if (!(hi > lo)) {
+        return 0;
+    }
+    const int first = static_cast<int>(std::floor(lo * n));
+    const int last = std::min(static_cast<int>(std::floor(hi * n)), first + 1);
+    int count = 0;
+    for (int c = first; c <= last; ++c) {
+        const double overlap =
+            std::min(hi, (c + 1.0) / n) - std::max(lo, static_cast<double>(c) / n);
+        if (overlap > 0.0 && (periodic || (c >= 0 && c < n))) {
+            cells[static_cast<std::size_t>(count)] = periodic ? ((c % n) + n) % n : c;
+            weights[static_cast<std::size_t>(count)] = overlap / (hi - lo);
+            ++count;
+        }
+    }
+    return count;
+}
+
+} // namespace
+
+int WallMapSet::Map::shares(const Vec3& x, double half,
+                            std::array<std::pair<int, double>, 4>& out) const {
+    const auto at = coordinates(x);
+    if (!at) {
+        return 0;
+    }
+    // The particle stands for a patch one spacing wide centred on it: its load goes to the
+    // cells the patch overlaps, in proportion, so that a particle on the border of two cells
+    // is shared, not given to one (which striped the map of a uniform load). A patch that
+    // reaches past the grid's edge gives its whole load to its part inside: a wall that ends
+    // at the edge keeps all of its load.
+    const auto extent = extents();
+    const double h1 = half / extent[0];
+    const double h2 = extent[1] > 0.0 ? half / extent[1] : 0.0;
+    std::array<int, 2> cells_1{};
+    std::array<int, 2> cells_2{};
+    std::array<double, 2> weights_1{};
+    std::array<double, 2> weights_2{};
+    const int n1 = overlaps((*at)[0] - h1, (*at)[0] + h1, bins_1, false, cells_1, weights_1);
+    int n2 = 0;
+    if (h2 > 0.0) {
+        n2 = overlaps((*at)[1] - h2, (*at)[1] + h2, bins_2, periodic(), cells_2, weights_2);
+    } else if (extent[1] == 0.0) {
+        n2 = 1; // plane strain: one cell across the depth
+        weights_2[0] = 1.0;
+    }
+    int count = 0;
+    for (int i = 0; i < n1; ++i) {
+        for (int j = 0; j < n2; ++j) {
+            out[static_cast<std::size_t>(count++)] = {
+                cells_1[static_cast<std::size_t>(i)] * bins_2 +
+                    cells_2[static_cast<std::size_t>(j)],
+                weights_1[static_cast<std::size_t>(i)] * weights_2[static_cast<std::size_t>(j)]};
+        }
+    }
+    return count;
 }
 
 WallMapSet::Load WallMapSet::Map::split(const Vec3& x, const Vec3& n, const Vec3& f) const {
@@ -107,22 +190,27 @@ void WallMapSet::accumulate(const ParticleSet& particles, const std::vector<Wall
         // The part of the step inside the window enters the window's sum.
         const double overlap =
             std::max(0.0, std::min(t + dt, map.window_end) - std::max(t, map.window_start));
-        for (const int w : map.walls) {
-            const Wall& wall = walls[static_cast<std::size_t>(w)];
+        std::array<std::pair<int, double>, 4> shares;
+        for (std::size_t m = 0; m < map.walls.size(); ++m) {
+            const Wall& wall = walls[static_cast<std::size_t>(map.walls[m])];
+            const double half = map.half_spacing[m];
             for (Index k = wall.first; k < wall.first + wall.count; ++k) {
                 const Vec3& x = particles.position[k];
-                const auto cell = map.cell_of(x);
-                if (!cell) {
+                const int count = map.shares(x, half, shares);
+                if (count == 0) {
                     continue;
                 }
                 const Vec3 f = particles.mass[k] * particles.acceleration[k];
                 const Load load =
                     map.split(x, wall.normals[static_cast<std::size_t>(k - wall.first)], f);
-                Load& interval = map.interval[static_cast<std::size_t>(*cell)];
-                Load& window = map.window_sum[static_cast<std::size_t>(*cell)];
-                for (int c = 0; c < 3; ++c) {
-                    interval[c] += dt * load[c];
-                    window[c] += overlap * load[c];
+                for (int s = 0; s < count; ++s) {
+                    const auto [cell, weight] = shares[static_cast<std::size_t>(s)];
+                    Load& interval = map.interval[static_cast<std::size_t>(cell)];
+                    Load& window = map.window_sum[static_cast<std::size_t>(cell)];
+                    for (int c = 0; c < 3; ++c) {
+                        interval[c] += weight * dt * load[c];
+                        window[c] += weight * overlap * load[c];
+                    }
                 }
             }
         }

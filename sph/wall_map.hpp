@@ -74,6 +74,9 @@ class WallMapSet {
         int bins_1 = 1;             ///< along the axis, or along edge_u
         int bins_2 = 1;             ///< around the axis, or along edge_v
         double reach = 0.0;         ///< infinity: no limit
+        /// Half the particle spacing of each of `walls`: a particle's load is spread over the
+        /// patch of one spacing around it (see shares()).
+        std::vector<double> half_spacing;
         double window_start = 0.0;
         double window_end = 0.0;
         // State (checkpointed): impulses of the current interval and of the window per cell,
@@ -85,8 +88,17 @@ class WallMapSet {
 
         int cells() const { return bins_1 * bins_2; }
         double cell_area() const;
-        /// The cell of point x, or nullopt outside the grid or beyond reach.
-        std::optional<int> cell_of(const Vec3& x) const;
+        /// Grid coordinates of x, each 0 to 1 across the grid (outside: beyond it), or nullopt
+        /// beyond reach of the surface.
+        std::optional<std::array<double, 2>> coordinates(const Vec3& x) const;
+        /// The cells a wall particle at x shares its load with, and the shares (they sum to 1):
+        /// its patch, `half` (half its wall's spacing) either side, against the cells; 0
+        /// outside the grid or beyond reach.
+        int shares(const Vec3& x, double half, std::array<std::pair<int, double>, 4>& out) const;
+        /// The grid's size along its two directions (m; 0: plane strain's depth).
+        std::array<double, 2> extents() const;
+        /// A full circle: the angle wraps around.
+        bool periodic() const;
         /// The load of force f on a wall point x with normal n (into the material), per area.
         Load split(const Vec3& x, const Vec3& n, const Vec3& f) const;
         /// Cell centre coordinates: axial position (m) and angle (deg), or u and v (m).
@@ -94,9 +106,10 @@ class WallMapSet {
     };
 
     WallMapSet() = default;
-    /// The [[sph.wall_map]] tables of `sph`; wall names resolve against `walls`.
-    WallMapSet(const io::CaseTable& sph, const std::vector<Wall>& walls, int dimension,
-               double end_time);
+    /// The [[sph.wall_map]] tables of `sph`; wall names resolve against `walls`, whose
+    /// particles (in `particles`) give their spacing.
+    WallMapSet(const io::CaseTable& sph, const ParticleSet& particles,
+               const std::vector<Wall>& walls, int dimension);
     explicit WallMapSet(std::vector<Map> maps) : maps_(std::move(maps)) { reset(); }
 
     bool empty() const { return maps_.empty(); }

@@ -3,6 +3,7 @@
 #include "sph/wall_map.hpp"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -120,8 +121,8 @@ void read_bins(const io::CaseTable& table, int dimension, WallMapSet::Map& map) 
 
 } // namespace
 
-WallMapSet::WallMapSet(const io::CaseTable& sph, const std::vector<Wall>& walls, int dimension,
-                       double end_time) {
+WallMapSet::WallMapSet(const io::CaseTable& sph, const ParticleSet& particles,
+                       const std::vector<Wall>& walls, int dimension) {
     for (const auto& table : sph.array_of_tables("wall_map")) {
         Map map;
         map.name = table.string("name");
@@ -131,6 +132,17 @@ WallMapSet::WallMapSet(const io::CaseTable& sph, const std::vector<Wall>& walls,
             }
         }
         map.walls = read_walls(table, walls);
+        for (const int w : map.walls) {
+            // add_wall gives a wall particle the mass density x spacing^dimension.
+            const Wall& wall = walls[static_cast<std::size_t>(w)];
+            if (wall.count > 0) {
+                const double spacing = std::pow(
+                    particles.mass[wall.first] / particles.density[wall.first], 1.0 / dimension);
+                map.half_spacing.push_back(0.5 * spacing);
+            } else {
+                map.half_spacing.push_back(0.0);
+            }
+        }
         map.cylinder = table.choice("type", {"cylinder", "plane"}) == "cylinder";
         map.origin = table.vector("origin", dim::kLength);
         if (map.cylinder) {
@@ -141,8 +153,9 @@ WallMapSet::WallMapSet(const io::CaseTable& sph, const std::vector<Wall>& walls,
         read_bins(table, dimension, map);
         map.reach = table.positive_quantity_or("reach", dim::kLength,
                                                std::numeric_limits<double>::infinity());
+        // By default the window is the whole run, however long a restart makes it.
         map.window_start = 0.0;
-        map.window_end = end_time;
+        map.window_end = std::numeric_limits<double>::infinity();
         if (table.has("window")) {
             const auto window = table.quantity_list("window", dim::kTime);
             if (window.size() != 2 || !(window[0] >= 0.0) || !(window[1] > window[0])) {

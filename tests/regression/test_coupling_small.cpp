@@ -1,5 +1,6 @@
 #include "support/case_runner.hpp"
 #include "support/coupling_figures.hpp"
+#include "support/csv_rows.hpp"
 #include "support/frame_reader.hpp"
 
 #include <cstdio>
@@ -86,6 +87,22 @@ TEST(CouplingSmall, ARigidInterfaceCarriesTheLayerAndLeavesTheShellAlone) {
     EXPECT_NEAR(-walls, weight, 5e-3 * weight);
     EXPECT_EQ(result_value(summary, "centre_deflection"), 0.0);
     EXPECT_NE(summary.find("\"wall plate\": \"rigid\""), std::string::npos) << summary;
+
+    // A very stiff plate (E x 1000, 1 um deflection: 5e-5 of the spacing) gives the rigid
+    // wall's contact pressure ([[sph.wall_map]] "plate", 4 x 4 cells, mean over 0.4-0.5 s) cell
+    // by cell: the two scenes differ by that deflection only, so 1e-3 (measured 1.9e-5).
+    const CaseRun stiff =
+        run_case_file("cases/sand_on_plate/sand_on_plate_small.toml", "sand_on_stiff_plate",
+                      "--set 'material[1].youngs_modulus=\"210000 GPa\"'");
+    ASSERT_EQ(stiff.cli.exit_code, 0) << stiff.cli.output;
+    const auto rigid_map = numeric_csv_rows(run.out + "/wall_maps/plate_window.csv");
+    const auto stiff_map = numeric_csv_rows(stiff.out + "/wall_maps/plate_window.csv");
+    ASSERT_EQ(rigid_map.size(), 16u);
+    ASSERT_EQ(stiff_map.size(), 16u);
+    for (std::size_t cell = 0; cell < 16; ++cell) {
+        EXPECT_NEAR(stiff_map[cell][4], rigid_map[cell][4], 1e-3 * rigid_map[cell][4])
+            << "cell " << cell;
+    }
 }
 
 // Verification 4 of the coupling: a 0.8 kg block of Drucker-Prager sand at 2 m/s lands on a

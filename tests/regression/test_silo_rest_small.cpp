@@ -110,7 +110,7 @@ TEST(SiloRestSmall, WallPressureAtRestAgainstJanssen) {
     // Its cells summed are the wall's force of wall_forces.csv at 3 s (the same particle forces,
     // binned and time-averaged, of a sand at rest: 0.5 %). Bin by bin it mirrors the left
     // wall's bands, which are separate walls: the fill is symmetric about the slot's middle,
-    // so p_h agrees to the particle-scale scatter of a band of 8 rows (measured 2-7 % in the
+    // so p_h agrees to the particle-scale scatter of a band of 8 rows (measured 1-4 % in the
     // bands 0.2-1.2 m; 10 % asserted).
     const auto cells = numeric_csv_rows(run.out + "/wall_maps/right_000030.csv");
     ASSERT_EQ(cells.size(), 8u);

@@ -50,6 +50,7 @@ WallMapSet::Map cylinder_map(double window_start, double window_end) {
     WallMapSet::Map map;
     map.name = "silo";
     map.walls = {0};
+    map.half_spacing = {0.025}; // the rings' wall spacing, 0.05 m
     map.cylinder = true;
     map.axis = Vec3::UnitZ();
     map.reference = Vec3::UnitX();
@@ -155,6 +156,7 @@ TEST(WallMap, PlaneStrainLineGivesPressurePerMetreOfDepth) {
     WallMapSet::Map map;
     map.name = "floor";
     map.walls = {0};
+    map.half_spacing = {0.05};
     map.cylinder = false;
     map.edge_u = Vec3(1.0, 0.0, 0.0);
     map.bins_1 = 2;
@@ -173,6 +175,42 @@ TEST(WallMap, PlaneStrainLineGivesPressurePerMetreOfDepth) {
         EXPECT_NEAR(row[5], 5 * 1.0 / 0.5, kRoundOff * 100);
         EXPECT_EQ(row[6], 0.0);
     }
+}
+
+// A uniformly loaded wall gives a uniform map, also when particles lie on the cells' borders
+// and on the grid's edges: 11 particles at 0, 0.1, ..., 1 m (spacing 0.1 m), 2 N/m each, two
+// cells of 0.5 m. The particle at 0.5 m is shared half and half; the end particles' patches
+// reach past the grid and give it their whole load: each cell holds 5.5 particles' load, and
+// the two together all 11.
+TEST(WallMap, ParticlesOnBordersAreSharedAndEdgesKeepTheirLoad) {
+    ParticleSet particles;
+    std::vector<Vec3> points;
+    for (int k = 0; k <= 10; ++k) {
+        points.emplace_back(0.1 * k, 0.0, 0.0);
+    }
+    std::vector<Wall> walls{add_wall(particles, "floor", 0, 1, points, 0.1, 1.0, 2)};
+    walls[0].normals.assign(points.size(), Vec3::UnitY());
+    for (Index k = 0; k < particles.size(); ++k) {
+        particles.acceleration[k] = Vec3(0.0, -2.0, 0.0) / particles.mass[k];
+    }
+    WallMapSet::Map map;
+    map.name = "floor";
+    map.walls = {0};
+    map.half_spacing = {0.05};
+    map.cylinder = false;
+    map.edge_u = Vec3(1.0, 0.0, 0.0);
+    map.bins_1 = 2;
+    map.reach = std::numeric_limits<double>::infinity();
+    map.window_end = 1.0;
+    WallMapSet maps({map});
+    const std::string dir = fresh_directory("borders");
+    maps.record(0.0, dir);
+    maps.accumulate(particles, walls, 0.0, 0.5);
+    maps.record(0.5, dir);
+    const auto rows = testing::numeric_csv_rows(dir + "/wall_maps/floor_000001.csv");
+    ASSERT_EQ(rows.size(), 2u);
+    EXPECT_NEAR(rows[0][4], 5.5 * 2.0 / 0.5, kRoundOff * 100);
+    EXPECT_NEAR(rows[1][4], 5.5 * 2.0 / 0.5, kRoundOff * 100);
 }
 
 TEST(WallMapKeys, UserGuideStatesEveryKeyWithItsDefault) {
