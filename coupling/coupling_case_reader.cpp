@@ -170,9 +170,10 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
         }
         part.elements = interface_elements(table, fem->analysis().mesh(), index, coupled);
         ShellWallLayout layout;
-        layout.side = table.choice("side", {"positive", "negative"}) == "positive"
-                          ? ContactSide::positive
-                          : ContactSide::negative;
+        const std::string side = table.choice("side", {"positive", "negative", "both"});
+        layout.side = side == "positive"   ? ContactSide::positive
+                      : side == "negative" ? ContactSide::negative
+                                           : ContactSide::both;
         layout.spacing = table.positive_quantity_or("spacing", dim::kLength, sph->spacing());
         if (layout.spacing > sph->spacing() * (1.0 + 1e-9) ||
             layout.spacing < 0.2 * sph->spacing()) {
@@ -185,6 +186,14 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
             table.fail("layers", "expected 1 to 20 layers of wall particles");
         }
         layout.layers = static_cast<int>(layers);
+        if (layout.side == ContactSide::both) {
+            // Sand on both faces: the one layer on the mid-surface, whatever the support.
+            if (table.has("layers") && layers != 1) {
+                table.fail("layers", "a part with sand on both sides has one layer of wall "
+                                     "particles, on its mid-surface: expected layers = 1 or none");
+            }
+            layout.layers = 1;
+        }
         part.side = layout.side;
         part.wall = std::make_shared<ShellWall>(fem->analysis(), part.elements, layout);
         sph::SphModel::WallDefinition wall;
@@ -192,6 +201,7 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
         wall.points = part.wall->points();
         wall.normals = part.wall->normals();
         wall.samples = part.wall->samples();
+        wall.two_sided = layout.side == ContactSide::both;
         wall.spacing = layout.spacing;
         // A rigid part keeps its wall where the shell was built (no driver) and sends no load
         // back: the same scene with a rigid wall, one key away (issue 18, section 3).

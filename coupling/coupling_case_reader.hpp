@@ -44,8 +44,9 @@ inline constexpr std::array<io::KeySpec, 7> kInterfaceKeys{{
     {"element_sets", "list of strings", "the whole part",
      "only these element sets of the part (Gmsh physical surfaces, *SET_SHELL_LIST); each "
      "element in one interface at most"},
-    {"side", "`positive` or `negative`", "",
-     "the side of the part's element normals (right-hand rule of the node order) the sand is on"},
+    {"side", "`positive`, `negative` or `both`", "",
+     "the side of the part's element normals (right-hand rule of the node order) the sand is "
+     "on; both: either side, one layer of wall particles on the mid-surface"},
     {"spacing", "length", "the bodies' spacing", "wall particle spacing on the shell"},
     {"layers", "integer", "enough to fill the kernel support: ⌈2h / spacing⌉ (3h quintic)",
      "layers of wall particles behind the contact face"},

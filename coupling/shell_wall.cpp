@@ -18,9 +18,10 @@ std::size_t at(Index i) {
 
 ShellWall::ShellWall(const fem::ShellAnalysis& analysis, const std::vector<Index>& elements,
                      const ShellWallLayout& layout)
-    : side_(static_cast<int>(layout.side)) {
-    if (!(layout.spacing > 0.0) || layout.layers < 1) {
-        throw std::invalid_argument("ShellWall: expected a positive spacing and >= 1 layer");
+    : side_(static_cast<int>(layout.side)), normal_sign_(side_ < 0 ? -1.0 : 1.0) {
+    if (!(layout.spacing > 0.0) || layout.layers < 1 || (side_ == 0 && layout.layers != 1)) {
+        throw std::invalid_argument("ShellWall: expected a positive spacing and >= 1 layer "
+                                    "(exactly 1 for both sides)");
     }
     // The part's mid-surface as a surface mesh, sampled by the SPH walls' own sampler
     // (sph/surface_mesh_wall.hpp): faces are its triangles first, then its quadrangles.
@@ -50,7 +51,8 @@ ShellWall::ShellWall(const fem::ShellAnalysis& analysis, const std::vector<Index
         const int corners = element.is_triangle() ? 3 : 4;
         sample.nodes = element.nodes;
         sample.weights = sph::face_weights(origin, corners);
-        // Layer k behind the contact face at side * t/2, like a plane wall's layers.
+        // Layer k behind the contact face at side * t/2, like a plane wall's layers; with sand
+        // on both sides, the one layer on the mid-surface.
         sample.offset = side_ * (0.5 * element.thickness -
                                  (static_cast<double>(origin.layer) + 0.5) * layout.spacing);
         layout_.push_back(sample);
@@ -65,7 +67,7 @@ ShellWall::ShellWall(const fem::ShellAnalysis& analysis, const std::vector<Index
     for (std::size_t j = 0; j < n; ++j) {
         current_frame(analysis, layout_[j], mid_end_[j], director_end_[j]);
         points_.push_back(mid_end_[j] + layout_[j].offset * director_end_[j]);
-        normals_.push_back(side_ * director_end_[j].normalized());
+        normals_.push_back(normal_sign_ * director_end_[j].normalized());
     }
     mid_start_ = mid_end_;
     director_start_ = director_end_;
@@ -118,7 +120,7 @@ void ShellWall::move(sph::ParticleSet& particles, sph::Wall& wall, double t, dou
             // which moves no point of the normal, is left out).
             wall.angular_velocities[at(j)] = director.cross(director_rate) / director.squaredNorm();
         }
-        wall.normals[at(j)] = side_ * director.normalized();
+        wall.normals[at(j)] = normal_sign_ * director.normalized();
     }
 }
 

@@ -11,7 +11,9 @@ namespace grainload::coupling {
 
 /// Which side of a shell part the sand touches, relative to its element normals (the
 /// right-hand rule of the node order, as fem::element_normal gives them).
-enum class ContactSide { positive = 1, negative = -1 };
+/// `both`: sand on either side, one layer of wall particles on the mid-surface (a two-sided
+/// wall, sph::Wall::two_sided).
+enum class ContactSide { positive = 1, negative = -1, both = 0 };
 
 /// How to lay the wall particles of a coupled shell part.
 struct ShellWallLayout {
@@ -80,7 +82,10 @@ class ShellWall final : public sph::WallDriver {
     void current_frame(const fem::ShellAnalysis& analysis, const Sample& sample, Vec3& mid,
                        Vec3& director) const;
 
-    int side_ = 1;
+    int side_ = 1; ///< 1, -1, or 0 for both sides
+    /// The sign that turns the directors into the wall's normals (both sides: +1, the
+    /// orientation only).
+    double normal_sign_ = 1.0;
     std::vector<Sample> layout_;
     std::vector<Vec3> points_;
     std::vector<Vec3> normals_;

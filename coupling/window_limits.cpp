@@ -49,7 +49,9 @@ WindowLimits estimate_window_limits(const sph::SphModel& sph, fem::ShellModel& f
             area += a;
             limits.shell_mass = std::min(limits.shell_mass, density * element.thickness);
             // The sand pushes against its side's normal.
-            const Vec3 push = -static_cast<double>(part.side) * fem::element_normal(mesh, element);
+            // (both sides: either side's push, the same compliance for a linear shell)
+            const double sign = part.side == ContactSide::negative ? -1.0 : 1.0;
+            const Vec3 push = -sign * fem::element_normal(mesh, element);
             const int corners = element.is_triangle() ? 3 : 4;
             for (int k = 0; k < corners; ++k) {
                 const Index node = element.nodes[static_cast<std::size_t>(k)];

@@ -153,6 +153,7 @@ void SphModel::build_solver(const io::CaseTable& sph) {
                                   added.spacing, 1.0, dimension_);
         wall.normals = std::move(added.normals);
         wall.samples = std::move(added.samples);
+        wall.two_sided = added.two_sided;
         for (std::size_t k = 0; k < added.velocities.size(); ++k) {
             particles_.velocity[static_cast<std::size_t>(wall.first) + k] = added.velocities[k];
         }

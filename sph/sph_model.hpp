@@ -39,6 +39,7 @@ class SphModel final : public io::Stepper {
         std::vector<Vec3> normals;
         std::vector<Vec3> velocities; ///< initial velocities of its particles (empty: at rest)
         std::vector<WallSample> samples;
+        bool two_sided = false; ///< see Wall::two_sided
         double spacing = 0.0;
         Vec3 centre = Vec3::Zero(); ///< moment reference
         std::shared_ptr<WallDriver> driver;

@@ -82,6 +82,10 @@ struct Wall {
     /// remove_at = "settled": the wall leaves at the end of the step that settles the scene
     /// ([sph.settle]).
     bool removal_on_settle = false;
+    /// Material may lie on either side (a coupled shell with `side = "both"`: one layer on
+    /// its mid-surface): the contact reads each particle's normal turned towards the material
+    /// particle it pushes, so `normals` give the orientation only.
+    bool two_sided = false;
     /// Symmetry planes ([[sph.symmetry]]) the wall is mirrored across: bit a for the plane
     /// normal to axis a (a wall that ends at the plane; one that runs on past it is not).
     std::uint8_t mirror_planes = 0;

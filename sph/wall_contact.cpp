@@ -88,8 +88,10 @@ int gather_walls(const ParticleSet& p, Index i, const NeighbourList& neighbours,
                 volume_j * w * (p.velocity[j] + images.angular_velocities[k].cross(x_ij));
         } else {
             if (!wall.normals.empty()) {
-                touch.weighted_normal +=
-                    volume_j * w * wall.normals[static_cast<std::size_t>(j - wall.first)];
+                const Vec3& n = wall.normals[static_cast<std::size_t>(j - wall.first)];
+                // A two-sided wall faces whichever side particle i is on.
+                const double sign = wall.two_sided && n.dot(x_ij) < 0.0 ? -1.0 : 1.0;
+                touch.weighted_normal += (sign * volume_j * w) * n;
             }
             touch.weighted_velocity += volume_j * w * wall.velocity_at(p, j, p.position[i]);
         }
