@@ -126,8 +126,44 @@ Calibration load_calibration() {
 
 namespace {
 
-/// Seconds of one thread per SPH step of a model at the calibrated costs; fills the counts.
-double sph_seconds_per_step(const sph::SphModel& sph, const Calibration& c, CostEstimate& e) {
+/// The particles the sources create, averaged over the run [0, end]: one created at t is there
+/// for end - t. (Sinks are not subtracted: the estimate of a discharge errs on the long side.)
+double average_created(const sph::SphModel& sph, double end) {
+    double average = 0.0;
+    for (const sph::SourceSet::Source& s : sph.sources().sources()) {
+        const double stop = std::min(s.end, end);
+        if (!(stop > s.start) || !(s.particle_mass > 0.0) || !(end > 0.0)) {
+            continue;
+        }
+        // What the rate owes, but no more than the source's sites hold (a full box owes on).
+        const double count = std::min(s.mass_rate * (stop - s.start) / s.particle_mass,
+                                      static_cast<double>(s.sites.size()));
+        average += count * (end - 0.5 * (s.start + stop)) / end;
+    }
+    return average;
+}
+
+/// Neighbour-list entries of a particle inside a body: the sites of its lattice (the bodies'
+/// spacing) within the kernel's support radius, itself excluded.
+double bulk_entries(const sph::SphModel& sph) {
+    const double reach = sph.solver()->kernel().support_radius() / sph.spacing();
+    const int n = static_cast<int>(std::floor(reach));
+    const bool two_d = sph.dimension() == 2;
+    double sites = 0.0;
+    for (int i = -n; i <= n; ++i) {
+        for (int j = -n; j <= n; ++j) {
+            for (int k = two_d ? 0 : -n; k <= (two_d ? 0 : n); ++k) {
+                sites += i * i + j * j + k * k < reach * reach ? 1.0 : 0.0;
+            }
+        }
+    }
+    return sites - 1.0;
+}
+
+/// Seconds of one thread per SPH step of a model at the calibrated costs, averaged over a run
+/// to `end` (sources add particles with a full kernel support as they fill); fills the counts.
+double sph_seconds_per_step(const sph::SphModel& sph, double end, const Calibration& c,
+                            CostEstimate& e) {
     const Index n = sph.point_count();
     const auto& wall_id = sph.particles().wall_id;
     const auto walls = static_cast<Index>(
@@ -137,12 +173,14 @@ double sph_seconds_per_step(const sph::SphModel& sph, const Calibration& c, Cost
     e.wall_particles += walls;
     e.entries += entries;
     e.contact_entries += contacts;
+    const double created = sph.solver() ? average_created(sph, end) : 0.0;
+    e.average_created += created;
     const bool two_d = sph.dimension() == 2;
-    return static_cast<double>(entries) *
+    return (static_cast<double>(entries) + created * (created > 0.0 ? bulk_entries(sph) : 0.0)) *
                (two_d ? c.seconds_per_entry_2d : c.seconds_per_entry_3d) +
            static_cast<double>(contacts) *
                (two_d ? c.seconds_per_contact_entry_2d : c.seconds_per_contact_entry_3d) +
-           static_cast<double>(n - walls) *
+           (static_cast<double>(n - walls) + created) *
                (two_d ? c.seconds_per_body_2d : c.seconds_per_body_3d) +
            static_cast<double>(walls) * (two_d ? c.seconds_per_wall_2d : c.seconds_per_wall_3d);
 }
@@ -174,8 +212,9 @@ CostEstimate estimate_cost(const Scene& scene, int threads, const Calibration& c
     auto add_sph = [&](const sph::SphModel& sph, double sph_dt) {
         const double sph_steps = count_steps(end, interval, e.time_step, sph_dt).sph_steps;
         e.sph_steps += sph_steps;
-        e.particle_steps += static_cast<double>(sph.point_count()) * sph_steps;
-        seconds += sph_seconds_per_step(sph, calibration, e) * sph_steps / speedup;
+        seconds += sph_seconds_per_step(sph, end, calibration, e) * sph_steps / speedup;
+        e.particle_steps +=
+            (static_cast<double>(sph.point_count()) + average_created(sph, end)) * sph_steps;
         bytes += sph.solver() ? static_cast<double>(sph.solver()->bytes()) : 0.0;
     };
     auto add_shell = [&](const fem::ShellModel& fem) {
@@ -209,6 +248,13 @@ std::string describe_cost(const CostEstimate& e, const Calibration& calibration)
                   static_cast<long long>(e.sph_particles), static_cast<long long>(e.wall_particles),
                   static_cast<long long>(e.shell_nodes), static_cast<long long>(e.shell_dofs));
     out << line;
+    if (e.average_created > 0.0) {
+        std::snprintf(line, sizeof line,
+                      "      sources: %.0f particles more on average over the run, each with a "
+                      "full kernel support\n",
+                      e.average_created);
+        out << line;
+    }
     std::snprintf(line, sizeof line,
                   "      step %.3g s at t = 0: %lld steps to the end time (%.3g SPH steps, "
                   "%.3g particle-steps, %lld + %lld contact neighbour entries)\n",

@@ -64,6 +64,8 @@ struct CostEstimate {
     double particle_steps = 0.0;
     Index entries = 0;         ///< SPH neighbour-list entries between bodies at t = 0
     Index contact_entries = 0; ///< between a body and a wall particle
+    /// Particles the sources create, averaged over the run (each costs a full kernel support)
+    double average_created = 0.0;
     int threads = 1;
     double wall_time_s = 0.0;
     double memory_bytes = 0.0;
@@ -72,7 +74,8 @@ struct CostEstimate {
 /// The estimate: steps from the stable step at t = 0 held to end_time, landing on every output
 /// instant as the driver does (so it is exact for a fixed step and undercounts a CFL run by the
 /// speed the material gains: the step is h / (c + |v|)); time per SPH step from the neighbour
-/// list at t = 0 (entries, body and wall particles) at the calibrated costs, and the shell
+/// list at t = 0 (entries, body and wall particles) at the calibrated costs, plus the particles
+/// sources create, averaged over the run, each with a full kernel support; and the shell
 /// steps; memory from the SPH solver's own heap at t = 0 (SphSolver::bytes) and the shell's
 /// DOFs, plus the baseline.
 CostEstimate estimate_cost(const Scene& scene, int threads, const Calibration& calibration);
