@@ -105,8 +105,14 @@ StepReport NewmarkIntegrator::step(double dt, double load_factor, const NewtonSe
     Eigen::VectorXd step;
     Eigen::VectorXd residual0;
     double energy0 = 0.0;
+    // A reused factorisation (below) needs no tangent: the element loop then forms the internal
+    // forces only, unless prescribed increments need K_fp.
+    const bool known_reuse = analysis_->constant_tangent() && factorized_step_ == dt &&
+                             solver_.method() != SparseSolver::Method::none &&
+                             prescribed.isZero(0.0);
     for (int i = 0;; ++i) {
-        analysis_->assemble(&k, internal, i == 0 ? &prescribed : nullptr, &coupling);
+        analysis_->assemble(known_reuse ? nullptr : &k, internal, i == 0 ? &prescribed : nullptr,
+                            &coupling);
         Eigen::VectorXd full =
             (1.0 + alpha_) * (applied - internal) - alpha_ * previous - inertia(new_acceleration());
         if (i == 0) {

@@ -285,13 +285,21 @@ bool ShellAnalysis::increment(double from, double to, const NewtonSettings& sett
     Eigen::VectorXd step;
     double energy0 = 0.0;
     std::vector<NewtonIteration> log;
+    // A constant tangent (a linear shell) factorised once solves every later increment, so its
+    // element loop need only form the internal forces (the tangent's formation and assembly
+    // were most of a coupled window's shell cost), unless prescribed increments need K_fp.
+    const bool reuse = constant_tangent() && constant_tangent_factorized_ &&
+                       solver_.method() != SparseSolver::Method::none &&
+                       prescribed_increment.isZero(0.0);
+    bool factorized = false;
     try {
         for (int i = 0;; ++i) {
             // Prescribed increments enter the first iteration through the right-hand side,
             // -K_fp dU_p, with the tangent of the converged state (Bathe FEP section 8.4):
             // imposing them on the state first would strain only the elements next to the
             // constrained nodes and, with plasticity, yield them spuriously.
-            assemble(&k, internal, i == 0 ? &prescribed_increment : nullptr, &coupling);
+            assemble(reuse ? nullptr : &k, internal, i == 0 ? &prescribed_increment : nullptr,
+                     &coupling);
             Eigen::VectorXd residual = free_part(applied - internal);
             if (i == 0) {
                 residual -= free_part(coupling);
@@ -344,7 +352,10 @@ bool ShellAnalysis::increment(double from, double to, const NewtonSettings& sett
                 record_worst_dof(eq, residual, report);
                 return false;
             }
-            solver_.factorize(k, tangent_symmetric());
+            if (!reuse) {
+                solver_.factorize(k, tangent_symmetric());
+                factorized = true;
+            }
             report.solver = SparseSolver::name(solver_.method());
             step = solver_.solve(residual);
             if (i == 0) {
@@ -362,6 +373,9 @@ bool ShellAnalysis::increment(double from, double to, const NewtonSettings& sett
     } catch (const std::runtime_error&) {
         return false;
     }
+    // Only a factorisation that solved an increment to convergence is kept for the next ones
+    // (a singular tangent's is not).
+    constant_tangent_factorized_ = constant_tangent() && (reuse || factorized);
     commit();
     report.log.insert(report.log.end(), log.begin(), log.end());
     report.iterations.push_back(static_cast<int>(log.size()));

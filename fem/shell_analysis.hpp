@@ -245,6 +245,9 @@ class ShellAnalysis {
     std::vector<Mat3> committed_rotations_;
     double load_factor_ = 0.0;
     SparseSolver solver_;
+    /// solver_ holds the factorised constant tangent (constant_tangent()), which later
+    /// increments reuse.
+    bool constant_tangent_factorized_ = false;
 };
 
 } // namespace grainload::fem
