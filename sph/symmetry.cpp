@@ -130,17 +130,16 @@ void write_images(ParticleSet& p, Index real_count, std::span<const MirrorImage>
                   const Vec3& plane_at) {
     drop_images(p, real_count + static_cast<Index>(images.size()));
     const auto count = static_cast<Index>(images.size());
-    // One parallel region; each field is shared out over the images by the orphaned `omp for`
-    // (every thread visits the fields in the same order, as OpenMP requires).
-#pragma omp parallel
-    p.for_each_field([&](const auto& field, auto& values) {
-        using Field = std::remove_cvref_t<decltype(field)>;
-#pragma omp for schedule(static)
-        for (Index k = 0; k < count; ++k) {
-            values[real_count + k] =
-                image_value<Field>(values[images[k].source], images[k].mask, plane_at);
-        }
-    });
+#pragma omp parallel for schedule(static)
+    for (Index k = 0; k < count; ++k) {
+        const Index s = images[k].source;
+        const MirrorMask mask = images[k].mask;
+        const Index g = real_count + k;
+        p.for_each_field([&](const auto& field, auto& values) {
+            using Field = std::remove_cvref_t<decltype(field)>;
+            values[g] = image_value<Field>(values[s], mask, plane_at);
+        });
+    }
 }
 
 } // namespace grainload::sph
