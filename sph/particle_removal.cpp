@@ -6,7 +6,8 @@ namespace grainload::sph {
 
 namespace {
 
-/// The material state blocks of the kept particles, moved down in order; offsets follow.
+/// The material state blocks of the kept particles, moved down in order, and the kept
+/// particles' state_offset pointed at their new place (compacted with the other fields after).
 void compact_state(ParticleSet& p, std::span<const char> gone) {
     const auto n = p.state_offset.size();
     std::size_t kept = 0;
@@ -23,7 +24,6 @@ void compact_state(ParticleSet& p, std::span<const char> gone) {
         }
     }
     p.state.resize(kept);
-    compact(p.state_offset, gone);
 }
 
 /// A wall's per-particle array (empty or one entry per particle of the wall).
@@ -64,23 +64,7 @@ std::vector<Index> remove_particles(ParticleSet& p, std::span<const char> gone,
         wall.count = before(end) - before(first);
     }
     compact_state(p, gone);
-    compact(p.position, gone);
-    compact(p.velocity, gone);
-    compact(p.acceleration, gone);
-    compact(p.mass, gone);
-    compact(p.density, gone);
-    compact(p.density_rate, gone);
-    compact(p.internal_energy, gone);
-    compact(p.energy_rate, gone);
-    compact(p.stress, gone);
-    compact(p.strain_rate, gone);
-    compact(p.spin, gone);
-    compact(p.plastic_strain, gone);
-    compact(p.plastic_region, gone);
-    compact(p.body_id, gone);
-    compact(p.material_id, gone);
-    compact(p.wall_id, gone);
-    compact(p.clamped, gone);
+    p.for_each_field([gone](const auto&, auto& values) { compact(values, gone); });
     return new_index;
 }
 

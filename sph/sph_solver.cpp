@@ -491,18 +491,14 @@ double SphSolver::elastic_strain_energy() const {
 std::size_t SphSolver::bytes() const {
     const ParticleSet& p = particles_;
     auto held = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-    const std::size_t particle_fields =
-        held(p.position) + held(p.velocity) + held(p.acceleration) + held(p.mass) +
-        held(p.density) + held(p.density_rate) + held(p.internal_energy) + held(p.energy_rate) +
-        held(p.stress) + held(p.strain_rate) + held(p.spin) + held(p.plastic_strain) +
-        held(p.plastic_region) + held(p.body_id) + held(p.material_id) + held(p.wall_id) +
-        held(p.clamped) + held(p.state_offset) + held(p.state);
+    std::size_t particle_bytes = held(p.state);
+    p.for_each_field([&](const auto&, const auto& values) { particle_bytes += held(values); });
     const std::size_t work =
         held(is_wall_) + held(force_inputs_.stress_over_rho2) +
         held(force_inputs_.artificial_stress) + held(force_inputs_.sound_speed) +
         held(wave_speed_) + held(force_inputs_.gradient_correction) +
         held(force_inputs_.entry_factor) + held(velocity_gradient_) + held(heating_rate_);
-    return particle_fields + work + neighbours_.bytes() +
+    return particle_bytes + work + neighbours_.bytes() +
            (total_lagrangian_ ? total_lagrangian_->bytes() : 0);
 }
 

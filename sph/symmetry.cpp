@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace grainload::sph {
 
@@ -92,31 +93,37 @@ std::vector<MirrorImage> select_images(std::span<const SymmetryPlane> planes,
 
 namespace {
 
-template <class T> void resize_field(std::vector<T>& field, Index count) {
-    field.resize(static_cast<std::size_t>(count));
+template <class> inline constexpr bool unsupported_rule = false;
+
+/// The value particle s's image carries in a field registered as `Field` (its Mirror rule,
+/// sph/particle_set.hpp); a rule that does not fit the field's value type stops the build.
+template <class Field>
+typename Field::value_type image_value(const typename Field::value_type& value, MirrorMask mask,
+                                       const Vec3& plane_at) {
+    using T = typename Field::value_type;
+    constexpr Mirror rule = Field::mirror;
+    if constexpr (rule == Mirror::copy) {
+        return value;
+    } else if constexpr (rule == Mirror::cleared && std::is_arithmetic_v<T>) {
+        return T{0};
+    } else if constexpr (rule == Mirror::point && std::is_same_v<T, Vec3>) {
+        return mirror_position(value, mask, plane_at);
+    } else if constexpr (rule == Mirror::polar && std::is_same_v<T, Vec3>) {
+        return mirror_vector(value, mask);
+    } else if constexpr (rule == Mirror::axial && std::is_same_v<T, Vec3>) {
+        return mirror_axial(value, mask);
+    } else if constexpr (rule == Mirror::tensor && std::is_same_v<T, Voigt6>) {
+        return mirror_tensor(value, mask);
+    } else {
+        static_assert(unsupported_rule<Field>, "Mirror rule does not fit the field's type");
+    }
 }
 
 } // namespace
 
 void drop_images(ParticleSet& p, Index real_count) {
-    resize_field(p.position, real_count);
-    resize_field(p.velocity, real_count);
-    resize_field(p.acceleration, real_count);
-    resize_field(p.mass, real_count);
-    resize_field(p.density, real_count);
-    resize_field(p.density_rate, real_count);
-    resize_field(p.internal_energy, real_count);
-    resize_field(p.energy_rate, real_count);
-    resize_field(p.stress, real_count);
-    resize_field(p.strain_rate, real_count);
-    resize_field(p.spin, real_count);
-    resize_field(p.plastic_strain, real_count);
-    resize_field(p.plastic_region, real_count);
-    resize_field(p.body_id, real_count);
-    resize_field(p.material_id, real_count);
-    resize_field(p.wall_id, real_count);
-    resize_field(p.clamped, real_count);
-    resize_field(p.state_offset, real_count);
+    const auto count = static_cast<std::size_t>(real_count);
+    p.for_each_field([count](const auto&, auto& values) { values.resize(count); });
 }
 
 void write_images(ParticleSet& p, Index real_count, std::span<const MirrorImage> images,
@@ -128,24 +135,10 @@ void write_images(ParticleSet& p, Index real_count, std::span<const MirrorImage>
         const Index s = images[k].source;
         const MirrorMask mask = images[k].mask;
         const Index g = real_count + k;
-        p.position[g] = mirror_position(p.position[s], mask, plane_at);
-        p.velocity[g] = mirror_vector(p.velocity[s], mask);
-        p.acceleration[g] = mirror_vector(p.acceleration[s], mask);
-        p.mass[g] = p.mass[s];
-        p.density[g] = p.density[s];
-        p.density_rate[g] = p.density_rate[s];
-        p.internal_energy[g] = p.internal_energy[s];
-        p.energy_rate[g] = p.energy_rate[s];
-        p.stress[g] = mirror_tensor(p.stress[s], mask);
-        p.strain_rate[g] = mirror_tensor(p.strain_rate[s], mask);
-        p.spin[g] = mirror_axial(p.spin[s], mask);
-        p.plastic_strain[g] = p.plastic_strain[s];
-        p.plastic_region[g] = p.plastic_region[s];
-        p.body_id[g] = p.body_id[s];
-        p.material_id[g] = p.material_id[s];
-        p.wall_id[g] = p.wall_id[s];
-        p.clamped[g] = 0;
-        p.state_offset[g] = p.state_offset[s];
+        p.for_each_field([&](const auto& field, auto& values) {
+            using Field = std::remove_cvref_t<decltype(field)>;
+            values[g] = image_value<Field>(values[s], mask, plane_at);
+        });
     }
 }
 

@@ -70,7 +70,8 @@ std::vector<MirrorImage> select_images(std::span<const SymmetryPlane> planes,
 Vec3 plane_coordinates(std::span<const SymmetryPlane> planes);
 
 /// Resize every particle field to `real_count + images.size()` and set particle real_count + k
-/// to the mirror image of images[k].source: position, velocity, acceleration mirrored as polar
+/// to the mirror image of images[k].source, each field by the Mirror rule it is registered
+/// with (sph/particle_set.hpp): position reflected, velocity and acceleration mirrored as polar
 /// vectors, stress and strain rate as tensors, spin as an axial vector; mass, density and its
 /// rate, energies, plastic strain, body, material, wall and state offset copied. Ghosts are
 /// never clamped. Parallel over the images.
