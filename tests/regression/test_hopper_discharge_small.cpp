@@ -1,4 +1,5 @@
 #include "support/case_runner.hpp"
+#include "support/csv_rows.hpp"
 #include "support/frame_reader.hpp"
 
 #include <cmath>
@@ -125,23 +126,6 @@ TEST(SinkIn3d, CapMaterialStateFollowsRemovalsAndARestartReproducesTheRun) {
     ASSERT_GT(a.size(), 1000u);
     EXPECT_TRUE(a == read_file(base + "_split" + frame)) << "the column's frame at 0.4 s";
     EXPECT_EQ(read_file(base + "_whole/discharge.csv"), read_file(base + "_split/discharge.csv"));
-}
-
-/// discharge.csv of one sink as (time, discharged mass) pairs.
-std::vector<std::pair<double, double>> discharge_rows(const std::string& out) {
-    std::stringstream in(read_file(out + "/discharge.csv"));
-    std::string line;
-    std::getline(in, line);
-    std::vector<std::pair<double, double>> rows;
-    while (std::getline(in, line)) {
-        std::stringstream fields(line);
-        std::string time, sink, mass;
-        std::getline(fields, time, ',');
-        std::getline(fields, sink, ',');
-        std::getline(fields, mass, ',');
-        rows.emplace_back(std::stod(time), std::stod(mass));
-    }
-    return rows;
 }
 
 /// Mean x of the points of block `index` of a frame.

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 #include <string>
 #include <vtkPoints.h>
 
@@ -41,12 +40,7 @@ TEST(SiloClosureSmall, ASlideGateShutsTheOutletAndTheArrestLoadsTheWall) {
     EXPECT_LT(std::abs(result_value(summary, "energy_balance_error")), 0.02);
     double at_3_3 = -1.0;
     double at_end = -1.0;
-    std::stringstream rows(read_file(run.out + "/discharge.csv"));
-    std::string line;
-    std::getline(rows, line);
-    while (std::getline(rows, line)) {
-        const double time = std::stod(line.substr(0, line.find(',')));
-        const double mass = std::stod(line.substr(line.rfind(',', line.rfind(',') - 1) + 1));
+    for (const auto& [time, mass] : discharge_rows(run.out)) {
         at_3_3 = std::abs(time - 3.3) < 1e-9 ? mass : at_3_3;
         at_end = mass;
     }

@@ -3,6 +3,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace grainload::testing {
@@ -21,6 +22,23 @@ inline std::vector<std::vector<double>> numeric_csv_rows(const std::string& path
             row.push_back(std::stod(field));
         }
         rows.push_back(std::move(row));
+    }
+    return rows;
+}
+
+/// discharge.csv of a run with one sink as (time, discharged mass) pairs.
+inline std::vector<std::pair<double, double>> discharge_rows(const std::string& out) {
+    std::ifstream in(out + "/discharge.csv");
+    std::string line;
+    std::getline(in, line);
+    std::vector<std::pair<double, double>> rows;
+    while (std::getline(in, line)) {
+        std::stringstream fields(line);
+        std::string time, sink, mass;
+        std::getline(fields, time, ',');
+        std::getline(fields, sink, ',');
+        std::getline(fields, mass, ',');
+        rows.emplace_back(std::stod(time), std::stod(mass));
     }
     return rows;
 }
