@@ -138,20 +138,16 @@ TEST(WallMap, WindowMeanAndMaximumFollowTheLoadHistory) {
     EXPECT_EQ(restored.state(), maps.state());
 }
 
-// Plane strain: a wall line along x at y = 0, material above (normal +y), 10 particles on
-// [0, 1) m pushed down by 4 N/m and along x by 1 N/m; two cells of 0.5 m by 1 m of depth.
-// A particle beyond `reach` of the line (0.2 m off it) counts nowhere.
-TEST(WallMap, PlaneStrainLineGivesPressurePerMetreOfDepth) {
+/// Plane strain: a floor wall through `points` (spacing 0.1 m, material above: normal +y), each
+/// particle pushed by `force` (N/m) for 0.5 s, mapped in two cells of 0.5 m over x in [0, 1] m
+/// within `reach` of the line. Returns the rows of the interval's map.
+std::vector<std::vector<double>> map_floor(const std::vector<Vec3>& points, const Vec3& force,
+                                           double reach, const std::string& name) {
     ParticleSet particles;
-    std::vector<Vec3> points;
-    for (int k = 0; k < 10; ++k) {
-        points.emplace_back(0.05 + 0.1 * k, 0.0, 0.0);
-    }
-    points.emplace_back(0.3, -0.2, 0.0);
     std::vector<Wall> walls{add_wall(particles, "floor", 0, 1, points, 0.1, 1.0, 2)};
     walls[0].normals.assign(points.size(), Vec3::UnitY());
     for (Index k = 0; k < particles.size(); ++k) {
-        particles.acceleration[k] = Vec3(1.0, -4.0, 0.0) / particles.mass[k];
+        particles.acceleration[k] = force / particles.mass[k];
     }
     WallMapSet::Map map;
     map.name = "floor";
@@ -160,15 +156,25 @@ TEST(WallMap, PlaneStrainLineGivesPressurePerMetreOfDepth) {
     map.cylinder = false;
     map.edge_u = Vec3(1.0, 0.0, 0.0);
     map.bins_1 = 2;
-    map.bins_2 = 1;
-    map.reach = 0.1;
+    map.reach = reach;
     map.window_end = 1.0;
     WallMapSet maps({map});
-    const std::string dir = fresh_directory("plane");
+    const std::string dir = fresh_directory(name);
     maps.record(0.0, dir);
     maps.accumulate(particles, walls, 0.0, 0.5);
     maps.record(0.5, dir);
-    const auto rows = testing::numeric_csv_rows(dir + "/wall_maps/floor_000001.csv");
+    return testing::numeric_csv_rows(dir + "/wall_maps/floor_000001.csv");
+}
+
+// Plane strain: 10 particles on [0, 1) m pushed down by 4 N/m and along x by 1 N/m; two cells
+// of 0.5 m by 1 m of depth. A particle beyond `reach` of the line (0.2 m off it) counts nowhere.
+TEST(WallMap, PlaneStrainLineGivesPressurePerMetreOfDepth) {
+    std::vector<Vec3> points;
+    for (int k = 0; k < 10; ++k) {
+        points.emplace_back(0.05 + 0.1 * k, 0.0, 0.0);
+    }
+    points.emplace_back(0.3, -0.2, 0.0);
+    const auto rows = map_floor(points, Vec3(1.0, -4.0, 0.0), 0.1, "plane");
     ASSERT_EQ(rows.size(), 2u);
     for (const auto& row : rows) {
         EXPECT_NEAR(row[4], 5 * 4.0 / 0.5, kRoundOff * 100);
@@ -183,31 +189,12 @@ TEST(WallMap, PlaneStrainLineGivesPressurePerMetreOfDepth) {
 // reach past the grid and give it their whole load: each cell holds 5.5 particles' load, and
 // the two together all 11.
 TEST(WallMap, ParticlesOnBordersAreSharedAndEdgesKeepTheirLoad) {
-    ParticleSet particles;
     std::vector<Vec3> points;
     for (int k = 0; k <= 10; ++k) {
         points.emplace_back(0.1 * k, 0.0, 0.0);
     }
-    std::vector<Wall> walls{add_wall(particles, "floor", 0, 1, points, 0.1, 1.0, 2)};
-    walls[0].normals.assign(points.size(), Vec3::UnitY());
-    for (Index k = 0; k < particles.size(); ++k) {
-        particles.acceleration[k] = Vec3(0.0, -2.0, 0.0) / particles.mass[k];
-    }
-    WallMapSet::Map map;
-    map.name = "floor";
-    map.walls = {0};
-    map.half_spacing = {0.05};
-    map.cylinder = false;
-    map.edge_u = Vec3(1.0, 0.0, 0.0);
-    map.bins_1 = 2;
-    map.reach = std::numeric_limits<double>::infinity();
-    map.window_end = 1.0;
-    WallMapSet maps({map});
-    const std::string dir = fresh_directory("borders");
-    maps.record(0.0, dir);
-    maps.accumulate(particles, walls, 0.0, 0.5);
-    maps.record(0.5, dir);
-    const auto rows = testing::numeric_csv_rows(dir + "/wall_maps/floor_000001.csv");
+    const auto rows =
+        map_floor(points, Vec3(0.0, -2.0, 0.0), std::numeric_limits<double>::infinity(), "borders");
     ASSERT_EQ(rows.size(), 2u);
     EXPECT_NEAR(rows[0][4], 5.5 * 2.0 / 0.5, kRoundOff * 100);
     EXPECT_NEAR(rows[1][4], 5.5 * 2.0 / 0.5, kRoundOff * 100);
