@@ -161,8 +161,9 @@ double bulk_entries(const sph::SphModel& sph) {
 }
 
 /// Seconds of one thread per SPH step of a model at the calibrated costs, averaged over a run
-/// to `end` (sources add particles with a full kernel support as they fill); fills the counts.
-double sph_seconds_per_step(const sph::SphModel& sph, double end, const Calibration& c,
+/// in which sources add `created` particles on average (each with a full kernel support);
+/// fills the counts.
+double sph_seconds_per_step(const sph::SphModel& sph, double created, const Calibration& c,
                             CostEstimate& e) {
     const Index n = sph.point_count();
     const auto& wall_id = sph.particles().wall_id;
@@ -173,7 +174,6 @@ double sph_seconds_per_step(const sph::SphModel& sph, double end, const Calibrat
     e.wall_particles += walls;
     e.entries += entries;
     e.contact_entries += contacts;
-    const double created = sph.solver() ? average_created(sph, end) : 0.0;
     e.average_created += created;
     const bool two_d = sph.dimension() == 2;
     return (static_cast<double>(entries) + created * (created > 0.0 ? bulk_entries(sph) : 0.0)) *
@@ -212,9 +212,9 @@ CostEstimate estimate_cost(const Scene& scene, int threads, const Calibration& c
     auto add_sph = [&](const sph::SphModel& sph, double sph_dt) {
         const double sph_steps = count_steps(end, interval, e.time_step, sph_dt).sph_steps;
         e.sph_steps += sph_steps;
-        seconds += sph_seconds_per_step(sph, end, calibration, e) * sph_steps / speedup;
-        e.particle_steps +=
-            (static_cast<double>(sph.point_count()) + average_created(sph, end)) * sph_steps;
+        const double created = sph.solver() ? average_created(sph, end) : 0.0;
+        seconds += sph_seconds_per_step(sph, created, calibration, e) * sph_steps / speedup;
+        e.particle_steps += (static_cast<double>(sph.point_count()) + created) * sph_steps;
         bytes += sph.solver() ? static_cast<double>(sph.solver()->bytes()) : 0.0;
     };
     auto add_shell = [&](const fem::ShellModel& fem) {
