@@ -50,8 +50,7 @@ CoupledModel::CoupledModel(std::unique_ptr<sph::SphModel> sph, std::unique_ptr<f
             const int corners = element.is_triangle() ? 3 : 4;
             const double area = fem::element_area(mesh, element);
             // Both sides: the element normals' side counts as compression.
-            const double sign = part.side == ContactSide::negative ? -1.0 : 1.0;
-            const Vec3 normal = sign * fem::element_normal(mesh, element);
+            const Vec3 normal = normal_sign(part.side) * fem::element_normal(mesh, element);
             for (int a = 0; a < corners; ++a) {
                 node_area_[static_cast<std::size_t>(n[static_cast<std::size_t>(a)])] +=
                     area / corners;

@@ -18,8 +18,9 @@ std::size_t at(Index i) {
 
 ShellWall::ShellWall(const fem::ShellAnalysis& analysis, const std::vector<Index>& elements,
                      const ShellWallLayout& layout)
-    : side_(static_cast<int>(layout.side)), normal_sign_(side_ < 0 ? -1.0 : 1.0) {
-    if (!(layout.spacing > 0.0) || layout.layers < 1 || (side_ == 0 && layout.layers != 1)) {
+    : side_(layout.side) {
+    if (!(layout.spacing > 0.0) || layout.layers < 1 ||
+        (side_ == ContactSide::both && layout.layers != 1)) {
         throw std::invalid_argument("ShellWall: expected a positive spacing and >= 1 layer "
                                     "(exactly 1 for both sides)");
     }
@@ -42,8 +43,8 @@ ShellWall::ShellWall(const fem::ShellAnalysis& analysis, const std::vector<Index
             face_element.push_back(e);
         }
     }
-    const sph::MeshWallSamples sampled =
-        sph::mesh_wall_points(surface, layout.spacing, layout.layers, 3, side_ < 0);
+    const sph::MeshWallSamples sampled = sph::mesh_wall_points(
+        surface, layout.spacing, layout.layers, 3, side_ == ContactSide::negative);
     for (const sph::WallSample& origin : sampled.samples) {
         Sample sample;
         sample.element = face_element[at(origin.face)];
@@ -53,8 +54,9 @@ ShellWall::ShellWall(const fem::ShellAnalysis& analysis, const std::vector<Index
         sample.weights = sph::face_weights(origin, corners);
         // Layer k behind the contact face at side * t/2, like a plane wall's layers; with sand
         // on both sides, the one layer on the mid-surface.
-        sample.offset = side_ * (0.5 * element.thickness -
-                                 (static_cast<double>(origin.layer) + 0.5) * layout.spacing);
+        sample.offset =
+            static_cast<double>(side_) *
+            (0.5 * element.thickness - (static_cast<double>(origin.layer) + 0.5) * layout.spacing);
         layout_.push_back(sample);
         sph::WallSample record = origin;
         record.face = sample.element;
@@ -67,7 +69,7 @@ ShellWall::ShellWall(const fem::ShellAnalysis& analysis, const std::vector<Index
     for (std::size_t j = 0; j < n; ++j) {
         current_frame(analysis, layout_[j], mid_end_[j], director_end_[j]);
         points_.push_back(mid_end_[j] + layout_[j].offset * director_end_[j]);
-        normals_.push_back(normal_sign_ * director_end_[j].normalized());
+        normals_.push_back(normal_sign(side_) * director_end_[j].normalized());
     }
     mid_start_ = mid_end_;
     director_start_ = director_end_;
@@ -120,7 +122,7 @@ void ShellWall::move(sph::ParticleSet& particles, sph::Wall& wall, double t, dou
             // which moves no point of the normal, is left out).
             wall.angular_velocities[at(j)] = director.cross(director_rate) / director.squaredNorm();
         }
-        wall.normals[at(j)] = normal_sign_ * director.normalized();
+        wall.normals[at(j)] = normal_sign(side_) * director.normalized();
     }
 }
 

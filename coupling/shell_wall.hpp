@@ -15,6 +15,12 @@ namespace grainload::coupling {
 /// wall, sph::Wall::two_sided).
 enum class ContactSide { positive = 1, negative = -1, both = 0 };
 
+/// The sign that turns a part's element normals (or directors) into the normals of its sand
+/// side: -1 for the negative side, +1 otherwise (both sides: the orientation only).
+inline double normal_sign(ContactSide side) {
+    return side == ContactSide::negative ? -1.0 : 1.0;
+}
+
 /// How to lay the wall particles of a coupled shell part.
 struct ShellWallLayout {
     ContactSide side = ContactSide::positive;
@@ -82,10 +88,7 @@ class ShellWall final : public sph::WallDriver {
     void current_frame(const fem::ShellAnalysis& analysis, const Sample& sample, Vec3& mid,
                        Vec3& director) const;
 
-    int side_ = 1; ///< 1, -1, or 0 for both sides
-    /// The sign that turns the directors into the wall's normals (both sides: +1, the
-    /// orientation only).
-    double normal_sign_ = 1.0;
+    ContactSide side_ = ContactSide::positive;
     std::vector<Sample> layout_;
     std::vector<Vec3> points_;
     std::vector<Vec3> normals_;

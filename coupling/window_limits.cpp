@@ -50,8 +50,7 @@ WindowLimits estimate_window_limits(const sph::SphModel& sph, fem::ShellModel& f
             limits.shell_mass = std::min(limits.shell_mass, density * element.thickness);
             // The sand pushes against its side's normal.
             // (both sides: either side's push, the same compliance for a linear shell)
-            const double sign = part.side == ContactSide::negative ? -1.0 : 1.0;
-            const Vec3 push = -sign * fem::element_normal(mesh, element);
+            const Vec3 push = -normal_sign(part.side) * fem::element_normal(mesh, element);
             const int corners = element.is_triangle() ? 3 : 4;
             for (int k = 0; k < corners; ++k) {
                 const Index node = element.nodes[static_cast<std::size_t>(k)];
