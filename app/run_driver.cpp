@@ -81,6 +81,7 @@ io::RunSummary make_summary(const Scene& scene, const CommandLine& line, const R
         stepper->describe_model(summary.model);
         stepper->append_hints(summary.hints);
     }
+    io::apply_figure_references(scene.references, summary.results);
     return summary;
 }
 

@@ -40,6 +40,14 @@ std::unique_ptr<Scene> Scene::load(const std::string& file,
         root.fail("", "expected at least one physics module: an [sph] table with [[sph.body]] "
                       "or an [fem] table with [[fem.shell]]");
     }
+    // The figures at t = 0 name every figure the run reports, so a misspelt reference is
+    // refused before the run, not after it.
+    std::vector<io::ResultFigure> figures;
+    for (const auto& stepper : scene->steppers) {
+        stepper->append_results(0.0, figures);
+    }
+    scene->references = io::read_figure_references(root);
+    io::check_figure_references(scene->references, figures);
     scene->document->reject_unknown_keys();
     return scene;
 }

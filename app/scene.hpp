@@ -1,6 +1,7 @@
 #pragma once
 
 #include "io/case_table.hpp"
+#include "io/figure_reference.hpp"
 #include "io/scene_settings.hpp"
 #include "io/stepper.hpp"
 #include "materials/material_library.hpp"
@@ -19,6 +20,8 @@ struct Scene {
     io::SceneSettings settings;
     materials::MaterialLibrary materials;
     std::vector<std::unique_ptr<io::Stepper>> steppers;
+    /// [[case.reference]]: the independent references the case states for its figures.
+    std::vector<io::FigureReference> references;
 
     /// Throws io::CaseError on any bad input.
     static std::unique_ptr<Scene> load(const std::string& file,

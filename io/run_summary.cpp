@@ -74,6 +74,8 @@ void write_result(std::ostream& out, const ResultFigure& figure) {
         } else {
             out << ", \"absolute_error\": " << number(std::abs(figure.value));
         }
+    } else if (!figure.source.empty()) {
+        out << ", \"source\": " << quoted(figure.source); // a statement without a value
     }
     out << '}';
 }
