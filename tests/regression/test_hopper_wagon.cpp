@@ -71,8 +71,9 @@ TEST(HopperWagon, ExportedDeckMatchesTheGmshMesh) {
         EXPECT_NEAR(deck.element(e).thickness, gmsh.element(e).thickness, 1e-15) << e;
     }
     EXPECT_EQ(deck.node_sets(), gmsh.node_sets()); // physical groups = parts + node sets
-    for (const char* part : {"side_wall", "end_wall", "slope_sheet", "middle_slope_sheet",
-                             "end_slope_sheet", "ridge", "door", "bolster"}) {
+    for (const char* part :
+         {"side_wall", "end_wall", "slope_sheet", "middle_slope_sheet", "end_slope_sheet", "ridge",
+          "door", "bolster", "top_chord", "tie", "rib", "stanchion", "hinge_beam"}) {
         EXPECT_EQ(deck.element_set(part), gmsh.element_set(part)) << part;
     }
 }
@@ -80,11 +81,15 @@ TEST(HopperWagon, ExportedDeckMatchesTheGmshMesh) {
 /// Areas of the quarter body's plane parts from the dimensions of hopper_wagon.geo
 /// (cases/hopper_wagon/README.md): the saddle and the hopper slope sheets are inclined at
 /// alpha, so their area is their plan area / cos(alpha); the walls are the rectangles less the
-/// parts below the slope sheets' edges.
+/// parts below the slope sheets' edges. Ten frames: a rib (a parallelogram with vertical
+/// ends, b wide in plan and d_rib / cos(alpha) high) and a stanchion from the hinge box to
+/// the wall top at each; the two door posts continue from the box down to their ribs' lower
+/// ends; the hinge beam is a box of three plates w_hinge wide over the length a.
 std::map<std::string, double> part_areas() {
     const double a = 6.33, b = 1.5, z_top = 3.5, z_sill = 0.9, x_mid = 0.35, x_end = 5.78;
     const double z_hinge = 1.6, z_pivot = 1.0, y_bolster = 1.0, y_ridge = 0.2;
-    const double w_chord = 0.2, d_tie = 0.2; // top chord flange width, tie depth (four ties)
+    const double w_chord = 0.2, d_tie = 0.2; // top chord flange width, tie depth (five ties)
+    const double d_rib = 0.15, w_stanchion = 0.15, w_hinge = 0.3; // ten frames
     const double alpha = 49.0 * std::numbers::pi / 180.0;
     const double t = std::tan(alpha), c = std::cos(alpha);
     const double d = a - x_end;            // end slope sheet, plan leg
@@ -100,7 +105,11 @@ std::map<std::string, double> part_areas() {
         {"end_wall", b * (z_top - z_sill) - t * (b * b - d * d) / 2 - t * d * d},
         {"bolster", (z_ridge - z_pivot) * y_bolster - t * y_bolster * y_bolster / 2},
         {"top_chord", a * w_chord + w_chord * (b + w_chord)},
-        {"tie", 4 * b * d_tie},
+        {"tie", 5 * b * d_tie},
+        {"rib", 10 * b * d_rib / c},
+        {"stanchion", 10 * w_stanchion * (z_top - z_hinge - w_hinge) +
+                          2 * w_stanchion * (z_hinge - z_sill + d_rib / c)},
+        {"hinge_beam", 3 * a * w_hinge},
     };
 }
 
@@ -143,7 +152,10 @@ void expect_reactions_equal_weight(const std::string& dir, const std::string& ca
                                                      {"door", 6e-3},
                                                      {"bolster", 12e-3},
                                                      {"top_chord", 10e-3},
-                                                     {"tie", 10e-3}};
+                                                     {"tie", 10e-3},
+                                                     {"rib", 8e-3},
+                                                     {"stanchion", 8e-3},
+                                                     {"hinge_beam", 10e-3}};
     double weight = 0.0;
     for (const auto& [part, area] : part_areas()) {
         weight += 7850.0 * 9.81 * area * thickness.at(part);
