@@ -26,7 +26,8 @@ std::string case_copy(const std::string& name) {
     const std::string dir = ::testing::TempDir() + "hopper_wagon_" + name;
     fs::remove_all(dir);
     fs::create_directories(dir);
-    for (const char* file : {"hopper_wagon.geo", "wagon_gravity.toml", "wagon_gravity_k.toml"}) {
+    for (const char* file : {"hopper_wagon.geo", "wagon_gravity.toml", "wagon_gravity_k.toml",
+                             "wagon_pressure.toml"}) {
         fs::copy_file(source_path(std::string("cases/hopper_wagon/") + file), dir + "/" + file);
     }
     return dir;
@@ -175,6 +176,38 @@ TEST(HopperWagon, SelfWeightReactionsEqualTheWeight) {
     expect_reactions_equal_weight(dir, "wagon_gravity"); // meshes hopper_wagon.geo first
     export_deck(dir);
     expect_reactions_equal_weight(dir, "wagon_gravity_k");
+}
+
+// The load's pressure on the stiffened body (wagon_pressure.toml, the deck in three parts):
+// the supports carry the pressures' resultant, p A n over the two loaded parts, A the plane
+// polygons' areas and n their unit normals (into the load: the slope sheets' (0, sin alpha,
+// cos alpha), the side wall's (0, -1, 0)), so the reactions are -(p_s A_s n_s + p_w A_w n_w)
+// with p the case's (negative) values. The consistent pressure load of a bilinear element
+// integrates p n over its exact area and the mesh tiles the polygons exactly: the difference
+// is round-off and the deck's printed digits, as for the weight (kEquilibrium).
+TEST(HopperWagon, PressureReactionsEqualThePressureResultant) {
+    const std::string dir = case_copy("pressure");
+    shell_mesh(dir + "/wagon_gravity.toml"); // meshes the .geo
+    export_deck(dir);
+    const std::string out = dir + "/wagon_pressure";
+    const CliResult run = run_cli("run '" + out + ".toml' --out '" + out + "'", out + ".log");
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    const std::string summary = read_file(out + "/summary.json");
+    const double alpha = 49.0 * std::numbers::pi / 180.0;
+    const double p_slope = -30e3, p_wall = -15e3; // Pa, wagon_pressure.toml
+    const std::map<std::string, double> area = part_areas();
+    const Vec3 load = p_slope * area.at("slope_sheet") * Vec3(0, std::sin(alpha), std::cos(alpha)) +
+                      p_wall * area.at("side_wall") * Vec3(0, -1, 0);
+    const Vec3 reaction(result_value(summary, "support_reaction_x"),
+                        result_value(summary, "support_reaction_y"),
+                        result_value(summary, "support_reaction_z"));
+    std::printf("wagon_pressure: reactions (%.3e, %.6f, %.6f) N, pressure resultant (%.6f, "
+                "%.6f) N\n",
+                reaction.x(), reaction.y(), reaction.z(), -load.y(), -load.z());
+    const double scale = load.norm();
+    EXPECT_NEAR(reaction.x(), 0.0, kEquilibrium * scale);
+    EXPECT_NEAR(reaction.y(), -load.y(), kEquilibrium * scale);
+    EXPECT_NEAR(reaction.z(), -load.z(), kEquilibrium * scale);
 }
 
 } // namespace
