@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <map>
 #include <numbers>
+#include <set>
 #include <vtkDataArray.h>
 #include <vtkDataSet.h>
 #include <vtkMultiBlockDataSet.h>
@@ -76,6 +77,83 @@ TEST(HopperWagon, ExportedDeckMatchesTheGmshMesh) {
          {"side_wall", "end_wall", "slope_sheet", "middle_slope_sheet", "end_slope_sheet", "ridge",
           "door", "bolster", "top_chord", "tie", "rib", "stanchion", "hinge_beam"}) {
         EXPECT_EQ(deck.element_set(part), gmsh.element_set(part)) << part;
+    }
+}
+
+// Coordinates of the Gmsh nodes on a weld line are computed from the same points as the
+// line: exact to round-off of numbers of order 10 m.
+constexpr double kOnWeldLine = 1e-9;
+
+/// Nodes of the elements of element set `part`.
+std::set<Index> part_nodes(const fem::ShellMesh& mesh, const std::string& part) {
+    std::set<Index> nodes;
+    for (const Index e : mesh.element_set(part)) {
+        nodes.insert(mesh.element(e).nodes.begin(), mesh.element(e).nodes.end());
+    }
+    return nodes;
+}
+
+/// How many nodes of `stiffener` lie where `on_weld` says and are nodes of one of the
+/// `sheets` too; `missing` counts those that are not (a weld line not embedded in the sheet).
+struct WeldCount {
+    int shared = 0;
+    int missing = 0;
+};
+
+template <class OnWeld>
+WeldCount weld_nodes(const fem::ShellMesh& mesh, const std::string& stiffener,
+                     std::initializer_list<const char*> sheets, OnWeld on_weld) {
+    std::set<Index> sheet_nodes;
+    for (const char* sheet : sheets) {
+        sheet_nodes.merge(part_nodes(mesh, sheet));
+    }
+    WeldCount count;
+    for (const Index n : part_nodes(mesh, stiffener)) {
+        if (on_weld(mesh.node(n))) {
+            ++(sheet_nodes.count(n) != 0 ? count.shared : count.missing);
+        }
+    }
+    return count;
+}
+
+// The stiffeners are welded to the sheets along lines embedded in them: every stiffener node
+// on a weld line is a node of the sheet as well (Gmsh meshes a sheet without an embedded line
+// independently of the stiffener, whose weld nodes would then lie on the sheet but not be its
+// nodes). And the mesh is all quadrangles (hopper_wagon.geo subdivides every element).
+TEST(HopperWagon, StiffenersShareTheirWeldNodesWithTheSheets) {
+    const std::string dir = case_copy("welds");
+    const fem::ShellMesh mesh = shell_mesh(dir + "/wagon_gravity.toml");
+    for (Index e = 0; e < mesh.element_count(); ++e) {
+        EXPECT_FALSE(mesh.element(e).is_triangle()) << "element " << e;
+    }
+    const double b = 1.5, z_sill = 0.9, z_hinge = 1.6, w_hinge = 0.3, z_top = 3.5;
+    const double t = std::tan(49.0 * std::numbers::pi / 180.0), z_ridge = z_sill + b * t;
+    const auto near = [](double u, double v) { return std::abs(u - v) < kOnWeldLine; };
+    const auto on_saddle = [&](const Vec3& x) { return near(x.z(), z_ridge - x.y() * t); };
+    const auto on_side_wall = [&](const Vec3& x) { return near(x.y(), b) && x.z() > z_sill; };
+    const auto on_box = [&](const Vec3& x) {
+        return x.y() > b + kOnWeldLine && (near(x.z(), z_hinge) || near(x.z(), z_hinge + w_hinge));
+    };
+    const auto on_chord = [&](const Vec3& x) { return near(x.z(), z_top); };
+    const struct {
+        const char* what;
+        WeldCount count;
+        int at_least; // nodes on the weld lines: ten frames of at least two mesh edges each
+    } welds[] = {
+        {"ribs on the saddle", weld_nodes(mesh, "rib", {"ridge", "slope_sheet"}, on_saddle), 30},
+        {"stanchions on the side wall", weld_nodes(mesh, "stanchion", {"side_wall"}, on_side_wall),
+         30},
+        {"stanchions on the hinge beam", weld_nodes(mesh, "stanchion", {"hinge_beam"}, on_box), 30},
+        {"stanchions on the top chord", weld_nodes(mesh, "stanchion", {"top_chord"}, on_chord), 30},
+        {"hinge beam on the side wall", weld_nodes(mesh, "hinge_beam", {"side_wall"}, on_side_wall),
+         60},
+        {"ties on the side wall", weld_nodes(mesh, "tie", {"side_wall"}, on_side_wall), 10},
+    };
+    for (const auto& weld : welds) {
+        std::printf("%s: %d nodes shared, %d not\n", weld.what, weld.count.shared,
+                    weld.count.missing);
+        EXPECT_EQ(weld.count.missing, 0) << weld.what;
+        EXPECT_GE(weld.count.shared, weld.at_least) << weld.what;
     }
 }
 
