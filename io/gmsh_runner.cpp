@@ -72,15 +72,39 @@ int run_gmsh(std::vector<std::string> args, const std::string& log, int* spawn_e
 
 } // namespace
 
-bool gmsh_mesh_outdated(const std::string& geo, const std::string& msh) {
-    std::error_code error;
-    const auto mesh_time = fs::last_write_time(msh, error);
-    return error || mesh_time < fs::last_write_time(geo);
+namespace {
+
+/// The stamp's text: one `NAME VALUE` line per number, in the order given.
+std::string numbers_stamp(const GmshNumbers& numbers) {
+    std::ostringstream text;
+    text.precision(17);
+    for (const auto& [name, value] : numbers) {
+        text << name << ' ' << value << '\n';
+    }
+    return text.str();
 }
 
-bool ensure_gmsh_mesh(const std::string& geo, const std::string& msh,
-                      const std::vector<std::pair<std::string, double>>& numbers) {
-    if (!gmsh_mesh_outdated(geo, msh)) {
+std::string stamp_path(const std::string& msh) {
+    return msh + ".setnumber";
+}
+
+} // namespace
+
+bool gmsh_mesh_outdated(const std::string& geo, const std::string& msh,
+                        const GmshNumbers& numbers) {
+    std::error_code error;
+    const auto mesh_time = fs::last_write_time(msh, error);
+    if (error || mesh_time < fs::last_write_time(geo)) {
+        return true;
+    }
+    std::ifstream stamp(stamp_path(msh));
+    const std::string made_with((std::istreambuf_iterator<char>(stamp)),
+                                std::istreambuf_iterator<char>());
+    return made_with != numbers_stamp(numbers);
+}
+
+bool ensure_gmsh_mesh(const std::string& geo, const std::string& msh, const GmshNumbers& numbers) {
+    if (!gmsh_mesh_outdated(geo, msh, numbers)) {
         return false;
     }
     // Names of this process's own: two runs meshing the same file do not share them.
@@ -113,7 +137,15 @@ bool ensure_gmsh_mesh(const std::string& geo, const std::string& msh,
         throw std::invalid_argument("gmsh failed to mesh " + geo + " (exit status " +
                                     std::to_string(status) + "):" + complaint);
     }
+    // The old stamp goes before the new mesh comes: a crash before the new stamp is written
+    // leaves none, which reads as a mismatch (numbers given), never as up to date.
+    std::error_code ignored_stamp;
+    fs::remove(stamp_path(msh), ignored_stamp);
     commit_file(temporary, msh);
+    if (!numbers.empty()) {
+        write_file_atomically(stamp_path(msh),
+                              [&](std::ostream& out) { out << numbers_stamp(numbers); });
+    }
     return true;
 }
 

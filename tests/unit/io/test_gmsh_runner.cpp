@@ -76,6 +76,13 @@ TEST(GmshRunner, NumbersOverrideTheScriptsConstants) {
     ASSERT_TRUE(ensure_gmsh_mesh(geo, dir + "/fine.msh", {{"h", 0.125}}));
     EXPECT_EQ(quads(dir + "/own.msh"), 8);
     EXPECT_EQ(quads(dir + "/fine.msh"), 32);
+    // The numbers a mesh was made with are part of being up to date: the same numbers keep
+    // it, other numbers (a case that changed its mesh size) remake it.
+    EXPECT_FALSE(ensure_gmsh_mesh(geo, dir + "/own.msh"));
+    EXPECT_FALSE(ensure_gmsh_mesh(geo, dir + "/fine.msh", {{"h", 0.125}}));
+    EXPECT_TRUE(ensure_gmsh_mesh(geo, dir + "/fine.msh", {{"h", 0.25}}));
+    EXPECT_EQ(quads(dir + "/fine.msh"), 8);
+    EXPECT_TRUE(ensure_gmsh_mesh(geo, dir + "/fine.msh"));
 }
 
 TEST(GmshRunner, GmshErrorsAreQuoted) {
