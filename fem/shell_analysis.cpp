@@ -1,5 +1,6 @@
 #include "fem/shell_analysis.hpp"
 
+#include "fem/static_increment.hpp"
 #include "io/binary_stream.hpp"
 
 #include <Eigen/Geometry>
@@ -239,143 +240,18 @@ void ShellAnalysis::revert_to_committed() {
     rotations_ = committed_rotations_;
 }
 
-void record_worst_dof(const std::vector<Index>& equation_numbers, const Eigen::VectorXd& residual,
-                      StepReport& report) {
-    report.worst_dof = -1;
-    report.worst_residual = 0.0;
-    for (std::size_t d = 0; d < equation_numbers.size(); ++d) {
-        const Index row = equation_numbers[d];
-        if (row < 0) {
-            continue;
-        }
-        const double r = residual(row);
-        const bool worse = !std::isfinite(r) ? std::isfinite(report.worst_residual)
-                                             : std::abs(r) > std::abs(report.worst_residual);
-        if (report.worst_dof < 0 || worse) {
-            report.worst_dof = static_cast<Index>(d);
-            report.worst_residual = r;
-        }
-    }
-}
-
-std::string dof_name(Index dof) {
-    static constexpr std::array<const char*, 6> kComponents{"ux", "uy", "uz", "rx", "ry", "rz"};
-    return "node " + std::to_string(dof / 6) + " " + kComponents[static_cast<std::size_t>(dof % 6)];
-}
-
 bool ShellAnalysis::increment(double from, double to, const NewtonSettings& settings,
                               StepReport& report) {
-    const std::vector<Index>& eq = equation_numbers();
-    const Eigen::VectorXd prescribed_increment = prescribed_at(to) - prescribed_at(from);
-    set_assembly_load_factor(to);
-    const Eigen::VectorXd applied = applied_forces(to);
-    const auto free_part = [&](const Eigen::VectorXd& full) {
-        Eigen::VectorXd out(free_count_);
-        for (std::size_t d = 0; d < eq.size(); ++d) {
-            if (eq[d] >= 0) {
-                out(eq[d]) = full(static_cast<Eigen::Index>(d));
-            }
-        }
-        return out;
-    };
-    SparseSolver::Matrix k;
-    Eigen::VectorXd internal;
-    Eigen::VectorXd coupling;
-    Eigen::VectorXd residual0;
-    Eigen::VectorXd step;
-    double energy0 = 0.0;
+    StaticIncrement problem(*this, from, to, settings);
     std::vector<NewtonIteration> log;
-    // A constant tangent (a linear shell) factorised once solves every later increment, so its
-    // element loop need only form the internal forces (the tangent's formation and assembly
-    // were most of a coupled window's shell cost), unless prescribed increments need K_fp.
-    const bool reuse = constant_tangent() && constant_tangent_factorized_ &&
-                       solver_.method() != SparseSolver::Method::none &&
-                       prescribed_increment.isZero(0.0);
-    bool factorized = false;
     try {
-        for (int i = 0;; ++i) {
-            // Prescribed increments enter the first iteration through the right-hand side,
-            // -K_fp dU_p, with the tangent of the converged state (Bathe FEP section 8.4):
-            // imposing them on the state first would strain only the elements next to the
-            // constrained nodes and, with plasticity, yield them spuriously.
-            assemble(reuse ? nullptr : &k, internal, i == 0 ? &prescribed_increment : nullptr,
-                     &coupling);
-            Eigen::VectorXd residual = free_part(applied - internal);
-            if (i == 0) {
-                residual -= free_part(coupling);
-            }
-            if (!residual.allFinite()) {
-                record_worst_dof(eq, residual, report);
-                return false;
-            }
-            // Out of balance within the force tolerance of the total force (e.g. a step in
-            // which no load changes, leaving the last solve's round-off): the ratios of eqs.
-            // 5.2.8-5.2.9 would measure noise against noise.
-            const auto in_balance = [&](const Eigen::VectorXd& r) {
-                const double tolerance =
-                    settings.force_tolerance > 0.0 ? settings.force_tolerance : 1e-10;
-                return r.norm() <=
-                       tolerance * (free_part(applied).norm() + free_part(internal).norm());
-            };
-            if (i == 0) {
-                residual0 = residual;
-                if (in_balance(residual0)) {
-                    update_state(prescribed_increment);
-                    break;
-                }
-            } else {
-                // Convergence norms of thesis eqs. 5.2.7-5.2.9.
-                NewtonIteration it;
-                it.iteration = i;
-                it.displacement_ratio = step.norm() / std::max(dofs_.norm(), 1e-300);
-                it.force_ratio = residual.norm() / residual0.norm();
-                it.energy_ratio = std::abs(step.dot(residual)) / std::max(energy0, 1e-300);
-                it.residual_norm = residual.norm();
-                log.push_back(it);
-                const auto met = [](double ratio, double tolerance) {
-                    return tolerance <= 0.0 || ratio <= tolerance;
-                };
-                if (met(it.displacement_ratio, settings.displacement_tolerance) &&
-                    met(it.force_ratio, settings.force_tolerance) &&
-                    met(it.energy_ratio, settings.energy_tolerance)) {
-                    break;
-                }
-                // Balanced to the force tolerance of the total force, as the first iteration
-                // accepts: when residual0 was itself small (a step in which only the lagged
-                // coupling load moved a little), the ratios above compare round-off with it and
-                // can never be met.
-                if (in_balance(residual)) {
-                    break;
-                }
-            }
-            if (i == settings.max_iterations) {
-                record_worst_dof(eq, residual, report);
-                return false;
-            }
-            if (!reuse) {
-                solver_.factorize(k, tangent_symmetric());
-                factorized = true;
-            }
-            report.solver = SparseSolver::name(solver_.method());
-            step = solver_.solve(residual);
-            if (i == 0) {
-                energy0 = std::abs(step.dot(residual0));
-            }
-            Eigen::VectorXd full =
-                i == 0 ? prescribed_increment : Eigen::VectorXd::Zero(dofs_.size());
-            for (std::size_t d = 0; d < eq.size(); ++d) {
-                if (eq[d] >= 0) {
-                    full(static_cast<Eigen::Index>(d)) = step(eq[d]);
-                }
-            }
-            update_state(full);
+        if (!newton_.solve(problem, settings, log, report)) {
+            return false;
         }
     } catch (const std::runtime_error&) {
+        // A material update that failed or a singular tangent: the caller cuts back.
         return false;
     }
-    // Only a factorisation that solved an increment to convergence is kept for the next ones
-    // (a singular tangent's is not).
-    constant_tangent_factorized_ = constant_tangent() && (reuse || factorized);
     commit();
     report.log.insert(report.log.end(), log.begin(), log.end());
     report.iterations.push_back(static_cast<int>(log.size()));

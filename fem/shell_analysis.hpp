@@ -1,6 +1,7 @@
 #pragma once
 
 #include "fem/mitc4_shell.hpp"
+#include "fem/newton_solver.hpp"
 #include "fem/shell_directors.hpp"
 #include "fem/shell_mesh.hpp"
 #include "fem/sparse_solver.hpp"
@@ -12,48 +13,6 @@
 #include <vector>
 
 namespace grainload::fem {
-
-/// Tolerances of the incremental-iterative procedure (thesis Table 5.2.2). A tolerance <= 0
-/// switches its criterion off; an iteration has converged when every active one is met.
-struct NewtonSettings {
-    double displacement_tolerance = 0.0; ///< eps_U of thesis eq. 5.2.7
-    double force_tolerance = 1e-6;       ///< eps_F of thesis eq. 5.2.8
-    double energy_tolerance = 1e-10;     ///< eps_E of thesis eq. 5.2.9
-    int max_iterations = 20;
-    int max_cutbacks = 6; ///< halvings of a load increment that did not converge
-};
-
-/// One equilibrium iteration: the three norm ratios of thesis eqs. 5.2.7-5.2.9.
-struct NewtonIteration {
-    int iteration = 0;
-    double displacement_ratio = 0.0; ///< ||dU(i)|| / ||U(i)||
-    double force_ratio = 0.0;        ///< ||F - Fu(i)|| / ||F - Fu(t)||
-    double energy_ratio = 0.0;       ///< dU(i).(F - Fu(i)) / dU(1).(F - Fu(t))
-    double residual_norm = 0.0;      ///< ||F - Fu(i)|| [N, N m mixed]
-};
-
-struct StepReport {
-    bool converged = false;
-    double load_factor = 0.0;
-    int increments = 0;
-    int cutbacks = 0;
-    std::string solver;               ///< which factorisation ran last
-    std::vector<NewtonIteration> log; ///< iterations of every accepted increment, in order
-    std::vector<int> iterations;      ///< iterations per accepted increment
-    /// Where the last increment that did not converge was furthest out of balance: the global
-    /// DOF (node * 6 + component, components ux uy uz rx ry rz) with the largest |residual| (a
-    /// non-finite one first) of its last iteration, and that residual [N or N m]; -1: none.
-    Index worst_dof = -1;
-    double worst_residual = 0.0;
-};
-
-/// Sets report.worst_dof and worst_residual from the free-DOF `residual` of a failed increment
-/// (`equation_numbers` maps global DOFs to its rows, -1 for constrained ones).
-void record_worst_dof(const std::vector<Index>& equation_numbers, const Eigen::VectorXd& residual,
-                      StepReport& report);
-
-/// "node 12 uz" for a global DOF.
-std::string dof_name(Index dof);
 
 /// One shell part of a structure (a [[fem.shell]] table): its elements are those of the mesh
 /// with ShellElement::part equal to its index; each part has its own material and through-
@@ -244,10 +203,8 @@ class ShellAnalysis {
     Eigen::VectorXd committed_dofs_;
     std::vector<Mat3> committed_rotations_;
     double load_factor_ = 0.0;
-    SparseSolver solver_;
-    /// solver_ holds the factorised constant tangent (constant_tangent()), which later
-    /// increments reuse.
-    bool constant_tangent_factorized_ = false;
+    /// Solves the increments; keeps a constant tangent's factorisation for the later ones.
+    NewtonSolver newton_;
 };
 
 } // namespace grainload::fem
