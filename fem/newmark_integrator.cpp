@@ -71,118 +71,113 @@ void NewmarkIntegrator::initialise(const Eigen::VectorXd& velocity) {
     }
 }
 
-StepReport NewmarkIntegrator::step(double dt, double load_factor, const NewtonSettings& settings) {
-    const std::vector<Index>& eq = analysis_->equation_numbers();
-    const Index free = analysis_->free_dof_count();
-    const double c0 = 1.0 / (beta_ * dt * dt);
-    const Eigen::VectorXd applied = analysis_->applied_forces(load_factor);
+/// The effective system of one Newmark/HHT step: the residual
+/// (1 + alpha)(F - Fu)(n+1) - alpha (F - Fu)(n) - M a(n+1) over the free DOFs, the effective
+/// tangent (1 + alpha) K + c0 M, and the step's displacement increment dU.
+class NewmarkIntegrator::Step final : public NewtonOperator {
+  public:
+    Step(NewmarkIntegrator& integrator, double dt, double load_factor);
+
+    /// Newmark: a1 = c0 (dU - dt v0) - (1/(2 beta) - 1) a0.
+    Eigen::VectorXd acceleration() const {
+        return Eigen::VectorXd(c0_ * (increment_ - dt_ * integrator_.velocity_) -
+                               (0.5 / integrator_.beta_ - 1.0) * integrator_.acceleration_);
+    }
+    Eigen::VectorXd residual(int iteration, SparseSolver::Matrix* tangent) override;
+    /// Only an exact balance (at rest, unloaded): the inertia gives every other step a first
+    /// residual for the ratios of eqs. 5.2.8-5.2.9 to measure against.
+    bool in_balance(const Eigen::VectorXd& residual) const override {
+        return residual.norm() == 0.0;
+    }
+    void factorize(SparseSolver::Matrix& tangent, SparseSolver& solver) const override;
+    void correct(int iteration, const Eigen::VectorXd& step) override;
+    double displacement_norm() const override { return increment_.norm(); }
+    bool constant_tangent() const override { return integrator_.analysis_->constant_tangent(); }
+    /// The effective tangent contains c0 = 1 / (beta dt^2).
+    double tangent_key() const override { return dt_; }
+    bool first_iteration_needs_tangent() const override { return !prescribed_.isZero(0.0); }
+    const std::vector<Index>& equation_numbers() const override { return equation_; }
+
+  private:
+    NewmarkIntegrator& integrator_;
+    ShellAnalysis& analysis_;
+    const std::vector<Index>& equation_;
+    double dt_;
+    double c0_;
+    Eigen::VectorXd applied_;
+    Eigen::VectorXd previous_;
+    Eigen::VectorXd prescribed_;
+    Eigen::VectorXd increment_;
+    Eigen::VectorXd internal_;
+    Eigen::VectorXd coupling_;
+};
+
+NewmarkIntegrator::Step::Step(NewmarkIntegrator& integrator, double dt, double load_factor)
+    : integrator_(integrator), analysis_(*integrator.analysis_),
+      equation_(integrator.analysis_->equation_numbers()), dt_(dt),
+      c0_(1.0 / (integrator.beta_ * dt * dt)), applied_(analysis_.applied_forces(load_factor)),
+      previous_(Eigen::VectorXd::Zero(integrator.mass_.size())),
+      increment_(Eigen::VectorXd::Zero(integrator.mass_.size())) {
     // HHT-alpha: the out-of-balance force of the converged state n (its follower loads at
     // t(n)), weighted by -alpha.
-    Eigen::VectorXd previous = Eigen::VectorXd::Zero(mass_.size());
-    if (alpha_ != 0.0) {
+    if (integrator_.alpha_ != 0.0) {
         Eigen::VectorXd internal_n;
-        analysis_->set_assembly_load_factor(analysis_->load_factor());
-        analysis_->assemble(nullptr, internal_n);
-        analysis_->revert_to_committed();
-        previous = analysis_->applied_forces(analysis_->load_factor()) - internal_n;
+        analysis_.set_assembly_load_factor(analysis_.load_factor());
+        analysis_.assemble(nullptr, internal_n);
+        analysis_.revert_to_committed();
+        previous_ = analysis_.applied_forces(analysis_.load_factor()) - internal_n;
     }
-    analysis_->set_assembly_load_factor(load_factor);
+    analysis_.set_assembly_load_factor(load_factor);
     // Prescribed values follow their histories; they enter the first iteration through
     // -K_fp dU_p. A lumped M does not couple them to the free DOFs; a consistent M does, and
     // that coupling enters through the residual from the second iteration on.
-    const Eigen::VectorXd prescribed =
-        analysis_->prescribed_at(load_factor) - analysis_->prescribed_at(analysis_->load_factor());
-    Eigen::VectorXd increment = Eigen::VectorXd::Zero(mass_.size());
-    // Newmark: a1 = c0 (dU - dt v0) - (1/(2 beta) - 1) a0.
-    const auto new_acceleration = [&] {
-        return Eigen::VectorXd(c0 * (increment - dt * velocity_) -
-                               (0.5 / beta_ - 1.0) * acceleration_);
-    };
-    StepReport report;
-    SparseSolver::Matrix k;
-    Eigen::VectorXd internal;
-    Eigen::VectorXd coupling;
-    Eigen::VectorXd step;
-    Eigen::VectorXd residual0;
-    double energy0 = 0.0;
-    // A reused factorisation (below) needs no tangent: the element loop then forms the internal
-    // forces only, unless prescribed increments need K_fp.
-    const bool known_reuse = analysis_->constant_tangent() && factorized_step_ == dt &&
-                             solver_.method() != SparseSolver::Method::none &&
-                             prescribed.isZero(0.0);
-    for (int i = 0;; ++i) {
-        analysis_->assemble(known_reuse ? nullptr : &k, internal, i == 0 ? &prescribed : nullptr,
-                            &coupling);
-        Eigen::VectorXd full =
-            (1.0 + alpha_) * (applied - internal) - alpha_ * previous - inertia(new_acceleration());
-        if (i == 0) {
-            full -= (1.0 + alpha_) * coupling;
-        }
-        Eigen::VectorXd residual(free);
-        for (std::size_t d = 0; d < eq.size(); ++d) {
-            if (eq[d] >= 0) {
-                residual(eq[d]) = full(static_cast<Eigen::Index>(d));
-            }
-        }
-        if (i == 0) {
-            residual0 = residual;
-        } else {
-            NewtonIteration it;
-            it.iteration = i;
-            it.force_ratio = residual.norm() / std::max(residual0.norm(), 1e-300);
-            it.energy_ratio = std::abs(step.dot(residual)) / std::max(energy0, 1e-300);
-            it.displacement_ratio = step.norm() / std::max(increment.norm(), 1e-300);
-            it.residual_norm = residual.norm();
-            report.log.push_back(it);
-            if ((settings.force_tolerance <= 0.0 || it.force_ratio <= settings.force_tolerance) &&
-                (settings.energy_tolerance <= 0.0 ||
-                 it.energy_ratio <= settings.energy_tolerance)) {
-                break;
-            }
-        }
-        if (residual0.norm() == 0.0 || i == settings.max_iterations) {
-            if (i == settings.max_iterations) {
-                record_worst_dof(eq, residual, report);
-                analysis_->revert_to_committed();
-                return report;
-            }
-            break;
-        }
-        // A linear shell's effective tangent does not change while dt does not: its
-        // factorisation from an earlier step solves this one exactly (the coupling's many
-        // short windows would otherwise refactorise the same matrix every window).
-        const bool reuse = analysis_->constant_tangent() && factorized_step_ == dt &&
-                           solver_.method() != SparseSolver::Method::none;
-        if (!reuse) {
-            // Effective tangent (1 + alpha) K + c0 M. The consistent M couples only DOFs that
-            // K couples too, so the sum keeps the pattern (and the reused symbolic analysis).
-            k *= 1.0 + alpha_;
-            if (consistent_) {
-                k += c0 * mass_free_;
-            }
-            for (std::size_t d = 0; d < eq.size() && !consistent_; ++d) {
-                if (eq[d] >= 0) {
-                    k.coeffRef(eq[d], eq[d]) += c0 * mass_(static_cast<Eigen::Index>(d));
-                }
-            }
-            solver_.factorize(k, analysis_->tangent_symmetric());
-            factorized_step_ = dt;
-        }
-        report.solver = SparseSolver::name(solver_.method());
-        step = solver_.solve(residual);
-        if (i == 0) {
-            energy0 = std::abs(step.dot(residual0));
-        }
-        Eigen::VectorXd delta = i == 0 ? prescribed : Eigen::VectorXd::Zero(mass_.size());
-        for (std::size_t d = 0; d < eq.size(); ++d) {
-            if (eq[d] >= 0) {
-                delta(static_cast<Eigen::Index>(d)) = step(eq[d]);
-            }
-        }
-        increment += delta;
-        analysis_->update_state(delta);
+    prescribed_ =
+        analysis_.prescribed_at(load_factor) - analysis_.prescribed_at(analysis_.load_factor());
+}
+
+Eigen::VectorXd NewmarkIntegrator::Step::residual(int iteration, SparseSolver::Matrix* tangent) {
+    analysis_.assemble(tangent, internal_, iteration == 0 ? &prescribed_ : nullptr, &coupling_);
+    const double alpha = integrator_.alpha_;
+    Eigen::VectorXd full = (1.0 + alpha) * (applied_ - internal_) - alpha * previous_ -
+                           integrator_.inertia(acceleration());
+    if (iteration == 0) {
+        full -= (1.0 + alpha) * coupling_;
     }
-    const Eigen::VectorXd a1 = new_acceleration();
+    return free_part(equation_, analysis_.free_dof_count(), full);
+}
+
+void NewmarkIntegrator::Step::factorize(SparseSolver::Matrix& tangent, SparseSolver& solver) const {
+    // Effective tangent (1 + alpha) K + c0 M. The consistent M couples only DOFs that K
+    // couples too, so the sum keeps the pattern (and the reused symbolic analysis).
+    tangent *= 1.0 + integrator_.alpha_;
+    if (integrator_.consistent_) {
+        tangent += c0_ * integrator_.mass_free_;
+    }
+    for (std::size_t d = 0; d < equation_.size() && !integrator_.consistent_; ++d) {
+        if (equation_[d] >= 0) {
+            tangent.coeffRef(equation_[d], equation_[d]) +=
+                c0_ * integrator_.mass_(static_cast<Eigen::Index>(d));
+        }
+    }
+    solver.factorize(tangent, analysis_.tangent_symmetric());
+}
+
+void NewmarkIntegrator::Step::correct(int iteration, const Eigen::VectorXd& step) {
+    Eigen::VectorXd delta =
+        iteration == 0 ? prescribed_ : Eigen::VectorXd::Zero(integrator_.mass_.size());
+    scatter_free(equation_, step, delta);
+    increment_ += delta;
+    analysis_.update_state(delta);
+}
+
+StepReport NewmarkIntegrator::step(double dt, double load_factor, const NewtonSettings& settings) {
+    Step problem(*this, dt, load_factor);
+    StepReport report;
+    if (!newton_.solve(problem, settings, report.log, report)) {
+        analysis_->revert_to_committed();
+        return report;
+    }
+    const Eigen::VectorXd a1 = problem.acceleration();
     velocity_ += dt * ((1.0 - gamma_) * acceleration_ + gamma_ * a1);
     acceleration_ = a1;
     analysis_->set_load_factor(load_factor);

@@ -12,8 +12,9 @@ enum class MassMatrix { lumped, consistent };
 /// Implicit Newmark time integration of a ShellAnalysis with its lumped or consistent mass (Bathe
 /// FEP section 9.2.4, Table 9.3): beta = 1/4, gamma = 1/2 is the trapezoidal rule (no numerical
 /// damping, energy conserving for linear systems); gamma > 1/2 with beta = (gamma + 1/2)^2 / 4
-/// damps high frequencies. Every step is solved by Newton-Raphson on the effective system
-/// (K + M / (beta dt^2)) dU = F - Fu - M a, with the norms of thesis eqs. 5.2.7-5.2.9.
+/// damps high frequencies. Every step is solved by Newton-Raphson (fem/newton_solver.hpp) on
+/// the effective system (K + M / (beta dt^2)) dU = F - Fu - M a, with the norms of thesis
+/// eqs. 5.2.7-5.2.9.
 /// Rotations are integrated as additive rotation vectors (moderate rotations per step).
 /// Constrained DOFs follow their prescribed histories.
 ///
@@ -51,6 +52,8 @@ class NewmarkIntegrator {
     double strain_energy();
 
   private:
+    class Step; ///< one step's effective system, the operator of its Newton solve
+
     /// M x over all DOFs.
     Eigen::VectorXd inertia(const Eigen::VectorXd& x) const;
 
@@ -64,8 +67,8 @@ class NewmarkIntegrator {
     SparseSolver::Matrix mass_free_;   ///< consistent: free-free block
     Eigen::VectorXd velocity_;
     Eigen::VectorXd acceleration_;
-    SparseSolver solver_;
-    double factorized_step_ = 0.0; ///< the dt of the factorised effective tangent
+    /// Solves the steps; keeps a linear shell's factorised effective tangent while dt holds.
+    NewtonSolver newton_;
 };
 
 } // namespace grainload::fem
