@@ -43,20 +43,10 @@ void NewmarkIntegrator::initialise(const Eigen::VectorXd& velocity) {
     const Eigen::VectorXd force = analysis_->applied_forces(analysis_->load_factor()) - internal;
     acceleration_.setZero();
     if (consistent_) {
-        Eigen::VectorXd rhs(analysis_->free_dof_count());
-        for (std::size_t d = 0; d < eq.size(); ++d) {
-            if (eq[d] >= 0) {
-                rhs(eq[d]) = force(static_cast<Eigen::Index>(d));
-            }
-        }
         SparseSolver mass_solver;
         mass_solver.factorize(mass_free_);
-        const Eigen::VectorXd a = mass_solver.solve(rhs);
-        for (std::size_t d = 0; d < eq.size(); ++d) {
-            if (eq[d] >= 0) {
-                acceleration_(static_cast<Eigen::Index>(d)) = a(eq[d]);
-            }
-        }
+        scatter_free(eq, mass_solver.solve(free_part(eq, analysis_->free_dof_count(), force)),
+                     acceleration_);
     }
     for (std::size_t d = 0; d < eq.size() && !consistent_; ++d) {
         const auto i = static_cast<Eigen::Index>(d);

@@ -335,21 +335,10 @@ Eigen::VectorXd ShellAnalysis::tangent_response(const Eigen::VectorXd& load) {
     for (auto& e : elements_) {
         e.revert();
     }
-    Eigen::VectorXd rhs(free_count_);
-    for (std::size_t d = 0; d < eq.size(); ++d) {
-        if (eq[d] >= 0) {
-            rhs(eq[d]) = load(static_cast<Eigen::Index>(d));
-        }
-    }
     SparseSolver solver;
     solver.factorize(k, tangent_symmetric());
-    const Eigen::VectorXd x = solver.solve(rhs);
     Eigen::VectorXd response = Eigen::VectorXd::Zero(load.size());
-    for (std::size_t d = 0; d < eq.size(); ++d) {
-        if (eq[d] >= 0) {
-            response(static_cast<Eigen::Index>(d)) = x(eq[d]);
-        }
-    }
+    scatter_free(eq, solver.solve(free_part(eq, free_count_, load)), response);
     return response;
 }
 
