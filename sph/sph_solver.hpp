@@ -125,6 +125,8 @@ class SphSolver {
     std::size_t bytes() const;
 
   private:
+    /// rho += dt drho/dt for the material particles, floored at half the material density.
+    void integrate_density(double dt, Index n);
     /// Rebuild the list if stale (mirror images attached, when there are planes).
     void refresh_neighbours();
     /// Rebuild the list at `positions` (of the particles without images): with symmetry planes
