@@ -11,9 +11,8 @@ import os
 import sys
 
 import numpy as np
-
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from vtp import read_vtp  # noqa: E402
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
 MU = 0.4                      # wall friction coefficient of the case
 PHI = math.radians(30.0)      # the sand's friction angle
@@ -33,14 +32,27 @@ def janssen_band_mean(gamma, d, k, z_top, z_bottom):
     return gamma * d / (2.0 * MU) * integral / (z_bottom - z_top)
 
 
+def read_particles(path):
+    """Positions (n x 3, m) and stress (n x 6, Pa: XX YY ZZ XY YZ XZ) of a body's .vtp."""
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    data = reader.GetOutput()
+    if data.GetNumberOfPoints() == 0:
+        sys.exit(f"analyse.py: no particles in {path}")
+    stress = data.GetPointData().GetArray("stress")
+    if stress is None:
+        sys.exit(f"analyse.py: {path} has no point array 'stress'")
+    return vtk_to_numpy(data.GetPoints().GetData()), vtk_to_numpy(stress)
+
+
 def main(out, spacing):
     rows = list(csv.DictReader(open(os.path.join(out, "wall_forces.csv"))))
     t_end = max(float(r["time_s"]) for r in rows)
     force = {r["wall"]: (float(r["force_x_N"]), float(r["force_y_N"]))
              for r in rows if float(r["time_s"]) == t_end}
     frame = sorted(glob.glob(os.path.join(out, "frames", "*_[0-9]*[0-9]")))[-1]
-    sand = read_vtp(os.path.join(frame, "sand.vtp"))
-    x, stress = sand["Points"], sand["stress"]
+    x, stress = read_particles(os.path.join(frame, "sand.vtp"))
     mass = float(len(x)) * 1500.0 * spacing ** 2
     d = x[:, 0].max() - x[:, 0].min() + spacing       # the sand's width
     top = np.sort(x[:, 1])[-max(3, len(x) // 200):].mean() + spacing / 2  # the surface

@@ -104,15 +104,21 @@ mu_static = 0.402
 mu_kinetic = 0.402
 )";
 
+/// The scene `text` with its body's box starting at `min` (the line after `max_line`, the box's
+/// upper corner) and the symmetry planes `planes` appended (empty for the full model): full and
+/// cut models differ only there.
+std::string boxed(std::string text, const std::string& max_line, const std::string& min,
+                  const std::string& planes) {
+    text.replace(text.find(max_line), max_line.size(), max_line + "\nmin = \"" + min + "\"");
+    return text + planes;
+}
+
+// The symmetry plane x = 0 of the half column.
+const char* kHalfPlane = "[[sph.symmetry]]\naxis = \"x\"\nat = \"0 m\"\n";
+
 std::string column(bool half) {
-    std::string text = kColumn2d;
-    const std::string anchor = "max = \"100 118.5 mm\"";
-    text.replace(text.find(anchor), anchor.size(),
-                 anchor + (half ? "\nmin = \"0 18.5 mm\"" : "\nmin = \"-100 18.5 mm\""));
-    if (half) {
-        text += "[[sph.symmetry]]\naxis = \"x\"\nat = \"0 m\"\n";
-    }
-    return text;
+    return boxed(kColumn2d, "max = \"100 118.5 mm\"", half ? "0 18.5 mm" : "-100 18.5 mm",
+                 half ? kHalfPlane : "");
 }
 
 // The positions differ only by the order of the neighbour sums (and of the eigen-solves of the
@@ -358,8 +364,7 @@ velocity = "0 -1 m/s"
 // 3D: an elastic block 60 x 60 x 40 mm at rest (geostatic stress) on a floor, and its quarter
 // x > 0, y > 0 with the planes x = 0 and y = 0, whose particles near the edge x = y = 0 see
 // three images each (the image of the image included).
-std::string block(bool quarter) {
-    std::string text = R"(
+const char* kBlock3d = R"(
 [case]
 dimension = 3
 end_time = "1 s"
@@ -396,13 +401,14 @@ edge_u = "100 0 0 mm"
 edge_v = "0 100 0 mm"
 normal = "0 0 1"
 )";
-    const std::string anchor = "max = \"30 30 58.5 mm\"";
-    text.replace(text.find(anchor), anchor.size(),
-                 anchor + (quarter ? "\nmin = \"0 0 18.5 mm\"" : "\nmin = \"-30 -30 18.5 mm\""));
-    if (quarter) {
-        text += "[[sph.symmetry]]\naxis = \"x\"\n[[sph.symmetry]]\naxis = \"y\"\nside = \"+\"\n";
-    }
-    return text;
+
+// The symmetry planes x = 0 and y = 0 of the quarter block.
+const char* kQuarterPlanes =
+    "[[sph.symmetry]]\naxis = \"x\"\n[[sph.symmetry]]\naxis = \"y\"\nside = \"+\"\n";
+
+std::string block(bool quarter) {
+    return boxed(kBlock3d, "max = \"30 30 58.5 mm\"", quarter ? "0 0 18.5 mm" : "-30 -30 18.5 mm",
+                 quarter ? kQuarterPlanes : "");
 }
 
 // The floor loads of quarter and full over the whole run: round-off only (measured 1e-15).
