@@ -12,6 +12,9 @@ GRAINLOAD_PACKAGES=(
   gmsh python3
   # Plots: `grainload trade` draws error against wall time with scripts/plot_trade.py.
   python3-matplotlib
+  # Case scripts read frames with VTK's Python bindings (cases/hopper_wagon/*.py), and
+  # scripts/render_frames.py renders them to PNG off screen, under xvfb-run without a display.
+  python3-vtk9 xvfb xauth
 )
 
 missing=()

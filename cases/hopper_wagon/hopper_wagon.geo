@@ -15,6 +15,9 @@
 SetFactory("Built-in");
 
 DefineConstant[ h = {0.2, Name "mesh size before subdivision [m]"} ];
+// The door opening's height: 700 mm (assumed); a case may draw it taller (geo_numbers) to
+// make up for the contact potential's reach at the opening's edges (docs/validation/silo.md).
+DefineConstant[ door = {0.70, Name "door opening height [m]"} ];
 
 a = 6.33;      // half body length (loading opening 12 660 mm, Greenbrier Falns 87 m3)
 b = 1.50;      // half body width (3 000 mm, within the 3 090 mm maximum of the Cemet Fals 24 Ve)
@@ -23,7 +26,7 @@ alpha = 49 * Pi / 180; // slope sheet angle (Greenbrier Falns 87 m3)
 z_sill = 0.90; // door sill: lower edge of the slope sheets at the side (assumed)
 x_mid = 0.35;  // the middle slope sheet reaches the side at x = x_mid (assumed)
 x_end = x_mid + 5.43; // door length 5 430 mm (Greenbrier Falns: unloading length 4 x 5 430 mm)
-z_hinge = z_sill + 0.70; // door height 700 mm (assumed); the hinge is its top edge
+z_hinge = z_sill + door; // door height 700 mm (assumed); the hinge is its top edge
 x_pivot = 3.75; // bogie pivot: pivot pitch 7 500 mm (UIC 571-3 saddle-bottomed wagon Fals)
 z_pivot = 1.00; // underside of the body bolster on the bogie centre plate (assumed)
 y_plate = 0.15; // centre plate radius (assumed)

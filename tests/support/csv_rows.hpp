@@ -26,7 +26,8 @@ inline std::vector<std::vector<double>> numeric_csv_rows(const std::string& path
     return rows;
 }
 
-/// discharge.csv of a run with one sink as (time, discharged mass) pairs.
+/// discharge.csv of a run as (time, discharged mass) pairs, summed over its sinks (each row
+/// is one sink at one time; the sinks' rows of one time follow each other).
 inline std::vector<std::pair<double, double>> discharge_rows(const std::string& out) {
     std::ifstream in(out + "/discharge.csv");
     std::string line;
@@ -38,7 +39,42 @@ inline std::vector<std::pair<double, double>> discharge_rows(const std::string& 
         std::getline(fields, time, ',');
         std::getline(fields, sink, ',');
         std::getline(fields, mass, ',');
-        rows.emplace_back(std::stod(time), std::stod(mass));
+        if (!rows.empty() && rows.back().first == std::stod(time)) {
+            rows.back().second += std::stod(mass);
+        } else {
+            rows.emplace_back(std::stod(time), std::stod(mass));
+        }
+    }
+    return rows;
+}
+
+/// One row of wall_forces.csv: the force and moment (about the wall centre) the bodies exert
+/// on a wall at an output time.
+struct WallForceRow {
+    double time = 0.0;
+    std::string wall;
+    double force[3] = {0.0, 0.0, 0.0};
+    double moment[3] = {0.0, 0.0, 0.0};
+};
+
+inline std::vector<WallForceRow> wall_force_rows(const std::string& out) {
+    std::ifstream in(out + "/wall_forces.csv");
+    std::string line;
+    std::getline(in, line);
+    std::vector<WallForceRow> rows;
+    while (std::getline(in, line)) {
+        std::stringstream fields(line);
+        std::string field;
+        WallForceRow row;
+        std::getline(fields, field, ',');
+        row.time = std::stod(field);
+        std::getline(fields, row.wall, ',');
+        for (double* value : {&row.force[0], &row.force[1], &row.force[2], &row.moment[0],
+                              &row.moment[1], &row.moment[2]}) {
+            std::getline(fields, field, ',');
+            *value = std::stod(field);
+        }
+        rows.push_back(row);
     }
     return rows;
 }

@@ -1,0 +1,181 @@
+#!/usr/bin/python3
+"""Figures of a hopper-wagon discharge run (cases/hopper_wagon/hopper_wagon.toml).
+
+Usage:
+    /usr/bin/python3 cases/hopper_wagon/analyse_discharge.py OUT [OUT2 ...] [--png FILE]
+                     [--open 2.5] [--door 1.22]
+
+For every run directory OUT it reads summary.json, discharge.csv, wall_forces.csv and the
+frames (VTK's Python bindings, python3-vtk9) and prints, and writes to OUT/wagon_figures.json:
+  * the discharged mass against time (both sinks: the doorway and the ground) and the time the
+    discharge ends (the last output interval that still discharged);
+  * the residue: the load's mass left in the body at the end, and where it stays: particles
+    within 2.5 spacings of a surface are "on" it (saddle slope sheet, middle or end slope
+    sheet, side wall, end wall), those near two surfaces are "on an edge" (the hips, the
+    body's corners), the rest rest on other particles;
+  * the door: its resultant (normal component, N) and, with the moment about the hinge line
+    (wall_forces.csv gives the moment about the wall centre, which the case puts on the hinge
+    line), the lock reaction at the sill, R_sill = M / H, and the hinge reaction,
+    R_hinge = F - R_sill (statics of a door hinged at its top and locked at its sill), at
+    rest before the door opens and their peaks;
+  * the shell (an elastic body; a rigid one carries its own weight only): the largest von Mises stress
+    (of the top, middle and bottom surfaces) per frame, its place and part, while settling
+    (before --open) and during the discharge.
+With --png FILE it plots the discharged mass of every run against time.
+"""
+
+import argparse
+import csv
+import json
+import os
+import xml.etree.ElementTree as ElementTree
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataReader  # noqa: E402
+
+# Geometry of hopper_wagon.geo (cases/hopper_wagon/README.md), m.
+TAN = np.tan(np.radians(49.0))
+Z_RIDGE, X_MID, X_END, Z_SILL, HALF_WIDTH, HALF_LENGTH = 0.9 + 1.5 * TAN, 0.35, 5.78, 0.9, 1.5, 6.33
+SPACING = 0.1
+NEAR = 2.5 * SPACING  # "on" a surface: within the contact potential's reach (2h = 2.6 dp) and a bit
+
+
+def rows(path):
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def frames(out):
+    pvd = [n for n in os.listdir(out) if n.endswith(".pvd")][0]
+    root = ElementTree.parse(os.path.join(out, pvd)).getroot()
+    return [(float(d.get("timestep")), os.path.join(out, d.get("file"))) for d in root.iter("DataSet")]
+
+
+def blocks(vtm):
+    reader = vtkXMLMultiBlockDataReader()
+    reader.SetFileName(vtm)
+    reader.Update()
+    data = reader.GetOutput()
+    return {data.GetMetaData(i).Get(data.NAME()): data.GetBlock(i) for i in range(data.GetNumberOfBlocks())}
+
+
+def surface_distances(x):
+    """Distance of each point to the body's load-bearing surfaces (inside the body)."""
+    n = np.sqrt(1.0 + TAN**2)
+    return {
+        "saddle slope sheets": (x[:, 2] + TAN * x[:, 1] - Z_RIDGE) / n,
+        "middle slope sheet": (x[:, 2] - Z_SILL + TAN * (x[:, 0] - X_MID)) / n,
+        "end slope sheet": (x[:, 2] - Z_SILL - TAN * (x[:, 0] - X_END)) / n,
+        "side wall": HALF_WIDTH - x[:, 1],
+        "end wall": HALF_LENGTH - x[:, 0],
+    }
+
+
+def residue(out, mass_each):
+    time, vtm = frames(out)[-1]
+    load = blocks(vtm)["load"]
+    if load is None or load.GetNumberOfPoints() == 0:
+        return {"time_s": time, "mass_kg": 0.0, "places_kg": {}}
+    x = vtk_to_numpy(load.GetPoints().GetData())
+    inside = (x[:, 1] < HALF_WIDTH) & (x[:, 0] < HALF_LENGTH) & (x[:, 2] > Z_SILL - 0.3)
+    near = {k: (d < NEAR)[inside] for k, d in surface_distances(x).items()}
+    count = np.sum(list(near.values()), axis=0)
+    places = {"on an edge (two surfaces)": int(np.sum(count >= 2)),
+              "on other particles": int(np.sum(count == 0))}
+    for name, flag in near.items():
+        places["on the " + name] = int(np.sum(flag & (count == 1)))
+    return {"time_s": time, "mass_kg": float(np.sum(inside)) * mass_each,
+            "particles": int(np.sum(inside)),
+            "places_kg": {k: v * mass_each for k, v in places.items() if v}}
+
+
+def door(out, opens, height):
+    history = [r for r in rows(os.path.join(out, "wall_forces.csv")) if r["wall"] == "door"]
+    t = np.array([float(r["time_s"]) for r in history])
+    force = np.array([float(r["force_y_N"]) for r in history])  # the load pushes it outward, +y
+    moment = np.abs(np.array([float(r["moment_x_Nm"]) for r in history]))
+    sill = moment / height
+    hinge = force - sill
+    rest = np.searchsorted(t, opens) - 1
+    return {"at_rest_time_s": float(t[rest]), "force_N": float(force[rest]),
+            "sill_lock_N": float(sill[rest]), "hinge_N": float(hinge[rest]),
+            "peak_force_N": float(force.max()), "peak_force_time_s": float(t[np.argmax(force)]),
+            "peak_hinge_N": float(hinge.max()), "peak_sill_lock_N": float(sill.max())}
+
+
+def shell_peaks(out, opens):
+    peaks = {"settling": None, "discharge": None}
+    for time, vtm in frames(out):
+        shell = blocks(vtm).get("wagon")
+        cells = shell.GetCellData() if shell is not None else None
+        if cells is None or cells.GetArray("von_mises_top") is None:
+            return peaks
+        stress = np.max([vtk_to_numpy(cells.GetArray("von_mises_" + s)) for s in ("top", "middle", "bottom")], axis=0)
+        cell = int(np.argmax(stress))
+        ids = shell.GetCell(cell).GetPointIds()
+        centre = np.mean([shell.GetPoint(ids.GetId(k)) for k in range(ids.GetNumberOfIds())], axis=0)
+        phase = "settling" if time < opens else "discharge"
+        if peaks[phase] is None or stress[cell] > peaks[phase]["von_mises_MPa"] * 1e6:
+            plastic = vtk_to_numpy(cells.GetArray("plastic_strain"))
+            peaks[phase] = {"von_mises_MPa": float(stress[cell]) / 1e6, "time_s": time,
+                            "at_m": [round(float(c), 3) for c in centre],
+                            "thickness_mm": float(vtk_to_numpy(cells.GetArray("thickness"))[cell]) * 1e3,
+                            "largest_plastic_strain": float(np.max(plastic))}
+    return peaks
+
+
+def discharge(out):
+    curve = {}
+    for r in rows(os.path.join(out, "discharge.csv")):
+        t = float(r["time_s"])
+        curve[t] = curve.get(t, 0.0) + float(r["discharged_mass_kg"])
+    times = sorted(curve)
+    mass = [curve[t] for t in times]
+    ends = next((times[i] for i in range(len(times) - 1, 0, -1) if mass[i] > mass[i - 1]), None)
+    return times, mass, ends
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("outs", nargs="+")
+    parser.add_argument("--png")
+    parser.add_argument("--open", type=float, default=2.5, help="the door starts opening [s]")
+    parser.add_argument("--door", type=float, default=1.22, help="door opening height [m]")
+    args = parser.parse_args()
+    for out in args.outs:
+        summary = json.load(open(os.path.join(out, "summary.json")))
+        results = summary["results"]
+        created = results["initial_mass"]["value"] + results["created_mass"]["value"]
+        times, mass, ends = discharge(out)
+        figures = {
+            "case": summary["case"], "status": summary["status"],
+            "wall_time_s": summary["wall_time_s"], "simulated_time_s": summary["simulated_time_s"],
+            "load_kg": created, "discharged_kg": mass[-1], "discharge_ends_s": ends,
+            "mass_audit_error": results["mass_audit_error"]["value"],
+            "residue": residue(out, SPACING**3 * 2099.0),
+            "door": door(out, args.open, args.door),
+            # A rigid body (`rigid = true`) carries its own weight only: no stresses to report.
+            "shell": (shell_peaks(out, args.open)
+                      if summary["model"].get("wall body") != "rigid" else "rigid body"),
+        }
+        with open(os.path.join(out, "wagon_figures.json"), "w") as f:
+            json.dump(figures, f, indent=2)
+        print(json.dumps(figures, indent=2))
+        if args.png:
+            plt.plot(times, np.array(mass) / 1e3, label=f"{summary['case']} ({out})")
+    if args.png:
+        plt.xlabel("time [s]")
+        plt.ylabel("discharged mass, quarter wagon [t]")
+        plt.axvline(args.open, color="grey", linestyle=":", label="door opens")
+        plt.legend()
+        plt.grid(True, alpha=0.3)
+        plt.savefig(args.png, dpi=120, bbox_inches="tight")
+
+
+if __name__ == "__main__":
+    main()
