@@ -1,6 +1,9 @@
+#include "io/case_table.hpp"
 #include "sph/neighbour_list.hpp"
+#include "sph/sph_model.hpp"
 #include "sph/wall_bodies.hpp"
 
+#include <cmath>
 #include <gtest/gtest.h>
 #include <random>
 #include <utility>
@@ -70,6 +73,87 @@ TEST(WallBodies, DroppedPairsAreExactlyTheWallsPairsWithTheOtherBody) {
     }
     EXPECT_GT(dropped, 0);
     EXPECT_EQ(filtered.pair_entries(), full.pair_entries() - dropped);
+}
+
+// Body "sunk" starts half inside a floor that acts on body "resting" only, and "resting" starts
+// pressed onto the floor (its lowest particles 18.5 mm from the first wall layer, within the
+// support 2h = 26 mm), apart from "sunk" by more than the support. A floor
+// that met "sunk" would blow it out of the wall particles at once; one that does not leaves it
+// in free fall: an unstressed elastic body moving uniformly has no internal force, so each of
+// its particles' velocities is g t to round-off (1e-12 m/s after 200 steps of 20 us). The same
+// with a symmetry plane at x = 0 that both the floor and "sunk" reach: the images of the floor's
+// particles must not meet "sunk" either, nor the floor the images of "sunk".
+const char* kTwoBodiesScene = R"(
+[case]
+end_time = "0.01 s"
+dimension = 2
+gravity = "0 -9.81 m/s^2"
+[[material]]
+name = "sand"
+model = "linear_elastic"
+density = "1600 kg/m^3"
+youngs_modulus = "5 MPa"
+poisson_ratio = 0.3
+[sph]
+[sph.contact]
+stiffness = "5 MPa"
+damping_ratio = 0.5
+[[sph.body]]
+name = "sunk"
+material = "sand"
+spacing = "10 mm"
+[sph.body.shape]
+type = "box"
+min = "0 -15 mm"
+max = "50 25 mm"
+[[sph.body]]
+name = "resting"
+material = "sand"
+spacing = "10 mm"
+[sph.body.shape]
+type = "box"
+min = "100 8.5 mm"
+max = "150 38.5 mm"
+[[sph.wall]]
+name = "floor"
+type = "plane"
+origin = "0 0 mm"
+edge_u = "200 0 mm"
+normal = "0 1"
+bodies = ["resting"]
+)";
+
+TEST(WallBodies, ABodyTheFloorDoesNotActOnFallsFreelyThroughIt) {
+    for (const std::string plane : {"", "[[sph.symmetry]]\naxis = \"x\"\nat = \"0 m\"\n"}) {
+        auto document =
+            io::CaseDocument::from_string(std::string(kTwoBodiesScene) + plane, "two.toml");
+        const io::SceneSettings scene = io::read_scene_settings(*document, "two");
+        const auto materials = materials::MaterialLibrary::from_case(document->root());
+        auto model = SphModel::from_case(document->root(), scene, materials);
+        const double dt = 2e-5;
+        const int steps = 200;
+        for (int step = 0; step < steps; ++step) {
+            model->advance(step * dt, dt);
+        }
+        const ParticleSet& p = model->particles();
+        const double fall = -9.81 * steps * dt;
+        double largest_error = 0.0;
+        double pushed = 0.0;
+        Index sunk = 0;
+        for (Index i = 0; i < p.size(); ++i) {
+            if (p.body_id[i] == model->body_id("sunk")) {
+                largest_error = std::max(largest_error, (p.velocity[i] - Vec3(0, fall, 0)).norm());
+                ++sunk;
+            } else if (p.body_id[i] == model->body_id("resting")) {
+                pushed = std::max(pushed, p.velocity[i].y() - fall);
+            }
+        }
+        EXPECT_EQ(sunk, 20) << plane;
+        EXPECT_LT(largest_error, 1e-12) << plane;
+        // The floor still acts on the other body: it pushed "resting" up, by far more than
+        // round-off (a tenth of the fall speed).
+        EXPECT_GT(pushed, 0.1 * std::abs(fall)) << plane;
+    }
 }
 
 } // namespace
