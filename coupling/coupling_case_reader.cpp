@@ -2,7 +2,9 @@
 
 #include "coupling/window_limits.hpp"
 #include "io/case_table.hpp"
+#include "sph/wall_bodies.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -117,6 +119,11 @@ void read_friction(const io::CaseTable& coupling, const sph::SphModel& sph,
         if (wall == nullptr) {
             table.fail("part", "expected the name of a [[coupling.interface]] (" + known + ")");
         }
+        if (!wall->bodies.empty() && std::find(wall->bodies.begin(), wall->bodies.end(),
+                                               sph.body_id(body)) == wall->bodies.end()) {
+            table.fail("body", "interface \"" + name + "\" does not act on body \"" + body +
+                                   "\" (its `bodies`): expected one of them");
+        }
         sph::SphModel::WallDefinition::Friction friction{body, table.number("mu_static"), 0.0};
         friction.mu_kinetic = table.number_or("mu_kinetic", friction.mu_static);
         if (!(friction.mu_static >= 0.0)) {
@@ -202,6 +209,7 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
         wall.normals = part.wall->normals();
         wall.samples = part.wall->samples();
         wall.two_sided = layout.side == ContactSide::both;
+        wall.bodies = sph::read_wall_bodies(table, sph->body_names());
         wall.spacing = layout.spacing;
         // A rigid part keeps its wall where the shell was built (no driver) and sends no load
         // back: the same scene with a rigid wall, one key away (issue 18, section 3).

@@ -37,7 +37,7 @@ inline constexpr std::array<io::KeySpec, 7> kCouplingKeys{{
 }};
 
 /// The keys of each [[coupling.interface]] table.
-inline constexpr std::array<io::KeySpec, 7> kInterfaceKeys{{
+inline constexpr std::array<io::KeySpec, 8> kInterfaceKeys{{
     {"part", "string", "", "a [[fem.shell]] part name"},
     {"name", "string", "the part name",
      "the interface's wall name (needed when a part has several interfaces)"},
@@ -54,6 +54,9 @@ inline constexpr std::array<io::KeySpec, 7> kInterfaceKeys{{
      "true: the part's surface is a rigid wall where the shell was built; the sand's load on it "
      "is reported (`wall_PART_force_*`) but not applied to the shell",
      0.0},
+    {"bodies", "list of strings", "all bodies",
+     "the [[sph.body]] names the part acts on; the others pass through it as if it were not "
+     "there (no contact, friction, damping or load)"},
 }};
 
 /// A scene with [sph], [fem] and [coupling]: the bodies, the shell parts, one wall per

@@ -120,6 +120,40 @@ void NeighbourList::rebuild(std::span<const Vec3> positions, std::span<const cha
     ++rebuilds_;
 }
 
+void NeighbourList::drop_pairs(std::span<const int> group, std::span<const char> apart,
+                               int groups) {
+    const auto n = static_cast<Index>(offset_.size()) - 1;
+    auto keep = [&](Index i, std::int32_t j) {
+        return apart[static_cast<std::size_t>(group[i]) * static_cast<std::size_t>(groups) +
+                     static_cast<std::size_t>(group[j])] == 0;
+    };
+    // Count, then copy, as rebuild() fills the list: one allocation, rows in parallel.
+    std::vector<Index> offset(static_cast<std::size_t>(n + 1), 0);
+#pragma omp parallel for schedule(dynamic, 256)
+    for (Index i = 0; i < n; ++i) {
+        Index count = 0;
+        for (Index e = offset_[i]; e < offset_[i + 1]; ++e) {
+            count += keep(i, index_[e]) ? 1 : 0;
+        }
+        offset[i + 1] = count;
+    }
+    for (Index i = 0; i < n; ++i) {
+        offset[i + 1] += offset[i];
+    }
+    std::vector<std::int32_t> index(static_cast<std::size_t>(offset[n]));
+#pragma omp parallel for schedule(dynamic, 256)
+    for (Index i = 0; i < n; ++i) {
+        Index entry = offset[i];
+        for (Index e = offset_[i]; e < offset_[i + 1]; ++e) {
+            if (keep(i, index_[e])) {
+                index[entry++] = index_[e];
+            }
+        }
+    }
+    offset_ = std::move(offset);
+    index_ = std::move(index);
+}
+
 std::size_t NeighbourList::bytes() const {
     return offset_.capacity() * sizeof(Index) + index_.capacity() * sizeof(std::int32_t) +
            reference_.capacity() * sizeof(Vec3) + cells_.bytes() + free_cells_.bytes();

@@ -26,6 +26,11 @@ class NeighbourList {
     /// Returns whether the list was rebuilt.
     bool update(std::span<const Vec3> positions, std::span<const char> frozen, bool force = false,
                 Index rows = -1);
+    /// Leave out the pairs whose particles' groups are kept apart: entry (i, j) goes when
+    /// apart[group[i] * groups + group[j]] is nonzero (a wall and the bodies it does not act on,
+    /// Wall::bodies). The list must have just been rebuilt: it holds no such pair until the next
+    /// rebuild, which needs another call. `group` covers every position the list was built on.
+    void drop_pairs(std::span<const int> group, std::span<const char> apart, int groups);
     /// Whether update() would rebuild without `force`.
     bool stale(std::span<const Vec3> positions) const;
 

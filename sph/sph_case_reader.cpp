@@ -4,6 +4,7 @@
 #include "sph/initial_stress.hpp"
 #include "sph/surface_mesh_wall.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace grainload::sph {
@@ -275,7 +276,13 @@ std::vector<FrictionPair> read_friction_pairs(const io::CaseTable& sph,
         pair.body_id = body_index(table, "body", body_names);
         const int wall = index_by_name(
             table, "wall", walls, [](const Wall& w) { return w.name; }, "[[sph.wall]]");
-        pair.wall_body_id = walls[static_cast<std::size_t>(wall)].body_id;
+        const Wall& met = walls[static_cast<std::size_t>(wall)];
+        pair.wall_body_id = met.body_id;
+        if (!met.bodies.empty() &&
+            std::find(met.bodies.begin(), met.bodies.end(), pair.body_id) == met.bodies.end()) {
+            table.fail("body", "wall \"" + met.name + "\" does not act on this body (its " +
+                                   "`bodies`): expected one of them");
+        }
         pair.mu_static = table.number("mu_static");
         pair.mu_kinetic = table.number_or("mu_kinetic", pair.mu_static);
         if (!(pair.mu_static >= 0.0)) {

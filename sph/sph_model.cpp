@@ -4,6 +4,7 @@
 #include "sph/body_generator.hpp"
 #include "sph/scene_limits.hpp"
 #include "sph/sph_case_reader.hpp"
+#include "sph/wall_bodies.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -145,6 +146,10 @@ void SphModel::build_solver(const io::CaseTable& sph) {
     SmoothingKernel kernel(options.kernel, options.smoothing_length, dimension_);
     auto walls = read_rigid_walls(sph, particles_, dimension_, spacing_, kernel.support_radius(),
                                   static_cast<int>(body_names_.size()));
+    const auto wall_tables = sph.array_of_tables("wall");
+    for (std::size_t k = 0; k < wall_tables.size(); ++k) {
+        walls[k].bodies = read_wall_bodies(wall_tables[k], body_names_);
+    }
     for (WallDefinition& added : added_walls_) {
         const int index = static_cast<int>(walls.size());
         Wall wall = sph::add_wall(particles_, added.name, index,
@@ -153,6 +158,7 @@ void SphModel::build_solver(const io::CaseTable& sph) {
         wall.normals = std::move(added.normals);
         wall.samples = std::move(added.samples);
         wall.two_sided = added.two_sided;
+        wall.bodies = std::move(added.bodies);
         for (std::size_t k = 0; k < added.velocities.size(); ++k) {
             particles_.velocity[static_cast<std::size_t>(wall.first) + k] = added.velocities[k];
         }

@@ -39,7 +39,8 @@ class SphModel final : public io::Stepper {
         std::vector<Vec3> normals;
         std::vector<Vec3> velocities; ///< initial velocities of its particles (empty: at rest)
         std::vector<WallSample> samples;
-        bool two_sided = false; ///< see Wall::two_sided
+        bool two_sided = false;  ///< see Wall::two_sided
+        std::vector<int> bodies; ///< see Wall::bodies (empty: all)
         double spacing = 0.0;
         Vec3 centre = Vec3::Zero(); ///< moment reference
         std::shared_ptr<WallDriver> driver;
@@ -70,6 +71,8 @@ class SphModel final : public io::Stepper {
     double support_radius(const io::CaseTable& root) const;
     /// Index of a body by name, -1 when there is none.
     int body_id(const std::string& name) const;
+    /// The [[sph.body]] names, indexed by body id.
+    const std::vector<std::string>& body_names() const { return body_names_; }
     int dimension() const { return dimension_; }
 
     std::string_view name() const override { return "sph"; }

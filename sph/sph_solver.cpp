@@ -48,6 +48,7 @@ SphSolver::SphSolver(ParticleSet particles, MaterialList materials, SphOptions o
         total_lagrangian_.emplace(particles_, kernel_);
     }
     plane_at_ = plane_coordinates(options_.symmetry);
+    wall_filter_ = wall_body_filter(walls_);
     hold_clamped();
     rebuild_neighbours(particles_.position);
 }
@@ -139,7 +140,9 @@ void SphSolver::add_particles(std::span<const NewParticle> arrivals, bool book_e
 
 void SphSolver::refresh_neighbours() {
     if (options_.symmetry.empty()) {
-        neighbours_.update(particles_.position, is_wall_);
+        if (neighbours_.update(particles_.position, is_wall_) && !wall_filter_.empty()) {
+            neighbours_.drop_pairs(particles_.body_id, wall_filter_.apart, wall_filter_.groups);
+        }
         return;
     }
     // The images move with their sources, so the list's displacement test covers them; when it
@@ -154,6 +157,9 @@ void SphSolver::refresh_neighbours() {
 void SphSolver::rebuild_neighbours(std::span<const Vec3> positions) {
     if (options_.symmetry.empty()) {
         neighbours_.update(positions, is_wall_, true);
+        if (!wall_filter_.empty()) {
+            neighbours_.drop_pairs(particles_.body_id, wall_filter_.apart, wall_filter_.groups);
+        }
         return;
     }
     // An image within the support of a particle is within the support of the plane, and during
@@ -181,6 +187,14 @@ void SphSolver::rebuild_neighbours(std::span<const Vec3> positions) {
     // Images of grains need no row (nothing reads their rates); images of wall particles carry
     // the loads of the real grains on them (fold_wall_image_loads).
     neighbours_.update(all, frozen_, true, n + wall_image_count_);
+    if (!wall_filter_.empty()) {
+        // An image belongs to its source's body or wall.
+        std::vector<int> group(particles_.body_id.begin(), particles_.body_id.begin() + n);
+        for (const MirrorImage& image : images_) {
+            group.push_back(particles_.body_id[image.source]);
+        }
+        neighbours_.drop_pairs(group, wall_filter_.apart, wall_filter_.groups);
+    }
 }
 
 void SphSolver::attach_images(bool kinematics) {

@@ -9,6 +9,7 @@
 #include "sph/sph_options.hpp"
 #include "sph/total_lagrangian.hpp"
 #include "sph/wall.hpp"
+#include "sph/wall_bodies.hpp"
 #include "sph/wall_contact.hpp"
 
 #include <optional>
@@ -155,6 +156,9 @@ class SphSolver {
     SmoothingKernel kernel_;
     NeighbourList neighbours_;
     std::vector<Wall> walls_;
+    /// Body-wall pairs left out of the neighbour list after each build (Wall::bodies); empty:
+    /// none, and the list is used as built.
+    WallBodyFilter wall_filter_;
     WallContact wall_contact_;
     EnergyLedger energy_;
     /// Set with Formulation::total_lagrangian: the reference configuration is the particles

@@ -89,6 +89,11 @@ struct Wall {
     /// Symmetry planes ([[sph.symmetry]]) the wall is mirrored across: bit a for the plane
     /// normal to axis a (a wall that ends at the plane; one that runs on past it is not).
     std::uint8_t mirror_planes = 0;
+    /// Body ids of the bodies the wall acts on ([[coupling.interface]] and [[sph.wall]]
+    /// `bodies`); empty: all. The others pass through it as if it were not there: the solver
+    /// leaves their pairs with its particles out of the neighbour list (SphSolver), so contact,
+    /// damping, friction, the wall's load and the energy books all skip them.
+    std::vector<int> bodies;
 
     /// Velocity of the wall at point x seen from its particle k (an index into the
     /// ParticleSet): v_k + omega_k x (x - x_k).
