@@ -167,11 +167,13 @@ def render(vtm_path, time, args, png_path):
     for name, block in blocks(vtm_path):
         if name.startswith("wall_"):
             if name[len("wall_"):] in args.walls:
-                renderer.AddActor(wall_actor(block if not args.mirror else mirrored(block, args.mirror), args.point))
+                shown = mirrored(block, args.mirror) if args.mirror else block
+                renderer.AddActor(wall_actor(shown, args.point))
             continue
+        is_shell = block.IsA("vtkUnstructuredGrid")  # before mirroring, which makes a grid
         if args.mirror:
             block = mirrored(block, args.mirror)
-        if block.IsA("vtkUnstructuredGrid"):
+        if is_shell:
             renderer.AddActor(shell_actor(block, lookup, colour == "von_mises"))
         else:
             renderer.AddActor(particle_actor(block, lookup, colour == "velocity", args.point))

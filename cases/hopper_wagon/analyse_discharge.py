@@ -3,7 +3,7 @@
 
 Usage:
     /usr/bin/python3 cases/hopper_wagon/analyse_discharge.py OUT [OUT2 ...] [--png FILE]
-                     [--open 2.5] [--door 1.22]
+                     [--labels A,B] [--open 2.5] [--door 1.22]
 
 For every run directory OUT it reads summary.json, discharge.csv, wall_forces.csv and the
 frames (VTK's Python bindings, python3-vtk9) and prints, and writes to OUT/wagon_figures.json:
@@ -144,10 +144,12 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("outs", nargs="+")
     parser.add_argument("--png")
+    parser.add_argument("--labels", help="comma-separated legend labels, one per run")
     parser.add_argument("--open", type=float, default=2.5, help="the door starts opening [s]")
     parser.add_argument("--door", type=float, default=1.22, help="door opening height [m]")
     args = parser.parse_args()
-    for out in args.outs:
+    labels = args.labels.split(",") if args.labels else args.outs
+    for out, label in zip(args.outs, labels):
         summary = json.load(open(os.path.join(out, "summary.json")))
         results = summary["results"]
         created = results["initial_mass"]["value"] + results["created_mass"]["value"]
@@ -167,7 +169,7 @@ def main():
             json.dump(figures, f, indent=2)
         print(json.dumps(figures, indent=2))
         if args.png:
-            plt.plot(times, np.array(mass) / 1e3, label=f"{summary['case']} ({out})")
+            plt.plot(times, np.array(mass) / 1e3, label=label)
     if args.png:
         plt.xlabel("time [s]")
         plt.ylabel("discharged mass, quarter wagon [t]")
