@@ -1,0 +1,139 @@
+#include "sph/contact_force.hpp"
+#include "sph/sph_solver.hpp"
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+#include <cmath>
+
+// The solver's books: the work the walls do, the energy the particles hold and the contact
+// potential stores, momentum and strain energy, which the energy ledger and the tests read.
+
+namespace grainload::sph {
+
+double SphSolver::wall_work(double dt) const {
+    // Every wall is booked, whatever moves it: a wall at rest has zero velocities and adds
+    // nothing, and a driven wall (a shell) need not say how it moves.
+    double power = wall_contact_.reaction_power_correction();
+    for (const Wall& wall : walls_) {
+        for (Index k = wall.first; k < wall.first + wall.count; ++k) {
+            power -= particles_.mass[k] * particles_.acceleration[k].dot(particles_.velocity[k]);
+        }
+    }
+    return dt * power;
+}
+
+double SphSolver::held_energy() const {
+    return kinetic_energy() + internal_energy();
+}
+
+double SphSolver::contact_energy() const {
+    return contact_energy_of({});
+}
+
+double SphSolver::contact_energy_of(std::span<const char> flagged) const {
+    if (!(options_.contact.stiffness > 0.0)) {
+        return 0.0;
+    }
+    const ParticleSet& p = particles_;
+    const Index n = p.size();
+    const double support_squared = kernel_.support_radius() * kernel_.support_radius();
+    const double w_reference = kernel_.value(options_.particle_spacing);
+    const bool all = flagged.empty();
+    double sum = 0.0;
+#pragma omp parallel for schedule(dynamic, 256) reduction(+ : sum)
+    for (Index i = 0; i < n; ++i) {
+        const bool i_counts = all || flagged[i];
+        // Pairs with images are held by the real particle's row only, so with images every row
+        // is visited for them.
+        if (!i_counts && images_.empty()) {
+            continue;
+        }
+        for (const Index entry : neighbours_.neighbours(i)) {
+            // Entries from n on are mirror images (outside a step the particle set holds none).
+            const bool image = entry >= n;
+            const MirrorImage mirror = image ? images_[entry - n] : MirrorImage{entry, 0};
+            const Index j = mirror.source;
+            const bool j_counts = all || flagged[j];
+            // The list holds each pair of real particles twice (i in j's list and j in i's):
+            // count it once, from a flagged row, the lower index when both are flagged.
+            const bool skip = image ? !(i_counts || j_counts) : !i_counts || (j < i && j_counts);
+            if (skip || p.body_id[i] == p.body_id[j]) {
+                continue;
+            }
+            // A pair of i and the image of grain j has the energy of the pair of j and the
+            // image of i, and the full model holds each such pair once for two halves: half of
+            // it is this side's. The image of a wall particle stands for that pair and for the
+            // pair of the wall's real particle and the image of i, which no row holds: all of
+            // it is this side's.
+            const double share = image && !is_wall_[j] ? 0.5 : 1.0;
+            const Vec3 xj =
+                image ? mirror_position(p.position[j], mirror.mask, plane_at_) : p.position[j];
+            const double r2 = (p.position[i] - xj).squaredNorm();
+            if (r2 < support_squared && r2 > 0.0) {
+                const double volumes = p.mass[i] / p.density[i] * p.mass[j] / p.density[j];
+                sum += share * sph::contact_energy(kernel_, options_.contact, w_reference, volumes,
+                                                   std::sqrt(r2));
+            }
+        }
+    }
+    return sum;
+}
+
+Vec3 SphSolver::linear_momentum() const {
+    Vec3 sum = Vec3::Zero();
+    for (Index i = 0; i < particles_.size(); ++i) {
+        if (!is_wall_[i]) {
+            sum += particles_.mass[i] * particles_.velocity[i];
+        }
+    }
+    return sum;
+}
+
+Vec3 SphSolver::angular_momentum() const {
+    Vec3 sum = Vec3::Zero();
+    for (Index i = 0; i < particles_.size(); ++i) {
+        if (!is_wall_[i]) {
+            sum += particles_.mass[i] * particles_.position[i].cross(particles_.velocity[i]);
+        }
+    }
+    return sum;
+}
+
+double SphSolver::kinetic_energy() const {
+    double sum = 0.0;
+    for (Index i = 0; i < particles_.size(); ++i) {
+        if (!is_wall_[i]) {
+            sum += 0.5 * particles_.mass[i] * particles_.velocity[i].squaredNorm();
+        }
+    }
+    return sum;
+}
+
+double SphSolver::internal_energy() const {
+    double sum = 0.0;
+    for (Index i = 0; i < particles_.size(); ++i) {
+        if (!is_wall_[i]) {
+            sum += particles_.mass[i] * particles_.internal_energy[i];
+        }
+    }
+    return sum;
+}
+
+double SphSolver::elastic_strain_energy() const {
+    std::vector<Matrix6> compliance(materials_.size());
+    for (std::size_t k = 0; k < materials_.size(); ++k) {
+        compliance[k] = materials_[k]->elastic().stiffness().inverse();
+    }
+    double sum = 0.0;
+    for (Index i = 0; i < particles_.size(); ++i) {
+        if (!is_wall_[i]) {
+            const Voigt6& s = particles_.stress[i];
+            const double volume = particles_.mass[i] / particles_.density[i];
+            sum += 0.5 * volume *
+                   s.dot(compliance[static_cast<std::size_t>(particles_.material_id[i])] * s);
+        }
+    }
+    return sum;
+}
+
+} // namespace grainload::sph
