@@ -86,26 +86,43 @@ def surface(dataset):
     return geometry.GetOutput()
 
 
-def particle_actor(dataset, lookup, colour_by_speed, radius_px):
-    poly = surface(dataset)
+def mapper_for(poly, lookup, values=None, name=None, cells=False):
+    """A mapper of `poly`, coloured through `lookup` by `values` (a point array, or a cell
+    array with cells=True, added to poly as `name`), or plain without values."""
     mapper = vtkPolyDataMapper()
     mapper.SetInputData(poly)
-    if colour_by_speed:
-        speed = np.linalg.norm(vtk_to_numpy(poly.GetPointData().GetArray("velocity")), axis=1)
-        array = numpy_to_vtk(speed, deep=True)
-        array.SetName("speed")
-        poly.GetPointData().AddArray(array)
-        mapper.SetScalarModeToUsePointFieldData()
-        mapper.SelectColorArray("speed")
-        mapper.SetLookupTable(lookup)
-        mapper.UseLookupTableScalarRangeOn()
-    else:
+    if values is None:
         mapper.ScalarVisibilityOff()
+        return mapper
+    array = numpy_to_vtk(values, deep=True)
+    array.SetName(name)
+    (poly.GetCellData() if cells else poly.GetPointData()).AddArray(array)
+    if cells:
+        mapper.SetScalarModeToUseCellFieldData()
+    else:
+        mapper.SetScalarModeToUsePointFieldData()
+    mapper.SelectColorArray(name)
+    mapper.SetLookupTable(lookup)
+    mapper.UseLookupTableScalarRangeOn()
+    return mapper
+
+
+def points_actor(mapper, size_px, spheres):
     actor = vtkActor()
     actor.SetMapper(mapper)
     actor.GetProperty().SetRepresentationToPoints()
-    actor.GetProperty().RenderPointsAsSpheresOn()
-    actor.GetProperty().SetPointSize(radius_px)
+    if spheres:
+        actor.GetProperty().RenderPointsAsSpheresOn()
+    actor.GetProperty().SetPointSize(size_px)
+    return actor
+
+
+def particle_actor(dataset, lookup, colour_by_speed, radius_px):
+    poly = surface(dataset)
+    speed = None
+    if colour_by_speed:
+        speed = np.linalg.norm(vtk_to_numpy(poly.GetPointData().GetArray("velocity")), axis=1)
+    actor = points_actor(mapper_for(poly, lookup, speed, "speed"), radius_px, spheres=True)
     if not colour_by_speed:
         actor.GetProperty().SetColor(0.78, 0.70, 0.55)
     return actor
@@ -113,23 +130,14 @@ def particle_actor(dataset, lookup, colour_by_speed, radius_px):
 
 def shell_actor(dataset, lookup, colour_by_stress):
     poly = surface(dataset)
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputData(poly)
     cells = poly.GetCellData()
+    stress = None
     if colour_by_stress and cells.GetArray("von_mises_top") is not None:
         layers = [vtk_to_numpy(cells.GetArray(f"von_mises_{s}"))
                   for s in ("top", "middle", "bottom")]
-        array = numpy_to_vtk(np.max(layers, axis=0) / 1e6, deep=True)
-        array.SetName("von_mises_MPa")
-        cells.AddArray(array)
-        mapper.SetScalarModeToUseCellFieldData()
-        mapper.SelectColorArray("von_mises_MPa")
-        mapper.SetLookupTable(lookup)
-        mapper.UseLookupTableScalarRangeOn()
-    else:
-        mapper.ScalarVisibilityOff()
+        stress = np.max(layers, axis=0) / 1e6
     actor = vtkActor()
-    actor.SetMapper(mapper)
+    actor.SetMapper(mapper_for(poly, lookup, stress, "von_mises_MPa", cells=True))
     if not colour_by_stress:
         actor.GetProperty().SetColor(0.55, 0.60, 0.68)
         actor.GetProperty().SetOpacity(0.12)
@@ -139,13 +147,8 @@ def shell_actor(dataset, lookup, colour_by_stress):
 
 def wall_actor(dataset, radius_px):
     """A rigid wall's particles (a swinging door) as small dark grey points."""
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputData(surface(dataset))
-    mapper.ScalarVisibilityOff()
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    actor.GetProperty().SetRepresentationToPoints()
-    actor.GetProperty().SetPointSize(max(1.0, 0.5 * radius_px))
+    actor = points_actor(mapper_for(surface(dataset), None), max(1.0, 0.5 * radius_px),
+                         spheres=False)
     actor.GetProperty().SetColor(0.25, 0.25, 0.25)
     return actor
 
