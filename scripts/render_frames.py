@@ -21,7 +21,6 @@ Without a display (CI, ssh) run it under xvfb-run (package xvfb): `xvfb-run -a p
 import argparse
 import os
 import sys
-import xml.etree.ElementTree as ElementTree
 
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers the OpenGL render window)
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
@@ -29,7 +28,6 @@ from vtkmodules.vtkCommonCore import vtkLookupTable
 from vtkmodules.vtkFiltersGeneral import vtkReflectionFilter
 from vtkmodules.vtkFiltersGeometry import vtkGeometryFilter
 from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataReader
 from vtkmodules.vtkRenderingAnnotation import vtkScalarBarActor
 from vtkmodules.vtkRenderingCore import (
     vtkActor,
@@ -41,28 +39,7 @@ from vtkmodules.vtkRenderingCore import (
 )
 import numpy as np
 
-
-def frames_of(out_dir):
-    """(time, .vtm path) of every frame listed in the run's .pvd."""
-    pvd = [name for name in os.listdir(out_dir) if name.endswith(".pvd")]
-    if len(pvd) != 1:
-        sys.exit(f"render_frames: expected one .pvd in {out_dir}, found {len(pvd)}")
-    root = ElementTree.parse(os.path.join(out_dir, pvd[0])).getroot()
-    return [(float(d.get("timestep")), os.path.join(out_dir, d.get("file")))
-            for d in root.iter("DataSet")]
-
-
-def blocks(vtm_path):
-    """(name, dataset) of the frame's blocks."""
-    reader = vtkXMLMultiBlockDataReader()
-    reader.SetFileName(vtm_path)
-    reader.Update()
-    data = reader.GetOutput()
-    for index in range(data.GetNumberOfBlocks()):
-        name = data.GetMetaData(index).Get(data.NAME())
-        block = data.GetBlock(index)
-        if block is not None and block.GetNumberOfPoints() > 0:
-            yield name, block
+from vtk_frames import blocks, frames_of
 
 
 def mirrored(dataset, planes):
@@ -168,6 +145,8 @@ def render(vtm_path, time, args, png_path):
     renderer = vtkRenderer()
     renderer.SetBackground(1.0, 1.0, 1.0)
     for name, block in blocks(vtm_path):
+        if block is None or block.GetNumberOfPoints() == 0:
+            continue
         if name.startswith("wall_"):
             if name[len("wall_"):] in args.walls:
                 shown = mirrored(block, args.mirror) if args.mirror else block

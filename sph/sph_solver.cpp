@@ -40,6 +40,12 @@ SphSolver::SphSolver(ParticleSet particles, MaterialList materials, SphOptions o
             force_inputs_.sound_speed[i] = elastic.unscaled_p_wave_speed();
         }
     }
+    // integrate_density's floor (it says why): half the material's density.
+    constexpr double kLoosestDensityFraction = 0.5;
+    density_floor_.reserve(materials_.size());
+    for (const auto& material : materials_) {
+        density_floor_.push_back(kLoosestDensityFraction * material->density());
+    }
     if (options_.formulation == Formulation::total_lagrangian) {
         if (!options_.symmetry.empty()) {
             throw std::invalid_argument("SphSolver: symmetry planes need the updated-Lagrangian "
@@ -325,17 +331,12 @@ void SphSolver::compute_kinematics() {
 // any packing, so the floor never touches a continuum and holds a free grain's volume at twice
 // its own.
 void SphSolver::integrate_density(double dt, Index n) {
-    constexpr double kLoosestDensityFraction = 0.5;
     ParticleSet& p = particles_;
-    std::vector<double> floor(materials_.size(), 0.0);
-    for (std::size_t m = 0; m < materials_.size(); ++m) {
-        floor[m] = kLoosestDensityFraction * materials_[m]->density();
-    }
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
         if (!is_wall_[i]) {
             p.density[i] = std::max(p.density[i] + dt * p.density_rate[i],
-                                    floor[static_cast<std::size_t>(p.material_id[i])]);
+                                    density_floor_[static_cast<std::size_t>(p.material_id[i])]);
         }
     }
 }

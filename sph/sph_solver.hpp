@@ -168,6 +168,8 @@ class SphSolver {
     ForceInputs force_inputs_;
     /// P-wave speed of each particle's (scaled) material, for the CFL step; 0 for walls.
     std::vector<double> wave_speed_;
+    /// Lowest density of each material, by material id (integrate_density says why).
+    std::vector<double> density_floor_;
     std::vector<Mat3> velocity_gradient_;
     std::vector<double> heating_rate_;
     /// Mirror images of the symmetry planes (options_.symmetry), selected at each list build.

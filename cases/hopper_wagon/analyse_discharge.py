@@ -28,7 +28,7 @@ import argparse
 import csv
 import json
 import os
-import xml.etree.ElementTree as ElementTree
+import sys
 
 import matplotlib
 
@@ -36,7 +36,10 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
-from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataReader  # noqa: E402
+
+# The frame readers shared with scripts/render_frames.py.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+from vtk_frames import blocks, frames_of  # noqa: E402
 
 # Geometry of hopper_wagon.geo (cases/hopper_wagon/README.md), m.
 TAN = np.tan(np.radians(49.0))
@@ -48,20 +51,6 @@ NEAR = 2.5 * SPACING  # "on" a surface: within the contact potential's reach (2h
 def rows(path):
     with open(path) as f:
         return list(csv.DictReader(f))
-
-
-def frames(out):
-    pvd = [n for n in os.listdir(out) if n.endswith(".pvd")][0]
-    root = ElementTree.parse(os.path.join(out, pvd)).getroot()
-    return [(float(d.get("timestep")), os.path.join(out, d.get("file"))) for d in root.iter("DataSet")]
-
-
-def blocks(vtm):
-    reader = vtkXMLMultiBlockDataReader()
-    reader.SetFileName(vtm)
-    reader.Update()
-    data = reader.GetOutput()
-    return {data.GetMetaData(i).Get(data.NAME()): data.GetBlock(i) for i in range(data.GetNumberOfBlocks())}
 
 
 def surface_distances(x):
@@ -77,8 +66,8 @@ def surface_distances(x):
 
 
 def residue(out, mass_each):
-    time, vtm = frames(out)[-1]
-    load = blocks(vtm)["load"]
+    time, vtm = frames_of(out)[-1]
+    load = dict(blocks(vtm))["load"]
     if load is None or load.GetNumberOfPoints() == 0:
         return {"time_s": time, "mass_kg": 0.0, "places_kg": {}}
     x = vtk_to_numpy(load.GetPoints().GetData())
@@ -110,8 +99,8 @@ def door(out, opens, height):
 
 def shell_peaks(out, opens):
     peaks = {"settling": None, "discharge": None}
-    for time, vtm in frames(out):
-        shell = blocks(vtm).get("wagon")
+    for time, vtm in frames_of(out):
+        shell = dict(blocks(vtm)).get("wagon")
         cells = shell.GetCellData() if shell is not None else None
         if cells is None or cells.GetArray("von_mises_top") is None:
             return peaks

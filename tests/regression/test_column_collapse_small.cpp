@@ -95,7 +95,7 @@ TEST(ColumnCollapseSmall, LosesPotentialEnergyToHeatAndComesToRest) {
 // at 0.15 s, 2e-17 s short of the output instant 3 x 0.05 s, also checks that an end time is
 // snapped to the instant it means.
 TEST(ColumnCollapseSmall, RestartOfADeformingRunReproducesTheUninterruptedRun) {
-    const std::string base = ::testing::TempDir() + "grainload_column_collapse_restart";
+    const std::string base = test_folder("column_collapse_restart");
     const std::string kase =
         "'" + source_path("cases/column_collapse_2d/column_collapse_2d_small.toml") +
         "' --set 'sph.kernel_gradient_correction=true' --set 'case.end_time=0.3 s'";

@@ -8,6 +8,7 @@
 
 #include "io/json_value.hpp"
 #include "support/cli_runner.hpp"
+#include "support/test_folder.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -19,7 +20,7 @@ namespace {
 using namespace grainload::testing;
 
 grainload::io::JsonValue run_and_read(const std::string& arguments, const std::string& name) {
-    const std::string out = ::testing::TempDir() + "grainload_" + name;
+    const std::string out = test_folder(name);
     std::filesystem::remove_all(out);
     const auto result =
         run_cli("run " + arguments + " --threads 1 --out '" + out + "'", out + ".log");
@@ -55,7 +56,7 @@ TEST(CostEstimate, CflStepCountWithinTheSpeedBound) {
 }
 
 TEST(CostEstimate, CheckPrintsTheEstimate) {
-    const std::string log = ::testing::TempDir() + "grainload_cost_check.log";
+    const std::string log = test_folder("cost_check.log");
     const auto result =
         run_cli("check '" + source_path("cases/free_fall/free_fall_small.toml") + "'", log);
     ASSERT_EQ(result.exit_code, 0) << result.output;
@@ -69,7 +70,7 @@ TEST(CostEstimate, CheckPrintsTheEstimate) {
 // a particle created at t is there for 3 s - t, so the run holds 720 (3 - 0.85) / 3 = 516 more
 // on average (the printed figure, rounded; exact arithmetic, so to the unit).
 TEST(CostEstimate, SourcesAddTheParticlesTheyCreateAveragedOverTheRun) {
-    const std::string log = ::testing::TempDir() + "grainload_cost_source.log";
+    const std::string log = test_folder("cost_source.log");
     const auto result =
         run_cli("check '" + source_path("cases/silo/silo_rest_small.toml") + "'", log);
     ASSERT_EQ(result.exit_code, 0) << result.output;

@@ -59,7 +59,7 @@ TEST(CouplingFillSmall, IteratedWindowsCreateAndRemoveEachParticleOnce) {
 // A coupled run stopped at 0.1 s, while the source creates, and restarted ends at 0.2 s bit
 // for bit where the uninterrupted run ends.
 TEST(CouplingFillSmall, RestartDuringCreationReproducesTheCoupledRun) {
-    const std::string base = ::testing::TempDir() + "grainload_coupled_fill_restart";
+    const std::string base = test_folder("coupled_fill_restart");
     ASSERT_EQ(run_whole_and_split(kCase, base, "0.1 s", "0.2 s"), "");
     const std::string a = read_file(base + "_whole/summary.json");
     const std::string b = read_file(base + "_split/summary.json");

@@ -288,7 +288,7 @@ namespace {
 // the shell had at the window's start. The dynamic, iterated drop is split at 6 ms, in the
 // middle of the impact.
 TEST(CouplingSmall, RestartOfACoupledRunReproducesTheUninterruptedRun) {
-    const std::string base = ::testing::TempDir() + "grainload_coupling_restart";
+    const std::string base = test_folder("coupling_restart");
     const std::string kase = "'" + source_path("cases/sand_drop/sand_drop_small.toml") + "'";
     std::filesystem::remove_all(base + "_whole");
     std::filesystem::remove_all(base + "_split");

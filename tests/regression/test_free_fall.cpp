@@ -1,5 +1,6 @@
 #include "support/cli_runner.hpp"
 #include "support/frame_reader.hpp"
+#include "support/test_folder.hpp"
 
 #include <Eigen/Core>
 #include <filesystem>
@@ -34,7 +35,7 @@ Cloud read_frame(const std::string& vtm) {
 }
 
 std::string out_dir(const std::string& name) {
-    const std::string directory = ::testing::TempDir() + "grainload_" + name;
+    const std::string directory = test_folder(name);
     std::filesystem::remove_all(directory);
     return directory;
 }

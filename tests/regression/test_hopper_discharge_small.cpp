@@ -69,7 +69,7 @@ TEST(HopperDischargeSmall, MassAuditClosesAndTheRateLiesWithinBeverloosSpread) {
 // restarted from its checkpoint ends at 1.2 s bit for bit where the uninterrupted run ends:
 // the checkpoint says which particles are left, and the sink's books and history go with it.
 TEST(HopperDischargeSmall, RestartAcrossRemovalsReproducesTheUninterruptedRun) {
-    const std::string base = ::testing::TempDir() + "grainload_hopper_restart";
+    const std::string base = test_folder("hopper_restart");
     ASSERT_EQ(run_whole_and_split("cases/hopper_discharge/hopper_discharge_small.toml", base,
                                   "0.85 s", "1.2 s"),
               "");
@@ -95,7 +95,7 @@ TEST(HopperDischargeSmall, RestartAcrossRemovalsReproducesTheUninterruptedRun) {
 // at 0.2 s (56 % of the sink's final mass taken, the rest still arriving) ends at 0.4 s bit
 // for bit like the whole run.
 TEST(SinkIn3d, CapMaterialStateFollowsRemovalsAndARestartReproducesTheRun) {
-    const std::string base = ::testing::TempDir() + "grainload_sink_3d";
+    const std::string base = test_folder("sink_3d");
     const std::string kase = base + ".toml";
     std::ofstream(kase) << read_file(
                                source_path("cases/column_collapse/column_collapse_small.toml"))

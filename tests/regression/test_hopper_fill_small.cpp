@@ -1,13 +1,14 @@
 #include "io/surface_mesh_reader.hpp"
 #include "support/case_runner.hpp"
+#include "support/csv_rows.hpp"
 #include "support/frame_reader.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <iostream>
-#include <sstream>
 #include <vtkDataArray.h>
 #include <vtkPointData.h>
 
@@ -15,27 +16,6 @@ namespace {
 
 using namespace grainload::testing;
 using grainload::Vec3;
-
-struct WallSample {
-    double time = 0.0;
-    Vec3 force = Vec3::Zero();
-};
-
-std::vector<WallSample> read_wall_forces(const std::string& csv) {
-    std::istringstream in(read_file(csv));
-    std::string line;
-    std::getline(in, line); // header
-    std::vector<WallSample> samples;
-    while (std::getline(in, line)) {
-        std::replace(line.begin(), line.end(), ',', ' ');
-        std::istringstream fields(line);
-        std::string wall;
-        WallSample s;
-        fields >> s.time >> wall >> s.force.x() >> s.force.y() >> s.force.z();
-        samples.push_back(s);
-    }
-    return samples;
-}
 
 // The CI version of hopper_fill: 96 sand particles dropped into the STL hopper. Checks of the
 // mesh wall inside the solver:
@@ -80,14 +60,14 @@ TEST(HopperFillSmall, SandStaysInsideTheMeshHopperAndItsImpulseBalances) {
               << " spacing\n";
     EXPECT_GT(closest, 0.5 * dx);
 
-    const auto samples = read_wall_forces(out + "/wall_forces.csv");
+    const auto samples = wall_force_rows(out);
     ASSERT_EQ(samples.size(), 31u);
     double impulse = 0.0, horizontal = 0.0;
     for (std::size_t k = 1; k < samples.size(); ++k) {
         const double dt = samples[k].time - samples[k - 1].time;
         // wall_forces.csv holds the force of the sand on the wall: the wall pushes back.
-        impulse -= 0.5 * dt * (samples[k].force.z() + samples[k - 1].force.z());
-        horizontal = std::max(horizontal, samples[k].force.head<2>().norm());
+        impulse -= 0.5 * dt * (samples[k].force[2] + samples[k - 1].force[2]);
+        horizontal = std::max(horizontal, std::hypot(samples[k].force[0], samples[k].force[1]));
     }
     const double weight_impulse = 96 * mass * g * end;
     std::cout << "hopper_fill_small: momentum " << momentum << " N s, -m g T + wall impulse "

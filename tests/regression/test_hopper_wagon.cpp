@@ -24,7 +24,7 @@ namespace fs = std::filesystem;
 /// The case folder's geometry and case files, copied to a fresh folder, so that Gmsh's mesh,
 /// the exported deck and the runs land outside the source tree.
 std::string case_copy(const std::string& name) {
-    const std::string dir = ::testing::TempDir() + "hopper_wagon_" + name;
+    const std::string dir = test_folder("hopper_wagon_" + name);
     fs::remove_all(dir);
     fs::create_directories(dir);
     for (const char* file : {"hopper_wagon.geo", "wagon_gravity.toml", "wagon_gravity_k.toml",

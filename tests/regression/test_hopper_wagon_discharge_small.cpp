@@ -22,7 +22,7 @@ constexpr double kRestTime = 1.4;  // s: the last frame before the door moves
 /// The case and its geometry copied to a fresh folder: Gmsh's mesh lands there, not in the
 /// source tree.
 std::string case_copy() {
-    const std::string dir = ::testing::TempDir() + "hopper_wagon_discharge_small";
+    const std::string dir = test_folder("hopper_wagon_discharge_small");
     fs::remove_all(dir);
     fs::create_directories(dir);
     for (const char* file : {"hopper_wagon.geo", "hopper_wagon_small.toml"}) {

@@ -2,6 +2,7 @@
 // that are truncated, corrupted or of another case (issue 18, section 6).
 
 #include "support/cli_runner.hpp"
+#include "support/test_folder.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -43,7 +44,7 @@ std::string quoted(const std::vector<std::string>& arguments) {
 }
 
 std::string fresh_directory(const std::string& name) {
-    const std::string directory = ::testing::TempDir() + "grainload_" + name;
+    const std::string directory = test_folder(name);
     fs::remove_all(directory);
     return directory;
 }

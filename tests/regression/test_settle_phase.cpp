@@ -14,7 +14,7 @@ namespace {
 /// removed at `remove_at` (a time, or "settled") and, when `settle` is set, an [sph.settle]
 /// table with kinetic_energy_fraction = 1e-3.
 std::string hopper_variant(const std::string& name, const std::string& remove_at, bool settle) {
-    const std::string file = ::testing::TempDir() + name + ".toml";
+    const std::string file = test_folder(name) + ".toml";
     std::string text = read_file(source_path("cases/hopper_discharge/hopper_discharge_small.toml"));
     text = std::regex_replace(text, std::regex("remove_at = \"0.4 s\""),
                               "remove_at = \"" + remove_at + "\"");
@@ -38,7 +38,7 @@ CliResult run_to(const std::string& file, const std::string& out, const std::str
 // remove_at (the time written to 17 digits): both remove the gate after the same step, so
 // both runs must end bit for bit alike at 0.6 s; and the log names the settle time.
 TEST(SettlePhase, GateOpensWhenTheFillSettlesAsAtTheSameFixedTime) {
-    const std::string base = ::testing::TempDir() + "grainload_settle";
+    const std::string base = test_folder("settle");
     std::filesystem::remove_all(base + "_phase");
     std::filesystem::remove_all(base + "_fixed");
     const auto phase =
@@ -70,7 +70,7 @@ TEST(SettlePhase, GateOpensWhenTheFillSettlesAsAtTheSameFixedTime) {
 // 0.6 s, the run settles at the same step and ends bit for bit like the whole run: the
 // checkpoint holds the watch's peak and settle time.
 TEST(SettlePhase, RestartAcrossThePhaseChangeReproducesTheUninterruptedRun) {
-    const std::string base = ::testing::TempDir() + "grainload_settle_restart";
+    const std::string base = test_folder("settle_restart");
     std::filesystem::remove_all(base + "_whole");
     std::filesystem::remove_all(base + "_split");
     const std::string file = hopper_variant("settle_restart", "settled", true);

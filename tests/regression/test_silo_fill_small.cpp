@@ -37,7 +37,7 @@ TEST(SiloFillSmall, SourceCreatesItsRateAndTheBooksCloseOverIt) {
 // particles and holds what the source still owes and where its round-robin stands. The wall
 // map's window (the whole run) spans the restart: its sums travel in the checkpoint.
 TEST(SiloFillSmall, RestartDuringCreationReproducesTheUninterruptedRun) {
-    const std::string base = ::testing::TempDir() + "grainload_silo_fill_restart";
+    const std::string base = test_folder("silo_fill_restart");
     ASSERT_EQ(run_whole_and_split("cases/silo/silo_rest_small.toml", base, "0.3 s", "0.6 s"), "");
     const std::string frame = "/frames/silo_rest_small_000006/sand.vtp";
     const std::string whole = read_file(base + "_whole" + frame);

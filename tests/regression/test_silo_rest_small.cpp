@@ -4,9 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
+#include <iostream>
 #include <map>
-#include <sstream>
 #include <string>
 #include <vtkPoints.h>
 
@@ -24,18 +23,9 @@ constexpr double kBand = 0.2;            // m, the left wall's bands left0 .. le
 
 /// The last row of wall_forces.csv per wall: (F_x, F_y).
 std::map<std::string, std::pair<double, double>> final_forces(const std::string& out) {
-    std::stringstream in(read_file(out + "/wall_forces.csv"));
-    std::string line;
-    std::getline(in, line);
     std::map<std::string, std::pair<double, double>> forces;
-    while (std::getline(in, line)) {
-        std::stringstream fields(line);
-        std::string time, wall, fx, fy;
-        std::getline(fields, time, ',');
-        std::getline(fields, wall, ',');
-        std::getline(fields, fx, ',');
-        std::getline(fields, fy, ',');
-        forces[wall] = {std::stod(fx), std::stod(fy)};
+    for (const WallForceRow& row : wall_force_rows(out)) {
+        forces[row.wall] = {row.force[0], row.force[1]};
     }
     return forces;
 }

@@ -41,7 +41,7 @@ TEST(SymmetryHalf, RunsFromTheCliCarriesItsWeightAndClosesItsBooks) {
 // Ghosts are not checkpointed: the restart selects them again from the positions of the
 // neighbour list's last build, so the continued run ends bit for bit where the whole run does.
 TEST(SymmetryHalf, RestartReproducesTheUninterruptedRun) {
-    const std::string base = ::testing::TempDir() + "grainload_symmetry_restart";
+    const std::string base = test_folder("symmetry_restart");
     ASSERT_EQ(run_whole_and_split(kCase, base, "0.15 s", "0.3 s"), "");
     const std::string frame = "/frames/column_collapse_2d_half_000006/column.vtp";
     const std::string whole = read_file(base + "_whole" + frame);

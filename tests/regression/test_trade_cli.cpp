@@ -7,6 +7,7 @@
 
 #include "io/json_value.hpp"
 #include "support/cli_runner.hpp"
+#include "support/test_folder.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -45,7 +46,7 @@ std::vector<std::map<std::string, std::string>> read_rows(const std::string& pat
 }
 
 TEST(TradeCli, FailedRunsAreRowsAndAResumedSweepRunsNothingNew) {
-    const std::string out = ::testing::TempDir() + "grainload_trade_cli";
+    const std::string out = test_folder("trade_cli");
     fs::remove_all(out);
     const std::string sweep = "trade " + kCase + " --out '" + out +
                               "' --reference 'sph.time_step=1 ms' --jobs 2 --threads 1"
@@ -99,10 +100,10 @@ TEST(TradeCli, FailedRunsAreRowsAndAResumedSweepRunsNothingNew) {
 }
 
 TEST(TradeCli, RefusesAnAxisWithoutAccuracyRule) {
-    const auto result = run_cli("trade " + kCase + " --out '" + ::testing::TempDir() +
-                                    "grainload_trade_norule' --vary 'sph.kernel=cubic_spline,"
+    const auto result = run_cli("trade " + kCase + " --out '" + test_folder("trade_norule") +
+                                    "' --vary 'sph.kernel=cubic_spline,"
                                     "quintic_spline'",
-                                ::testing::TempDir() + "grainload_trade_norule.log");
+                                test_folder("trade_norule.log"));
     EXPECT_EQ(result.exit_code, 2) << result.output;
     EXPECT_NE(result.output.find("--reference 'sph.kernel=VALUE'"), std::string::npos)
         << result.output;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "support/cli_runner.hpp"
+#include "support/test_folder.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -17,12 +18,12 @@ struct CaseRun {
 };
 
 /// Runs `grainload run <source dir>/<case_file> --out <folder> <options>` the way a user does,
-/// into a fresh folder TempDir()/grainload_<name> (a stale frame from an earlier run must not
-/// be read as this run's). `options` are appended as written (already shell-quoted).
+/// into a fresh folder test_folder(name). `options` are appended as written (already
+/// shell-quoted).
 inline CaseRun run_case_file(const std::string& case_file, const std::string& name,
                              const std::string& options = "") {
     CaseRun run;
-    run.out = ::testing::TempDir() + "grainload_" + name;
+    run.out = test_folder(name);
     std::filesystem::remove_all(run.out);
     run.cli = run_cli("run '" + source_path(case_file) + "' --out '" + run.out + "' " + options,
                       run.out + ".log");

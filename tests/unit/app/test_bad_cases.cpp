@@ -1,4 +1,5 @@
 #include "support/cli_runner.hpp"
+#include "support/test_folder.hpp"
 
 #include <filesystem>
 #include <gtest/gtest.h>
@@ -27,7 +28,8 @@ TEST(BadCases, EachGivesExitCodeTwoAndNamesItsLine) {
         const std::string line = header_value(text, "expect-line");
         const std::string expected = header_value(text, "expect-text");
         ASSERT_FALSE(line.empty() || expected.empty()) << file << " lacks its expect header";
-        const auto result = run_cli("check '" + file + "'", ::testing::TempDir() + "bad.log");
+        const auto result =
+            run_cli("check '" + file + "'", grainload::testing::process_folder() + "bad.log");
         EXPECT_EQ(result.exit_code, 2) << file << "\n" << result.output;
         EXPECT_NE(result.output.find(file + ":" + line + ":"), std::string::npos)
             << file << ": expected line " << line << "\n"
@@ -42,7 +44,7 @@ TEST(BadCases, EachGivesExitCodeTwoAndNamesItsLine) {
 
 TEST(BadCases, MalformedCommandLinesAndOverridesExitWithTwo) {
     const std::string good = "'" + source_path("cases/free_fall/free_fall_small.toml") + "'";
-    const std::string log = ::testing::TempDir() + "cli.log";
+    const std::string log = grainload::testing::process_folder() + "cli.log";
     EXPECT_EQ(run_cli("run", log).exit_code, 2);
     EXPECT_EQ(run_cli("simulate " + good, log).exit_code, 2);
     EXPECT_EQ(run_cli("run " + good + " --threads zero", log).exit_code, 2);
@@ -64,7 +66,7 @@ TEST(BadCases, MalformedCommandLinesAndOverridesExitWithTwo) {
 }
 
 TEST(BadCases, VersionNamesTheRelease) {
-    const auto result = run_cli("--version", ::testing::TempDir() + "version.log");
+    const auto result = run_cli("--version", grainload::testing::process_folder() + "version.log");
     EXPECT_EQ(result.exit_code, 0);
     EXPECT_EQ(result.output.rfind("grainload 0.", 0), 0u) << result.output;
 }

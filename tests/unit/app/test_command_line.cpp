@@ -1,6 +1,7 @@
 // The CLI's help, and input it must refuse before doing anything (issue 18, sections 2 and 6).
 
 #include "support/cli_runner.hpp"
+#include "support/test_folder.hpp"
 
 #include <filesystem>
 #include <gtest/gtest.h>
@@ -13,7 +14,7 @@ const std::string kFreeFall = "'" + source_path("cases/free_fall/free_fall_small
 
 /// One log per test: ctest runs the tests of this file side by side.
 std::string log_file() {
-    return ::testing::TempDir() + "command_line_" +
+    return grainload::testing::process_folder() + "command_line_" +
            ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".log";
 }
 
@@ -68,7 +69,7 @@ TEST(CommandLine, ASceneBeyondTheMachinesMemoryIsRefusedBeforeAllocating) {
     for (const char* command : {"run", "check"}) {
         const auto result = run_cli(std::string(command) + " " + kFreeFall +
                                         " --set 'sph.body[0].spacing=1e-7 m' --out '" +
-                                        ::testing::TempDir() + "refused'",
+                                        grainload::testing::process_folder() + "refused'",
                                     log_file());
         EXPECT_EQ(result.exit_code, 2) << result.output;
         EXPECT_NE(result.output.find("key 'sph.body[0].spacing'"), std::string::npos)
@@ -79,7 +80,8 @@ TEST(CommandLine, ASceneBeyondTheMachinesMemoryIsRefusedBeforeAllocating) {
         EXPECT_NE(result.output.find("expected a spacing of at least about"), std::string::npos)
             << result.output;
     }
-    EXPECT_FALSE(std::filesystem::exists(::testing::TempDir() + "refused/checkpoint.bin"));
+    EXPECT_FALSE(
+        std::filesystem::exists(grainload::testing::process_folder() + "refused/checkpoint.bin"));
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 #include "fem/shell_case_reader.hpp"
 #include "io/case_table.hpp"
 #include "io/keyword_deck.hpp"
+#include "support/test_folder.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -128,7 +129,7 @@ TEST(KeywordShellReader, RefusesPartsWithoutShellSection) {
 // The case-file route: generator = "lsdyna" with units and parts, a warning-free deck, and the
 // node sets usable by boundaries.
 TEST(KeywordShellReader, CaseFileGeneratorLsdyna) {
-    const std::string dir = ::testing::TempDir() + "keyword_shell_case";
+    const std::string dir = grainload::testing::process_folder() + "keyword_shell_case";
     fs::create_directories(dir);
     std::ofstream(dir + "/deck.k") << kDeck;
     const std::string text = R"([[shell]]

@@ -15,19 +15,29 @@ std::vector<ResultFigure> figures() {
             audit};
 }
 
-// A value in the figure's unit becomes the figure's reference, converted to SI, with the
-// source; summary.json then writes the error against it (relative, or absolute for 0).
-TEST(FigureReference, ValueAndSourceAttachToTheNamedFigure) {
-    auto document = CaseDocument::from_string(
-        "[case]\nend_time = \"1 s\"\n"
-        "[[case.reference]]\nfigure = \"scene_mass\"\nvalue = \"0 t\"\n"
-        "source = \"thesis 7.4: empties\"\n"
-        "[[case.reference]]\nfigure = \"door_force\"\nvalue = \"25 kN\"\nsource = \"hand\"\n",
-        "case.toml");
+/// A case whose [case] table is followed by `reference_tables`.
+std::unique_ptr<CaseDocument> case_with(const std::string& reference_tables) {
+    return CaseDocument::from_string("[case]\nend_time = \"1 s\"\n" + reference_tables,
+                                     "case.toml");
+}
+
+/// figures() with the references of `reference_tables` read, checked and applied.
+std::vector<ResultFigure> referenced_figures(const std::string& reference_tables) {
+    const auto document = case_with(reference_tables); // the references' tables point into it
     const auto references = read_figure_references(document->root());
     auto results = figures();
     check_figure_references(references, results);
     apply_figure_references(references, results);
+    return results;
+}
+
+// A value in the figure's unit becomes the figure's reference, converted to SI, with the
+// source; summary.json then writes the error against it (relative, or absolute for 0).
+TEST(FigureReference, ValueAndSourceAttachToTheNamedFigure) {
+    const auto results = referenced_figures(
+        "[[case.reference]]\nfigure = \"scene_mass\"\nvalue = \"0 t\"\n"
+        "source = \"thesis 7.4: empties\"\n"
+        "[[case.reference]]\nfigure = \"door_force\"\nvalue = \"25 kN\"\nsource = \"hand\"\n");
     ASSERT_TRUE(results[0].reference.has_value());
     EXPECT_EQ(*results[0].reference, 0.0);
     EXPECT_EQ(results[0].source, "thesis 7.4: empties");
@@ -38,23 +48,17 @@ TEST(FigureReference, ValueAndSourceAttachToTheNamedFigure) {
 // A statement without a number (the thesis: "material stays on the slopes") keeps the figure
 // without a reference but with its source.
 TEST(FigureReference, AStatementOnlyGivesTheSource) {
-    auto document = CaseDocument::from_string(
-        "[case]\nend_time = \"1 s\"\n[[case.reference]]\nfigure = \"scene_mass\"\n"
-        "source = \"thesis 7.4: material stays on the body edge and the slopes\"\n",
-        "case.toml");
-    const auto references = read_figure_references(document->root());
-    auto results = figures();
-    check_figure_references(references, results);
-    apply_figure_references(references, results);
+    const auto results = referenced_figures(
+        "[[case.reference]]\nfigure = \"scene_mass\"\n"
+        "source = \"thesis 7.4: material stays on the body edge and the slopes\"\n");
     EXPECT_FALSE(results[0].reference.has_value());
     EXPECT_EQ(results[0].source, "thesis 7.4: material stays on the body edge and the slopes");
 }
 
-std::string error_of(const std::string& reference_table) {
-    auto document =
-        CaseDocument::from_string("[case]\nend_time = \"1 s\"\n" + reference_table, "case.toml");
+std::string error_of(const std::string& reference_tables) {
     try {
-        check_figure_references(read_figure_references(document->root()), figures());
+        check_figure_references(read_figure_references(case_with(reference_tables)->root()),
+                                figures());
     } catch (const CaseError& error) {
         return error.what();
     }

@@ -1,5 +1,6 @@
 #include "io/gmsh_file.hpp"
 #include "io/gmsh_runner.hpp"
+#include "support/test_folder.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -27,7 +28,7 @@ Physical Curve("clamped") = {4};
 )";
 
 std::string fresh_directory(const std::string& name) {
-    const std::string dir = ::testing::TempDir() + "gmsh_runner_" + name;
+    const std::string dir = grainload::testing::process_folder() + "gmsh_runner_" + name;
     fs::remove_all(dir);
     fs::create_directories(dir);
     return dir;

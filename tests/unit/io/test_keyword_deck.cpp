@@ -2,6 +2,7 @@
 #include "io/keyword_fields.hpp"
 #include "io/keyword_mesh.hpp"
 #include "io/keyword_units.hpp"
+#include "support/test_folder.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -71,7 +72,7 @@ plate one
 
 /// A fresh directory for one test's files.
 std::string fresh_directory(const std::string& name) {
-    const std::string dir = ::testing::TempDir() + "keyword_deck_" + name;
+    const std::string dir = grainload::testing::process_folder() + "keyword_deck_" + name;
     fs::remove_all(dir);
     fs::create_directories(dir);
     return dir;

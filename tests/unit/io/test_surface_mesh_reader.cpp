@@ -1,5 +1,6 @@
 #include "io/case_table.hpp"
 #include "io/surface_mesh_reader.hpp"
+#include "support/test_folder.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -42,7 +43,7 @@ std::string invalid_argument_of(const std::function<void()>& action) {
 }
 
 std::string write_temp(const std::string& name, const std::string& text) {
-    const std::string path = ::testing::TempDir() + name;
+    const std::string path = grainload::testing::process_folder() + name;
     std::ofstream(path, std::ios::binary) << text;
     return path;
 }

@@ -1,4 +1,5 @@
 #include "io/vtk_frame_writer.hpp"
+#include "support/test_folder.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -57,7 +58,7 @@ void expect_array(vtkDataSetAttributes* data, const FieldArray& field) {
 }
 
 TEST(VtkFrameWriter, FramesReadBackWithVtkReadersUnchanged) {
-    const std::string directory = ::testing::TempDir() + "grainload_vtk_writer";
+    const std::string directory = grainload::testing::process_folder() + "grainload_vtk_writer";
     std::filesystem::remove_all(directory);
     VtkFrameWriter writer(directory, "demo");
     writer.write(sample_frame(0.0));

@@ -2,6 +2,7 @@
 #include "io/case_table.hpp"
 #include "materials/material_factory.hpp"
 #include "materials/material_point_driver.hpp"
+#include "support/test_folder.hpp"
 
 #include <fstream>
 #include <gtest/gtest.h>
@@ -90,7 +91,7 @@ stress = { xx = "1 kPa" }
 }
 
 std::string write_temp(const std::string& name, const std::string& text) {
-    const std::string path = ::testing::TempDir() + name;
+    const std::string path = grainload::testing::process_folder() + name;
     std::ofstream(path) << text;
     return path;
 }
@@ -120,7 +121,7 @@ steps = 10
 strain_increment = { xx = 0.01 }
 stress = { yy = "0 Pa", zz = "0 Pa" }
 )");
-    const std::string csv = ::testing::TempDir() + "vm_driver.csv";
+    const std::string csv = grainload::testing::process_folder() + "vm_driver.csv";
     ASSERT_EQ(run_material_point(driver, csv), 0);
     const auto lines = lines_of(csv);
     ASSERT_EQ(lines.size(), 12u);
@@ -146,7 +147,7 @@ yield_stress = "250 MPa"
 steps = 6
 stress = { xx = "300 MPa", yy = "0 Pa", zz = "0 Pa" }
 )");
-    const std::string csv = ::testing::TempDir() + "vm_limit.csv";
+    const std::string csv = grainload::testing::process_folder() + "vm_limit.csv";
     EXPECT_EQ(run_material_point(driver, csv), 1);
     EXPECT_EQ(lines_of(csv).size(), 1u + 1u + 5u); // header, step 0, 200 ... 250 MPa
 }
@@ -158,7 +159,8 @@ TEST(MaterialPointDriver, UnknownKeysAreRejected) {
 steps = 1
 strain_incremnt = { xx = 0.001 }
 )");
-    EXPECT_THROW(run_material_point(driver, ::testing::TempDir() + "typo.csv"), io::CaseError);
+    EXPECT_THROW(run_material_point(driver, grainload::testing::process_folder() + "typo.csv"),
+                 io::CaseError);
 }
 
 } // namespace

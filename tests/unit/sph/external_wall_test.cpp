@@ -1,6 +1,7 @@
 #include "io/case_table.hpp"
 #include "sph/rigid_wall.hpp"
 #include "sph/sph_model.hpp"
+#include "support/sph_scene.hpp"
 
 #include <gtest/gtest.h>
 
@@ -49,11 +50,10 @@ mu_static = 0.5
 mu_kinetic = 0.4
 )";
 
-std::unique_ptr<SphModel> run(std::unique_ptr<SphModel> model) {
+void run(SphModel& model) {
     for (int step = 0; step < 200; ++step) {
-        model->advance(step * 2e-5, 2e-5);
+        model.advance(step * 2e-5, 2e-5);
     }
-    return model;
 }
 
 // A wall built outside the case reader (as the coupling builds its shell walls) is the same
@@ -61,10 +61,9 @@ std::unique_ptr<SphModel> run(std::unique_ptr<SphModel> model) {
 // SphModel::add_wall with the same particles, normals and driver, gives the same run, bit for
 // bit, sliding and sticking included.
 TEST(ExternalWall, AWallAddedByTheCallerIsTheCaseFilesWall) {
-    auto with_floor = io::CaseDocument::from_string(std::string(kScene) + kFloor, "a.toml");
-    const io::SceneSettings scene_a = io::read_scene_settings(*with_floor, "a");
-    const auto materials_a = materials::MaterialLibrary::from_case(with_floor->root());
-    auto from_case = run(SphModel::from_case(with_floor->root(), scene_a, materials_a));
+    const testing::SphScene with_floor(std::string(kScene) + kFloor, "a.toml");
+    const auto& from_case = with_floor.model;
+    run(*from_case);
 
     auto bodies_only = io::CaseDocument::from_string(kScene, "b.toml");
     const io::SceneSettings scene_b = io::read_scene_settings(*bodies_only, "b");
@@ -95,8 +94,8 @@ TEST(ExternalWall, AWallAddedByTheCallerIsTheCaseFilesWall) {
     floor.velocities.assign(floor.points.size(), Vec3(0.1, 0.0, 0.0));
     model->add_wall(std::move(floor));
     model->build(bodies_only->root());
-    auto from_caller = run(std::move(model));
-    const auto& r = from_caller->particles();
+    run(*model);
+    const auto& r = model->particles();
     ASSERT_EQ(r.size(), p.size());
     for (Index i = 0; i < p.size(); ++i) {
         ASSERT_EQ(r.position[i], p.position[i]) << "particle " << i;

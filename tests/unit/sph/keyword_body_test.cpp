@@ -1,6 +1,7 @@
 #include "io/case_error.hpp"
 #include "io/case_table.hpp"
 #include "sph/body_generator.hpp"
+#include "support/test_folder.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -43,7 +44,7 @@ constexpr double kSpacing = 0.01;
 std::vector<Vec3> particles(const std::string& shape_keys, int dimension = 3) {
     // One folder per test: ctest runs the tests of this file as parallel processes, and a
     // deck rewritten by one while another reads it reads as a deck without particles.
-    const std::string dir = ::testing::TempDir() + "keyword_body_" +
+    const std::string dir = grainload::testing::process_folder() + "keyword_body_" +
                             ::testing::UnitTest::GetInstance()->current_test_info()->name();
     fs::create_directories(dir);
     std::ofstream(dir + "/sand.k") << kDeck;

@@ -1,10 +1,9 @@
 // The particle estimate (sph/particle_estimate.hpp) against the particles the builders make.
 
 #include "io/case_table.hpp"
-#include "io/scene_settings.hpp"
-#include "materials/material_library.hpp"
 #include "sph/particle_estimate.hpp"
 #include "sph/sph_model.hpp"
+#include "support/sph_scene.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -104,13 +103,10 @@ struct Built {
     std::vector<double> walls;
 };
 
-Built build(io::CaseDocument& document) {
-    const io::SceneSettings settings = io::read_scene_settings(document, "estimate");
-    const io::CaseTable root = document.root();
-    const auto materials = materials::MaterialLibrary::from_case(root);
-    const auto model = SphModel::from_case(root, settings, materials);
+/// The particles the model built, per body and per wall.
+Built built_counts(const SphModel& model) {
     Built built;
-    const auto& p = model->particles();
+    const auto& p = model.particles();
     for (Index i = 0; i < p.size(); ++i) {
         if (p.is_wall(i)) {
             continue;
@@ -119,17 +115,17 @@ Built build(io::CaseDocument& document) {
         built.bodies.resize(std::max(built.bodies.size(), body + 1));
         built.bodies[body] += 1.0;
     }
-    for (const Wall& wall : model->solver()->walls()) {
+    for (const Wall& wall : model.solver()->walls()) {
         built.walls.push_back(static_cast<double>(wall.count));
     }
     return built;
 }
 
 TEST(ParticleEstimate, CountsMatchTheBuiltBodiesAndWalls) {
-    const auto document = io::CaseDocument::from_string(
-        kScene, std::string(GRAINLOAD_SOURCE_DIR) + "/tests/data/meshes/estimate.toml");
-    const ParticleEstimate estimate = estimate_particles(document->root(), 3);
-    const Built built = build(*document);
+    const testing::SphScene scene(kScene, std::string(GRAINLOAD_SOURCE_DIR) +
+                                              "/tests/data/meshes/estimate.toml");
+    const ParticleEstimate estimate = estimate_particles(scene.document->root(), 3);
+    const Built built = built_counts(*scene.model);
     ASSERT_EQ(estimate.bodies.size(), built.bodies.size());
     ASSERT_EQ(estimate.walls.size(), built.walls.size());
     // The box is 10 x 10 x round(10.4) cells, exactly as fill_box rounds it.

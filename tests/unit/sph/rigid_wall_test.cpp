@@ -1,6 +1,7 @@
 #include "io/case_table.hpp"
 #include "sph/rigid_wall.hpp"
 #include "sph/sph_case_reader.hpp"
+#include "support/test_folder.hpp"
 
 #include <Eigen/Geometry>
 #include <filesystem>
@@ -96,7 +97,7 @@ angular_velocity_history = [["0.2 s", "0 0 0 rad/s"], ["0.6 s", "0 0 2 rad/s"]]
 }
 
 TEST(RigidWall, WallForcesFileHasOneRowPerWallAndInstant) {
-    const auto directory = std::filesystem::temp_directory_path() / "grainload_wall_test";
+    const std::filesystem::path directory = testing::test_folder("wall_test");
     Wall wall;
     wall.name = "floor";
     wall.force = Vec3(1.0, 2.0, 3.0);

@@ -1,7 +1,6 @@
-#include "io/case_table.hpp"
 #include "sph/neighbour_list.hpp"
-#include "sph/sph_model.hpp"
 #include "sph/wall_bodies.hpp"
+#include "support/sph_scene.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -125,11 +124,8 @@ bodies = ["resting"]
 
 TEST(WallBodies, ABodyTheFloorDoesNotActOnFallsFreelyThroughIt) {
     for (const std::string plane : {"", "[[sph.symmetry]]\naxis = \"x\"\nat = \"0 m\"\n"}) {
-        auto document =
-            io::CaseDocument::from_string(std::string(kTwoBodiesScene) + plane, "two.toml");
-        const io::SceneSettings scene = io::read_scene_settings(*document, "two");
-        const auto materials = materials::MaterialLibrary::from_case(document->root());
-        auto model = SphModel::from_case(document->root(), scene, materials);
+        const testing::SphScene scene(std::string(kTwoBodiesScene) + plane, "two.toml");
+        const auto& model = scene.model;
         const double dt = 2e-5;
         const int steps = 200;
         for (int step = 0; step < steps; ++step) {

@@ -1,6 +1,7 @@
 #include "sph/wall_map.hpp"
 #include "support/csv_rows.hpp"
 #include "support/guide_table.hpp"
+#include "support/test_folder.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -66,7 +67,7 @@ WallMapSet::Map cylinder_map(double window_start, double window_end) {
 }
 
 std::string fresh_directory(const std::string& name) {
-    const std::string dir = ::testing::TempDir() + "grainload_wall_map_" + name;
+    const std::string dir = grainload::testing::process_folder() + "grainload_wall_map_" + name;
     std::filesystem::remove_all(dir);
     return dir;
 }

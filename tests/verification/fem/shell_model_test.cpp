@@ -1,5 +1,6 @@
 #include "fem/shell_model.hpp"
 #include "io/case_table.hpp"
+#include "support/test_folder.hpp"
 
 #include <cstdio>
 #include <filesystem>
@@ -65,7 +66,7 @@ TEST(ShellModel, ScordelisLoCaseReachesReference) {
 // CSV (time, increment, iteration, the norms of thesis eqs. 5.2.7-5.2.9, solver).
 TEST(ShellModel, ReportsSolverAndWritesConvergenceCsv) {
     LoadedCase c = load();
-    const std::string dir = std::filesystem::temp_directory_path() / "grainload_fem_csv_test";
+    const std::string dir = testing::test_folder("fem_csv_test");
     std::filesystem::create_directories(dir);
     for (int step = 0; step < 4; ++step) {
         c.model->advance(0.25 * step, 0.25);

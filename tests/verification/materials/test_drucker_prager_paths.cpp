@@ -4,6 +4,7 @@
 // (psi = 0) and dilatancy sign (associated), hydrostatic compression and extension to the apex.
 
 #include "materials/voigt_algebra.hpp"
+#include "support/test_folder.hpp"
 #include "tests/unit/materials/material_test_support.hpp"
 #include "tests/verification/materials/driver_support.hpp"
 
@@ -152,7 +153,9 @@ TEST(MatpointCases, ExampleDriversRunAndTriaxialPeakIsMohrCoulomb) {
     const std::string dir = std::string(GRAINLOAD_SOURCE_DIR) + "/cases/matpoint/";
     for (const char* name : {"triaxial_dp", "hydrostatic_dp", "uniaxial_vm_cycle", "triaxial_cap",
                              "hydrostatic_cap", "oedometer_cap_wagon"}) {
-        EXPECT_EQ(run_material_point(dir + name + ".toml", ::testing::TempDir() + name + ".csv"), 0)
+        EXPECT_EQ(run_material_point(dir + name + ".toml",
+                                     grainload::testing::process_folder() + name + ".csv"),
+                  0)
             << name;
     }
     const auto run = testing::run_driver_file(dir + "triaxial_dp.toml");

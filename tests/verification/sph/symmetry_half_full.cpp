@@ -4,6 +4,7 @@
 // so the cut model computes the same sums as the full one, in another order.
 #include "io/case_table.hpp"
 #include "sph/sph_model.hpp"
+#include "support/sph_scene.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -12,21 +13,6 @@
 
 namespace grainload::sph {
 namespace {
-
-struct Scene {
-    std::unique_ptr<io::CaseDocument> document;
-    materials::MaterialLibrary materials;
-    std::unique_ptr<SphModel> model;
-};
-
-Scene build(const std::string& text) {
-    Scene run;
-    run.document = io::CaseDocument::from_string(text, "symmetry.toml");
-    const io::SceneSettings scene = io::read_scene_settings(*run.document, "symmetry");
-    run.materials = materials::MaterialLibrary::from_case(run.document->root());
-    run.model = SphModel::from_case(run.document->root(), scene, run.materials);
-    return run;
-}
 
 /// For each material particle of `cut`, the particle of `full` that started at its place.
 std::vector<Index> match(const ParticleSet& cut, const ParticleSet& full, double spacing) {
@@ -159,8 +145,8 @@ std::string column_on_cut_floor() {
 
 void expect_half_column_is_the_full_column(const std::string& full_text,
                                            const std::string& half_text) {
-    Scene full = build(full_text);
-    Scene half = build(half_text);
+    const testing::SphScene full(full_text, "symmetry.toml");
+    const testing::SphScene half(half_text, "symmetry.toml");
     const double spacing = 0.01;
     const auto partner = match(half.model->particles(), full.model->particles(), spacing);
     ASSERT_EQ(partner.size(), 100U);
@@ -253,8 +239,8 @@ double material_mass(const ParticleSet& p) {
 // selected again at the neighbour-list build that follows each removal, keep the two runs the
 // same to round-off (kLateGap, as above).
 TEST(SymmetryModel, HalfColumnLosesHalfTheFullColumnsParticlesThroughSinks) {
-    Scene full = build(column(false) + kRightSink + kLeftSink);
-    Scene half = build(column(true) + kRightSink);
+    const testing::SphScene full(column(false) + kRightSink + kLeftSink, "symmetry.toml");
+    const testing::SphScene half(column(true) + kRightSink, "symmetry.toml");
     const double dt = 4e-5;
     double t = 0.0;
     for (int step = 0; step < 10000; ++step, t += dt) {
@@ -310,8 +296,8 @@ max = "100 108.5 mm"
 }
 
 TEST(SymmetryModel, HalfHoldsHalfTheContactEnergyBetweenBodies) {
-    Scene full = build(stacked(false));
-    Scene half = build(stacked(true));
+    const testing::SphScene full(stacked(false), "symmetry.toml");
+    const testing::SphScene half(stacked(true), "symmetry.toml");
     const double dt = 4e-5;
     double t = 0.0;
     for (int step = 0; step <= 500; ++step, t += dt) {
@@ -332,7 +318,7 @@ TEST(SymmetryModel, HalfHoldsHalfTheContactEnergyBetweenBodies) {
 // images at the list build that follows their creation, and none crosses the plane (in the full
 // model the grains from the two halves meet at x = 0 and, by symmetry, none crosses it).
 TEST(SymmetryModel, GrainsFromASourceStayOnTheirSideOfThePlane) {
-    Scene half = build(column(true) + R"(
+    const testing::SphScene half(column(true) + R"(
 [[sph.source]]
 name = "pour"
 body = "column"
@@ -340,7 +326,8 @@ min = "0 160 mm"
 max = "60 200 mm"
 mass_rate = "40 kg/m/s"
 velocity = "0 -1 m/s"
-)");
+)",
+                                 "symmetry.toml");
     const double dt = 4e-5;
     double t = 0.0;
     for (int step = 0; step < 6000; ++step, t += dt) {
@@ -420,8 +407,8 @@ constexpr double kWeightTolerance = 0.02;
 
 void expect_quarter_block_carries_a_quarter(const std::string& full_text,
                                             const std::string& quarter_text) {
-    Scene full = build(full_text);
-    Scene quarter = build(quarter_text);
+    const testing::SphScene full(full_text, "symmetry.toml");
+    const testing::SphScene quarter(quarter_text, "symmetry.toml");
     const auto partner = match(quarter.model->particles(), full.model->particles(), 0.01);
     ASSERT_EQ(partner.size(), 36U);
     const double dt = 5e-5;
