@@ -23,7 +23,7 @@ constexpr double kWallFriction = 0.4;
 /// The case and its geometry copied to a fresh folder: Gmsh's mesh lands there, not in the
 /// source tree.
 std::string case_copy() {
-    const std::string dir = ::testing::TempDir() + "silo_hopper_small";
+    const std::string dir = test_folder("silo_hopper_small");
     fs::remove_all(dir);
     fs::create_directories(dir);
     for (const char* file : {"silo_hopper.geo", "silo_hopper_small.toml"}) {
