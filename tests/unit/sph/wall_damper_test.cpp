@@ -38,7 +38,8 @@ double damping_heat(const Vec3& normal, const Vec3& x, const Vec3& v) {
 // ulps of k_ij below zero for 21 of these 48 grains, and sqrt(k_n m) made the damper and the
 // heat NaN: the force was dropped (a NaN force fails its |F|^2 > 0 test) and the grain's
 // internal energy became NaN while every field the watchdog reads stayed finite, until a sink
-// removed it and the energy books with it (the elastic hopper wagon's removed_energy). A normal
+// removed it and the energy books with it: the one path found by which a grain's energy alone
+// turns NaN, as the elastic hopper wagon's removed_energy did (not reproduced there). A normal
 // along an axis, as a rigid vertical wall's, forms one diagonal entry, a plain sum of squares
 // (0 of 48 before the fix); tilted by 1e-4 rad, as an elastic shell's directors are, 3 of 48;
 // tilted well off the axes, as here, 21 of 48. Grains at 8 angles about the normal,
