@@ -55,9 +55,46 @@ double EnergyLedger::throughput() const {
            largest_gravity_work_ + largest_wall_work_;
 }
 
+std::optional<std::string> EnergyLedger::non_finite(double held, double contact) const {
+    struct Entry {
+        double value;
+        const char* name;
+        const char* cause;
+    };
+    const Entry entries[] = {
+        {held, "kinetic_energy + internal_energy",
+         "a particle in the scene has a non-finite velocity or internal energy"},
+        {contact, "contact_energy", "a pair in the contact potential has a non-finite energy"},
+        {removed_held_, "removed_energy",
+         "a particle that left the scene (a sink, a removed wall) took a non-finite kinetic or "
+         "internal energy with it"},
+        {removed_contact_, "removed_contact_energy",
+         "a pair that a removal released had a non-finite contact potential"},
+        {created_held_, "created_energy", "a particle a source created has a non-finite velocity"},
+        {created_contact_, "created_contact_energy",
+         "a pair a source created has a non-finite contact potential"},
+        {gravity_work_, "gravity_work", "a particle's velocity was not finite"},
+        {wall_work_, "moving_wall_work", "a wall particle's velocity or load was not finite"},
+        {initial_scale_, "the energy at t = 0", "a particle started with a non-finite energy"},
+    };
+    for (const Entry& entry : entries) {
+        if (!std::isfinite(entry.value)) {
+            std::ostringstream out;
+            out << entry.name << " is " << entry.value << " J: " << entry.cause;
+            return out.str();
+        }
+    }
+    return std::nullopt;
+}
+
 std::optional<std::string> EnergyLedger::check(double held, double fraction) const {
     if (!open_) {
         return std::nullopt;
+    }
+    // A NaN surplus fails every comparison with the limit: without this the watchdog would
+    // stay silent for the rest of the run.
+    if (const auto bad = non_finite(held, 0.0)) {
+        return "the energy books are not finite (" + *bad + "): the run is numerically unstable";
     }
     const double excess = surplus(held);
     const double scale = throughput();

@@ -54,8 +54,14 @@ class EnergyLedger {
     /// The scale of the run's energy: the initial kinetic, internal and stored energy, what
     /// created particles brought, plus the largest work gravity and the walls have done so far.
     double throughput() const;
-    /// A diagnosis when the surplus exceeds `fraction` of the throughput.
+    /// A diagnosis when the surplus exceeds `fraction` of the throughput, or when the books
+    /// are not finite (non_finite), which no comparison with a limit would catch.
     std::optional<std::string> check(double held, double fraction) const;
+    /// Which entry of the books is not finite, by its summary.json name and what put it there,
+    /// with `held` and `contact` the particles' energies now; nullopt when all are finite.
+    /// A single non-finite particle energy makes its entry, and energy_balance_error, NaN or
+    /// infinite for the rest of the run.
+    std::optional<std::string> non_finite(double held, double contact) const;
 
     /// For checkpoints: a restarted run keeps its account.
     std::vector<double> state() const;

@@ -370,10 +370,13 @@ void SphModel::advance(double t, double dt) {
 std::optional<std::string> SphModel::diagnose() const {
     const auto& p = particles();
     for (std::size_t i = 0; i < p.position.size(); ++i) {
+        // The internal energy too: no other field reads it, so a NaN there (a NaN heat) would
+        // reach the energy books unseen.
         const char* bad = !p.position[i].allFinite()                            ? "position"
                           : !p.velocity[i].allFinite()                          ? "velocity"
                           : !p.stress[i].allFinite()                            ? "stress"
                           : !std::isfinite(p.density[i]) || p.density[i] <= 0.0 ? "density"
+                          : !std::isfinite(p.internal_energy[i])                ? "internal energy"
                                                                                 : nullptr;
         if (bad != nullptr) {
             std::ostringstream out;
@@ -483,9 +486,11 @@ void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) 
         }
         const double contact = solver_->contact_energy();
         results.push_back({"contact_energy", contact, "J", std::nullopt, ""});
-        results.push_back({"energy_balance_error",
-                           ledger.balance_error(solver_->held_energy(), contact), "", std::nullopt,
-                           ""});
+        // JSON writes a non-finite figure as null: the statement says which entry made it so.
+        const double held = solver_->held_energy();
+        const auto unbalanced = ledger.non_finite(held, contact);
+        results.push_back({"energy_balance_error", ledger.balance_error(held, contact), "",
+                           std::nullopt, unbalanced ? "not finite: " + *unbalanced : ""});
         if (!solver_->options().friction.empty()) {
             results.push_back({"wall_friction_work", solver_->wall_contact().friction_work(), "J",
                                std::nullopt, ""});

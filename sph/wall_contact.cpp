@@ -3,6 +3,7 @@
 #include "sph/contact_force.hpp"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -171,7 +172,11 @@ void WallContact::apply(ParticleSet& p, const NeighbourList& neighbours,
                 double load = touch.repulsion.dot(normal);
                 Vec3 force = Vec3::Zero();
                 if (zeta > 0.0) {
-                    const double k_n = normal.dot(touch.stiffness * normal);
+                    // k_n = sum_j k_ij (e_ij . n)^2 >= 0, formed as n . K n: when every e_ij is
+                    // nearly in the wall's plane (a grain beside a wall's edge) round-off leaves
+                    // that form a few ulps of K below zero, and sqrt would make the damper, and
+                    // the heat the grain books, NaN (tests/unit/sph/wall_damper_test.cpp).
+                    const double k_n = std::max(normal.dot(touch.stiffness * normal), 0.0);
                     const double damper =
                         std::max(-2.0 * zeta * std::sqrt(k_n * p.mass[i]) * normal_speed, -load);
                     force += damper * normal;

@@ -1,6 +1,8 @@
 #include "sph/energy_ledger.hpp"
 
+#include <cmath>
 #include <gtest/gtest.h>
+#include <limits>
 
 namespace grainload::sph {
 namespace {
@@ -70,6 +72,26 @@ TEST(EnergyLedger, CreatedParticlesBringWhatTheyHoldWithoutASurplus) {
     restored.set_state(ledger.state());
     EXPECT_DOUBLE_EQ(restored.created_held(), 4.0);
     EXPECT_DOUBLE_EQ(restored.created_contact(), 0.5);
+}
+
+// One removed particle with a NaN internal energy (the elastic hopper wagon's, a NaN wall
+// damping heat) makes removed_energy and the balance NaN for the rest of the run. The books
+// name that entry, for summary.json and for the watchdog, whose surplus test (NaN > limit is
+// false) let it pass before; an infinite held energy is named as the particles'.
+TEST(EnergyLedger, NamesANonFiniteEntryAndTheWatchdogStopsOnIt) {
+    EnergyLedger ledger = worked_example();
+    EXPECT_FALSE(ledger.non_finite(14.0, 2.0).has_value());
+    ledger.add_removed(std::numeric_limits<double>::quiet_NaN(), 0.5);
+    EXPECT_TRUE(std::isnan(ledger.balance_error(11.0, 1.5)));
+    const auto named = ledger.non_finite(11.0, 1.5);
+    ASSERT_TRUE(named.has_value());
+    EXPECT_EQ(named->rfind("removed_energy is nan J", 0), 0u) << *named;
+    const auto problem = ledger.check(11.0, 1.0);
+    ASSERT_TRUE(problem.has_value()) << "a NaN surplus passed the watchdog";
+    EXPECT_NE(problem->find("not finite (removed_energy"), std::string::npos) << *problem;
+    const auto held = worked_example().check(std::numeric_limits<double>::infinity(), 1.0);
+    ASSERT_TRUE(held.has_value());
+    EXPECT_NE(held->find("kinetic_energy + internal_energy is inf J"), std::string::npos) << *held;
 }
 
 TEST(EnergyLedger, StateRoundTripsAndRejectsAForeignLayout) {
