@@ -102,14 +102,20 @@ TEST(Watchdog, EnergySurplusNamesTheEnergiesAndTheRemedy) {
 // Newton non-convergence after the cut-backs: the strip that rolls into a circle takes several
 // iterations per increment at every load level; two iterations and one cut-back cannot follow
 // it. The diagnosis names the structure, the time and the node and DOF furthest out of
-// balance (the loaded tip, x1: node 65 of the 33 x 2 nodes, 32 elements long).
+// balance: a node of the loaded tip, x1, nodes 64 and 65 of the 33 x 2 nodes (32 elements
+// long). The two are mirror images under the strip's symmetry and equally out of balance but
+// for round-off, which decides between them differently on different machines (65 on the CI
+// machine of stop 25, 64 on this session's).
 TEST(Watchdog, NewtonNonConvergenceNamesTheNodeOutOfBalance) {
     const std::string kase = "cases/shell_benchmarks/cantilever_roll_up.toml";
     const std::string options = "--set fem.max_iterations=2 --set fem.max_cutbacks=1 --threads 1";
     const CaseRun run = run_case_file(kase, "watchdog_newton", options);
     const Stopped stopped = expect_stopped(
         run, {"fem: shell structure (strip): Newton-Raphson did not converge at t = 0.1 s",
-              "largest out-of-balance force at node 65", "(part strip)"});
+              "(part strip)"});
+    EXPECT_TRUE(std::regex_search(stopped.diagnosis,
+                                  std::regex("largest out-of-balance force at node 6[45] ")))
+        << stopped.diagnosis;
     expect_restart_meets_it_again(kase, options, run, stopped, true);
 }
 
