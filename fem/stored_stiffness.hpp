@@ -11,8 +11,8 @@ namespace grainload::fem {
 /// The stiffness of a linear shell (linear kinematics, linear elastic parts) over all DOFs,
 /// prescribed ones included, assembled once. Its internal force is exactly K u: with strains
 /// linear in u (eps = B u) and stresses linear in the strains (sigma = C eps), the element
-/// loop's sum of B^T sigma dV (thesis eq. 5.2.10) is the sum of B^T C B dV times u (Bathe FEP
-/// eq. 4.17 and its stiffness, eq. 4.19); only the summation order differs. The drilling spring
+/// loop's sum of B^T sigma dV (thesis eq. 5.2.10) is the sum of B^T C B dV times u, the
+/// stiffness of Bathe FEP section 4.2.1; only the summation order differs. The drilling spring
 /// (fem/mitc4_shell.hpp) is kept apart: it belongs to the tangent, not to the internal force.
 class StoredStiffness {
   public:
