@@ -19,9 +19,10 @@ struct WindowRecord {
     double shell_work = 0.0;          ///< work of the applied interface load on the shell [J]
     Vec3 wall_impulse = Vec3::Zero(); ///< impulse of the sand on the coupled walls [N s]
     Vec3 shell_impulse = Vec3::Zero(); ///< impulse of the interface load on the shell [N s]
-    double sph_seconds = 0.0;          ///< wall time of the SPH sub-steps
-    double fem_seconds = 0.0;          ///< wall time of the shell solve(s)
-    double map_seconds = 0.0;          ///< wall time of interpolation and force mapping
+    double sph_seconds = 0.0;          ///< wall time of the SPH sub-steps (of every pass)
+    /// Wall time of the shell solve(s) and of the element stresses the extremes read.
+    double fem_seconds = 0.0;
+    double map_seconds = 0.0; ///< wall time of interpolation and force mapping (every pass)
 };
 
 /// The coupling's books (issue: interface energy error, momentum balance, sub-cycles, FEM solve

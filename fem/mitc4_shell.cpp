@@ -231,25 +231,64 @@ void Mitc4Shell::add_geometric_stiffness(const ShellNodes& current,
     term(bases[4], 1, 2, weights(4) * 0.5 * (1.0 - r));
 }
 
-void Mitc4Shell::add_drilling_stiffness(const ShellNodes& current, Matrix24& stiffness) const {
+Matrix24 Mitc4Shell::drilling_stiffness(const ShellNodes& current,
+                                        const Matrix24& stiffness) const {
     double largest = 0.0;
     for (int k = 0; k < 4; ++k) {
         largest =
             std::max(largest, stiffness.block<3, 3>(6 * k + 3, 6 * k + 3).diagonal().maxCoeff());
     }
+    Matrix24 spring = Matrix24::Zero();
     for (std::size_t k = 0; k < 4; ++k) {
         if (fold_corners_[k]) {
             continue;
         }
         const Vec3& v = current.director[k];
         const int o = 6 * static_cast<int>(k) + 3;
-        stiffness.block<3, 3>(o, o) += kDrillingFactor * largest * v * v.transpose();
+        spring.block<3, 3>(o, o) = kDrillingFactor * largest * v * v.transpose();
+    }
+    return spring;
+}
+
+void Mitc4Shell::keep_strain_operators() {
+    // Under linear kinematics the derivative is that of the initial geometry (evaluate()).
+    strain_operators_.clear();
+    strain_operators_.reserve(frames_.size());
+    const double g = 1.0 / std::sqrt(3.0);
+    std::array<Basis, 5> bases;
+    for (const double s : {-g, g}) {
+        for (const double r : {-g, g}) {
+            for (const double z : z_points_) {
+                ShellVector covariant;
+                StrainDerivative derivative;
+                covariant_strain(initial_, r, s, z, covariant, derivative, bases);
+                strain_operators_.push_back(derivative);
+            }
+        }
+    }
+}
+
+ShellVector Mitc4Shell::linear_strain(std::size_t point, const StrainDerivative& derivative,
+                                      const Vector24& linear_dofs) const {
+    const ShellVector covariant = derivative * linear_dofs;
+    return frames_[point].transform * covariant;
+}
+
+void Mitc4Shell::update_stresses(const Vector24& linear_dofs) {
+    if (strain_operators_.empty()) {
+        keep_strain_operators();
+    }
+    for (std::size_t point = 0; point < frames_.size(); ++point) {
+        plane_stress_update(*material_, linear_strain(point, strain_operators_[point], linear_dofs),
+                            committed_[point], trial_[point], nullptr);
     }
 }
 
 void Mitc4Shell::evaluate(const ShellNodes& current, const Vector24& linear_dofs,
-                          Kinematics kinematics, Vector24& force, Matrix24* stiffness) {
+                          Kinematics kinematics, Vector24& force, Matrix24* stiffness,
+                          Matrix24* drilling) {
     const bool linear = kinematics == Kinematics::linear;
+    const bool kept = linear && !strain_operators_.empty();
     const ShellNodes& geometry = linear ? initial_ : current;
     force.setZero();
     if (stiffness != nullptr) {
@@ -263,12 +302,13 @@ void Mitc4Shell::evaluate(const ShellNodes& current, const Vector24& linear_dofs
             for (std::size_t iz = 0; iz < z_points_.size(); ++iz, ++point) {
                 const PointFrame& pf = frames_[point];
                 ShellVector covariant;
-                Eigen::Matrix<double, 5, 24> derivative;
-                covariant_strain(geometry, r, s, pf.z, covariant, derivative, bases);
-                if (linear) {
-                    covariant = derivative * linear_dofs;
+                StrainDerivative computed;
+                if (!kept) {
+                    covariant_strain(geometry, r, s, pf.z, covariant, computed, bases);
                 }
-                const ShellVector strain = pf.transform * covariant;
+                const StrainDerivative& derivative = kept ? strain_operators_[point] : computed;
+                const ShellVector strain = linear ? linear_strain(point, derivative, linear_dofs)
+                                                  : ShellVector(pf.transform * covariant);
                 const Eigen::Matrix<double, 5, 24> b = pf.transform * derivative;
                 ShellMatrix c;
                 const ShellVector stress =
@@ -287,8 +327,14 @@ void Mitc4Shell::evaluate(const ShellNodes& current, const Vector24& linear_dofs
             }
         }
     }
-    if (stiffness != nullptr) {
-        add_drilling_stiffness(geometry, *stiffness);
+    if (stiffness == nullptr) {
+        return;
+    }
+    const Matrix24 spring = drilling_stiffness(geometry, *stiffness);
+    if (drilling != nullptr) {
+        *drilling = spring;
+    } else {
+        *stiffness += spring;
     }
 }
 

@@ -51,10 +51,21 @@ class Mitc4Shell {
                int thickness_points);
 
     /// Internal force vector and, when `stiffness` is given, the tangent stiffness (material
-    /// part plus, for total_lagrangian, the geometric part). `linear_dofs`: nodal displacements
-    /// and rotation vectors (needed for Kinematics::linear only). Updates the trial state.
+    /// part plus, for total_lagrangian, the geometric part, plus the drilling spring). With
+    /// `drilling` the spring goes there instead of into `stiffness` (tangent = stiffness +
+    /// drilling; the internal force is stiffness * dofs for a linear shell). `linear_dofs`:
+    /// nodal displacements and rotation vectors (needed for Kinematics::linear only). Updates
+    /// the trial state.
     void evaluate(const ShellNodes& current, const Vector24& linear_dofs, Kinematics kinematics,
-                  Vector24& force, Matrix24* stiffness);
+                  Vector24& force, Matrix24* stiffness, Matrix24* drilling = nullptr);
+    /// Linear kinematics: keep every point's strain-displacement derivative, which depends on
+    /// the initial geometry only, so that evaluate() and update_stresses() do not form it again
+    /// (960 bytes per integration point).
+    void keep_strain_operators();
+    /// Linear kinematics: the trial state at `linear_dofs` without force or stiffness, by the
+    /// same arithmetic as evaluate() (the stresses a stored-stiffness analysis evaluates only
+    /// when they are read).
+    void update_stresses(const Vector24& linear_dofs);
 
     /// Accept the trial state of the last evaluate() as converged / forget it.
     void commit() { committed_ = trial_; }
@@ -85,6 +96,7 @@ class Mitc4Shell {
     void set_fold_corners(const std::array<bool, 4>& fold) { fold_corners_ = fold; }
 
   private:
+    using StrainDerivative = Eigen::Matrix<double, 5, 24>;
     struct Basis;
     struct PointFrame {
         ShellMatrix transform; ///< covariant (rr, ss, rs, rt, st) -> local ShellVector
@@ -99,7 +111,11 @@ class Mitc4Shell {
     void add_geometric_stiffness(const ShellNodes& current, const std::array<Basis, 5>& bases,
                                  double r, double s, const ShellVector& weights,
                                  Matrix24& stiffness) const;
-    void add_drilling_stiffness(const ShellNodes& current, Matrix24& stiffness) const;
+    /// The drilling spring of `stiffness` (its rotational blocks scale it).
+    Matrix24 drilling_stiffness(const ShellNodes& current, const Matrix24& stiffness) const;
+    /// The local strain of point `point` under linear kinematics.
+    ShellVector linear_strain(std::size_t point, const StrainDerivative& derivative,
+                              const Vector24& linear_dofs) const;
 
     ShellNodes initial_;
     std::array<bool, 4> fold_corners_{};
@@ -108,6 +124,7 @@ class Mitc4Shell {
     std::vector<double> z_points_;
     std::vector<double> z_weights_;
     std::vector<PointFrame> frames_;
+    std::vector<StrainDerivative> strain_operators_; ///< kept ones, per point (or none)
     std::vector<MaterialPoint> committed_;
     std::vector<MaterialPoint> trial_;
 };

@@ -85,7 +85,10 @@ class NewmarkIntegrator::Step final : public NewtonOperator {
     bool constant_tangent() const override { return integrator_.analysis_->constant_tangent(); }
     /// The effective tangent contains c0 = 1 / (beta dt^2).
     double tangent_key() const override { return dt_; }
-    bool first_iteration_needs_tangent() const override { return !prescribed_.isZero(0.0); }
+    /// A stored stiffness gives K_fp dU_p without assembling the tangent.
+    bool first_iteration_needs_tangent() const override {
+        return !prescribed_.isZero(0.0) && !analysis_.uses_stored_stiffness();
+    }
     const std::vector<Index>& equation_numbers() const override { return equation_; }
 
   private:

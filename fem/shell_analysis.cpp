@@ -98,10 +98,11 @@ ShellNodes ShellAnalysis::element_nodes(std::size_t element) const {
     return nodes;
 }
 
-Vector24 ShellAnalysis::element_dofs(const ShellElement& element) const {
+Vector24 ShellAnalysis::element_dofs(const ShellElement& element,
+                                     const Eigen::VectorXd& dofs) const {
     Vector24 a;
     for (int k = 0; k < 4; ++k) {
-        a.segment<6>(kDofs * k) = dofs_.segment<6>(kDofs * element.nodes[at(k)]);
+        a.segment<6>(kDofs * k) = dofs.segment<6>(kDofs * element.nodes[at(k)]);
     }
     return a;
 }
@@ -126,6 +127,10 @@ const std::vector<Index>& ShellAnalysis::equation_numbers() {
 
 void ShellAnalysis::assemble(SparseSolver::Matrix* tangent, Eigen::VectorXd& internal,
                              const Eigen::VectorXd* prescribed, Eigen::VectorXd* coupling) {
+    if (uses_stored_stiffness()) {
+        assemble_stored(tangent, internal, prescribed, coupling);
+        return;
+    }
     const std::vector<Index>& eq = equation_numbers();
     internal = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(prescribed_.size()));
     if (coupling != nullptr) {
@@ -139,7 +144,7 @@ void ShellAnalysis::assemble(SparseSolver::Matrix* tangent, Eigen::VectorXd& int
     Matrix24 k;
     for (std::size_t e = 0; e < elements_.size(); ++e) {
         const ShellElement& element = mesh_.elements()[e];
-        elements_[e].evaluate(element_nodes(e), element_dofs(element), kinematics_, force,
+        elements_[e].evaluate(element_nodes(e), element_dofs(element, dofs_), kinematics_, force,
                               tangent != nullptr ? &k : nullptr);
         std::array<Index, 24> global{};
         for (int a = 0; a < 24; ++a) {
@@ -230,6 +235,7 @@ void ShellAnalysis::commit() {
     }
     committed_dofs_ = dofs_;
     committed_rotations_ = rotations_;
+    stresses_stale_ = uses_stored_stiffness();
 }
 
 void ShellAnalysis::revert_to_committed() {
@@ -383,6 +389,7 @@ SparseSolver::Matrix ShellAnalysis::consistent_mass() const {
 }
 
 void ShellAnalysis::write_state(std::ostream& out) const {
+    refresh_stresses();
     io::write_value(out, load_factor_);
     io::write_array(out, std::vector<double>(committed_dofs_.begin(), committed_dofs_.end()));
     io::write_array(out, committed_rotations_);
@@ -428,6 +435,7 @@ void ShellAnalysis::read_state(std::istream& in) {
         }
         e.restore_points(std::move(points));
     }
+    stresses_stale_ = false;
     revert_to_committed();
 }
 

@@ -5,10 +5,12 @@
 #include "fem/shell_directors.hpp"
 #include "fem/shell_mesh.hpp"
 #include "fem/sparse_solver.hpp"
+#include "fem/stored_stiffness.hpp"
 
 #include <Eigen/SparseCore>
 #include <functional>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -115,16 +117,27 @@ class ShellAnalysis {
     /// Internal minus applied force at every DOF (the reactions at constrained DOFs).
     Eigen::VectorXd reactions();
     Index free_dof_count() const { return free_count_; }
-    const std::vector<Mitc4Shell>& elements() const { return elements_; }
-    std::vector<Mitc4Shell>& elements() { return elements_; }
+    /// The elements with their stresses at the committed state (evaluated here first when a
+    /// stored stiffness left them behind).
+    const std::vector<Mitc4Shell>& elements() const;
     /// Lumped mass per DOF (6 per node).
     Eigen::VectorXd lumped_mass() const;
     /// Consistent mass matrix over all DOFs (6 per node).
     SparseSolver::Matrix consistent_mass() const;
     /// Assemble the tangent (free DOFs) and the full internal force vector at the current state;
-    /// with `prescribed` (full-size DOF values) also coupling = K * prescribed over all DOFs.
+    /// with `prescribed` (full-size DOF values) also coupling = K * prescribed over all DOFs
+    /// (computed only with the tangent, unless the stiffness is stored).
     void assemble(SparseSolver::Matrix* tangent, Eigen::VectorXd& internal,
                   const Eigen::VectorXd* prescribed = nullptr, Eigen::VectorXd* coupling = nullptr);
+    /// Keep the stiffness of a linear shell (while constant_tangent() holds): assembled once
+    /// over all DOFs (fem/stored_stiffness.hpp), it gives assemble() the internal force K u, the
+    /// prescribed DOFs' coupling and the tangent without the element loop, and the element
+    /// stresses are then evaluated only when read (elements(), write_state()). For analyses
+    /// advanced step after step (ShellModel); off by default, where one solve would only hold
+    /// one matrix more.
+    void store_stiffness() { store_stiffness_ = true; }
+    /// True when assemble() works from the stored stiffness.
+    bool uses_stored_stiffness() const { return store_stiffness_ && constant_tangent(); }
     /// Load factor at which assemble() evaluates the follower loads (they depend on the state,
     /// so they are assembled with the internal forces, with their load stiffness).
     void set_assembly_load_factor(double lambda) { assembly_load_factor_ = lambda; }
@@ -156,7 +169,12 @@ class ShellAnalysis {
   private:
     Eigen::VectorXd& active_load();
     ShellNodes element_nodes(std::size_t element) const;
-    Vector24 element_dofs(const ShellElement& element) const;
+    Vector24 element_dofs(const ShellElement& element, const Eigen::VectorXd& dofs) const;
+    void build_stored_stiffness();
+    void assemble_stored(SparseSolver::Matrix* tangent, Eigen::VectorXd& internal,
+                         const Eigen::VectorXd* prescribed, Eigen::VectorXd* coupling);
+    /// The committed state's element stresses, when the stored stiffness left them behind.
+    void refresh_stresses() const;
     bool increment(double from, double to, const NewtonSettings& settings, StepReport& report);
     void number_equations();
     void add_follower_loads(Eigen::VectorXd& internal,
@@ -167,7 +185,8 @@ class ShellAnalysis {
     ShellMesh mesh_;
     Kinematics kinematics_;
     ElementDirectors initial_directors_; ///< per element corner, rotated by the nodal R
-    std::vector<Mitc4Shell> elements_;
+    /// Mutable for refresh_stresses(): the stresses are a cache of the committed DOFs then.
+    mutable std::vector<Mitc4Shell> elements_;
     struct LoadHistory {
         History scale;
         Eigen::VectorXd load;
@@ -197,6 +216,10 @@ class ShellAnalysis {
     Index free_count_ = 0;
     bool numbered_ = false;
     bool has_moment_loads_ = false;
+    bool store_stiffness_ = false;
+    std::optional<StoredStiffness> stored_;
+    /// The elements' committed stresses lag behind the committed DOFs (stored stiffness).
+    mutable bool stresses_stale_ = false;
     Eigen::VectorXd additional_forces_;
     Eigen::VectorXd dofs_; ///< translations and (linear kinematics) rotation vectors
     std::vector<Mat3> rotations_;

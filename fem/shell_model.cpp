@@ -65,6 +65,9 @@ std::unique_ptr<ShellModel> ShellModel::from_case(const io::CaseTable& root,
     model->analysis_ = std::make_unique<ShellAnalysis>(
         std::move(mesh), std::move(parts),
         kinematics == "linear" ? Kinematics::linear : Kinematics::total_lagrangian);
+    // Advanced step after step, a linear shell's stiffness is worth keeping: every later step's
+    // internal forces come from it (a coupled window's cost was the element loop).
+    model->analysis_->store_stiffness();
     // The analysis' load factor is the time: history 0 (loads without a time_function) ramps
     // to 1 at load_time and holds; every [[fem.time_function]] becomes a history of its own.
     const double load_time = model->load_time_;

@@ -65,7 +65,8 @@ bool StaticIncrement::constant_tangent() const {
 }
 
 bool StaticIncrement::first_iteration_needs_tangent() const {
-    return !prescribed_increment_.isZero(0.0);
+    // A stored stiffness gives K_fp dU_p without assembling the tangent.
+    return !prescribed_increment_.isZero(0.0) && !analysis_.uses_stored_stiffness();
 }
 
 } // namespace grainload::fem
