@@ -1,5 +1,6 @@
 #include "fem/shell_analysis.hpp"
 
+#include "fem/dof_index.hpp"
 #include "fem/static_increment.hpp"
 #include "io/binary_stream.hpp"
 
@@ -14,8 +15,6 @@ namespace grainload::fem {
 
 namespace {
 
-constexpr int kDofs = 6;
-
 /// Rotation matrix of a rotation vector (Rodrigues' formula).
 Mat3 exponential(const Vec3& v) {
     const double angle = v.norm();
@@ -23,10 +22,6 @@ Mat3 exponential(const Vec3& v) {
         return Mat3::Identity();
     }
     return Eigen::AngleAxisd(angle, v / angle).toRotationMatrix();
-}
-
-std::size_t at(Index i) {
-    return static_cast<std::size_t>(i);
 }
 
 } // namespace

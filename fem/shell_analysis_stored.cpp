@@ -1,3 +1,4 @@
+#include "fem/dof_index.hpp"
 #include "fem/shell_analysis.hpp"
 
 #include <array>
@@ -6,16 +7,6 @@
 // shell's internal force as K u, and its element stresses evaluated only when read.
 
 namespace grainload::fem {
-
-namespace {
-
-constexpr int kDofs = 6;
-
-std::size_t at(Index i) {
-    return static_cast<std::size_t>(i);
-}
-
-} // namespace
 
 void ShellAnalysis::build_stored_stiffness() {
     StoredStiffness::Triplets material;

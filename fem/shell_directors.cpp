@@ -1,15 +1,13 @@
 #include "fem/shell_directors.hpp"
 
+#include "fem/dof_index.hpp"
+
 #include <algorithm>
 #include <cmath>
 
 namespace grainload::fem {
 
 namespace {
-
-std::size_t at(Index i) {
-    return static_cast<std::size_t>(i);
-}
 
 /// Distinct corners of an element: three for a triangle (its fourth node repeats the third).
 int corner_count(const ShellElement& element) {

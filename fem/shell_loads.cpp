@@ -1,3 +1,4 @@
+#include "fem/dof_index.hpp"
 #include "fem/shell_analysis.hpp"
 
 #include <Eigen/Geometry>
@@ -9,16 +10,6 @@
 // applied at a load factor lambda (static: lambda = load factor or time; dynamic: time).
 
 namespace grainload::fem {
-
-namespace {
-
-constexpr int kDofs = 6;
-
-std::size_t at(Index i) {
-    return static_cast<std::size_t>(i);
-}
-
-} // namespace
 
 int ShellAnalysis::add_history(History scale) {
     histories_.push_back({std::move(scale), Eigen::VectorXd::Zero(dofs_.size())});

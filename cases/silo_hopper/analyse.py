@@ -21,7 +21,9 @@ The sand's outer particles stand off the wall by the contact potential's reach, 
 A/U is the column's radius over two: r_s = R - (stand-off) with the stand-off read from the
 frame (the outermost centres plus half a spacing), and p_h on the wall is the column's lateral
 stress spread onto the wall's perimeter, sigma_h r_s / R.
-Writes OUT/silo_hopper_pressure.png. Usage: /usr/bin/python3 cases/silo_hopper/analyse.py OUT
+The spacing and the transition's height are read from the case file the run names in its
+summary.json. Writes OUT/silo_hopper_pressure.png.
+Usage: /usr/bin/python3 cases/silo_hopper/analyse.py OUT
 """
 import csv
 import glob
@@ -29,6 +31,7 @@ import json
 import math
 import os
 import sys
+import tomllib
 
 import matplotlib
 matplotlib.use("Agg")
@@ -38,9 +41,8 @@ import vtk  # noqa: E402
 from vtk.util.numpy_support import vtk_to_numpy  # noqa: E402
 
 RHO, G, R, MU, PHI = 1600.0, 9.81, 0.2, 0.4, math.radians(30.0)  # the cases' sand and silo
-Z_T = 0.16974  # the transition ring: the maps' axial origin
-SPACING, OUTLET = 0.02, 0.1  # particle spacing; the outlet in effect (drawn 0.204 m)
-PARTICLE_MASS = RHO * SPACING**3
+OUTLET = 0.1  # the outlet in effect (drawn 0.1 m + 4h)
+UNITS = {"m": 1.0, "mm": 1e-3}
 BEVERLOO_C = 0.58
 
 
@@ -79,25 +81,37 @@ def janssen(depth, k, r_s, mu, gamma):
     return gamma * hydraulic / mu * (1.0 - np.exp(-depth / z0)) * r_s / R
 
 
+def metres(quantity):
+    """A length of the case file ("15 mm", "0 0 192.26 mm": its last component) in m."""
+    *numbers, unit = quantity.split()
+    return float(numbers[-1]) * UNITS[unit]
+
+
 def main(out):
-    summary = json.load(open(os.path.join(out, "summary.json")))["results"]
+    whole = json.load(open(os.path.join(out, "summary.json")))
+    summary = whole["results"]
+    with open(whole["case_file"], "rb") as f:
+        case = tomllib.load(f)
+    spacing = metres(case["sph"]["body"][0]["spacing"])
+    z_t = metres(case["sph"]["wall_map"][0]["origin"])  # the transition: the maps' origin
+    particle_mass = RHO * spacing**3
     rest = os.path.join(out, "wall_maps", "rest_window.csv")
     with open(rest) as f:
         rest_end = float(next(csv.DictReader(f))["window_end_s"])
     axial, p_rest = ring_means(rest, "mean_pressure_Pa")
     _, tau_rest = ring_means(rest, "mean_shear_axial_Pa")
     sand = sand_points(out, rest_end)
-    in_cylinder = sand[sand[:, 2] > Z_T]
-    top = np.percentile(in_cylinder[:, 2], 95) + SPACING / 2
-    r_s = np.hypot(in_cylinder[:, 0], in_cylinder[:, 1]).max() + SPACING / 2
-    gamma = len(in_cylinder) * PARTICLE_MASS * G / (math.pi * r_s**2 / 4 * (top - Z_T))
-    depth = top - (Z_T + axial)
+    in_cylinder = sand[sand[:, 2] > z_t]
+    top = np.percentile(in_cylinder[:, 2], 95) + spacing / 2
+    r_s = np.hypot(in_cylinder[:, 0], in_cylinder[:, 1]).max() + spacing / 2
+    gamma = len(in_cylinder) * particle_mass * G / (math.pi * r_s**2 / 4 * (top - z_t))
+    depth = top - (z_t + axial)
     filled = (depth > 0) & (p_rest > 0)
     mobilised = float(np.median(-tau_rest[filled] / p_rest[filled]))
     best = min(np.linspace(0.2, 1.5, 1301),
                key=lambda k: np.sum((janssen(depth[filled], k, r_s, mobilised, gamma) -
                                      p_rest[filled]) ** 2))
-    print(f"fill surface z = {top:.3f} m ({top - Z_T:.3f} m above the transition), column "
+    print(f"fill surface z = {top:.3f} m ({top - z_t:.3f} m above the transition), column "
           f"radius r_s = {r_s:.4f} m (stand-off {R - r_s:.4f} m), unit weight {gamma:.0f} N/m^3 "
           f"(the material's {RHO * G:.0f})")
     print(f"wall friction mobilised: {mobilised:.3f} (median tau / p; mu = {MU})")
@@ -120,16 +134,16 @@ def main(out):
         print(line)
     rate = 4.0 * summary["sink_below_steady_rate"]["value"]
     bulk = gamma / G
-    for grain in (0.0, 1.4 * SPACING):
+    for grain in (0.0, 1.4 * spacing):
         beverloo = BEVERLOO_C * bulk * math.sqrt(G) * (OUTLET - grain) ** 2.5
         print(f"steady discharge rate (whole silo): {rate:.2f} kg/s; Beverloo (C = {BEVERLOO_C}, "
               f"rho_b = {bulk:.0f} kg/m^3, D = {OUTLET} m, k d = {grain:.3f} m): "
               f"{beverloo:.2f} kg/s; ratio {rate / beverloo:.3f}")
     fig, ax = plt.subplots(figsize=(5, 6))
     ax.plot(p_rest, axial, "o-", label="at rest (run)")
-    fine = np.linspace(0.0, top - Z_T, 100)
+    fine = np.linspace(0.0, top - z_t, 100)
     for k, style in ((best, "-"), (1 - math.sin(PHI), "--"), (1.1 * (1 - math.sin(PHI)), ":")):
-        ax.plot(janssen(np.maximum(top - Z_T - fine, 0.0), k, r_s, mobilised, gamma), fine, "k" + style,
+        ax.plot(janssen(np.maximum(top - z_t - fine, 0.0), k, r_s, mobilised, gamma), fine, "k" + style,
                 label=f"Janssen, K = {k:.2f}")
     if has_flow:
         ax.plot(p_flow, axial, "s-", label="discharge, mean")

@@ -10,8 +10,6 @@
 namespace grainload::testing {
 namespace {
 
-namespace fs = std::filesystem;
-
 // cases/hopper_wagon/hopper_wagon_small.toml: a 1 m slice of the quarter wagon (between
 // frictionless rigid planes at x = 1.5 and 2.5 m, the centre line a symmetry plane), filled
 // to 0.5 s, settled, its door swung open from 1.5 s to 2.0 s; docs/validation/hopper_wagon.md.
@@ -19,27 +17,15 @@ constexpr double kGravity = 9.81;
 constexpr double kDoorOpens = 1.5; // s
 constexpr double kRestTime = 1.4;  // s: the last frame before the door moves
 
-/// The case and its geometry copied to a fresh folder: Gmsh's mesh lands there, not in the
-/// source tree.
-std::string case_copy() {
-    const std::string dir = test_folder("hopper_wagon_discharge_small");
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    for (const char* file : {"hopper_wagon.geo", "hopper_wagon_small.toml"}) {
-        fs::copy_file(source_path(std::string("cases/hopper_wagon/") + file), dir + "/" + file);
-    }
-    return dir;
-}
-
 // One run, four checks: the mass audit, the load's weight carried by the walls before the
 // door opens, nothing out before the door moves and the load running out after, and the
 // symmetry plane never crossed.
 TEST(HopperWagonDischargeSmall, HoldsItsWeightThenRunsOutThroughTheDoor) {
-    const std::string dir = case_copy();
-    const std::string out = dir + "/out";
-    const CliResult run =
-        run_cli("run '" + dir + "/hopper_wagon_small.toml' --out '" + out + "'", out + ".log");
-    ASSERT_EQ(run.exit_code, 0) << run.output;
+    const CaseRun run =
+        run_case_copy("cases/hopper_wagon", {"hopper_wagon_small.toml", "hopper_wagon.geo"},
+                      "hopper_wagon_discharge_small");
+    ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
+    const std::string& out = run.out;
     const std::string summary = read_file(out + "/summary.json");
     const double load =
         result_value(summary, "initial_mass") + result_value(summary, "created_mass");
@@ -52,12 +38,7 @@ TEST(HopperWagonDischargeSmall, HoldsItsWeightThenRunsOutThroughTheDoor) {
     // along its normal (the images' total force is its own mirror image negated, so its x and
     // z parts vanish). 0.2 %: what the load's remaining motion (0.9 s after the fill) leaves
     // in the frame's one-step forces; measured 0.015 % at 1.4 s, 0.02 % from 1.1 to 1.5 s.
-    double carried = 0.0;
-    for (const WallForceRow& row : wall_force_rows(out)) {
-        if (std::abs(row.time - kRestTime) < 1e-9) {
-            carried -= row.force[2];
-        }
-    }
+    const double carried = walls_load_z(out, kRestTime);
     std::printf("load %.1f kg, weight %.1f N, carried by the walls at %.1f s: %.1f N\n", load,
                 load * kGravity, kRestTime, carried);
     EXPECT_NEAR(carried, load * kGravity, 2e-3 * load * kGravity);
@@ -77,15 +58,7 @@ TEST(HopperWagonDischargeSmall, HoldsItsWeightThenRunsOutThroughTheDoor) {
     EXPECT_GT(after, 0.5 * load);
 
     // The symmetry plane y = 0 is never crossed: every particle of every frame has y >= 0.
-    for (const auto& entry : fs::directory_iterator(out + "/frames")) {
-        if (entry.path().extension() != ".vtm") {
-            continue;
-        }
-        const auto block = read_named_block(entry.path().string(), "load");
-        for (vtkIdType i = 0; block != nullptr && i < block->GetNumberOfPoints(); ++i) {
-            ASSERT_GE(block->GetPoint(i)[1], 0.0) << entry.path();
-        }
-    }
+    EXPECT_EQ(count_frame_points(out, "load", [](const double* p) { return p[1] < 0.0; }), 0);
 }
 
 } // namespace

@@ -10,8 +10,6 @@
 namespace grainload::testing {
 namespace {
 
-namespace fs = std::filesystem;
-
 // cases/silo_hopper/silo_hopper_small.toml: the quarter of a circular silo (radius 0.2 m, a
 // 0.4 m slice of its cylinder) with a 30 deg conical hopper, rigid walls where the steel shell
 // is built; a placed cone of sand on a gate under the outlet, the cylinder filled by a source
@@ -20,27 +18,14 @@ constexpr double kGravity = 9.81;
 constexpr double kRestTime = 1.3; // s: the last frame before the gate leaves
 constexpr double kWallFriction = 0.4;
 
-/// The case and its geometry copied to a fresh folder: Gmsh's mesh lands there, not in the
-/// source tree.
-std::string case_copy() {
-    const std::string dir = test_folder("silo_hopper_small");
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    for (const char* file : {"silo_hopper.geo", "silo_hopper_small.toml"}) {
-        fs::copy_file(source_path(std::string("cases/silo_hopper/") + file), dir + "/" + file);
-    }
-    return dir;
-}
-
 // One run, five checks: the mass audit, the weight carried at rest, the wall friction within
 // Coulomb's bound, nothing out before the gate goes and the sand running out after, and the
 // symmetry planes never crossed.
 TEST(SiloHopperSmall, HoldsItsWeightThenDischargesThroughTheOutlet) {
-    const std::string dir = case_copy();
-    const std::string out = dir + "/out";
-    const CliResult run =
-        run_cli("run '" + dir + "/silo_hopper_small.toml' --out '" + out + "'", out + ".log");
-    ASSERT_EQ(run.exit_code, 0) << run.output;
+    const CaseRun run = run_case_copy(
+        "cases/silo_hopper", {"silo_hopper_small.toml", "silo_hopper.geo"}, "silo_hopper_small");
+    ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
+    const std::string& out = run.out;
     const std::string summary = read_file(out + "/summary.json");
     const double sand =
         result_value(summary, "initial_mass") + result_value(summary, "created_mass");
@@ -52,12 +37,7 @@ TEST(SiloHopperSmall, HoldsItsWeightThenDischargesThroughTheOutlet) {
     // planes' images push only along their normals (x and y). 1 %: the frame's forces are one
     // step's, 0.1 s after the source stopped, while the fill's last motion dies out (measured
     // +0.2 % at 1.3 s; -0.6 % at 1.2 s, when the last rows had just been created).
-    double carried = 0.0;
-    for (const WallForceRow& row : wall_force_rows(out)) {
-        if (std::abs(row.time - kRestTime) < 1e-9) {
-            carried -= row.force[2];
-        }
-    }
+    const double carried = walls_load_z(out, kRestTime);
     std::printf("sand %.3f kg, weight %.2f N, carried at %.1f s: %.2f N\n", sand, sand * kGravity,
                 kRestTime, carried);
     EXPECT_NEAR(carried, sand * kGravity, 1e-2 * sand * kGravity);
@@ -92,16 +72,9 @@ TEST(SiloHopperSmall, HoldsItsWeightThenDischargesThroughTheOutlet) {
     EXPECT_GT(steady, 0.5 * after / (2.6 - opened));
 
     // The symmetry planes x = 0 and y = 0 are never crossed.
-    for (const auto& entry : fs::directory_iterator(out + "/frames")) {
-        if (entry.path().extension() != ".vtm") {
-            continue;
-        }
-        const auto block = read_named_block(entry.path().string(), "sand");
-        for (vtkIdType i = 0; block != nullptr && i < block->GetNumberOfPoints(); ++i) {
-            ASSERT_GE(block->GetPoint(i)[0], 0.0) << entry.path();
-            ASSERT_GE(block->GetPoint(i)[1], 0.0) << entry.path();
-        }
-    }
+    EXPECT_EQ(
+        count_frame_points(out, "sand", [](const double* p) { return p[0] < 0.0 || p[1] < 0.0; }),
+        0);
 }
 
 } // namespace

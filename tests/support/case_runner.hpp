@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <regex>
 #include <string>
+#include <vector>
 
 namespace grainload::testing {
 
@@ -26,6 +27,25 @@ inline CaseRun run_case_file(const std::string& case_file, const std::string& na
     run.out = test_folder(name);
     std::filesystem::remove_all(run.out);
     run.cli = run_cli("run '" + source_path(case_file) + "' --out '" + run.out + "' " + options,
+                      run.out + ".log");
+    return run;
+}
+
+/// Runs a case that meshes a Gmsh geometry: the case file and the files it reads (`files`,
+/// in the source tree's `folder`, the case file first) are copied to a fresh folder
+/// test_folder(name), so that the mesh Gmsh makes lands there and not in the source tree, and
+/// the copy is run into its `out` subfolder.
+inline CaseRun run_case_copy(const std::string& folder, const std::vector<std::string>& files,
+                             const std::string& name) {
+    const std::string dir = test_folder(name);
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    for (const std::string& file : files) {
+        std::filesystem::copy_file(source_path(folder + "/" + file), dir + "/" + file);
+    }
+    CaseRun run;
+    run.out = dir + "/out";
+    run.cli = run_cli("run '" + dir + "/" + files.front() + "' --out '" + run.out + "'",
                       run.out + ".log");
     return run;
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -77,6 +78,18 @@ inline std::vector<WallForceRow> wall_force_rows(const std::string& out) {
         rows.push_back(row);
     }
     return rows;
+}
+
+/// The vertical load the walls carry at `time` (s): minus the sum of force_z over the rows of
+/// wall_forces.csv at that output instant.
+inline double walls_load_z(const std::string& out, double time) {
+    double load = 0.0;
+    for (const WallForceRow& row : wall_force_rows(out)) {
+        if (std::abs(row.time - time) < 1e-9) {
+            load -= row.force[2];
+        }
+    }
+    return load;
 }
 
 } // namespace grainload::testing

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vtkCompositeDataSet.h>
 #include <vtkDataSet.h>
@@ -35,6 +36,23 @@ inline vtkSmartPointer<vtkDataSet> read_named_block(const std::string& vtm,
         }
     }
     return nullptr;
+}
+
+/// How many points of the block `name`, over every frame (.vtm) of the run in `out`, satisfy
+/// `outside(point)`: a check that holds in all frames expects 0.
+template <class Predicate>
+long count_frame_points(const std::string& out, const std::string& name, Predicate outside) {
+    long count = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(out + "/frames")) {
+        if (entry.path().extension() != ".vtm") {
+            continue;
+        }
+        const auto block = read_named_block(entry.path().string(), name);
+        for (vtkIdType i = 0; block != nullptr && i < block->GetNumberOfPoints(); ++i) {
+            count += outside(block->GetPoint(i)) ? 1 : 0;
+        }
+    }
+    return count;
 }
 
 } // namespace grainload::testing
