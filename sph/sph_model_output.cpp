@@ -1,0 +1,196 @@
+#include "sph/sph_model.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <memory>
+#include <utility>
+
+// SphModel's output: the frames' particle and wall blocks, the probes' rows and the
+// summary's figures.
+
+namespace grainload::sph {
+
+namespace {
+
+double pressure_of(const Voigt6& s) {
+    return -(s[0] + s[1] + s[2]) / 3.0;
+}
+
+double von_mises_of(const Voigt6& s) {
+    const double p = (s[0] + s[1] + s[2]) / 3.0;
+    const double dev = (s[0] - p) * (s[0] - p) + (s[1] - p) * (s[1] - p) + (s[2] - p) * (s[2] - p) +
+                       2.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
+    return std::sqrt(1.5 * dev);
+}
+
+} // namespace
+
+void SphModel::write_output_rows(double time) const {
+    if (output_directory_.empty() || !(time > last_row_time_)) {
+        return;
+    }
+    last_row_time_ = time;
+    if (!solver_->walls().empty()) {
+        if (!wall_writer_) {
+            wall_writer_ = std::make_unique<WallForceWriter>(output_directory_);
+        }
+        wall_writer_->write(time, solver_->walls());
+    }
+    if (!sinks_.empty()) {
+        sinks_.record(time);
+        sinks_.write_csv(output_directory_);
+    }
+    if (!wall_maps_.empty()) {
+        wall_maps_.record(time, output_directory_);
+    }
+    if (probes_.empty()) {
+        return;
+    }
+    if (!probe_writer_) {
+        std::filesystem::create_directories(output_directory_);
+        probe_writer_ = std::make_unique<std::ofstream>(output_directory_ + "/probes.csv");
+        *probe_writer_ << "time_s,probe,particle,stress_xx_Pa,stress_yy_Pa,stress_zz_Pa,"
+                          "stress_xy_Pa,von_mises_Pa,pressure_Pa,plastic_strain\n";
+    }
+    const auto& p = solver_->particles();
+    for (const auto& [name, i] : probes_) {
+        if (i < 0) { // its particle left through a sink
+            continue;
+        }
+        const Voigt6& s = p.stress[i];
+        *probe_writer_ << time << ',' << name << ',' << i << ',' << s[0] << ',' << s[1] << ','
+                       << s[2] << ',' << s[3] << ',' << von_mises_of(s) << ',' << pressure_of(s)
+                       << ',' << p.plastic_strain[i] << '\n';
+    }
+    probe_writer_->flush();
+}
+
+void SphModel::append_blocks(io::Frame& frame) const {
+    const auto& p = particles();
+    for (std::size_t b = 0; b < body_names_.size(); ++b) {
+        io::Block block;
+        block.name = body_names_[b];
+        io::FieldArray velocity{"velocity", 3, {}}, displacement{"displacement", 3, {}};
+        io::FieldArray stress{"stress", 6, {}}, pressure{"pressure", 1, {}};
+        io::FieldArray von_mises{"von_mises", 1, {}}, plastic{"plastic_strain", 1, {}};
+        io::FieldArray density{"density", 1, {}}, body{"body_id", 1, {}};
+        io::FieldArray material{"material_id", 1, {}};
+        for (std::size_t i = 0; i < p.position.size(); ++i) {
+            if (p.body_id[i] != static_cast<int>(b)) {
+                continue;
+            }
+            block.points.push_back(p.position[i]);
+            const Vec3 u = p.position[i] - initial_position_[i];
+            velocity.values.insert(velocity.values.end(), p.velocity[i].begin(),
+                                   p.velocity[i].end());
+            displacement.values.insert(displacement.values.end(), u.begin(), u.end());
+            stress.values.insert(stress.values.end(), p.stress[i].begin(), p.stress[i].end());
+            pressure.values.push_back(pressure_of(p.stress[i]));
+            von_mises.values.push_back(von_mises_of(p.stress[i]));
+            plastic.values.push_back(p.plastic_strain[i]);
+            density.values.push_back(p.density[i]);
+            body.values.push_back(p.body_id[i]);
+            material.values.push_back(p.material_id[i]);
+        }
+        block.point_arrays = {velocity, displacement, stress, pressure, von_mises,
+                              plastic,  density,      body,   material};
+        frame.blocks.push_back(std::move(block));
+    }
+    append_wall_blocks(frame);
+    // Frames are collected exactly at the output instants: wall loads and probes go with them.
+    if (solver_) {
+        write_output_rows(frame.time);
+    }
+}
+
+void SphModel::append_wall_blocks(io::Frame& frame) const {
+    if (!solver_ || solver_->walls().empty()) {
+        return;
+    }
+    const auto& p = solver_->particles();
+    for (const Wall& wall : solver_->walls()) {
+        io::Block block;
+        block.name = "wall_" + wall.name;
+        io::FieldArray velocity{"velocity", 3, {}}, body{"body_id", 1, {}};
+        for (Index k = wall.first; k < wall.first + wall.count; ++k) {
+            block.points.push_back(p.position[k]);
+            velocity.values.insert(velocity.values.end(), p.velocity[k].begin(),
+                                   p.velocity[k].end());
+            body.values.push_back(wall.body_id);
+        }
+        block.point_arrays = {velocity, body};
+        frame.blocks.push_back(std::move(block));
+    }
+}
+
+void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) const {
+    if (heap_) {
+        heap_->append_results(particles(), results);
+    }
+    if (audit_) {
+        sinks_.append_results(scene_mass(), sources_.created(), results);
+    }
+    wall_maps_.append_results(results);
+    if (settle_) {
+        // null (NaN) when the scene never settled.
+        results.push_back(
+            {"settle_time",
+             settle_->settled() ? settle_->settle_time() : std::numeric_limits<double>::quiet_NaN(),
+             "s", std::nullopt, ""});
+        results.push_back({"settle_peak_kinetic_energy", settle_->peak(), "J", std::nullopt, ""});
+    }
+    if (solver_) {
+        results.push_back({"kinetic_energy", solver_->kinetic_energy(), "J", std::nullopt, ""});
+        results.push_back({"internal_energy", solver_->internal_energy(), "J", std::nullopt, ""});
+        const EnergyLedger& ledger = solver_->energy_ledger();
+        results.push_back({"gravity_work", ledger.gravity_work(), "J", std::nullopt, ""});
+        results.push_back({"moving_wall_work", ledger.wall_work(), "J", std::nullopt, ""});
+        if (audit_) {
+            results.push_back({"removed_energy", ledger.removed_held(), "J", std::nullopt, ""});
+            results.push_back(
+                {"removed_contact_energy", ledger.removed_contact(), "J", std::nullopt, ""});
+        }
+        if (!sources_.empty()) {
+            results.push_back({"created_energy", ledger.created_held(), "J", std::nullopt, ""});
+            results.push_back(
+                {"created_contact_energy", ledger.created_contact(), "J", std::nullopt, ""});
+        }
+        const double contact = solver_->contact_energy();
+        results.push_back({"contact_energy", contact, "J", std::nullopt, ""});
+        // JSON writes a non-finite figure as null: the statement says which entry made it so.
+        const double held = solver_->held_energy();
+        const auto unbalanced = ledger.non_finite(held, contact);
+        results.push_back({"energy_balance_error", ledger.balance_error(held, contact), "",
+                           std::nullopt, unbalanced ? "not finite: " + *unbalanced : ""});
+        if (!solver_->options().friction.empty()) {
+            results.push_back({"wall_friction_work", solver_->wall_contact().friction_work(), "J",
+                               std::nullopt, ""});
+        }
+        for (const Wall& wall : solver_->walls()) {
+            for (int a = 0; a < 3; ++a) {
+                const std::string axis(1, static_cast<char>('x' + a));
+                results.push_back(
+                    {"wall_" + wall.name + "_force_" + axis, wall.force[a], "N", std::nullopt, ""});
+            }
+        }
+        return;
+    }
+    // Without interactions every particle is a point mass in uniform gravity: its exact path is
+    // x0 + v0 t + g t^2 / 2, the reference for the whole pipeline (case free_fall).
+    double max_error = 0.0;
+    double mean_z = 0.0;
+    double mean_z_exact = 0.0;
+    const auto n = particles_.position.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec3 exact = initial_position_[i] + t * initial_velocity_[i] + 0.5 * t * t * gravity_;
+        max_error = std::max(max_error, (particles_.position[i] - exact).norm());
+        mean_z += particles_.position[i].z() / static_cast<double>(n);
+        mean_z_exact += exact.z() / static_cast<double>(n);
+    }
+    results.push_back({"centre_height", mean_z, "m", mean_z_exact, "z0 + v0 t + g t^2/2"});
+    results.push_back({"max_position_error", max_error, "m", std::nullopt, ""});
+}
+
+} // namespace grainload::sph
