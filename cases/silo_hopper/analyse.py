@@ -26,7 +26,6 @@ summary.json. Writes OUT/silo_hopper_pressure.png.
 Usage: /usr/bin/python3 cases/silo_hopper/analyse.py OUT
 """
 import csv
-import glob
 import json
 import math
 import os
@@ -37,8 +36,10 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-import vtk  # noqa: E402
 from vtk.util.numpy_support import vtk_to_numpy  # noqa: E402
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+from vtk_frames import blocks, frames_of  # noqa: E402
 
 RHO, G, R, MU, PHI = 1600.0, 9.81, 0.2, 0.4, math.radians(30.0)  # the cases' sand and silo
 OUTLET = 0.1  # the outlet in effect (drawn 0.1 m + 4h)
@@ -57,20 +58,12 @@ def ring_means(path, column):
 
 
 def sand_points(out, time):
-    """The sand particles' positions in the frame at `time`."""
-    with open(os.path.join(out, glob.glob1(out, "*.pvd")[0])) as f:
-        text = f.read()
-    frames = [(float(part.split('"')[0]), part.split('file="')[1].split('"')[0])
-              for part in text.split('timestep="')[1:]]
-    _, name = min(frames, key=lambda frame: abs(frame[0] - time))
-    reader = vtk.vtkXMLMultiBlockDataReader()
-    reader.SetFileName(os.path.join(out, name))
-    reader.Update()
-    blocks = reader.GetOutput()
-    for i in range(blocks.GetNumberOfBlocks()):
-        if blocks.GetMetaData(i).Get(vtk.vtkCompositeDataSet.NAME()) == "sand":
-            return vtk_to_numpy(blocks.GetBlock(i).GetPoints().GetData())
-    raise SystemExit("no sand block in " + name)
+    """The sand particles' positions in the frame nearest `time`."""
+    _, vtm = min(frames_of(out), key=lambda frame: abs(frame[0] - time))
+    for name, block in blocks(vtm):
+        if name == "sand":
+            return vtk_to_numpy(block.GetPoints().GetData())
+    raise SystemExit("no sand block in " + vtm)
 
 
 def janssen(depth, k, r_s, mu, gamma):
