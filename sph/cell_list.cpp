@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace grainload::sph {
@@ -32,16 +33,24 @@ void CellList::build(std::span<const Vec3> positions, double search_radius, int 
     }
     const auto n = static_cast<Index>(positions.size());
     // The grid spans the finite positions; a non-finite one goes to the nearest cell.
-    Vec3 lower = Vec3::Constant(0.0);
-    Vec3 upper = Vec3::Constant(0.0);
-    bool first = true;
-    for (const Vec3& x : positions) {
+    // Minima and maxima are exact in any order, so the threads' reduction gives the serial box.
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    double lx = kInf, ly = kInf, lz = kInf, ux = -kInf, uy = -kInf, uz = -kInf;
+#pragma omp parallel for schedule(static) reduction(min : lx, ly, lz) reduction(max : ux, uy, uz)
+    for (Index i = 0; i < n; ++i) {
+        const Vec3& x = positions[i];
         if (x.allFinite()) {
-            lower = first ? x : Vec3(lower.cwiseMin(x));
-            upper = first ? x : Vec3(upper.cwiseMax(x));
-            first = false;
+            lx = std::min(lx, x[0]);
+            ly = std::min(ly, x[1]);
+            lz = std::min(lz, x[2]);
+            ux = std::max(ux, x[0]);
+            uy = std::max(uy, x[1]);
+            uz = std::max(uz, x[2]);
         }
     }
+    const bool none = !(lx <= ux);
+    const Vec3 lower = none ? Vec3::Zero() : Vec3(lx, ly, lz);
+    const Vec3 upper = none ? Vec3::Zero() : Vec3(ux, uy, uz);
     origin_ = lower;
     cell_size_ = search_radius;
     const double budget = kMaxCellsPerParticle * static_cast<double>(std::max<Index>(n, 1)) + 27.0;
@@ -74,35 +83,48 @@ void CellList::build_subset(std::span<const Vec3> positions, const CellList& lik
 
 void CellList::bin(std::span<const Vec3> positions, std::span<const char> skip) {
     const auto n = static_cast<Index>(positions.size());
-    auto binned = [&](Index i) { return skip.empty() || !skip[i]; };
-    auto cell_of = [&](Index i) {
-        const auto c = cell_coordinates(positions[i]);
-        return (c[2] * cells_[1] + c[1]) * cells_[0] + c[0];
-    };
+    // The cells are computed in parallel (the floor and division are most of the binning) and
+    // kept only while binning: 8 bytes per particle less between builds. The counting sort
+    // itself stays serial, so the order within a cell, and the neighbour lists, are the serial
+    // ones.
+    constexpr Index kSkipped = -1;
+    std::vector<Index> cell(static_cast<std::size_t>(n));
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+        if (skip.empty() || !skip[i]) {
+            const auto c = cell_coordinates(positions[i]);
+            cell[i] = (c[2] * cells_[1] + c[1]) * cells_[0] + c[0];
+        } else {
+            cell[i] = kSkipped;
+        }
+    }
     cell_start_.assign(static_cast<std::size_t>(cell_count() + 1), 0);
     Index count = 0;
     for (Index i = 0; i < n; ++i) {
-        if (binned(i)) {
-            ++cell_start_[cell_of(i) + 1];
+        if (cell[i] != kSkipped) {
+            ++cell_start_[cell[i] + 1];
             ++count;
         }
     }
     for (Index c = 0; c < cell_count(); ++c) {
         cell_start_[c + 1] += cell_start_[c];
     }
-    // The cells are recomputed rather than stored: 8 bytes per particle less between builds.
     sorted_.resize(static_cast<std::size_t>(count));
     std::vector<Index> fill(cell_start_.begin(), cell_start_.end() - 1);
     for (Index i = 0; i < n; ++i) {
-        if (binned(i)) {
-            sorted_[fill[cell_of(i)]++] = i;
+        if (cell[i] != kSkipped) {
+            sorted_[fill[cell[i]]++] = i;
         }
     }
     for (int axis = 0; axis < 3; ++axis) {
         coordinates_[axis].resize(static_cast<std::size_t>(count));
-        for (Index k = 0; k < count; ++k) {
-            coordinates_[axis][k] = positions[sorted_[k]][axis];
-        }
+    }
+#pragma omp parallel for schedule(static)
+    for (Index k = 0; k < count; ++k) {
+        const Vec3& x = positions[sorted_[k]];
+        coordinates_[0][k] = x[0];
+        coordinates_[1][k] = x[1];
+        coordinates_[2][k] = x[2];
     }
 }
 

@@ -59,14 +59,30 @@ EscapeWatch::check(const ParticleSet& particles,
     }
     // Walls where they are now widen the box by the same margin (their own extent at the start
     // is in it already) and lend their speed to v0.
-    Box walls;
+    // Checked every step, so reduced over the threads (minima and maxima are exact in any
+    // order).
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    double lx = kInf, ly = kInf, lz = kInf, ux = -kInf, uy = -kInf, uz = -kInf;
     double v0 = initial_speed_;
-    for (Index i = 0; i < particles.size(); ++i) {
+    const Index n = particles.size();
+#pragma omp parallel for schedule(static) reduction(min                                            \
+                                                    : lx, ly, lz) reduction(max                    \
+                                                                            : ux, uy, uz, v0)
+    for (Index i = 0; i < n; ++i) {
         if (particles.is_wall(i)) {
-            walls.add(particles.position[i]);
+            const Vec3& x = particles.position[i];
+            lx = std::min(lx, x[0]);
+            ly = std::min(ly, x[1]);
+            lz = std::min(lz, x[2]);
+            ux = std::max(ux, x[0]);
+            uy = std::max(uy, x[1]);
+            uz = std::max(uz, x[2]);
             v0 = std::max(v0, particles.velocity[i].norm());
         }
     }
+    Box walls;
+    walls.lower = Vec3(lx, ly, lz);
+    walls.upper = Vec3(ux, uy, uz);
     Vec3 lower = lower_;
     Vec3 upper = upper_;
     if (!walls.empty()) {
@@ -77,34 +93,44 @@ EscapeWatch::check(const ParticleSet& particles,
     for (int a = 0; a < dimension_; ++a) {
         height = std::max(height, upper[a] - lower[a]);
     }
-    for (Index i = 0; i < particles.size(); ++i) {
-        if (particles.is_wall(i)) {
-            continue;
-        }
+    // How far particle i lies outside the box, and how fast it leaves it (0, 0 inside).
+    auto outside_of = [&](Index i, double& outward) {
         const Vec3& x = particles.position[i];
         Vec3 outside = Vec3::Zero();
         for (int a = 0; a < dimension_; ++a) {
             outside[a] = x[a] - std::clamp(x[a], lower[a], upper[a]);
         }
         const double distance = outside.norm();
-        if (!(distance > 0.0)) {
-            continue;
+        outward = distance > 0.0 ? particles.velocity[i].dot(outside / distance) : 0.0;
+        return distance;
+    };
+    auto limit_at = [&](double distance) {
+        return kEscapeSpeedFactor * std::sqrt(v0 * v0 + 2.0 * gravity_ * (height + distance));
+    };
+    // The lowest escaping index, as the serial scan would name it.
+    Index first = n;
+#pragma omp parallel for schedule(static) reduction(min : first)
+    for (Index i = 0; i < n; ++i) {
+        double outward = 0.0;
+        const double distance = particles.is_wall(i) ? 0.0 : outside_of(i, outward);
+        if (distance > 0.0 && outward > limit_at(distance)) {
+            first = std::min(first, i);
         }
-        const double outward = particles.velocity[i].dot(outside / distance);
-        const double limit =
-            kEscapeSpeedFactor * std::sqrt(v0 * v0 + 2.0 * gravity_ * (height + distance));
-        if (outward > limit) {
-            std::ostringstream out;
-            out << "particle " << i << " (body " << body_name(particles.body_id[i])
-                << ") escaped the scene: at " << vector_text(x, dimension_) << " m, " << distance
-                << " m outside the scene box " << vector_text(lower, dimension_) << " to "
-                << vector_text(upper, dimension_) << " m, moving outward at " << outward
-                << " m/s, faster than the " << limit
-                << " m/s a fall from the top of the scene could give it (2 sqrt(v0^2 + 2 g (H + "
-                   "d)), v0 = "
-                << v0 << " m/s, H = " << height << " m)";
-            return out.str();
-        }
+    }
+    if (first < n) {
+        double outward = 0.0;
+        const double distance = outside_of(first, outward);
+        const Vec3& x = particles.position[first];
+        std::ostringstream out;
+        out << "particle " << first << " (body " << body_name(particles.body_id[first])
+            << ") escaped the scene: at " << vector_text(x, dimension_) << " m, " << distance
+            << " m outside the scene box " << vector_text(lower, dimension_) << " to "
+            << vector_text(upper, dimension_) << " m, moving outward at " << outward
+            << " m/s, faster than the " << limit_at(distance)
+            << " m/s a fall from the top of the scene could give it (2 sqrt(v0^2 + 2 g (H + "
+               "d)), v0 = "
+            << v0 << " m/s, H = " << height << " m)";
+        return out.str();
     }
     return std::nullopt;
 }

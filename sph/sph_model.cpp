@@ -317,21 +317,30 @@ void SphModel::advance(double t, double dt) {
 
 std::optional<std::string> SphModel::diagnose() const {
     const auto& p = particles();
-    for (std::size_t i = 0; i < p.position.size(); ++i) {
-        // The internal energy too: no other field reads it, so a NaN there (a NaN heat) would
-        // reach the energy books unseen.
-        const char* bad = !p.position[i].allFinite()                            ? "position"
-                          : !p.velocity[i].allFinite()                          ? "velocity"
-                          : !p.stress[i].allFinite()                            ? "stress"
-                          : !std::isfinite(p.density[i]) || p.density[i] <= 0.0 ? "density"
-                          : !std::isfinite(p.internal_energy[i])                ? "internal energy"
-                                                                                : nullptr;
-        if (bad != nullptr) {
-            std::ostringstream out;
-            out << "particle " << i << " (body " << body_name(p.body_id[i])
-                << ") has a non-finite or non-physical " << bad;
-            return out.str();
+    // The internal energy too: no other field reads it, so a NaN there (a NaN heat) would
+    // reach the energy books unseen.
+    auto fault = [&p](std::size_t i) -> const char* {
+        return !p.position[i].allFinite()                            ? "position"
+               : !p.velocity[i].allFinite()                          ? "velocity"
+               : !p.stress[i].allFinite()                            ? "stress"
+               : !std::isfinite(p.density[i]) || p.density[i] <= 0.0 ? "density"
+               : !std::isfinite(p.internal_energy[i])                ? "internal energy"
+                                                                     : nullptr;
+    };
+    // Every step, so scanned by all threads; the lowest faulty index is the serial scan's.
+    const std::size_t n = p.position.size();
+    std::size_t first = n;
+#pragma omp parallel for schedule(static) reduction(min : first)
+    for (std::size_t i = 0; i < n; ++i) {
+        if (fault(i) != nullptr) {
+            first = std::min(first, i);
         }
+    }
+    if (first < n) {
+        std::ostringstream out;
+        out << "particle " << first << " (body " << body_name(p.body_id[first])
+            << ") has a non-finite or non-physical " << fault(first);
+        return out.str();
     }
     if (auto escape = escape_watch_.check(p, [this](int body) { return body_name(body); })) {
         return escape;
