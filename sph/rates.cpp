@@ -67,7 +67,9 @@ namespace {
 /// that exchange stress (same body, neither a wall particle): one load per neighbour.
 std::vector<int> continuum_keys(const ParticleSet& p) {
     std::vector<int> key(static_cast<std::size_t>(p.size()));
-    for (Index i = 0; i < p.size(); ++i) {
+    const Index n = p.size();
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
         key[i] = p.wall_id[i] < 0 ? p.body_id[i] : static_cast<int>(-2 - i);
     }
     return key;

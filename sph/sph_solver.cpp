@@ -274,8 +274,11 @@ void SphSolver::compute_forces(double dt) {
     if (images_attached_) {
         fold_wall_image_loads();
     }
-    for (Wall& wall : walls_) {
-        accumulate_wall_load(particles_, wall);
+    // One wall per thread: each wall's sums keep their serial order.
+    const auto wall_count = static_cast<std::ptrdiff_t>(walls_.size());
+#pragma omp parallel for schedule(dynamic, 1)
+    for (std::ptrdiff_t w = 0; w < wall_count; ++w) {
+        accumulate_wall_load(particles_, walls_[static_cast<std::size_t>(w)]);
     }
     hold_clamped();
     forces_valid_ = true;
