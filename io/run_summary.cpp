@@ -14,8 +14,8 @@ double RunSummary::point_steps_per_second() const {
     if (!(wall_time > 0.0)) {
         return 0.0;
     }
-    if (material_point_steps > 0.0) {
-        return material_point_steps / wall_time;
+    if (material_point_steps) {
+        return *material_point_steps / wall_time;
     }
     return static_cast<double>(material_points) * static_cast<double>(steps) / wall_time;
 }

@@ -30,9 +30,10 @@ struct RunSummary {
     std::optional<double> estimated_steps;
     std::optional<double> estimated_wall_time; ///< s
 
-    /// Material points summed over the steps this process ran (0: not counted); when counted,
-    /// the rate is this over wall_time, which a discharge (points leaving) needs.
-    double material_point_steps = 0.0;
+    /// Material points summed over the steps this process ran (empty: not counted); when
+    /// counted, the rate is this over wall_time, which a discharge (points leaving) needs, and
+    /// a restart that ran no step (restarted from its final checkpoint) has a rate of 0.
+    std::optional<double> material_point_steps;
     /// material_point_steps / wall_time, or material_points * steps / wall_time.
     double point_steps_per_second() const;
 };

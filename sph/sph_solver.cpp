@@ -86,6 +86,14 @@ void SphSolver::restart(std::span<const Vec3> neighbour_reference, bool forces_v
     rebuild_neighbours(neighbour_reference.empty() ? std::span<const Vec3>(particles_.position)
                                                    : neighbour_reference);
     forces_valid_ = forces_valid;
+    // The walls' loads are sums of the wall particles' restored accelerations: summed again
+    // here, in the order of compute_forces, a restart that takes no step (a run restarted from
+    // its final checkpoint) reports the loads the run ended with, not zero.
+    if (forces_valid) {
+        for (Wall& wall : walls_) {
+            accumulate_wall_load(particles_, wall);
+        }
+    }
 }
 
 std::span<const Vec3> SphSolver::neighbour_reference() const {

@@ -44,7 +44,8 @@ class SphSolver {
     /// positions it was last built from (`neighbour_reference`; empty: the current positions)
     /// and, unless `forces_valid`, the forces. A checkpoint written after a step holds that
     /// step's accelerations, which were computed from the mid-step velocity; recomputing them
-    /// from the end-of-step velocity would change the continuation at round-off level.
+    /// from the end-of-step velocity would change the continuation at round-off level. With
+    /// valid forces the walls' loads are summed from the restored accelerations.
     void restart(std::span<const Vec3> neighbour_reference, bool forces_valid);
     bool forces_valid() const { return forces_valid_; }
     /// Take the particles with gone[i] != 0 out of the scene (sph/particle_removal.hpp), between

@@ -1,6 +1,7 @@
 // A run killed with SIGKILL and restarted from its checkpoint, and restarts from checkpoints
 // that are truncated, corrupted or of another case (issue 18, section 6).
 
+#include "support/case_runner.hpp"
 #include "support/cli_runner.hpp"
 #include "support/test_folder.hpp"
 
@@ -152,6 +153,26 @@ TEST(InterruptedRun, KilledAtARandomMomentAndRestartedReproducesTheUninterrupted
 }
 
 /// Runs the case to 0.05 s in `out` and returns its checkpoint's bytes.
+std::string short_run(const std::string& out);
+
+// A run restarted from the checkpoint of its last instant (the kill of the test above landing
+// after the run had finished) takes no step; its summary must still report the figures the run
+// ended with. It reported the walls' loads as 0 (they were sums formed in a step, not restored)
+// and 7.5e8 particle-steps per second (the whole run's steps over the restart's 0.2 ms).
+TEST(InterruptedRun, RestartedFromItsFinalCheckpointItReportsWhatTheRunEndedWith) {
+    const std::string out = fresh_directory("finished_run");
+    short_run(out);
+    const std::string finished = reproducible_summary(out + "/summary.json");
+    ASSERT_NE(finished.find("wall_floor_force_y"), std::string::npos) << finished;
+    const auto restarted = run_cli(quoted(kRunArguments) + " --set 'case.end_time=0.05 s' --out '" +
+                                       out + "' --restart '" + out + "/checkpoint.bin'",
+                                   out + ".restart.log");
+    ASSERT_EQ(restarted.exit_code, 0) << restarted.output;
+    EXPECT_EQ(reproducible_summary(out + "/summary.json"), finished);
+    // No step ran in the restarted process, so it moved no particle.
+    EXPECT_EQ(summary_number(read_file(out + "/summary.json"), "particle_steps_per_second"), 0.0);
+}
+
 std::string short_run(const std::string& out) {
     const auto result = run_cli(
         quoted(kRunArguments) + " --set 'case.end_time=0.05 s' --out '" + out + "'", out + ".log");
