@@ -176,6 +176,7 @@ void ShellModel::solve_step(double t, double dt) {
         }
         failure_ = why.str();
     }
+    totals_.add(entry.load_factor, entry.report);
     log_.push_back(std::move(entry));
     reactions_ = analysis_->reactions();
 }
@@ -335,19 +336,13 @@ void ShellModel::append_results(double, std::vector<io::ResultFigure>& results) 
         figure.source = m.source;
         results.push_back(figure);
     }
-    if (!log_.empty()) {
-        const StepReport& last = log_.back().report;
-        results.push_back({"fem_load_factor", log_.back().load_factor, "", std::nullopt, ""});
-        results.push_back({"fem_newton_iterations_last_step", static_cast<double>(last.log.size()),
-                           "", std::nullopt, last.solver});
+    if (totals_.any) {
+        results.push_back({"fem_load_factor", totals_.last_load_factor, "", std::nullopt, ""});
+        results.push_back({"fem_newton_iterations_last_step",
+                           static_cast<double>(totals_.last_iterations), "", std::nullopt,
+                           totals_.last_solver});
         // Which factorisation ran: steps whose last solve went through each solver.
-        std::map<std::string, int> solvers;
-        for (const ShellStepLog& entry : log_) {
-            if (!entry.report.solver.empty()) {
-                ++solvers[entry.report.solver];
-            }
-        }
-        for (const auto& [solver, steps] : solvers) {
+        for (const auto& [solver, steps] : totals_.steps_by_solver) {
             results.push_back({"fem_steps_solved_by_" + solver_identifier(solver),
                                static_cast<double>(steps), "", std::nullopt, solver});
         }
@@ -392,6 +387,7 @@ void ShellModel::write_logs(const std::string& directory) const {
 
 void ShellModel::write_checkpoint(std::ostream& out) const {
     analysis_->write_state(out);
+    totals_.write(out);
     if (dynamic_) {
         const auto& v = newmark_->velocity();
         const auto& a = newmark_->acceleration();
@@ -402,6 +398,7 @@ void ShellModel::write_checkpoint(std::ostream& out) const {
 
 void ShellModel::read_checkpoint(std::istream& in) {
     analysis_->read_state(in);
+    totals_.read(in);
     if (dynamic_) {
         std::vector<double> v, a;
         const auto dofs = static_cast<std::size_t>(newmark_->velocity().size());

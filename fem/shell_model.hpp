@@ -2,6 +2,7 @@
 
 #include "fem/newmark_integrator.hpp"
 #include "fem/shell_case_reader.hpp"
+#include "fem/shell_step_totals.hpp"
 #include "io/scene_settings.hpp"
 #include "io/stepper.hpp"
 #include "materials/material_library.hpp"
@@ -85,7 +86,8 @@ class ShellModel final : public io::Stepper {
     double time_step_ = 0.0; ///< dynamic analysis: largest implicit step [s]
     std::unique_ptr<NewmarkIntegrator> newmark_;
     int increments_per_step_ = 1;
-    std::vector<ShellStepLog> log_;
+    std::vector<ShellStepLog> log_;        ///< this process's steps (the convergence CSV's rows)
+    ShellStepTotals totals_;               ///< the whole run's, through restarts (summary.json)
     mutable std::size_t logged_steps_ = 0; ///< steps of log_ already in the convergence CSV
     bool restarted_ = false;
     Eigen::VectorXd reactions_;
