@@ -30,7 +30,8 @@ def hoop_and_meridional(shell, axis):
         first = corners[1] - corners[0]
         round_axis = np.cross(unit_axis, centres[cell])
         # The first edge runs round the axis (|cos| > 0.7) or along a meridian (|cos| near 0).
-        along_hoop = abs(first @ round_axis) > 0.7 * np.linalg.norm(first) * np.linalg.norm(round_axis)
+        scale = np.linalg.norm(first) * np.linalg.norm(round_axis)
+        along_hoop = abs(first @ round_axis) > 0.7 * scale
         hoop[cell] = membrane[cell, 0] if along_hoop else membrane[cell, 1]
         meridional[cell] = membrane[cell, 1] if along_hoop else membrane[cell, 0]
     return centres, hoop, meridional, pressure
