@@ -1,8 +1,8 @@
 """The frames of a grainload run: the .pvd index of its output directory and the named blocks
 of each frame's .vtm multiblock (VTK's Python bindings, python3-vtk9).
 
-scripts/render_frames.py, cases/hopper_wagon/analyse_discharge.py and cases/silo_hopper/analyse.py
-read their frames here.
+scripts/render_frames.py, cases/hopper_wagon/analyse_discharge.py, cases/silo_hopper/analyse.py and
+cases/silo_hopper/analyse_shell.py read their frames here.
 """
 
 import os

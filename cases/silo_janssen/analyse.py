@@ -22,6 +22,9 @@ import numpy as np  # noqa: E402
 import vtk  # noqa: E402
 from vtk.util.numpy_support import vtk_to_numpy  # noqa: E402
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+from shell_membrane import hoop_and_meridional  # noqa: E402
+
 RHO, G, R, SPACING, BIN = 1600.0, 9.81, 0.15, 0.025, 0.05  # the case's sand, wall radius
 
 
@@ -46,21 +49,14 @@ def array(block, name):
 
 
 def hoop_force_table(shells):
-    """Membrane theory of a cylinder under wall pressure: the hoop force N_theta = p_h R (the
-    elements' first membrane axis runs along the hoop), and the axial force at the base carries
-    the wall's friction load: N_y = -F_wall / (2 pi R)."""
+    """Membrane theory of a cylinder under wall pressure: the hoop force N_theta = p_h R, and the
+    axial force at the base carries the wall's friction load: N_y = -F_wall / (2 pi R). Which of
+    the elements' membrane axes runs round the hoop is read from their first edges
+    (scripts/shell_membrane.py)."""
     print(" y m   N_theta N/m  p_h R N/m  N_y N/m")
-    centres, hoop, axial, pressure = [], [], [], []
-    for shell in shells:
-        filt = vtk.vtkCellCenters()
-        filt.SetInputData(shell)
-        filt.Update()
-        centres.append(vtk_to_numpy(filt.GetOutput().GetPoints().GetData())[:, 1])
-        membrane = vtk_to_numpy(shell.GetCellData().GetArray("membrane_force"))
-        hoop.append(membrane[:, 0])
-        axial.append(membrane[:, 1])
-        pressure.append(vtk_to_numpy(shell.GetCellData().GetArray("contact_pressure")))
-    y, hoop, axial, pressure = (np.concatenate(a) for a in (centres, hoop, axial, pressure))
+    parts = [hoop_and_meridional(shell, 1) for shell in shells]
+    centres, hoop, axial, pressure = (np.concatenate([part[k] for part in parts]) for k in range(4))
+    y = centres[:, 1]
     for y0 in np.arange(0.0, y.max(), BIN):
         inside = (y >= y0) & (y < y0 + BIN)
         print(f"{y0 + BIN / 2:5.3f} {hoop[inside].mean():10.2f} {pressure[inside].mean() * R:10.2f} "
