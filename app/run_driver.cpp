@@ -69,6 +69,7 @@ io::RunSummary make_summary(const Scene& scene, const CommandLine& line, const R
     io::RunSummary summary;
     summary.case_name = scene.settings.name;
     summary.case_file = line.input;
+    summary.overrides = line.overrides;
     summary.threads = omp_get_max_threads();
     summary.wall_time = wall_time;
     summary.simulated_time = clock.t;

@@ -87,6 +87,11 @@ void write_run_summary(const RunSummary& summary, const std::string& path) {
         out << "{\n"
             << "  \"case\": " << quoted(summary.case_name) << ",\n"
             << "  \"case_file\": " << quoted(summary.case_file) << ",\n"
+            << "  \"overrides\": [";
+        for (std::size_t i = 0; i < summary.overrides.size(); ++i) {
+            out << (i == 0 ? "" : ", ") << quoted(summary.overrides[i]);
+        }
+        out << "],\n"
             << "  \"version\": " << quoted(kVersion) << ",\n"
             << "  \"git_hash\": " << quoted(kGitHash) << ",\n"
             << "  \"status\": " << quoted(summary.status) << ",\n";

@@ -12,6 +12,9 @@ namespace grainload::io {
 struct RunSummary {
     std::string case_name;
     std::string case_file;
+    /// The command line's --set key=value, in order: with case_file, what was run (the
+    /// trade tool's and the analysis scripts' variants differ only here).
+    std::vector<std::string> overrides;
     int threads = 1;
     double wall_time = 0.0; ///< s
     double simulated_time = 0.0;

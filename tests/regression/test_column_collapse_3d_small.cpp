@@ -103,6 +103,10 @@ TEST(ColumnCollapse3dSmall, TheMaterialModelSwitchesFromTheCommandLine) {
     ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
     const std::string summary = read_file(run.out + "/summary.json");
     EXPECT_NE(summary.find("\"material sand\": \"drucker_prager\""), std::string::npos) << summary;
+    // ... and the override that made it so, as it was given (JSON-escaped quotes).
+    EXPECT_NE(summary.find("\"overrides\": [\"material[0].model=\\\"drucker_prager\\\"\"]"),
+              std::string::npos)
+        << summary;
     EXPECT_EQ(result_value(summary, "heap_particles") +
                   result_value(summary, "heap_particles_outside"),
               kParticles);
