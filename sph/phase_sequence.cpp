@@ -93,6 +93,7 @@ PhaseSequence::Phase read_phase(const io::CaseTable& table, double previous_end)
     if (phase.end == End::discharged) {
         phase.discharged_mass = table.positive_quantity(
             "discharged_mass", discharged_mass_dimension(table.spatial_dimension()));
+        phase.mass_unit = table.spatial_dimension() == 2 ? "kg/m" : "kg";
     } else if (table.has("discharged_mass")) {
         table.fail("discharged_mass", "applies to end = \"discharged\" only");
     }
@@ -194,8 +195,8 @@ std::string PhaseSequence::end_reason(const Phase& phase, double discharged) con
                << " of its peak " << phase.watch.peak() << " J";
         break;
     case End::discharged:
-        reason << "discharged: " << discharged - phase.discharged_at_start
-               << " kg through the sinks since it began";
+        reason << "discharged: " << discharged - phase.discharged_at_start << ' ' << phase.mass_unit
+               << " through the sinks since it began";
         break;
     case End::run:
         break;

@@ -43,7 +43,8 @@ class PhaseSequence {
         End end = End::run;
         double end_time = std::numeric_limits<double>::infinity(); ///< End::time, as stated
         double discharged_mass = 0.0;                              ///< End::discharged
-        SettleWatch watch;                                         ///< End::settled
+        const char* mass_unit = "kg"; ///< of discharged_mass: "kg/m" in plane strain
+        SettleWatch watch;            ///< End::settled
         // State (checkpointed):
         double start = std::numeric_limits<double>::infinity(); ///< +inf while unknown
         double finish = std::numeric_limits<double>::infinity();

@@ -1,4 +1,5 @@
 #include "support/case_runner.hpp"
+#include "support/csv_rows.hpp"
 
 #include <cstdio>
 #include <filesystem>
@@ -159,6 +160,68 @@ TEST(Phases, RestartAcrossPhaseBoundariesReproducesTheRun) {
         ASSERT_FALSE(whole.empty() || split.empty());
         EXPECT_TRUE(whole == split) << name << ": " << whole.end << " against " << split.end;
     }
+}
+
+// The two conditions in sequence on the CI closure hopper
+// (cases/hopper_discharge/hopper_closure_small.toml): `settle` ends when the fill settles and
+// removes the gate (remove_at = "phase:discharge"), `discharge` ends once the sink has taken
+// 20 kg/m, and the closer slides in from the start of `closed` (its history counted from
+// there). The sink's own discharge.csv places the end independently: every output instant
+// before it shows less than 20 kg/m, every one from it on at least that (the phase ends with
+// the first step whose total reaches it); and the closer covers the orifice 0.1 s after that
+// start, so the outflow ends: what leaves in the last 0.2 s of the run (the closer shut 0.3 s
+// before) is nothing. Measured: settled at 0.404 s, 21 kg/m out at 0.702 s (particles of
+// 0.75 kg/m), the closer across the orifice at 0.812 s, 36 kg/m out from 0.9 s on.
+TEST(Phases, DischargedMassEndsAPhaseAndTheCloserFollows) {
+    const std::string file = test_folder("phases_close") + ".toml";
+    std::string text = read_file(source_path("cases/hopper_discharge/hopper_closure_small.toml"));
+    text = std::regex_replace(text, std::regex("remove_at = \"0.4 s\"[^\n]*\n"),
+                              "remove_at = \"phase:discharge\"\n");
+    const std::string closer =
+        R"(velocity_history = [["0 s", "0 0 m/s"], ["1.2 s", "0 0 m/s"], ["1.205 s", "-5 0 m/s"],
+                    ["1.305 s", "-5 0 m/s"], ["1.31 s", "0 0 m/s"], ["10 s", "0 0 m/s"]])";
+    const auto at = text.find(closer);
+    ASSERT_NE(at, std::string::npos) << "the closure case's closer history changed";
+    text.replace(at, closer.size(),
+                 R"(history_start = "phase:closed"
+velocity_history = [["0 s", "0 0 m/s"], ["0.005 s", "-5 0 m/s"], ["0.105 s", "-5 0 m/s"],
+                    ["0.11 s", "0 0 m/s"]])");
+    std::ofstream(file) << text << R"(
+[[phase]]
+name = "settle"
+end = "settled"
+kinetic_energy_fraction = 1e-3
+
+[[phase]]
+name = "discharge"
+end = "discharged"
+discharged_mass = "20 kg/m"
+
+[[phase]]
+name = "closed"
+)";
+    const std::string out = test_folder("phases_close");
+    const auto run = run_to(file, out, "1.5 s");
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    const std::string summary = read_file(out + "/summary.json");
+    const PhaseText discharge = phase_record(summary, "discharge");
+    const PhaseText closed = phase_record(summary, "closed");
+    ASSERT_FALSE(discharge.empty() || closed.empty());
+    EXPECT_EQ(discharge.ended_by, "\"discharged\"");
+    EXPECT_EQ(closed.start, discharge.end);
+    EXPECT_EQ(result_value(summary, "wall_gate_force_y"), 0.0) << "the gate left";
+    const double end = std::stod(discharge.end);
+    constexpr double kMass = 20.0; // kg/m
+    const auto rows = discharge_rows(out);
+    double last = 0.0;
+    for (const auto& [time, mass] : rows) {
+        EXPECT_EQ(mass >= kMass, time >= end) << "t = " << time << " s: " << mass << " kg/m";
+        if (time <= 1.3 + 1e-9) {
+            last = mass;
+        }
+    }
+    ASSERT_LT(end + 0.11, 1.3) << "the closer shuts before the last 0.2 s";
+    EXPECT_EQ(rows.back().second, last) << "nothing left after the closure";
 }
 
 } // namespace
