@@ -81,6 +81,7 @@ io::RunSummary make_summary(const Scene& scene, const CommandLine& line, const R
         stepper->append_results(clock.t, summary.results);
         stepper->describe_model(summary.model);
         stepper->append_hints(summary.hints);
+        stepper->append_phases(summary.phases);
     }
     io::apply_figure_references(scene.references, summary.results);
     return summary;

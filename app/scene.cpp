@@ -36,6 +36,10 @@ std::unique_ptr<Scene> Scene::load(const std::string& file,
         scene->steppers.push_back(
             fem::ShellModel::from_case(root, scene->settings, scene->materials));
     }
+    if (root.has("phase") && !root.has("sph")) {
+        root.fail("phase", "phases act on the SPH scene's walls, sources and sinks: expected an "
+                           "[sph] table");
+    }
     if (scene->steppers.empty()) {
         root.fail("", "expected at least one physics module: an [sph] table with [[sph.body]] "
                       "or an [fem] table with [[fem.shell]]");

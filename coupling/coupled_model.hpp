@@ -71,6 +71,11 @@ class CoupledModel final : public io::Stepper {
     void describe_model(std::vector<io::ModelChoice>& choices) const override;
     /// The SPH side's hints, and the coupled shell's (coupling/model_hints.hpp).
     void append_hints(std::vector<std::string>& hints) const override;
+    /// The SPH side's events (a phase ended, the scene settled) and phases.
+    std::vector<std::string> take_events() override { return sph_->take_events(); }
+    void append_phases(std::vector<io::PhaseRecord>& records) const override {
+        sph_->append_phases(records);
+    }
     void write_logs(const std::string& directory) const override;
     void set_output_directory(const std::string& directory) override;
     void write_checkpoint(std::ostream& out) const override;

@@ -312,6 +312,14 @@ std::string CaseTable::string_or(std::string_view key, std::string fallback) con
     return has(key) ? string(key) : fallback;
 }
 
+std::optional<std::string> CaseTable::string_if(std::string_view key) const {
+    const toml::node* node = lookup(key);
+    if (node == nullptr || !node->is_string()) {
+        return std::nullopt;
+    }
+    return node->value<std::string>().value();
+}
+
 std::vector<std::string> CaseTable::name_list(std::string_view key) const {
     const toml::node& node = require(key);
     const std::string wanted = "expected a name, an id or a list of them ([\"door\", 3])";

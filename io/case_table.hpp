@@ -67,6 +67,9 @@ class CaseTable {
     bool boolean_or(std::string_view key, bool fallback) const;
     std::string string(std::string_view key) const;
     std::string string_or(std::string_view key, std::string fallback) const;
+    /// The key's text when its value is a string; std::nullopt when absent or of another type
+    /// (for keys whose strings take more than one form: a time or "phase:NAME").
+    std::optional<std::string> string_if(std::string_view key) const;
     /// A file name, resolved relative to the case file's directory unless absolute; the file
     /// must exist.
     std::string file_path(std::string_view key) const;

@@ -52,4 +52,14 @@ struct ModelChoice {
     std::string choice;
 };
 
+/// One phase of a run ([[phase]]), for summary.json's "phases": when it started and ended
+/// (NaN: not reached, not ended) and what ended it ("time", "settled", "discharged"; empty
+/// while it runs).
+struct PhaseRecord {
+    std::string name;
+    double start = 0.0;
+    double end = 0.0;
+    std::string ended_by;
+};
+
 } // namespace grainload::io

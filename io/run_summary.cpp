@@ -61,6 +61,29 @@ std::string number(double value) {
     return out.str();
 }
 
+// A phase's times to 17 digits, which read back as the same double: a run restated with fixed
+// times in place of a condition (remove_at, a history's points) then takes the same steps.
+std::string exact(double value) {
+    if (!std::isfinite(value)) {
+        return "null";
+    }
+    std::ostringstream out;
+    out << std::setprecision(17) << value;
+    return out.str();
+}
+
+void write_phases(std::ostream& out, const std::vector<PhaseRecord>& phases) {
+    out << "  \"phases\": [";
+    for (std::size_t i = 0; i < phases.size(); ++i) {
+        const PhaseRecord& phase = phases[i];
+        out << (i == 0 ? "\n    " : ",\n    ") << "{\"name\": " << quoted(phase.name)
+            << ", \"start\": " << exact(phase.start) << ", \"end\": " << exact(phase.end)
+            << ", \"ended_by\": "
+            << (phase.ended_by.empty() ? std::string("null") : quoted(phase.ended_by)) << '}';
+    }
+    out << (phases.empty() ? "],\n" : "\n  ],\n");
+}
+
 void write_result(std::ostream& out, const ResultFigure& figure) {
     out << "    " << quoted(figure.name) << ": {\"value\": " << number(figure.value)
         << ", \"unit\": " << quoted(figure.unit);
@@ -124,6 +147,9 @@ void write_run_summary(const RunSummary& summary, const std::string& path) {
             out << (i == 0 ? "\n    " : ",\n    ") << quoted(summary.hints[i]);
         }
         out << (summary.hints.empty() ? "],\n" : "\n  ],\n");
+        if (!summary.phases.empty()) {
+            write_phases(out, summary.phases);
+        }
         out << "  \"results\": {";
         for (std::size_t i = 0; i < summary.results.size(); ++i) {
             out << (i == 0 ? "\n" : ",\n");

@@ -42,6 +42,8 @@ class Stepper {
     /// Events of the steps since the last call (a phase that ended: "settled at 2.1 s"), one
     /// line each, which the driver writes to the run's log. None by default.
     virtual std::vector<std::string> take_events() { return {}; }
+    /// The run's phases ([[phase]]) for summary.json's "phases". None by default.
+    virtual void append_phases(std::vector<PhaseRecord>& records) const { (void)records; }
     /// Write the module's own logs into the output directory (the shell FEM's per-step
     /// convergence CSV); called at every output instant. Nothing by default.
     virtual void write_logs(const std::string& /*directory*/) const {}

@@ -37,7 +37,11 @@ void SphModel::describe_model(std::vector<io::ModelChoice>& choices) const {
         // A wall without a driver stays where it was built; the coupling's walls follow a shell.
         const bool rigid = !wall.driver || dynamic_cast<const RigidMotion*>(wall.driver.get());
         std::string what = rigid ? "rigid" : "driven by another solver";
-        if (std::isfinite(wall.removal_time)) {
+        if (wall.removal_phase >= 0) {
+            what += ", removed when phase \"" +
+                    phases_.phases()[static_cast<std::size_t>(wall.removal_phase)].name +
+                    "\" begins";
+        } else if (std::isfinite(wall.removal_time)) {
             char time[32];
             std::snprintf(time, sizeof time, "%g", wall.removal_time);
             what += std::string(", removed at ") + time + " s";

@@ -142,8 +142,22 @@ void RigidMotion::move(ParticleSet& particles, Wall& wall, double time, double d
     wall.centre = centre;
 }
 
+void RigidMotion::start_histories(double start) {
+    if (!std::isfinite(start)) {
+        return;
+    }
+    const auto placed = [start](std::vector<std::pair<double, Vec3>> history) {
+        for (auto& point : history) {
+            point.first += start;
+        }
+        return history;
+    };
+    velocity_history = placed(relative_velocity_history);
+    angular_velocity_history = placed(relative_angular_velocity_history);
+}
+
 bool RigidMotion::at_rest() const {
-    return velocity_history.empty() && angular_velocity_history.empty() &&
+    return history_phase < 0 && velocity_history.empty() && angular_velocity_history.empty() &&
            velocity.squaredNorm() == 0.0 && angular_velocity.squaredNorm() == 0.0;
 }
 

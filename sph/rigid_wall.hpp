@@ -22,6 +22,16 @@ class RigidMotion final : public WallDriver {
     /// the last point; empty: the constant velocity / angular_velocity above.
     std::vector<std::pair<double, Vec3>> velocity_history;
     std::vector<std::pair<double, Vec3>> angular_velocity_history;
+    /// Histories that count from a phase's start ([[sph.wall]] history_start = "phase:NAME"):
+    /// the phase, and the histories as the case gives them; the two above stay empty (the
+    /// wall holds the velocities above, their first values) until start_histories() places
+    /// them. -1: none.
+    int history_phase = -1;
+    std::vector<std::pair<double, Vec3>> relative_velocity_history;
+    std::vector<std::pair<double, Vec3>> relative_angular_velocity_history;
+
+    /// Place the relative histories at `start` (their times plus start); +infinity: not yet.
+    void start_histories(double start);
 
     /// Moves the wall's particles rigidly from `time` to `time + dt` and sets their velocities
     /// and angular velocities to the rigid-body field at the end. The centre moves by the exact

@@ -37,6 +37,8 @@ class SettleWatch {
     double settle_time() const { return settle_time_; }
     double peak() const { return peak_; }
     double fraction() const { return fraction_; }
+    /// Move the watch's start (a phase's start, known only once the phase before it ended).
+    void set_after(double after) { after_ = after; }
 
     std::vector<double> state() const { return {peak_, settle_time_}; }
     void set_state(const std::vector<double>& state);

@@ -29,11 +29,15 @@ inline constexpr std::array<io::KeySpec, 7> kSinkKeys{{
     {"body", "string", "every body", "only particles of this [[sph.body]] leave through the sink"},
 }};
 
-/// The key of [[sph.wall]] that opens an outlet (docs/user-guide/sph.md, "Outlets and gates").
-inline constexpr std::array<io::KeySpec, 1> kWallOutletKeys{{
-    {"remove_at", "time or `settled`", "never",
-     "the wall leaves the scene at the end of the first step that reaches this time, or "
-     "(`settled`) that settles the scene ([sph.settle])"},
+/// The keys of [[sph.wall]] that open an outlet or time a gate (docs/user-guide/sph.md,
+/// "Outlets and gates").
+inline constexpr std::array<io::KeySpec, 2> kWallOutletKeys{{
+    {"remove_at", "time, `settled` or `phase:NAME`", "never",
+     "the wall leaves the scene at the end of the first step that reaches this time, that "
+     "settles the scene ([sph.settle]), or that begins the phase ([[phase]])"},
+    {"history_start", "time or `phase:NAME`", "0 s",
+     "the time velocity_history and angular_velocity_history count from; until then the wall "
+     "holds their first values"},
 }};
 
 /// Particles leaving the scene through regions (io::Region), and the books of what left: the

@@ -24,11 +24,46 @@ io::Dimension mass_rate_dimension(int dimension) {
     return dimension == 2 ? io::Dimension{1, -1, -1, 0} : io::Dimension{1, 0, -1, 0};
 }
 
+/// start and end: times, or "phase:NAME" (the phase's start, resolved by apply_phase_starts).
+/// An end before the start is refused where the case fixes both: two times, or two phases
+/// (which begin in the order of the table).
+void read_window(const io::CaseTable& table, const PhaseSequence* phases,
+                 SourceSet::Source& source) {
+    if (const auto phase = read_phase_reference(table, "start", phases)) {
+        source.start_phase = *phase;
+    } else {
+        source.start = table.quantity_or("start", dim::kTime, 0.0);
+    }
+    if (const auto phase = read_phase_reference(table, "end", phases)) {
+        source.end_phase = *phase;
+    } else if (table.has("end")) {
+        source.end = table.quantity("end", dim::kTime);
+    }
+    const bool times = source.start_phase < 0 && source.end_phase < 0;
+    const bool both_phases = source.start_phase >= 0 && source.end_phase >= 0;
+    if ((times && !(source.end > source.start)) ||
+        (both_phases && !(source.end_phase > source.start_phase))) {
+        table.fail("end", "expected an end after start");
+    }
+}
+
 } // namespace
+
+void SourceSet::apply_phase_starts(const PhaseSequence& phases) {
+    for (Source& source : sources_) {
+        if (source.start_phase >= 0) {
+            source.start = phases.start(source.start_phase);
+        }
+        if (source.end_phase >= 0) {
+            source.end = phases.start(source.end_phase);
+        }
+    }
+}
 
 SourceSet::SourceSet(const io::CaseTable& sph, const std::vector<std::string>& body_names,
                      const std::vector<int>& body_material, const std::vector<double>& body_density,
-                     double spacing, int dimension, const Vec3& gravity)
+                     double spacing, int dimension, const Vec3& gravity,
+                     const PhaseSequence* phases)
     : spacing_(spacing), dimension_(dimension) {
     for (const auto& table : sph.array_of_tables("source")) {
         Source source;
@@ -79,13 +114,7 @@ SourceSet::SourceSet(const io::CaseTable& sph, const std::vector<std::string>& b
                              });
         }
         source.mass_rate = table.positive_quantity("mass_rate", mass_rate_dimension(dimension));
-        source.start = table.quantity_or("start", dim::kTime, 0.0);
-        if (table.has("end")) {
-            source.end = table.quantity("end", dim::kTime);
-            if (!(source.end > source.start)) {
-                table.fail("end", "expected an end after start");
-            }
-        }
+        read_window(table, phases, source);
         source.velocity = table.vector_or("velocity", dim::kVelocity, Vec3::Zero());
         if (dimension == 2) {
             source.velocity.z() = 0.0;

@@ -3,6 +3,7 @@
 #include "io/key_spec.hpp"
 #include "io/region.hpp"
 #include "sph/particle_set.hpp"
+#include "sph/phase_sequence.hpp"
 
 #include <array>
 #include <limits>
@@ -24,8 +25,9 @@ inline constexpr std::array<io::KeySpec, 9> kSourceKeys{{
     {"shape", "table", "none: min and max",
      "instead of min and max: any [sph.body.shape] (cylinder, cone, mesh, cuts)"},
     {"mass_rate", "mass rate", "", "kg/s created (in plane strain per metre of depth, kg/(m s))"},
-    {"start", "time", "0 s", "creation starts"},
-    {"end", "time", "never", "creation ends"},
+    {"start", "time or `phase:NAME`", "0 s",
+     "creation starts (phase:NAME: when that phase begins)"},
+    {"end", "time or `phase:NAME`", "never", "creation ends (phase:NAME: when that phase begins)"},
     {"velocity", "velocity vector", "0 m/s", "the velocity the new particles start with"},
 }};
 
@@ -54,6 +56,10 @@ class SourceSet {
         double start = 0.0;
         double end = std::numeric_limits<double>::infinity();
         Vec3 velocity = Vec3::Zero();
+        /// start or end = "phase:NAME": that phase, whose start they are (+infinity while it
+        /// is not known); -1: a time.
+        int start_phase = -1;
+        int end_phase = -1;
         std::vector<Vec3> sites;
         // State (checkpointed):
         double owed = 0.0;
@@ -69,10 +75,13 @@ class SourceSet {
     /// The [[sph.source]] tables of `sph`. `body_material[b]` and `body_density[b]` describe
     /// body b; every body has `spacing`. A source's region is its box (min, max) or any body
     /// shape ([sph.source.shape]: a cylinder for a silo); its sites are taken lowest first
-    /// against `gravity`.
+    /// against `gravity`. `start` and `end` may name the start of one of `phases`.
     SourceSet(const io::CaseTable& sph, const std::vector<std::string>& body_names,
               const std::vector<int>& body_material, const std::vector<double>& body_density,
-              double spacing, int dimension, const Vec3& gravity);
+              double spacing, int dimension, const Vec3& gravity,
+              const PhaseSequence* phases = nullptr);
+    /// Set the start and end that name phases to those phases' starts as now known.
+    void apply_phase_starts(const PhaseSequence& phases);
     SourceSet(std::vector<Source> sources, double spacing)
         : sources_(std::move(sources)), spacing_(spacing) {}
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace grainload::sph {
 
@@ -144,10 +145,61 @@ std::vector<std::pair<double, Vec3>> motion_history(const io::CaseTable& wall,
     return history;
 }
 
+/// remove_at: a time, "settled" ([sph.settle]) or "phase:NAME" (that phase's start).
+void read_removal(const io::CaseTable& table, const PhaseSequence* phases, Wall& wall) {
+    if (!table.has("remove_at")) {
+        return;
+    }
+    if (const auto phase = read_phase_reference(table, "remove_at", phases)) {
+        wall.removal_phase = *phase;
+    } else if (table.string("remove_at") == "settled") {
+        wall.removal_on_settle = true;
+    } else {
+        wall.removal_time = table.positive_quantity("remove_at", dim::kTime, true);
+    }
+}
+
+/// The wall's prescribed motion: constant velocities, or histories that count from t = 0 or
+/// from `history_start` (a time, or a phase's start, placed once known). Before its start a
+/// history holds its first value, so the wall starts with that.
+void attach_motion(const io::CaseTable& table, const PhaseSequence* phases, ParticleSet& particles,
+                   Wall& wall) {
+    auto velocity_history = motion_history(table, "velocity", dim::kVelocity);
+    auto angular_history = motion_history(table, "angular_velocity", dim::kAngularVelocity);
+    const bool shifted = table.has("history_start");
+    if (shifted && velocity_history.empty() && angular_history.empty()) {
+        table.fail("history_start", "expected a velocity_history or angular_velocity_history "
+                                    "for history_start to start");
+    }
+    // A shifted history holds its first value until its start.
+    const double now = shifted ? -std::numeric_limits<double>::infinity() : 0.0;
+    const Vec3 velocity = velocity_history.empty()
+                              ? table.vector_or("velocity", dim::kVelocity, Vec3::Zero())
+                              : history_value(velocity_history, now);
+    const Vec3 angular_velocity =
+        angular_history.empty()
+            ? table.vector_or("angular_velocity", dim::kAngularVelocity, Vec3::Zero())
+            : history_value(angular_history, now);
+    RigidMotion& motion = attach_rigid_motion(particles, wall, velocity, angular_velocity);
+    if (!shifted) {
+        motion.velocity_history = std::move(velocity_history);
+        motion.angular_velocity_history = std::move(angular_history);
+        return;
+    }
+    motion.relative_velocity_history = std::move(velocity_history);
+    motion.relative_angular_velocity_history = std::move(angular_history);
+    if (const auto phase = read_phase_reference(table, "history_start", phases)) {
+        motion.history_phase = *phase;
+    } else {
+        motion.start_histories(table.positive_quantity("history_start", dim::kTime, true));
+    }
+}
+
 } // namespace
 
 std::vector<Wall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& particles, int dimension,
-                                   double spacing, double support_radius, int first_body_id) {
+                                   double spacing, double support_radius, int first_body_id,
+                                   const PhaseSequence* phases) {
     std::vector<Wall> walls;
     for (const auto& table : sph.array_of_tables("wall")) {
         // A finer wall is smoother: see docs/theory/sph.md, "Wall contact".
@@ -169,25 +221,8 @@ std::vector<Wall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& partic
         wall.normals = std::move(surface.normals);
         wall.samples = std::move(surface.samples);
         wall.centre = table.vector_or("centre", dim::kLength, wall.centre);
-        auto velocity_history = motion_history(table, "velocity", dim::kVelocity);
-        auto angular_history = motion_history(table, "angular_velocity", dim::kAngularVelocity);
-        const Vec3 velocity = velocity_history.empty()
-                                  ? table.vector_or("velocity", dim::kVelocity, Vec3::Zero())
-                                  : history_value(velocity_history, 0.0);
-        const Vec3 angular_velocity =
-            angular_history.empty()
-                ? table.vector_or("angular_velocity", dim::kAngularVelocity, Vec3::Zero())
-                : history_value(angular_history, 0.0);
-        if (table.has("remove_at")) {
-            if (table.string("remove_at") == "settled") {
-                wall.removal_on_settle = true;
-            } else {
-                wall.removal_time = table.positive_quantity("remove_at", dim::kTime, true);
-            }
-        }
-        RigidMotion& motion = attach_rigid_motion(particles, wall, velocity, angular_velocity);
-        motion.velocity_history = std::move(velocity_history);
-        motion.angular_velocity_history = std::move(angular_history);
+        read_removal(table, phases, wall);
+        attach_motion(table, phases, particles, wall);
         walls.push_back(std::move(wall));
     }
     return walls;

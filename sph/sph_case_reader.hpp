@@ -1,6 +1,7 @@
 #pragma once
 
 #include "sph/particle_set.hpp"
+#include "sph/phase_sequence.hpp"
 #include "sph/rigid_wall.hpp"
 #include "sph/sph_options.hpp"
 
@@ -21,9 +22,12 @@ SphOptions read_sph_options(const io::CaseTable& sph, int dimension, double spac
                             const Vec3& gravity);
 
 /// Append the particles of every [[sph.wall]] to `particles` and return the walls. Wall body
-/// ids follow `first_body_id`; `support_radius` sets the default number of layers.
+/// ids follow `first_body_id`; `support_radius` sets the default number of layers. `phases`
+/// (null: none) are what remove_at and history_start = "phase:NAME" may name; the walls get
+/// the phases' starts from SphModel.
 std::vector<Wall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& particles, int dimension,
-                                   double spacing, double support_radius, int first_body_id);
+                                   double spacing, double support_radius, int first_body_id,
+                                   const PhaseSequence* phases = nullptr);
 
 /// The [[sph.body.clamp]] boxes (`min`, `max`) of one body, whose particles are
 /// particles[first, size()): every particle inside one of them (boundary included) is flagged

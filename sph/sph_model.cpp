@@ -81,6 +81,11 @@ int SphModel::body_id(const std::string& name) const {
 
 void SphModel::build(const io::CaseTable& root) {
     const io::CaseTable sph = root.table("sph");
+    phases_ = PhaseSequence(root);
+    if (!phases_.empty() && !interactions_) {
+        root.fail("phase", "phases act on the SPH solver's walls, sources and sinks: expected "
+                           "interactions = true");
+    }
     if (sph.has("symmetry") && !interactions_) {
         sph.fail("symmetry", "mirror images act through the particle interactions: expected "
                              "interactions = true with [[sph.symmetry]]");
@@ -101,6 +106,10 @@ void SphModel::build(const io::CaseTable& root) {
         }
     }
     build_outlets(sph);
+    phases_.check_conditions(root, solver_ != nullptr, !sinks_.empty());
+    if (solver_) {
+        apply_phase_starts();
+    }
     if (solver_) {
         wall_maps_ = WallMapSet(sph, solver_->particles(), solver_->walls(), dimension_);
     } else if (sph.has("wall_map")) {
@@ -133,7 +142,7 @@ void SphModel::build_solver(const io::CaseTable& sph) {
     SphOptions options = read_sph_options(sph, dimension_, spacing_, gravity_);
     SmoothingKernel kernel(options.kernel, options.smoothing_length, dimension_);
     auto walls = read_rigid_walls(sph, particles_, dimension_, spacing_, kernel.support_radius(),
-                                  static_cast<int>(body_names_.size()));
+                                  static_cast<int>(body_names_.size()), &phases_);
     const auto wall_tables = sph.array_of_tables("wall");
     for (std::size_t k = 0; k < wall_tables.size(); ++k) {
         walls[k].bodies = read_wall_bodies(wall_tables[k], body_names_);
@@ -284,13 +293,7 @@ void SphModel::advance(double t, double dt) {
         solver_->set_time(t);
         solver_->step(dt);
         wall_maps_.accumulate(solver_->particles(), solver_->walls(), t, dt);
-        if (settle_ && settle_->record(t + dt, solver_->kinetic_energy())) {
-            std::ostringstream event;
-            event << "settled at t = " << t + dt << " s: the material's kinetic energy "
-                  << solver_->kinetic_energy() << " J is below " << settle_->fraction()
-                  << " of its peak " << settle_->peak() << " J";
-            events_.push_back(event.str());
-        }
+        record_kinetic_energy(t + dt);
         if (!per_window_) {
             exchange_particles(t, dt);
         }

@@ -6,6 +6,7 @@
 #include "sph/escape_watch.hpp"
 #include "sph/heap_monitor.hpp"
 #include "sph/particle_set.hpp"
+#include "sph/phase_sequence.hpp"
 #include "sph/rigid_wall.hpp"
 #include "sph/settle_watch.hpp"
 #include "sph/sink.hpp"
@@ -88,6 +89,8 @@ class SphModel final : public io::Stepper {
     /// Generalized-cap materials whose cap was never reached (sph/model_report.cpp).
     void append_hints(std::vector<std::string>& hints) const override;
     std::vector<std::string> take_events() override;
+    /// The [[phase]] table's phases: when each began and ended, and why (sph_model_phases.cpp).
+    void append_phases(std::vector<io::PhaseRecord>& records) const override;
     void write_checkpoint(std::ostream& out) const override;
     void read_checkpoint(std::istream& in) override;
 
@@ -141,6 +144,16 @@ class SphModel final : public io::Stepper {
     /// Append particles (source index and creation position per arrival) to the solver and to
     /// every per-particle array here; `book_energy` as SphSolver::add_particles.
     void apply_creation(std::span<const Arrival> arrivals, bool book_energy);
+    /// Phases (sph_model_phases.cpp): after a step ending at `time`, end the phases whose end
+    /// has come and hand their starts to the walls and sources; true when one ended.
+    bool advance_phases(double time);
+    /// After a step ending at `time`: the settle watches ([sph.settle], the phases') see the
+    /// material's kinetic energy.
+    void record_kinetic_energy(double time);
+    /// Walls' removal times and histories and sources' windows that name a phase get its start.
+    void apply_phase_starts();
+    /// The first phase ending on `settled`, when no [sph.settle] reports settle_time.
+    void append_phase_results(std::vector<io::ResultFigure>& results) const;
     /// The creation log, so a restart can rebuild the created particles before the removals.
     void write_created(std::ostream& out) const;
     void read_created(std::istream& in);
@@ -185,6 +198,8 @@ class SphModel final : public io::Stepper {
     std::vector<int> body_material_;
     /// [sph.settle]: the settle phase, and the events (its end) not yet taken by the driver.
     std::optional<SettleWatch> settle_;
+    /// [[phase]]: the run's phases, read before the walls and sources that may name them.
+    PhaseSequence phases_;
     std::vector<std::string> events_;
     bool per_window_ = false; ///< exchange_particles_per_window() was called
     bool audit_ = false;      ///< a sink, remove_at or a source: the mass audit and energy books

@@ -47,6 +47,9 @@ void SphModel::write_checkpoint(std::ostream& out) const {
 }
 
 void SphModel::read_checkpoint(std::istream& in) {
+    // The driver takes the events after every step, so the state saved had none: the events
+    // of a coupling pass that goes back to it did not happen.
+    events_.clear();
     read_created(in);
     read_removals(in);
     auto& p = solver_ ? solver_->particles() : particles_;

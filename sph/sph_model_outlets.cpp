@@ -27,7 +27,8 @@ void SphModel::build_outlets(const io::CaseTable& sph) {
     bool on_settle = false;
     if (solver_) {
         for (const Wall& wall : solver_->walls()) {
-            walls_go = walls_go || std::isfinite(wall.removal_time) || wall.removal_on_settle;
+            walls_go = walls_go || std::isfinite(wall.removal_time) || wall.removal_on_settle ||
+                       wall.removal_phase >= 0;
             on_settle = on_settle || wall.removal_on_settle;
         }
     }
@@ -81,7 +82,14 @@ double SphModel::scene_mass() const {
 }
 
 void SphModel::exchange_particles(double t, double dt) {
+    // A phase that ends on a time or on the settle watch does so before the removals, so a
+    // wall due at its successor's start leaves with this step (as remove_at = "settled"); one
+    // that ends on the mass the sinks took can only after them, and its walls follow at once.
+    advance_phases(t + dt);
     remove_departed(t + dt);
+    if (advance_phases(t + dt)) {
+        remove_departed(t + dt);
+    }
     create_arrivals(t, dt);
 }
 
@@ -134,6 +142,9 @@ void SphModel::write_outlet_state(std::ostream& out) const {
     if (settle_) {
         io::write_array(out, settle_->state());
     }
+    if (!phases_.empty()) {
+        io::write_array(out, phases_.state());
+    }
 }
 
 void SphModel::read_removals(std::istream& in) {
@@ -176,6 +187,12 @@ void SphModel::read_outlet_state(std::istream& in) {
         std::vector<double> state;
         io::read_array(in, state);
         settle_->set_state(state);
+    }
+    if (!phases_.empty()) {
+        std::vector<double> state;
+        io::read_array(in, state);
+        phases_.set_state(state);
+        apply_phase_starts();
     }
 }
 

@@ -140,6 +140,8 @@ void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) 
              settle_->settled() ? settle_->settle_time() : std::numeric_limits<double>::quiet_NaN(),
              "s", std::nullopt, ""});
         results.push_back({"settle_peak_kinetic_energy", settle_->peak(), "J", std::nullopt, ""});
+    } else {
+        append_phase_results(results);
     }
     if (solver_) {
         results.push_back({"kinetic_energy", solver_->kinetic_energy(), "J", std::nullopt, ""});

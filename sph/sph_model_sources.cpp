@@ -20,7 +20,8 @@ void SphModel::build_sources(const io::CaseTable& sph) {
     for (const int material : body_material_) {
         density.push_back((*materials_)[material].density());
     }
-    sources_ = SourceSet(sph, body_names_, body_material_, density, spacing_, dimension_, gravity_);
+    sources_ = SourceSet(sph, body_names_, body_material_, density, spacing_, dimension_, gravity_,
+                         &phases_);
 }
 
 void SphModel::create_arrivals(double t, double dt) {

@@ -82,6 +82,9 @@ struct Wall {
     /// remove_at = "settled": the wall leaves at the end of the step that settles the scene
     /// ([sph.settle]).
     bool removal_on_settle = false;
+    /// remove_at = "phase:NAME": the phase whose start is removal_time (+infinity while that
+    /// start is not known); -1: none.
+    int removal_phase = -1;
     /// Material may lie on either side (a coupled shell with `side = "both"`: one layer on
     /// its mid-surface): the contact reads each particle's normal turned towards the material
     /// particle it pushes, so `normals` give the orientation only.

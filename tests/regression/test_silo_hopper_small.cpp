@@ -13,7 +13,8 @@ namespace {
 // cases/silo_hopper/silo_hopper_small.toml: the quarter of a circular silo (radius 0.2 m, a
 // 0.4 m slice of its cylinder) with a 30 deg conical hopper, rigid walls where the steel shell
 // is built; a placed cone of sand on a gate under the outlet, the cylinder filled by a source
-// to 1.2 s, the gate removed when the settle watch fires; docs/validation/silo_hopper.md.
+// to 1.2 s, the gate removed as the discharge phase begins (the settle phase ends when the watch
+// fires: the case's [[phase]] table); docs/validation/silo_hopper.md.
 constexpr double kGravity = 9.81;
 constexpr double kRestTime = 1.3; // s: the last frame before the gate leaves
 constexpr double kWallFriction = 0.4;

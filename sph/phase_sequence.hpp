@@ -1,0 +1,98 @@
+#pragma once
+
+#include "io/frame.hpp"
+#include "io/key_spec.hpp"
+#include "sph/settle_watch.hpp"
+
+#include <array>
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace grainload::io {
+class CaseTable;
+}
+
+namespace grainload::sph {
+
+/// The keys of each [[phase]] table (docs/user-guide/sph.md, "Phases: `[[phase]]`").
+inline constexpr std::array<io::KeySpec, 4> kPhaseKeys{{
+    {"name", "string", "",
+     "names the phase in log.txt and summary.json; `phase:NAME` in a time key is its start"},
+    {"end", "time, `settled` or `discharged`", "the run's end (last phase only)",
+     "the phase ends with the first step that reaches this time, that settles the scene, or "
+     "after which the sinks have taken `discharged_mass` since the phase began"},
+    {"kinetic_energy_fraction", "number", "required with `settled`",
+     "settled: the material's kinetic energy below this fraction of its peak since t = 0"},
+    {"discharged_mass", "mass", "required with `discharged`",
+     "the mass the sinks take during the phase (plane strain: per metre of depth, kg/m)"},
+}};
+
+/// The run's phases as the case states them ([[phase]]): in order, each starting where the one
+/// before ended, each ending at a stated time or on a condition (the scene settled, the sinks
+/// took a mass). A phase's start is known as soon as every phase before it has ended or ends
+/// at a stated time, so a time key that names it (`phase:NAME`) resolves before the run when
+/// the phases before end on times, and when the condition is met otherwise. Checkpointed.
+class PhaseSequence {
+  public:
+    enum class End { time, settled, discharged, run };
+    struct Phase {
+        std::string name;
+        End end = End::run;
+        double end_time = std::numeric_limits<double>::infinity(); ///< End::time, as stated
+        double discharged_mass = 0.0;                              ///< End::discharged
+        const char* mass_unit = "kg"; ///< of discharged_mass: "kg/m" in plane strain
+        SettleWatch watch;            ///< End::settled
+        // State (checkpointed):
+        double start = std::numeric_limits<double>::infinity(); ///< +inf while unknown
+        double finish = std::numeric_limits<double>::infinity();
+        double discharged_at_start = 0.0;
+    };
+
+    PhaseSequence() = default;
+    /// The [[phase]] tables of the case's root (none: an empty sequence).
+    explicit PhaseSequence(const io::CaseTable& root);
+
+    bool empty() const { return phases_.empty(); }
+    const std::vector<Phase>& phases() const { return phases_; }
+    bool ends_on(End end) const;
+    /// Refuse conditions the scene cannot meet: `settled` without the SPH solver, `discharged`
+    /// without a sink (failing at that phase's `end` in `root`).
+    void check_conditions(const io::CaseTable& root, bool solver, bool sinks) const;
+    /// Index of the phase "phase:NAME" names (the text of `table.key`); fails there otherwise.
+    int index_of(const io::CaseTable& table, std::string_view key, std::string_view text) const;
+    /// The start of phase k; +infinity while it is not known.
+    double start(int k) const { return phases_[static_cast<std::size_t>(k)].start; }
+
+    /// After every SPH step: the material's kinetic energy at its end, for the settle watches
+    /// (each measures its peak from t = 0, as [sph.settle] does).
+    void record_kinetic(double time, double kinetic);
+    /// After a step ending at `time`, with `discharged` the mass the sinks have taken so far:
+    /// ends the current phase (and the next ones, whose end has come too) and returns one log
+    /// line per phase ended.
+    std::vector<std::string> update(double time, double discharged);
+
+    /// summary.json's `phases`: every phase, the start null until it is reached.
+    void append_records(std::vector<io::PhaseRecord>& records) const;
+    std::vector<double> state() const;
+    void set_state(const std::vector<double>& state);
+
+  private:
+    /// Fill in the starts that the phases ending at stated times fix, and start the watches.
+    void propagate();
+    std::string end_reason(const Phase& phase, double discharged) const;
+
+    std::vector<Phase> phases_;
+    std::size_t current_ = 0;
+};
+
+/// True when the text of a time key names a phase's start ("phase:NAME").
+bool names_phase(std::string_view text);
+/// The phase that key `key` of `table` names ("phase:NAME" of `phases`; null: none defined),
+/// std::nullopt when the key is absent or holds anything else (a time, read as before).
+std::optional<int> read_phase_reference(const io::CaseTable& table, std::string_view key,
+                                        const PhaseSequence* phases);
+
+} // namespace grainload::sph

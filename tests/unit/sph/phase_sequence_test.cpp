@@ -1,0 +1,111 @@
+#include "io/case_table.hpp"
+#include "sph/phase_sequence.hpp"
+#include "support/guide_table.hpp"
+
+#include <cmath>
+#include <gtest/gtest.h>
+
+namespace grainload::sph {
+namespace {
+
+// The user guide's [[phase]] table lists exactly the declared keys with their defaults.
+TEST(PhaseKeys, UserGuideStatesEveryKeyWithItsDefault) {
+    testing::expect_guide_states(kPhaseKeys, "docs/user-guide/sph.md", "## Phases: `[[phase]]`");
+}
+
+PhaseSequence read(const std::string& phases) {
+    auto document = io::CaseDocument::from_string("[case]\ndimension = 3\n" + phases, "p.toml");
+    return PhaseSequence(document->root());
+}
+
+const char* const kFourPhases = R"(
+[[phase]]
+name = "fill"
+end = "1.5 s"
+[[phase]]
+name = "settle"
+end = "settled"
+kinetic_energy_fraction = 0.1
+[[phase]]
+name = "discharge"
+end = "discharged"
+discharged_mass = "2 kg"
+[[phase]]
+name = "closed"
+)";
+
+// The starts a stated end fixes are known before the run (fill 0, settle 1.5 s), the one after
+// a condition is not; the steps then end fill at the stated 1.5 s (a step end an ulp short of
+// it counts), settle at the first step from 1.5 s below a tenth of the peak since t = 0 (10 J
+// at 1 s: 0.5 J at 1.2 s is before the phase and does not count), discharge once the sinks
+// took 2 kg more than when it began (1 kg then: at 3 kg, not at 2.5 kg).
+TEST(PhaseSequence, EndsOnTimeSettleAndDischargeInOrder) {
+    PhaseSequence phases = read(kFourPhases);
+    EXPECT_EQ(phases.start(0), 0.0);
+    EXPECT_EQ(phases.start(1), 1.5);
+    EXPECT_TRUE(std::isinf(phases.start(2)));
+    phases.record_kinetic(1.0, 10.0);
+    phases.record_kinetic(1.2, 0.5);
+    EXPECT_TRUE(phases.update(1.2, 0.0).empty());
+    const double short_of = std::nextafter(1.5, 0.0);
+    phases.record_kinetic(short_of, 2.0);
+    const auto fill = phases.update(short_of, 0.0);
+    ASSERT_EQ(fill.size(), 1u);
+    EXPECT_NE(fill[0].find("phase \"fill\" ended at t = 1.5 s"), std::string::npos) << fill[0];
+    phases.record_kinetic(1.75, 0.9);
+    const auto settle = phases.update(1.75, 1.0);
+    ASSERT_EQ(settle.size(), 1u);
+    EXPECT_EQ(phases.start(2), 1.75);
+    EXPECT_TRUE(phases.update(2.0, 2.5).empty());
+    EXPECT_EQ(phases.update(2.25, 3.0).size(), 1u);
+    EXPECT_EQ(phases.start(3), 2.25);
+    std::vector<io::PhaseRecord> records;
+    phases.append_records(records);
+    ASSERT_EQ(records.size(), 4u);
+    EXPECT_EQ(records[0].end, 1.5);
+    EXPECT_EQ(records[0].ended_by, "time");
+    EXPECT_EQ(records[1].ended_by, "settled");
+    EXPECT_EQ(records[2].ended_by, "discharged");
+    EXPECT_EQ(records[3].start, 2.25);
+    EXPECT_TRUE(std::isnan(records[3].end));
+    EXPECT_EQ(records[3].ended_by, "");
+}
+
+// A stated end that a condition before it outran ends its phase as it begins (both logged),
+// and the state restores every start, end and watch exactly.
+TEST(PhaseSequence, StatedEndPassedByAConditionEndsAtOnceAndStateRestores) {
+    PhaseSequence phases = read(R"(
+[[phase]]
+name = "settle"
+end = "settled"
+kinetic_energy_fraction = 0.1
+[[phase]]
+name = "open"
+end = "1 s"
+[[phase]]
+name = "discharge"
+)");
+    phases.record_kinetic(0.5, 10.0);
+    phases.record_kinetic(2.0, 0.5);
+    EXPECT_EQ(phases.update(2.0, 0.0).size(), 2u);
+    EXPECT_EQ(phases.start(1), 2.0);
+    EXPECT_EQ(phases.start(2), 2.0);
+    PhaseSequence copy = read(R"(
+[[phase]]
+name = "settle"
+end = "settled"
+kinetic_energy_fraction = 0.1
+[[phase]]
+name = "open"
+end = "1 s"
+[[phase]]
+name = "discharge"
+)");
+    copy.set_state(phases.state());
+    EXPECT_EQ(copy.state(), phases.state());
+    EXPECT_EQ(copy.start(2), 2.0);
+    EXPECT_THROW(copy.set_state({0.0}), std::runtime_error);
+}
+
+} // namespace
+} // namespace grainload::sph
