@@ -190,26 +190,32 @@ void WallMapSet::accumulate(const ParticleSet& particles, const std::vector<Wall
         // The part of the step inside the window enters the window's sum.
         const double overlap =
             std::max(0.0, std::min(t + dt, map.window_end) - std::max(t, map.window_start));
-        std::array<std::pair<int, double>, 4> shares;
         for (std::size_t m = 0; m < map.walls.size(); ++m) {
             const Wall& wall = walls[static_cast<std::size_t>(map.walls[m])];
             const double half = map.half_spacing[m];
-            for (Index k = wall.first; k < wall.first + wall.count; ++k) {
+            // Every step: each wall particle's cells and load (an angle and its patch's
+            // overlaps) on all threads, then added in the particles' order, so the sums are
+            // the serial loop's.
+            shares_.resize(static_cast<std::size_t>(wall.count));
+#pragma omp parallel for schedule(static)
+            for (Index q = 0; q < wall.count; ++q) {
+                const Index k = wall.first + q;
+                ParticleShares& mine = shares_[static_cast<std::size_t>(q)];
                 const Vec3& x = particles.position[k];
-                const int count = map.shares(x, half, shares);
-                if (count == 0) {
-                    continue;
+                mine.count = map.shares(x, half, mine.cells);
+                if (mine.count > 0) {
+                    mine.load = map.split(x, wall.normals[static_cast<std::size_t>(q)],
+                                          particles.mass[k] * particles.acceleration[k]);
                 }
-                const Vec3 f = particles.mass[k] * particles.acceleration[k];
-                const Load load =
-                    map.split(x, wall.normals[static_cast<std::size_t>(k - wall.first)], f);
-                for (int s = 0; s < count; ++s) {
-                    const auto [cell, weight] = shares[static_cast<std::size_t>(s)];
+            }
+            for (const ParticleShares& mine : shares_) {
+                for (int s = 0; s < mine.count; ++s) {
+                    const auto [cell, weight] = mine.cells[static_cast<std::size_t>(s)];
                     Load& interval = map.interval[static_cast<std::size_t>(cell)];
                     Load& window = map.window_sum[static_cast<std::size_t>(cell)];
                     for (int c = 0; c < 3; ++c) {
-                        interval[c] += weight * dt * load[c];
-                        window[c] += weight * overlap * load[c];
+                        interval[c] += weight * dt * mine.load[c];
+                        window[c] += weight * overlap * mine.load[c];
                     }
                 }
             }

@@ -137,7 +137,15 @@ class WallMapSet {
     /// Mean over the window so far: its impulse over the elapsed part of the window.
     Load window_mean(const Map& map, int cell) const;
 
+    /// One wall particle's cells, shares and load in a step (scratch of accumulate()).
+    struct ParticleShares {
+        int count = 0;
+        std::array<std::pair<int, double>, 4> cells;
+        Load load{};
+    };
+
     std::vector<Map> maps_;
+    std::vector<ParticleShares> shares_;
     double last_time_ = 0.0;    ///< the last instant recorded
     double instants_ = 0.0;     ///< files written per map so far (a count; double for state())
     bool recorded_any_ = false; ///< an instant has been recorded
