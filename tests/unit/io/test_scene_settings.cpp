@@ -28,7 +28,8 @@ TEST(SceneSettings, GravityDefaultsAlongTheUpAxis) {
 }
 
 // 0.2 s at 1e-12 s is 2e11 output intervals: `grainload check` counted them one by one (over
-// 20 s, found by the fuzz harness of the case reader) and a run would write as many frames.
+// 20 s; seen when the case reader's fuzz harness was made to reach the cost estimate) and a run
+// would write as many frames.
 // 1e6 intervals are the most (io::kMostOutputIntervals): exactly 1e6 is read, 1e6 + 1 is
 // refused, naming the key and the shortest interval, 0.2 s / 1e6 = 2e-7 s.
 TEST(SceneSettings, MoreThanAMillionOutputIntervalsAreRefused) {
