@@ -34,16 +34,22 @@ std::string calibration_path() {
 }
 
 /// Driver steps and SPH steps from t = 0 to the end at a constant step `dt` (SPH at
-/// `sph_dt` inside each), landing on every output instant as the driver's loop does.
+/// `sph_dt` inside each), landing on every output instant as the driver's loop does. Counted in
+/// doubles: a step of 1e-300 s gives more steps than a long long holds (a cast of such a double
+/// is undefined behaviour), so `steps` stops at kMostSteps.
 struct StepCount {
     long long steps = 0;
     double sph_steps = 0.0;
 };
 
+constexpr double kMostSteps = 1e18;
+
 StepCount count_steps(double end, double interval, double dt, double sph_dt) {
     StepCount count;
     const double tolerance = 1e-12 * end;
+    // io/scene_settings.cpp holds end / interval to io::kMostOutputIntervals.
     const auto intervals = static_cast<long long>(std::ceil(end / interval - 1e-9));
+    double steps = 0.0;
     for (long long k = 0; k < intervals; ++k) {
         const double start = static_cast<double>(k) * interval;
         const double stop = std::min(static_cast<double>(k + 1) * interval, end);
@@ -51,11 +57,12 @@ StepCount count_steps(double end, double interval, double dt, double sph_dt) {
         if (length <= tolerance) {
             continue;
         }
-        const auto n = static_cast<long long>(std::ceil(length / dt * (1.0 - 1e-12)));
-        count.steps += n;
-        const double window = length / static_cast<double>(n);
-        count.sph_steps += static_cast<double>(n) * std::ceil(window / sph_dt * (1.0 - 1e-12));
+        const double n = std::ceil(length / dt * (1.0 - 1e-12));
+        steps += n;
+        const double window = length / n;
+        count.sph_steps += n * std::ceil(window / sph_dt * (1.0 - 1e-12));
     }
+    count.steps = static_cast<long long>(std::min(steps, kMostSteps));
     return count;
 }
 

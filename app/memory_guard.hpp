@@ -10,9 +10,11 @@ namespace grainload::app {
 /// std::nullopt where the kernel does not say (then nothing is refused).
 std::optional<double> available_memory();
 
-/// Refuses, before any particle is made, a scene whose SPH particles (sph/particle_estimate.hpp)
-/// would need more than `available` bytes: io::CaseError at the spacing key of the largest
-/// body or wall, with the estimate and the spacing that would fit.
+/// Refuses, before any particle or shell node is made, a scene whose SPH particles
+/// (sph/particle_estimate.hpp) and generated shells would need more than `available` bytes:
+/// io::CaseError at the spacing key of the largest body or wall, with the estimate and the
+/// spacing that would fit, or, when the shells take more than the particles, at the element
+/// count of the largest shell.
 void refuse_oversized_scene(const io::CaseTable& root, int dimension,
                             std::optional<double> available);
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <utility>
 
 namespace grainload::app {
 
@@ -15,16 +16,22 @@ namespace dim = io::dimension;
 
 std::unique_ptr<Scene> Scene::load(const std::string& file,
                                    const std::vector<std::string>& overrides) {
-    auto scene = std::make_unique<Scene>();
-    scene->document = io::CaseDocument::from_file(file);
+    auto document = io::CaseDocument::from_file(file);
     for (const auto& assignment : overrides) {
-        scene->document->set(assignment);
+        document->set(assignment);
     }
-    scene->settings =
-        io::read_scene_settings(*scene->document, std::filesystem::path(file).stem().string());
+    return from_document(std::move(document), std::filesystem::path(file).stem().string(),
+                         available_memory());
+}
+
+std::unique_ptr<Scene> Scene::from_document(std::unique_ptr<io::CaseDocument> document,
+                                            const std::string& name, std::optional<double> memory) {
+    auto scene = std::make_unique<Scene>();
+    scene->document = std::move(document);
+    scene->settings = io::read_scene_settings(*scene->document, name);
     const io::CaseTable root = scene->document->root();
     scene->materials = materials::MaterialLibrary::from_case(root);
-    refuse_oversized_scene(root, scene->settings.dimension, available_memory());
+    refuse_oversized_scene(root, scene->settings.dimension, memory);
     if (root.has("coupling")) {
         scene->steppers.push_back(
             coupling::read_coupled_model(root, scene->settings, scene->materials));

@@ -7,6 +7,7 @@
 #include "materials/material_library.hpp"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,13 @@ struct Scene {
     /// Throws io::CaseError on any bad input.
     static std::unique_ptr<Scene> load(const std::string& file,
                                        const std::vector<std::string>& overrides);
+    /// load() after the file is read and the overrides applied: `name` is the case's default
+    /// name (load(): the file's stem); a scene whose SPH particles would need more than
+    /// `memory` bytes is refused before any is made (load(): available_memory(); the fuzz
+    /// harness gives a small budget, so that it builds only small scenes).
+    static std::unique_ptr<Scene> from_document(std::unique_ptr<io::CaseDocument> document,
+                                                const std::string& name,
+                                                std::optional<double> memory);
     Index point_count() const;
     /// point_count() less the wall particles: what particle-steps per second count.
     Index material_point_count() const;

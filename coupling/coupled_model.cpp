@@ -435,7 +435,9 @@ void CoupledModel::read_checkpoint(std::istream& in) {
         throw std::runtime_error(
             "checkpoint: the coupling's window count and extremes are missing");
     }
-    windows_before_restart_ = static_cast<std::size_t>(windows[0]);
+    // Whole numbers below 2^53 are exact in a double.
+    windows_before_restart_ =
+        io::state_count(windows[0], 9007199254740992.0, "the coupling's window count");
     extremes_.deflection = windows[1];
     extremes_.von_mises = windows[2];
     restarted_ = true;

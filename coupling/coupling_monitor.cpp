@@ -1,9 +1,12 @@
 #include "coupling/coupling_monitor.hpp"
 
+#include "io/binary_stream.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 namespace grainload::coupling {
@@ -100,11 +103,16 @@ void CouplingMonitor::set_state(const std::vector<double>& state) {
     sand_work_ = state[0];
     shell_work_ = state[1];
     largest_work_ = state[2];
-    growing_windows_ = static_cast<int>(state[3]);
+    constexpr double kMostInt = std::numeric_limits<int>::max();
+    // Whole numbers below 2^53 are exact in a double.
+    constexpr double kMostExact = 9007199254740992.0;
+    growing_windows_ =
+        static_cast<int>(io::state_count(state[3], kMostInt, "the growing coupling windows"));
     wall_impulse_ = Vec3(state[4], state[5], state[6]);
     shell_impulse_ = Vec3(state[7], state[8], state[9]);
-    subcycles_ = static_cast<long long>(state[10]);
-    largest_subcycles_ = static_cast<int>(state[11]);
+    subcycles_ = static_cast<long long>(io::state_count(state[10], kMostExact, "the sub-cycles"));
+    largest_subcycles_ =
+        static_cast<int>(io::state_count(state[11], kMostInt, "the most sub-cycles of a window"));
     sph_seconds_ = state[12];
     fem_seconds_ = state[13];
     map_seconds_ = state[14];

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <istream>
 #include <limits>
@@ -37,6 +38,17 @@ inline std::uint64_t remaining_bytes(std::istream& in) {
     const std::streampos end = in.tellg();
     in.seekg(here);
     return end >= here ? static_cast<std::uint64_t>(end - here) : 0;
+}
+
+/// A count kept as a double in a module's state vector (a cursor, rows, windows): a whole
+/// number from 0 to `most`, else std::runtime_error naming `what`. A corrupt checkpoint can
+/// hold any double there, and casting one beyond the integer's range is undefined behaviour.
+inline std::uint64_t state_count(double value, double most, const std::string& what) {
+    if (!(value >= 0.0 && value <= most && value == std::floor(value))) {
+        throw std::runtime_error("checkpoint: " + what + " is " + std::to_string(value) +
+                                 ", expected a whole number from 0 to " + std::to_string(most));
+    }
+    return static_cast<std::uint64_t>(value);
 }
 
 /// The element count in front of an array of `element_size`-byte values. A count larger than

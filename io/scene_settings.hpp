@@ -26,6 +26,11 @@ struct SceneSettings {
 /// Standard gravity as the cases have always used it (3 significant digits, m/s^2).
 inline constexpr double kDefaultGravity = 9.81;
 
+/// Output intervals a run may have up to end_time: a frame and a checkpoint are written at
+/// each, so more than a million is a mistyped interval (1e-12 s for 1e-3 s), which `grainload
+/// check` used to count one by one (minutes) and a run would write for days.
+inline constexpr double kMostOutputIntervals = 1e6;
+
 /// The [case] table's keys with their defaults (docs/user-guide.md, "[case]").
 inline constexpr std::array<KeySpec, 5> kCaseKeys{{
     {"name", "string", "file name without `.toml`",

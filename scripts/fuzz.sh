@@ -2,7 +2,7 @@
 # scripts/fuzz.sh [--runs N | --seconds S] [--jobs J] [HARNESS ...]
 # Builds the libFuzzer harnesses of tests/fuzz with clang, AddressSanitizer and
 # UndefinedBehaviorSanitizer (in build-fuzz/, or $GRAINLOAD_FUZZ_BUILD), seeds each corpus with
-# the repository's own files (cases/, tests/data/, tests/fuzz/regressions/), and runs each
+# the repository's own files (cases/, tests/data/, tests/fuzz/ with its regressions/), and runs each
 # harness: by default 1e6 inputs each (tests/fuzz/README.md has the times), or for S seconds
 # (CI: --seconds 5). HARNESS: case gmsh stl keyword checkpoint (default: all). A finding stops
 # that harness and leaves the input in build-fuzz/findings/<harness>/; the script then exits 1.
@@ -47,7 +47,7 @@ for h in "${harnesses[@]}"; do
   # Seeds are named by their content's hash, so re-seeding adds nothing twice.
   while IFS= read -r -d '' seed; do
     cp "$seed" "$corpus/seed-$(sha1sum "$seed" | cut -c1-16)"
-  done < <(find "$root/cases" "$root/tests/data" "$root/tests/fuzz/regressions/$h" \
+  done < <(find "$root/cases" "$root/tests/data" "$root/tests/fuzz" \
              -type f -name "*${extension[$h]}" -print0 2>/dev/null;
            find "$root/tests/fuzz/regressions/$h" -type f -print0 2>/dev/null)
   if [[ $h == checkpoint ]]; then

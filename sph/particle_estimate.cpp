@@ -123,9 +123,8 @@ ParticleCount deck_body(const io::CaseTable& shape) {
     return count;
 }
 
-ParticleCount estimate_body(const io::CaseTable& body, int dimension) {
-    const double spacing = body.positive_quantity("spacing", dim::kLength);
-    const io::CaseTable shape = body.table("shape");
+/// The particles a body's shape holds (or a source's [sph.source.shape] has sites for).
+ParticleCount shape_count(const io::CaseTable& shape, double spacing, int dimension) {
     const std::string type = shape.choice("type", {"box", "cylinder", "cone", "mesh", "lsdyna"});
     ParticleCount count;
     if (type == "box") {
@@ -139,6 +138,12 @@ ParticleCount estimate_body(const io::CaseTable& body, int dimension) {
     } else if (type != "mesh") {
         count = round_body(shape, type, spacing, dimension);
     }
+    return count;
+}
+
+ParticleCount estimate_body(const io::CaseTable& body, int dimension) {
+    const double spacing = body.positive_quantity("spacing", dim::kLength);
+    ParticleCount count = shape_count(body.table("shape"), spacing, dimension);
     count.table = body.path();
     count.name = body.string("name");
     count.spacing_key = body.key_path("spacing");
@@ -188,6 +193,19 @@ std::pair<double, std::string> wall_measure(const io::CaseTable& wall, int dimen
     return {measure, "box wall of " + text(measure) + (dimension == 3 ? " m^2" : " m")};
 }
 
+/// A source's sites (sph/source.cpp): its box (min, max) or shape filled at the bodies'
+/// spacing. It creates a particle at each site as its mass flows in, so at least that many.
+ParticleCount estimate_source(const io::CaseTable& source, int dimension, double spacing) {
+    ParticleCount count = source.has("shape")
+                              ? shape_count(source.table("shape"), spacing, dimension)
+                              : box_body(source, spacing, dimension);
+    count.table = source.path();
+    count.name = source.string("name");
+    count.spacing = spacing;
+    count.basis = "source's " + count.basis;
+    return count;
+}
+
 ParticleCount estimate_wall(const io::CaseTable& wall, int dimension, double body_spacing,
                             double support) {
     ParticleCount count;
@@ -208,7 +226,7 @@ ParticleCount estimate_wall(const io::CaseTable& wall, int dimension, double bod
 
 double ParticleEstimate::total() const {
     double sum = 0.0;
-    for (const auto* list : {&bodies, &walls}) {
+    for (const auto* list : {&bodies, &sources, &walls}) {
         for (const ParticleCount& count : *list) {
             sum += count.particles;
         }
@@ -218,7 +236,7 @@ double ParticleEstimate::total() const {
 
 const ParticleCount* ParticleEstimate::largest() const {
     const ParticleCount* best = nullptr;
-    for (const auto* list : {&bodies, &walls}) {
+    for (const auto* list : {&bodies, &sources, &walls}) {
         for (const ParticleCount& count : *list) {
             if (best == nullptr || count.particles > best->particles) {
                 best = &count;
@@ -238,10 +256,17 @@ ParticleEstimate estimate_particles(const io::CaseTable& root, int dimension) {
         estimate.bodies.push_back(estimate_body(body, dimension));
         estimate.bodies.back().index = static_cast<int>(estimate.bodies.size()) - 1;
     }
+    const double body_spacing = estimate.bodies.empty() ? 0.0 : estimate.bodies.front().spacing;
+    for (const io::CaseTable& source : sph.array_of_tables("source")) {
+        if (body_spacing > 0.0) {
+            estimate.sources.push_back(estimate_source(source, dimension, body_spacing));
+            estimate.sources.back().index = static_cast<int>(estimate.sources.size()) - 1;
+        }
+    }
     if (estimate.bodies.empty() || !sph.boolean_or("interactions", true)) {
         return estimate; // free flight builds no walls
     }
-    const double spacing = estimate.bodies.front().spacing;
+    const double spacing = body_spacing;
     const SphOptions options = read_sph_options(sph, dimension, spacing, Vec3::Zero());
     if (options.formulation == Formulation::total_lagrangian) {
         estimate.bytes_per_particle = kTotalLagrangianBytesPerParticle;

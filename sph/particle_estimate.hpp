@@ -32,7 +32,8 @@ struct ParticleCount {
     std::string basis;       ///< how it was estimated ("0.1 x 0.1 x 0.2 m box / spacing^3")
 };
 
-/// The particle counts of a case's SPH scene ([sph] with [[sph.body]] and [[sph.wall]]; the
+/// The particle counts of a case's SPH scene ([sph] with [[sph.body]], [[sph.source]] and
+/// [[sph.wall]]; the
 /// walls that [[coupling.interface]] lays on shells are not counted) from the shapes' volumes
 /// (bodies: volume / spacing^dimension; box shapes exactly as the lattice rounds them; mesh
 /// shapes: the enclosed volume of the surface; LS-DYNA decks: their *ELEMENT_SPH cards) and
@@ -41,6 +42,9 @@ struct ParticleCount {
 /// bad key fails with the message it would get there.
 struct ParticleEstimate {
     std::vector<ParticleCount> bodies;
+    /// [[sph.source]]: a site per particle of its box or shape at the bodies' spacing (a
+    /// source creates at least that many).
+    std::vector<ParticleCount> sources;
     std::vector<ParticleCount> walls;
 
     double total() const;

@@ -1,6 +1,7 @@
 #include "sph/sink.hpp"
 
 #include "io/atomic_file.hpp"
+#include "io/binary_stream.hpp"
 #include "io/case_table.hpp"
 #include "io/steady_rate.hpp"
 #include "sph/sph_case_reader.hpp"
@@ -166,7 +167,10 @@ std::vector<double> SinkSet::state() const {
 
 void SinkSet::set_state(const std::vector<double>& state) {
     const std::size_t sinks = sinks_.size();
-    const auto rows = state.size() >= 2 ? static_cast<std::size_t>(state[1]) : 0;
+    const auto rows = state.size() >= 2
+                          ? io::state_count(state[1], static_cast<double>(state.size()),
+                                            "the sinks' history rows")
+                          : 0;
     if (state.size() < 2 || state.size() != 2 + sinks + rows * (1 + sinks)) {
         throw std::runtime_error("checkpoint: the sinks' state does not match the case's " +
                                  std::to_string(sinks) + " sinks");

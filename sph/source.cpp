@@ -1,5 +1,6 @@
 #include "sph/source.hpp"
 
+#include "io/binary_stream.hpp"
 #include "io/case_table.hpp"
 #include "sph/body_generator.hpp"
 #include "sph/sph_case_reader.hpp"
@@ -221,7 +222,10 @@ void SourceSet::set_state(const std::vector<double>& state) {
     for (std::size_t s = 0; s < sources_.size(); ++s) {
         sources_[s].owed = state[3 * s];
         sources_[s].created = state[3 * s + 1];
-        sources_[s].cursor = static_cast<std::size_t>(state[3 * s + 2]);
+        // The next site to try: an index into the sites.
+        sources_[s].cursor =
+            io::state_count(state[3 * s + 2], static_cast<double>(sources_[s].sites.size()) - 1.0,
+                            "the cursor of source '" + sources_[s].name + "'");
     }
 }
 

@@ -6,9 +6,10 @@
 //         readers see the mutations (a checksum would stop nearly all of them at the door);
 //   odd:  a whole checkpoint file as it lies on disk (framing, checksum, truncation).
 // Bad input must end in io::CaseError (exit code 2) and nothing else; an accepted checkpoint
-// must leave a scene whose every array the frame writer and the diagnosis can walk. After each
-// input the scene is restored from the checkpoint of its pristine state. See
-// tests/fuzz/README.md.
+// must leave a scene whose every array the frame writer and the diagnosis can walk. The scene is
+// built once per process; every input starts from the same pristine state (the scene as built,
+// with its own checkpoint read back), so that what an input does depends on it alone and not on
+// the inputs before it. See tests/fuzz/README.md.
 
 #include "app/checkpoint.hpp"
 #include "io/case_error.hpp"
@@ -26,24 +27,64 @@ namespace {
 
 struct FuzzScene {
     std::unique_ptr<grainload::app::Scene> scene;
-    std::string pristine; ///< a whole checkpoint file of the scene as loaded
+    std::string pristine; ///< a whole checkpoint file of the scene as built
 };
 
-std::unique_ptr<grainload::app::Scene> load_scene() {
-    return grainload::app::Scene::load(GRAINLOAD_SOURCE_DIR "/tests/fuzz/checkpoint_scene.toml",
-                                       {});
+/// Inputs run, and those after which the scene was built anew (see restore()) because the
+/// pristine checkpoint was refused or was read but did not restore every byte; printed at exit.
+long long inputs_run = 0;
+long long refused_pristine = 0;
+long long differed_from_pristine = 0;
+
+void print_rebuilds() {
+    std::fprintf(stderr,
+                 "fuzz_checkpoint: %lld inputs; a new scene after %lld (the pristine checkpoint "
+                 "refused) and %lld (read, but the scene's checkpoint differed from it)\n",
+                 inputs_run, refused_pristine, differed_from_pristine);
+}
+
+/// The scene as built, with its own checkpoint read back: the state every input starts from.
+/// (Reading a checkpoint marks the shell as restarted and sets the solver's neighbour list
+/// from the checkpoint's reference positions, so a scene only built would differ from a
+/// restored one.)
+std::unique_ptr<grainload::app::Scene> pristine_scene(const std::string& pristine) {
+    auto scene =
+        grainload::app::Scene::load(GRAINLOAD_SOURCE_DIR "/tests/fuzz/checkpoint_scene.toml", {});
+    if (!pristine.empty()) {
+        (void)grainload::app::read_checkpoint_bytes(*scene, pristine);
+    }
+    return scene;
 }
 
 FuzzScene& fuzz_scene() {
     static FuzzScene state = [] {
         FuzzScene s;
-        s.scene = load_scene();
+        s.scene = pristine_scene({});
         grainload::app::RunClock clock;
         clock.frame_times = {0.0};
         s.pristine = grainload::app::checkpoint_bytes(*s.scene, clock);
+        s.scene = pristine_scene(s.pristine);
         return s;
     }();
     return state;
+}
+
+/// Back to the pristine state after an input: the pristine checkpoint read back, which must
+/// then write itself out byte for byte. A checkpoint refused halfway may have left arrays of
+/// another length or created and removed particles, from which the scene cannot go back (the
+/// CLI exits then); only that costs a new scene.
+void restore(FuzzScene& state) {
+    try {
+        const grainload::app::RunClock clock =
+            grainload::app::read_checkpoint_bytes(*state.scene, state.pristine);
+        if (grainload::app::checkpoint_bytes(*state.scene, clock) == state.pristine) {
+            return;
+        }
+        ++differed_from_pristine;
+    } catch (const grainload::io::CaseError&) {
+        ++refused_pristine;
+    }
+    state.scene = pristine_scene(state.pristine);
 }
 
 void touch_every_array(const grainload::app::Scene& scene) {
@@ -70,6 +111,7 @@ std::string grainload_fuzz_checkpoint_seed(bool whole_file) {
 }
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
+    std::atexit(print_rebuilds);
     if (const char* path = std::getenv("GRAINLOAD_FUZZ_WRITE_SEEDS")) {
         std::ofstream(std::string(path) + "/payload", std::ios::binary)
             << grainload_fuzz_checkpoint_seed(false);
@@ -84,6 +126,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         return 0;
     }
     FuzzScene& state = fuzz_scene();
+    ++inputs_run;
     const std::string_view rest(reinterpret_cast<const char*>(data) + 1, size - 1);
     const std::string bytes =
         (data[0] & 1) != 0 ? std::string(rest) : grainload::io::frame_checkpoint(rest);
@@ -92,14 +135,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         touch_every_array(*state.scene);
     } catch (const grainload::io::CaseError&) {
     }
-    // Back to the pristine state. A refused checkpoint may have left arrays of another length
-    // (the CLI exits then; here the scene is built anew), but the pristine one must then be
-    // accepted.
-    try {
-        (void)grainload::app::read_checkpoint_bytes(*state.scene, state.pristine);
-    } catch (const grainload::io::CaseError&) {
-        state.scene = load_scene();
-        (void)grainload::app::read_checkpoint_bytes(*state.scene, state.pristine);
-    }
+    restore(state);
     return 0;
 }

@@ -1,7 +1,8 @@
 // Replays a fuzz harness (FUZZ_NAME; its tests are FUZZ_SUITE.*) without libFuzzer, in the ordinary
 // test suite: over the regression inputs of tests/fuzz/regressions/<name>/ (each an input that once
 // crashed a reader, kept after the fix), over the repository's own files the fuzzer is seeded with
-// (FUZZ_SEED_EXTENSION under cases/ and tests/data/), and over deterministic damage to each
+// (FUZZ_SEED_EXTENSION under cases/, tests/data/ and tests/fuzz/: the checkpoint scene is the
+// smallest case with every module), and over deterministic damage to each
 // seed: 16 truncations and 16 flipped bytes. The harness aborts (and the test fails) on any
 // exception but the reader's own error, a crash or, in a sanitizer build, a sanitizer report.
 
@@ -39,7 +40,7 @@ std::vector<std::string> seeds() {
     if (grainload_fuzz_checkpoint_seed != nullptr) {
         return {grainload_fuzz_checkpoint_seed(false), grainload_fuzz_checkpoint_seed(true)};
     }
-    for (const char* root : {"cases", "tests/data"}) {
+    for (const char* root : {"cases", "tests/data", "tests/fuzz"}) {
         for (const auto& entry :
              fs::recursive_directory_iterator(fs::path(GRAINLOAD_SOURCE_DIR) / root)) {
             if (entry.is_regular_file() && entry.path().extension() == FUZZ_SEED_EXTENSION) {

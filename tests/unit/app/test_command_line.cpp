@@ -84,4 +84,25 @@ TEST(CommandLine, ASceneBeyondTheMachinesMemoryIsRefusedBeforeAllocating) {
         std::filesystem::exists(grainload::testing::process_folder() + "refused/checkpoint.bin"));
 }
 
+// The same for shells: a generated plate of 100000 x 100000 elements has (1e5 + 1)^2 = 1.00002e10
+// nodes, 6 DOFs each at 4.4e3 bytes per DOF (app/cost_estimate.hpp), 2.64e14 bytes = 2.46e5
+// GiB. Before the guard counted shells, `check` went on to make the mesh (a hang, then
+// std::bad_alloc); the fuzz harness of the case reader keeps the input
+// (tests/fuzz/regressions/case/shell_elements_beyond_memory).
+TEST(CommandLine, AShellBeyondTheMachinesMemoryIsRefusedBeforeAllocating) {
+    const std::string scene = "'" + source_path("tests/fuzz/checkpoint_scene.toml") + "'";
+    const auto result = run_cli("check " + scene +
+                                    " --set 'fem.shell[0].elements_x=100000'"
+                                    " --set 'fem.shell[0].elements_y=100000'",
+                                log_file());
+    EXPECT_EQ(result.exit_code, 2) << result.output;
+    EXPECT_NE(result.output.find("key 'fem.shell[0].elements_x'"), std::string::npos)
+        << result.output;
+    EXPECT_NE(result.output.find("about 2.46e+05 GiB (the largest, fem.shell[0], about 1e+10 "
+                                 "nodes)"),
+              std::string::npos)
+        << result.output;
+    EXPECT_NE(result.output.find("MemAvailable"), std::string::npos) << result.output;
+}
+
 } // namespace

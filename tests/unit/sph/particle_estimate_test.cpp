@@ -174,5 +174,51 @@ TEST(ParticleEstimate, AHugeSceneIsCountedWithoutBuildingIt) {
     EXPECT_GT(estimate.bytes(), 1e28);
 }
 
+// A source's sites are counted like a body's lattice (sph/source.cpp fills its box at the bodies'
+// spacing), so a mistyped source box is refused before its sites are made: a 1 km cube at 50 mm
+// is (1000 / 0.05)^3 = 8e12 sites, which SourceSet would have tried to allocate (192 TB) before
+// the memory guard counted sources. A 0.2 x 0.2 x 0.1 m box is 4 x 4 x 2 = 32 sites.
+TEST(ParticleEstimate, SourcesAreCountedByTheirSites) {
+    const std::string scene = R"(
+[case]
+end_time = "1 s"
+[[material]]
+name = "sand"
+model = "linear_elastic"
+density = "1600 kg/m^3"
+youngs_modulus = "10 MPa"
+poisson_ratio = 0.3
+[sph]
+interactions = false
+[[sph.body]]
+name = "box"
+material = "sand"
+spacing = "50 mm"
+[sph.body.shape]
+type = "box"
+min = "0 0 0 m"
+max = "0.5 0.5 0.5 m"
+[[sph.source]]
+name = "small"
+body = "box"
+min = "0 0 1 m"
+max = "0.2 0.2 1.1 m"
+mass_rate = "1 kg/s"
+[[sph.source]]
+name = "huge"
+body = "box"
+min = "0 0 0 m"
+max = "1000 1000 1000 m"
+mass_rate = "1 kg/s"
+)";
+    auto document = io::CaseDocument::from_string(scene, "sources.toml");
+    const ParticleEstimate estimate = estimate_particles(document->root(), 3);
+    ASSERT_EQ(estimate.sources.size(), 2u);
+    EXPECT_EQ(estimate.sources[0].particles, 32.0);
+    EXPECT_EQ(estimate.sources[1].particles, 8e12);
+    EXPECT_EQ(estimate.largest()->table, "sph.source[1]");
+    EXPECT_EQ(estimate.total(), 1000.0 + 32.0 + 8e12);
+}
+
 } // namespace
 } // namespace grainload::sph
