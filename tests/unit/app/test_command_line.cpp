@@ -27,7 +27,7 @@ TEST(CommandLine, HelpPrintsTheUsageAndExitsWithZero) {
         EXPECT_NE(result.output.find("exit codes: 0 done"), std::string::npos) << line;
     }
     for (const char* command : {"run", "check", "matpoint", "version", "help"}) {
-        for (const std::string line :
+        for (const std::string& line :
              {std::string("help ") + command, std::string(command) + " --help"}) {
             const auto result = run_cli(line, log_file());
             EXPECT_EQ(result.exit_code, 0) << line << "\n" << result.output;
