@@ -1,8 +1,9 @@
 #include "sph/cell_list.hpp"
 
+#include "sph/point_bounds.hpp"
+
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 
 namespace grainload::sph {
@@ -33,24 +34,10 @@ void CellList::build(std::span<const Vec3> positions, double search_radius, int 
     }
     const auto n = static_cast<Index>(positions.size());
     // The grid spans the finite positions; a non-finite one goes to the nearest cell.
-    // Minima and maxima are exact in any order, so the threads' reduction gives the serial box.
-    constexpr double kInf = std::numeric_limits<double>::infinity();
-    double lx = kInf, ly = kInf, lz = kInf, ux = -kInf, uy = -kInf, uz = -kInf;
-#pragma omp parallel for schedule(static) reduction(min : lx, ly, lz) reduction(max : ux, uy, uz)
-    for (Index i = 0; i < n; ++i) {
-        const Vec3& x = positions[i];
-        if (x.allFinite()) {
-            lx = std::min(lx, x[0]);
-            ly = std::min(ly, x[1]);
-            lz = std::min(lz, x[2]);
-            ux = std::max(ux, x[0]);
-            uy = std::max(uy, x[1]);
-            uz = std::max(uz, x[2]);
-        }
-    }
-    const bool none = !(lx <= ux);
-    const Vec3 lower = none ? Vec3::Zero() : Vec3(lx, ly, lz);
-    const Vec3 upper = none ? Vec3::Zero() : Vec3(ux, uy, uz);
+    const PointBounds box =
+        point_bounds(positions, [&positions](Index i) { return positions[i].allFinite(); });
+    const Vec3 lower = box.empty() ? Vec3::Zero() : box.lower;
+    const Vec3 upper = box.empty() ? Vec3::Zero() : box.upper;
     origin_ = lower;
     cell_size_ = search_radius;
     const double budget = kMaxCellsPerParticle * static_cast<double>(std::max<Index>(n, 1)) + 27.0;

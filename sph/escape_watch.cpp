@@ -1,5 +1,7 @@
 #include "sph/escape_watch.hpp"
 
+#include "sph/point_bounds.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -8,16 +10,6 @@
 namespace grainload::sph {
 
 namespace {
-
-struct Box {
-    Vec3 lower = Vec3::Constant(std::numeric_limits<double>::infinity());
-    Vec3 upper = Vec3::Constant(-std::numeric_limits<double>::infinity());
-    void add(const Vec3& x) {
-        lower = lower.cwiseMin(x);
-        upper = upper.cwiseMax(x);
-    }
-    bool empty() const { return !(lower.x() <= upper.x()); }
-};
 
 std::string vector_text(const Vec3& v, int dimension) {
     std::ostringstream out;
@@ -33,9 +25,8 @@ std::string vector_text(const Vec3& v, int dimension) {
 
 EscapeWatch::EscapeWatch(const ParticleSet& particles, const Vec3& gravity, int dimension)
     : dimension_(dimension), gravity_(gravity.norm()) {
-    Box box;
+    const PointBounds box = point_bounds(particles.position, [](Index) { return true; });
     for (Index i = 0; i < particles.size(); ++i) {
-        box.add(particles.position[i]);
         initial_speed_ = std::max(initial_speed_, particles.velocity[i].norm());
     }
     if (box.empty() || !box.lower.allFinite() || !box.upper.allFinite()) {
@@ -58,31 +49,18 @@ EscapeWatch::check(const ParticleSet& particles,
         return std::nullopt;
     }
     // Walls where they are now widen the box by the same margin (their own extent at the start
-    // is in it already) and lend their speed to v0.
-    // Checked every step, so reduced over the threads (minima and maxima are exact in any
-    // order).
-    constexpr double kInf = std::numeric_limits<double>::infinity();
-    double lx = kInf, ly = kInf, lz = kInf, ux = -kInf, uy = -kInf, uz = -kInf;
-    double v0 = initial_speed_;
+    // is in it already) and lend their speed to v0. Checked every step, so reduced over the
+    // threads (maxima are exact in any order).
     const Index n = particles.size();
-#pragma omp parallel for schedule(static) reduction(min                                            \
-                                                    : lx, ly, lz) reduction(max                    \
-                                                                            : ux, uy, uz, v0)
+    const PointBounds walls =
+        point_bounds(particles.position, [&particles](Index i) { return particles.is_wall(i); });
+    double v0 = initial_speed_;
+#pragma omp parallel for schedule(static) reduction(max : v0)
     for (Index i = 0; i < n; ++i) {
         if (particles.is_wall(i)) {
-            const Vec3& x = particles.position[i];
-            lx = std::min(lx, x[0]);
-            ly = std::min(ly, x[1]);
-            lz = std::min(lz, x[2]);
-            ux = std::max(ux, x[0]);
-            uy = std::max(uy, x[1]);
-            uz = std::max(uz, x[2]);
             v0 = std::max(v0, particles.velocity[i].norm());
         }
     }
-    Box walls;
-    walls.lower = Vec3(lx, ly, lz);
-    walls.upper = Vec3(ux, uy, uz);
     Vec3 lower = lower_;
     Vec3 upper = upper_;
     if (!walls.empty()) {

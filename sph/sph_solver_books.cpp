@@ -40,7 +40,7 @@ double SphSolver::contact_energy_of(std::span<const char> flagged) const {
     const double w_reference = kernel_.value(options_.particle_spacing);
     const bool all = flagged.empty();
     double sum = 0.0;
-#pragma omp parallel for schedule(dynamic, 256) reduction(+ : sum)
+#pragma omp parallel for schedule(static) reduction(+ : sum)
     for (Index i = 0; i < n; ++i) {
         const bool i_counts = all || flagged[i];
         // Pairs with images are held by the real particle's row only, so with images every row

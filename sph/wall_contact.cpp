@@ -131,10 +131,9 @@ void WallContact::apply(ParticleSet& p, const NeighbourList& neighbours,
 #endif
     per_thread_.resize(static_cast<std::size_t>(threads));
     const Index n = p.size();
-    double friction_work = 0.0;
     Index sticking = 0;
     Index slipping = 0;
-#pragma omp parallel reduction(+ : friction_work, sticking, slipping)
+#pragma omp parallel reduction(+ : sticking, slipping)
     {
         int thread = 0;
 #ifdef _OPENMP
@@ -171,6 +170,7 @@ void WallContact::apply(ParticleSet& p, const NeighbourList& neighbours,
                 const double normal_speed = relative.dot(normal);
                 double load = touch.repulsion.dot(normal);
                 Vec3 force = Vec3::Zero();
+                double friction_work = 0.0;
                 if (zeta > 0.0) {
                     // k_n = sum_j k_ij (e_ij . n)^2 >= 0, formed as n . K n: when every e_ij is
                     // nearly in the wall's plane (a grain beside a wall's edge) round-off leaves
@@ -192,19 +192,18 @@ void WallContact::apply(ParticleSet& p, const NeighbourList& neighbours,
                                                         a - a.dot(normal) * normal, dt, stuck);
                     (stuck ? sticking : slipping) += 1;
                     force += friction;
-                    friction_work -= friction.dot(slip) * dt;
+                    friction_work = -friction.dot(slip) * dt;
                     heat -= friction.dot(slip);
                 }
                 if (force.squaredNorm() > 0.0) {
                     p.acceleration[i] += force / p.mass[i];
-                    records.push_back(
-                        {i, touch.wall_index, force, touch.weight_sum, wall_velocity});
+                    records.push_back({i, touch.wall_index, force, touch.weight_sum, wall_velocity,
+                                       friction_work});
                 }
             }
             heating_rate[static_cast<std::size_t>(i)] += heat / p.mass[i];
         }
     }
-    friction_work_ += friction_work;
     sticking_ = sticking;
     slipping_ = slipping;
     distribute_reactions(p, neighbours, kernel);
@@ -213,29 +212,39 @@ void WallContact::apply(ParticleSet& p, const NeighbourList& neighbours,
 void WallContact::distribute_reactions(ParticleSet& p, const NeighbourList& neighbours,
                                        const SmoothingKernel& kernel) {
     // Serial: only the contact layer has records, and wall particles are shared between
-    // the records of neighbouring body particles.
-    const double support_squared = kernel.support_radius() * kernel.support_radius();
+    // the records of neighbouring body particles. In the particles' order (each particle's
+    // touches in the order found), whichever thread found them: the dynamic schedule hands
+    // chunks to threads as they come free, so the threads' order would make the walls' loads,
+    // and a coupled shell's, differ with the timing at round-off level, and a restart or a
+    // second run would not repeat the run bit for bit.
+    merged_.clear();
     for (const auto& records : per_thread_) {
-        for (const Record& record : records) {
-            const Index i = record.particle;
-            Vec3 reaction_velocity = Vec3::Zero(); // share-weighted, the shares sum to 1
-            for (const Index j : neighbours.neighbours(i)) {
-                if (p.wall_id[j] != record.wall_index) {
-                    continue;
-                }
-                const double r2 = (p.position[i] - p.position[j]).squaredNorm();
-                if (r2 >= support_squared) {
-                    continue;
-                }
-                const double share =
-                    p.mass[j] / p.density[j] * kernel.value(std::sqrt(r2)) / record.weight_sum;
-                p.acceleration[j] -= (share / p.mass[j]) * record.force;
-                reaction_velocity += share * p.velocity[j];
-            }
-            reaction_power_correction_ +=
-                record.force.dot(record.wall_velocity - reaction_velocity);
-        }
+        merged_.insert(merged_.end(), records.begin(), records.end());
     }
+    std::stable_sort(merged_.begin(), merged_.end(),
+                     [](const Record& a, const Record& b) { return a.particle < b.particle; });
+    const double support_squared = kernel.support_radius() * kernel.support_radius();
+    double friction_work = 0.0;
+    for (const Record& record : merged_) {
+        friction_work += record.friction_work;
+        const Index i = record.particle;
+        Vec3 reaction_velocity = Vec3::Zero(); // share-weighted, the shares sum to 1
+        for (const Index j : neighbours.neighbours(i)) {
+            if (p.wall_id[j] != record.wall_index) {
+                continue;
+            }
+            const double r2 = (p.position[i] - p.position[j]).squaredNorm();
+            if (r2 >= support_squared) {
+                continue;
+            }
+            const double share =
+                p.mass[j] / p.density[j] * kernel.value(std::sqrt(r2)) / record.weight_sum;
+            p.acceleration[j] -= (share / p.mass[j]) * record.force;
+            reaction_velocity += share * p.velocity[j];
+        }
+        reaction_power_correction_ += record.force.dot(record.wall_velocity - reaction_velocity);
+    }
+    friction_work_ += friction_work;
 }
 
 } // namespace grainload::sph

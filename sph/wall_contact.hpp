@@ -76,12 +76,14 @@ class WallContact {
         int wall_index;
         Vec3 force;
         double weight_sum;
-        Vec3 wall_velocity; ///< the wall's velocity at the body particle
+        Vec3 wall_velocity;   ///< the wall's velocity at the body particle
+        double friction_work; ///< -F_friction . slip dt of this touch [J]
     };
     void distribute_reactions(ParticleSet& p, const NeighbourList& neighbours,
                               const SmoothingKernel& kernel);
 
     std::vector<std::vector<Record>> per_thread_;
+    std::vector<Record> merged_; ///< the threads' records in the particles' order
     double friction_work_ = 0.0;
     double reaction_power_correction_ = 0.0;
     Index sticking_ = 0;

@@ -71,10 +71,8 @@ TEST(PhaseSequence, EndsOnTimeSettleAndDischargeInOrder) {
     EXPECT_EQ(records[3].ended_by, "");
 }
 
-// A stated end that a condition before it outran ends its phase as it begins (both logged),
-// and the state restores every start, end and watch exactly.
-TEST(PhaseSequence, StatedEndPassedByAConditionEndsAtOnceAndStateRestores) {
-    PhaseSequence phases = read(R"(
+/// Settle on a condition, then a stated end the condition may pass, then an open end.
+constexpr const char* kSettleOpenDischarge = R"(
 [[phase]]
 name = "settle"
 end = "settled"
@@ -84,23 +82,18 @@ name = "open"
 end = "1 s"
 [[phase]]
 name = "discharge"
-)");
+)";
+
+// A stated end that a condition before it outran ends its phase as it begins (both logged),
+// and the state restores every start, end and watch exactly.
+TEST(PhaseSequence, StatedEndPassedByAConditionEndsAtOnceAndStateRestores) {
+    PhaseSequence phases = read(kSettleOpenDischarge);
     phases.record_kinetic(0.5, 10.0);
     phases.record_kinetic(2.0, 0.5);
     EXPECT_EQ(phases.update(2.0, 0.0).size(), 2u);
     EXPECT_EQ(phases.start(1), 2.0);
     EXPECT_EQ(phases.start(2), 2.0);
-    PhaseSequence copy = read(R"(
-[[phase]]
-name = "settle"
-end = "settled"
-kinetic_energy_fraction = 0.1
-[[phase]]
-name = "open"
-end = "1 s"
-[[phase]]
-name = "discharge"
-)");
+    PhaseSequence copy = read(kSettleOpenDischarge);
     copy.set_state(phases.state());
     EXPECT_EQ(copy.state(), phases.state());
     EXPECT_EQ(copy.start(2), 2.0);
