@@ -277,12 +277,12 @@ std::string json_quoted(std::string_view text) {
     return out.str();
 }
 
-std::string json_number(double value) {
+std::string json_number(double value, int digits) {
     if (!std::isfinite(value)) {
         return "null";
     }
     std::ostringstream out;
-    out << std::setprecision(12) << value;
+    out << std::setprecision(digits) << value;
     return out.str();
 }
 

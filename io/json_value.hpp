@@ -51,7 +51,7 @@ JsonValue read_json_file(const std::string& path);
 
 /// `text` as a JSON string literal, quotes included.
 std::string json_quoted(std::string_view text);
-/// A number as JSON writes it (12 significant digits); null for NaN and infinities.
-std::string json_number(double value);
+/// A number as JSON writes it (`digits` significant digits); null for NaN and infinities.
+std::string json_number(double value, int digits = 12);
 
 } // namespace grainload::io
