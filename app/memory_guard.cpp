@@ -111,12 +111,15 @@ std::optional<double> available_memory() {
     return std::nullopt;
 }
 
-void refuse_oversized_scene(const io::CaseTable& root, int dimension,
-                            std::optional<double> available) {
+std::optional<double> refuse_oversized_scene(const io::CaseTable& root, int dimension,
+                                             std::optional<double> available) {
     const sph::ParticleEstimate estimate = sph::estimate_particles(root, dimension);
     const ShellCount shells = estimate_shells(root);
-    if (!available || !(estimate.bytes() + shells.bytes > *available)) {
-        return;
+    if (!available) {
+        return std::nullopt;
+    }
+    if (!(estimate.bytes() + shells.bytes > *available)) {
+        return (*available - estimate.bytes() - shells.bytes) / estimate.bytes_per_particle;
     }
     const sph::ParticleCount* largest = estimate.largest();
     if (largest == nullptr || shells.bytes > estimate.bytes()) {

@@ -14,8 +14,10 @@ std::optional<double> available_memory();
 /// (sph/particle_estimate.hpp) and generated shells would need more than `available` bytes:
 /// io::CaseError at the spacing key of the largest body or wall, with the estimate and the
 /// spacing that would fit, or, when the shells take more than the particles, at the element
-/// count of the largest shell.
-void refuse_oversized_scene(const io::CaseTable& root, int dimension,
-                            std::optional<double> available);
+/// count of the largest shell. Returns the SPH particles that still fit beside the estimate
+/// (the budget of the wall particles a [coupling] lays on its shells, which the shell mesh
+/// must exist to count: coupling::read_coupled_model), std::nullopt when `available` is.
+std::optional<double> refuse_oversized_scene(const io::CaseTable& root, int dimension,
+                                             std::optional<double> available);
 
 } // namespace grainload::app

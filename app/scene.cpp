@@ -31,10 +31,11 @@ std::unique_ptr<Scene> Scene::from_document(std::unique_ptr<io::CaseDocument> do
     scene->settings = io::read_scene_settings(*scene->document, name);
     const io::CaseTable root = scene->document->root();
     scene->materials = materials::MaterialLibrary::from_case(root);
-    refuse_oversized_scene(root, scene->settings.dimension, memory);
+    const std::optional<double> spare_particles =
+        refuse_oversized_scene(root, scene->settings.dimension, memory);
     if (root.has("coupling")) {
         scene->steppers.push_back(
-            coupling::read_coupled_model(root, scene->settings, scene->materials));
+            coupling::read_coupled_model(root, scene->settings, scene->materials, spare_particles));
     } else if (root.has("sph")) {
         scene->steppers.push_back(
             sph::SphModel::from_case(root, scene->settings, scene->materials));

@@ -102,6 +102,34 @@ std::vector<Index> interface_elements(const io::CaseTable& table, const fem::She
     return elements;
 }
 
+/// Refuses an interface whose wall particles (ShellWall::particle_bound) would need more than
+/// the `spare` particles left in memory, before any is laid, at its `spacing` (or `part` when
+/// the bodies' spacing is taken), with the count and a spacing that fits; takes them from
+/// `spare` otherwise. The count goes as spacing^-2, so the fitting spacing is the spacing
+/// times the square root of the excess.
+void refuse_oversized_interface(const io::CaseTable& table, const fem::ShellMesh& mesh,
+                                const std::vector<Index>& elements, const ShellWallLayout& layout,
+                                std::optional<double>& spare) {
+    if (!spare) {
+        return;
+    }
+    const double count = ShellWall::particle_bound(mesh, elements, layout);
+    if (!(count > *spare)) {
+        *spare -= count;
+        return;
+    }
+    std::ostringstream message;
+    message.precision(3);
+    message << "the interface would lay about " << count << " wall particles on its "
+            << elements.size() << " elements (" << layout.layers << " layers at " << layout.spacing
+            << " m), more than the about " << std::max(*spare, 0.0)
+            << " that fit in the memory left beside the bodies, walls and shells (MemAvailable "
+               "in /proc/meminfo): expected a spacing of at least about "
+            << layout.spacing * std::sqrt(count / std::max(*spare, 1.0))
+            << " m (the bodies' spacing bounds it: coarsen both), or a smaller part";
+    table.fail(table.has("spacing") ? "spacing" : "part", message.str());
+}
+
 void read_friction(const io::CaseTable& coupling, const sph::SphModel& sph,
                    std::vector<sph::SphModel::WallDefinition>& walls) {
     for (const io::CaseTable& table : coupling.array_of_tables("friction")) {
@@ -145,7 +173,8 @@ void read_friction(const io::CaseTable& coupling, const sph::SphModel& sph,
 
 std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
                                                  const io::SceneSettings& scene,
-                                                 const materials::MaterialLibrary& materials) {
+                                                 const materials::MaterialLibrary& materials,
+                                                 std::optional<double> spare_particles) {
     const io::CaseTable coupling = root.table("coupling");
     if (!root.has("sph") || !root.has("fem")) {
         coupling.fail("", "a coupling joins SPH bodies and shells: expected [sph] with "
@@ -201,6 +230,8 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
             }
             layout.layers = 1;
         }
+        refuse_oversized_interface(table, fem->analysis().mesh(), part.elements, layout,
+                                   spare_particles);
         part.side = layout.side;
         part.wall = std::make_shared<ShellWall>(fem->analysis(), part.elements, layout);
         sph::SphModel::WallDefinition wall;

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 
 namespace grainload::io {
 class CaseTable;
@@ -62,9 +63,12 @@ inline constexpr std::array<io::KeySpec, 8> kInterfaceKeys{{
 /// A scene with [sph], [fem] and [coupling]: the bodies, the shell parts, one wall per
 /// [[coupling.interface]] on the shell (named after its part or its `name`), friction from
 /// [[coupling.friction]] (body, interface name as `part`, mu_static, mu_kinetic), joined in one
-/// CoupledModel.
+/// CoupledModel. `spare_particles`: the SPH particles that fit in memory beside the bodies,
+/// walls and shells (app/memory_guard.hpp); the interfaces' wall particles, counted on the
+/// shell mesh before any is laid, may not exceed them (std::nullopt: no limit).
 std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
                                                  const io::SceneSettings& scene,
-                                                 const materials::MaterialLibrary& materials);
+                                                 const materials::MaterialLibrary& materials,
+                                                 std::optional<double> spare_particles = {});
 
 } // namespace grainload::coupling

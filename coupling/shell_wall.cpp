@@ -14,22 +14,13 @@ std::size_t at(Index i) {
     return static_cast<std::size_t>(i);
 }
 
-} // namespace
-
-ShellWall::ShellWall(const fem::ShellAnalysis& analysis, const std::vector<Index>& elements,
-                     const ShellWallLayout& layout)
-    : side_(layout.side) {
-    if (!(layout.spacing > 0.0) || layout.layers < 1 ||
-        (side_ == ContactSide::both && layout.layers != 1)) {
-        throw std::invalid_argument("ShellWall: expected a positive spacing and >= 1 layer "
-                                    "(exactly 1 for both sides)");
-    }
-    // The part's mid-surface as a surface mesh, sampled by the SPH walls' own sampler
-    // (sph/surface_mesh_wall.hpp): faces are its triangles first, then its quadrangles.
-    const fem::ShellMesh& mesh = analysis.mesh();
+/// The part's mid-surface as a surface mesh, for the SPH walls' own sampler
+/// (sph/surface_mesh_wall.hpp): faces are its triangles first, then its quadrangles, and
+/// `face_element` the element of each face.
+io::SurfaceMesh part_surface(const fem::ShellMesh& mesh, const std::vector<Index>& elements,
+                             std::vector<Index>& face_element) {
     io::SurfaceMesh surface;
     surface.vertices = mesh.nodes();
-    std::vector<Index> face_element;
     for (const Index e : elements) {
         if (mesh.element(e).is_triangle()) {
             const auto& n = mesh.element(e).nodes;
@@ -43,6 +34,29 @@ ShellWall::ShellWall(const fem::ShellAnalysis& analysis, const std::vector<Index
             face_element.push_back(e);
         }
     }
+    return surface;
+}
+
+} // namespace
+
+double ShellWall::particle_bound(const fem::ShellMesh& mesh, const std::vector<Index>& elements,
+                                 const ShellWallLayout& layout) {
+    std::vector<Index> face_element;
+    return sph::mesh_wall_sample_bound(part_surface(mesh, elements, face_element), layout.spacing,
+                                       layout.layers, 3);
+}
+
+ShellWall::ShellWall(const fem::ShellAnalysis& analysis, const std::vector<Index>& elements,
+                     const ShellWallLayout& layout)
+    : side_(layout.side) {
+    if (!(layout.spacing > 0.0) || layout.layers < 1 ||
+        (side_ == ContactSide::both && layout.layers != 1)) {
+        throw std::invalid_argument("ShellWall: expected a positive spacing and >= 1 layer "
+                                    "(exactly 1 for both sides)");
+    }
+    std::vector<Index> face_element;
+    const io::SurfaceMesh surface = part_surface(analysis.mesh(), elements, face_element);
+    const fem::ShellMesh& mesh = analysis.mesh();
     const sph::MeshWallSamples sampled = sph::mesh_wall_points(
         surface, layout.spacing, layout.layers, 3, side_ == ContactSide::negative);
     for (const sph::WallSample& origin : sampled.samples) {

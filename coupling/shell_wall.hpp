@@ -52,6 +52,11 @@ class ShellWall final : public sph::WallDriver {
     ShellWall(const fem::ShellAnalysis& analysis, const std::vector<Index>& elements,
               const ShellWallLayout& layout);
 
+    /// The particles the constructor would lay on `elements` of `mesh` at most (the samples
+    /// before coincident ones merge), counted without making any.
+    static double particle_bound(const fem::ShellMesh& mesh, const std::vector<Index>& elements,
+                                 const ShellWallLayout& layout);
+
     const std::vector<Vec3>& points() const { return points_; }
     const std::vector<Vec3>& normals() const { return normals_; }
     const std::vector<sph::WallSample>& samples() const { return samples_; }

@@ -23,9 +23,22 @@ struct Sample {
     double s;
 };
 
-int parts(double length, double spacing) {
+/// Parts of an edge, in a double (mesh_wall_sample_bound counts edges beyond an int).
+double part_count(double length, double spacing) {
     // The small allowance keeps an edge of exactly n spacings at n parts despite round-off.
-    return std::max(1, static_cast<int>(std::ceil(length / spacing - 1e-9)));
+    return std::max(1.0, std::ceil(length / spacing - 1e-9));
+}
+
+int parts(double length, double spacing) {
+    return static_cast<int>(part_count(length, spacing));
+}
+
+/// Longest of the two edges from the vertex opposite the triangle's longest edge: the n of
+/// sample_triangle is part_count of it.
+double triangle_edge(const Vec3& x0, const Vec3& x1, const Vec3& x2) {
+    std::array<double, 3> edge{(x2 - x1).norm(), (x0 - x2).norm(), (x1 - x0).norm()};
+    std::sort(edge.begin(), edge.end());
+    return edge[1];
 }
 
 /// Barycentric grid a + (i/n) ab + (j/n) ac, i + j <= n, from the vertex `a` opposite the
@@ -42,7 +55,7 @@ void sample_triangle(const Vec3& x0, const Vec3& x1, const Vec3& x2, double spac
                                                 opposite.begin());
     std::rotate(x.begin(), x.begin() + static_cast<std::ptrdiff_t>(first), x.end());
     const Vec3 ab = x[1] - x[0], ac = x[2] - x[0];
-    const int n = parts(std::max(ab.norm(), ac.norm()), spacing);
+    const int n = parts(triangle_edge(x0, x1, x2), spacing);
     const Vec3 normal = ab.cross(ac).normalized();
     for (int i = 0; i <= n; ++i) {
         for (int j = 0; i + j <= n; ++j) {
@@ -158,6 +171,28 @@ class PointMerger {
 };
 
 } // namespace
+
+double mesh_wall_sample_bound(const io::SurfaceMesh& mesh, double spacing, int layers,
+                              int dimension) {
+    const auto& v = mesh.vertices;
+    double count = 0.0;
+    if (dimension == 2) {
+        for (const auto& [a, b] : mesh.segments) {
+            count += part_count((v[b] - v[a]).norm(), spacing) + 1.0;
+        }
+        return layers * count;
+    }
+    for (const auto& [a, b, c] : mesh.triangles) {
+        const double n = part_count(triangle_edge(v[a], v[b], v[c]), spacing);
+        count += (n + 1.0) * (n + 2.0) / 2.0; // i + j <= n
+    }
+    for (const auto& [a, b, c, d] : mesh.quads) {
+        const double nu = part_count(std::max((v[b] - v[a]).norm(), (v[c] - v[d]).norm()), spacing);
+        const double nv = part_count(std::max((v[d] - v[a]).norm(), (v[c] - v[b]).norm()), spacing);
+        count += (nu + 1.0) * (nv + 1.0);
+    }
+    return layers * count;
+}
 
 MeshWallSamples mesh_wall_points(const io::SurfaceMesh& mesh, double spacing, int layers,
                                  int dimension, bool flip_normals) {

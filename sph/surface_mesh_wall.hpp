@@ -32,6 +32,12 @@ struct MeshWallSamples {
 MeshWallSamples mesh_wall_points(const io::SurfaceMesh& mesh, double spacing, int layers,
                                  int dimension, bool flip_normals);
 
+/// The samples mesh_wall_points lays before it merges coincident ones (an upper bound of its
+/// points), counted in doubles without making any: a mesh of a few large faces at a fine
+/// spacing may ask for more than memory or an int holds, which callers refuse first.
+double mesh_wall_sample_bound(const io::SurfaceMesh& mesh, double spacing, int layers,
+                              int dimension);
+
 /// mesh_wall_points for a [[sph.wall]] of type = "mesh": the mesh of its `file` (see
 /// io::read_surface_mesh) and `flip_normals` (default false). Refused when the mesh has no
 /// faces (3D) or no line segments (plane strain).

@@ -105,4 +105,26 @@ TEST(CommandLine, AShellBeyondTheMachinesMemoryIsRefusedBeforeAllocating) {
     EXPECT_NE(result.output.find("MemAvailable"), std::string::npos) << result.output;
 }
 
+// And for the wall particles a [[coupling.interface]] lays on its shell, which the guard above
+// cannot count without the mesh: the one-element plate stretched to 80 mm x 300 km under sand at
+// 10 mm is a single quadrangle sampled at ceil(80/10) + 1 = 9 by ceil(3e8/10) + 1 = 3e7 + 1
+// points, 2.7e8 particles at 903 bytes (sph/particle_estimate.hpp), about 230 GiB. Before the
+// coupling reader counted them, `check` sampled the plate (the fuzz harness kept a hang at
+// 1.6 GiB; tests/fuzz/regressions/case/interface_wall_beyond_memory).
+TEST(CommandLine, AnInterfaceWallBeyondTheMachinesMemoryIsRefusedBeforeAllocating) {
+    const std::string scene = "'" + source_path("tests/fuzz/checkpoint_scene.toml") + "'";
+    const auto result = run_cli("check " + scene +
+                                    " --set 'fem.shell[0].length_y=300 km'"
+                                    " --set 'sph.body[0].spacing=10 mm'",
+                                log_file());
+    EXPECT_EQ(result.exit_code, 2) << result.output;
+    EXPECT_NE(result.output.find("key 'coupling.interface[0].part'"), std::string::npos)
+        << result.output;
+    EXPECT_NE(result.output.find("about 2.7e+08 wall particles on its 1 elements (1 layers at "
+                                 "0.01 m)"),
+              std::string::npos)
+        << result.output;
+    EXPECT_NE(result.output.find("MemAvailable"), std::string::npos) << result.output;
+}
+
 } // namespace
