@@ -200,6 +200,19 @@ double speedup_of(int threads, const Calibration& c) {
     return measured == 1 ? 1.0 : 1.0 + (c.speedup - 1.0) * (used - 1.0) / (measured - 1.0);
 }
 
+/// The coupled model's window and its estimated limit, as it reports them at t = 0.
+void add_window_limit(const coupling::CoupledModel& coupled, CostEstimate& e) {
+    std::vector<io::ResultFigure> figures;
+    coupled.append_results(0.0, figures);
+    for (const io::ResultFigure& figure : figures) {
+        if (figure.name == "coupling_window_limit") {
+            e.coupling_window_limit = figure.value;
+        }
+    }
+    e.coupling_window = coupled.stable_time_step();
+    e.coupling_static = !coupled.fem().dynamic();
+}
+
 } // namespace
 
 CostEstimate estimate_cost(const Scene& scene, int threads, const Calibration& calibration) {
@@ -235,6 +248,7 @@ CostEstimate estimate_cost(const Scene& scene, int threads, const Calibration& c
         if (const auto* coupled = dynamic_cast<const coupling::CoupledModel*>(stepper.get())) {
             add_sph(coupled->sph(), coupled->sph().stable_time_step());
             add_shell(coupled->fem());
+            add_window_limit(*coupled, e);
         } else if (const auto* sph = dynamic_cast<const sph::SphModel*>(stepper.get())) {
             add_sph(*sph, e.time_step);
         } else if (const auto* fem = dynamic_cast<const fem::ShellModel*>(stepper.get())) {
@@ -271,7 +285,16 @@ std::string describe_cost(const CostEstimate& e, const Calibration& calibration)
     std::snprintf(line, sizeof line,
                   "      estimated wall time %s on %d threads, memory %.0f MiB\n",
                   duration(e.wall_time_s).c_str(), e.threads, e.memory_bytes / (1024.0 * 1024.0));
-    out << line << "      throughput: " << calibration.source << '\n';
+    out << line;
+    if (e.coupling_window > 0.0) {
+        std::snprintf(line, sizeof line,
+                      "      coupling: window %.3g s; the staggered exchange is stable %s about "
+                      "%.3g s (estimate, coupling_window_limit)\n",
+                      e.coupling_window, e.coupling_static ? "from windows of" : "up to windows of",
+                      e.coupling_window_limit);
+        out << line;
+    }
+    out << "      throughput: " << calibration.source << '\n';
     return out.str();
 }
 

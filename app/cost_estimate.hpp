@@ -66,6 +66,12 @@ struct CostEstimate {
     Index contact_entries = 0; ///< between a body and a wall particle
     /// Particles the sources create, averaged over the run (each costs a full kernel support)
     double average_created = 0.0;
+    /// A coupled scene: its window and the staggered exchange's estimated limit
+    /// (coupling/window_limits.hpp), the shortest stable window for a static shell, the
+    /// longest for a dynamic one (0: no coupling).
+    double coupling_window = 0.0;
+    double coupling_window_limit = 0.0;
+    bool coupling_static = false;
     int threads = 1;
     double wall_time_s = 0.0;
     double memory_bytes = 0.0;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <sstream>
 
 namespace grainload::coupling {
@@ -272,13 +273,20 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
                 << sph_step << " s: expected a window of at least one SPH step";
         coupling.fail("window", message.str());
     }
-    const WindowLimits limits = estimate_window_limits(*sph, *fem, parts, settings.relaxation);
+    const WindowLimits limits =
+        estimate_window_limits(*sph, *fem, parts, settings.relaxation, scene.end_time);
     const bool beyond = coupling.boolean_or(
         "beyond_window_limit", io::default_value(kCouplingKeys, "beyond_window_limit") != 0.0);
     if (settings.max_iterations <= 1 && !beyond) {
         if (auto refusal =
                 window_refusal(limits, settings.window, fem->dynamic(), settings.relaxation)) {
             coupling.fail("window", *refusal);
+        }
+    }
+    if (settings.max_iterations <= 1) {
+        if (auto warning =
+                window_warning(limits, settings.window, fem->dynamic(), settings.relaxation)) {
+            std::cerr << "grainload: warning: " << *warning << '\n';
         }
     }
     auto model =

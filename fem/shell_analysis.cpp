@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 
 namespace grainload::fem {
@@ -328,7 +329,10 @@ Vec3 ShellAnalysis::director(Index element, int corner) const {
 }
 
 Eigen::VectorXd ShellAnalysis::tangent_response(const Eigen::VectorXd& load) {
-    const std::vector<Index>& eq = equation_numbers();
+    return tangent_inverse()(load);
+}
+
+std::function<Eigen::VectorXd(const Eigen::VectorXd&)> ShellAnalysis::tangent_inverse() {
     SparseSolver::Matrix k;
     Eigen::VectorXd internal;
     set_assembly_load_factor(load_factor_);
@@ -336,11 +340,13 @@ Eigen::VectorXd ShellAnalysis::tangent_response(const Eigen::VectorXd& load) {
     for (auto& e : elements_) {
         e.revert();
     }
-    SparseSolver solver;
-    solver.factorize(k, tangent_symmetric());
-    Eigen::VectorXd response = Eigen::VectorXd::Zero(load.size());
-    scatter_free(eq, solver.solve(free_part(eq, free_count_, load)), response);
-    return response;
+    auto solver = std::make_shared<SparseSolver>();
+    solver->factorize(k, tangent_symmetric());
+    return [solver, eq = equation_numbers(), free = free_count_](const Eigen::VectorXd& load) {
+        Eigen::VectorXd response = Eigen::VectorXd::Zero(load.size());
+        scatter_free(eq, solver->solve(free_part(eq, free, load)), response);
+        return response;
+    };
 }
 
 Eigen::VectorXd ShellAnalysis::reactions() {

@@ -114,6 +114,10 @@ class ShellAnalysis {
     /// with the tangent of the current state: one linear solve, the state left as it is (the
     /// coupling's estimate of the shell's compliance).
     Eigen::VectorXd tangent_response(const Eigen::VectorXd& load);
+    /// tangent_response for many loads: the tangent of the current state factorised once (the
+    /// coupling's power iteration for the shell's most compliant mode); the returned function
+    /// keeps the factor and does not see later changes of the state.
+    std::function<Eigen::VectorXd(const Eigen::VectorXd&)> tangent_inverse();
     /// Internal minus applied force at every DOF (the reactions at constrained DOFs).
     Eigen::VectorXd reactions();
     Index free_dof_count() const { return free_count_; }
