@@ -254,18 +254,14 @@ void CoupledModel::append_hints(std::vector<std::string>& hints) const {
 
 void CoupledModel::iterate_window(double t, double dt) {
     // Fixed-point iteration on the interface load F: every pass starts the window afresh from
-    // the state saved here, under the load of the pass before updated by Aitken's dynamic
-    // relaxation (Irons & Tuck 1969; Kuttler & Wall 2008, Comput. Mech. 43:61-72, eq. 44):
-    //   r(k) = F~(k) - F(k),  omega(k) = -omega(k-1) r(k-1) . (r(k) - r(k-1)) / |r(k) - r(k-1)|^2,
-    //   F(k+1) = F(k) + omega(k) r(k),
-    // starting from the case's relaxation factor.
+    // the state saved here, under the load the accelerator makes of the passes before
+    // (coupling/interface_accelerator.hpp), starting from the case's relaxation factor.
     std::stringstream saved;
     sph_->write_checkpoint(saved);
     fem_->write_checkpoint(saved);
     const std::string start_state = saved.str();
     Eigen::VectorXd applied = load_;
-    Eigen::VectorXd previous_residual;
-    double omega = settings_.relaxation;
+    InterfaceAccelerator accelerator(settings_.accelerator, settings_.relaxation);
     WindowRecord spent; // the wall times of the passes before, which the window costs too
     for (int pass = 1;; ++pass) {
         if (pass > 1) {
@@ -279,7 +275,6 @@ void CoupledModel::iterate_window(double t, double dt) {
         pending_.map_seconds += spent.map_seconds;
         const auto start = Clock::now();
         const Eigen::VectorXd produced = collect_load(dt);
-        const Eigen::VectorXd residual = produced - applied;
         pending_.iterations = pass;
         pending_.load_change = relative_change(produced, applied);
         if (pending_.load_change <= settings_.iteration_tolerance ||
@@ -289,15 +284,7 @@ void CoupledModel::iterate_window(double t, double dt) {
             pending_.map_seconds += seconds_since(start);
             return;
         }
-        if (previous_residual.size() == residual.size()) {
-            const Eigen::VectorXd change = residual - previous_residual;
-            const double squared = change.squaredNorm();
-            if (squared > 0.0) {
-                omega = -omega * previous_residual.dot(change) / squared;
-            }
-        }
-        applied += omega * residual;
-        previous_residual = residual;
+        applied = accelerator.next(applied, produced);
         pending_.map_seconds += seconds_since(start);
         spent = pending_;
     }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "coupling/coupling_monitor.hpp"
+#include "coupling/interface_accelerator.hpp"
 #include "coupling/model_hints.hpp"
 #include "coupling/shell_wall.hpp"
 #include "fem/shell_model.hpp"
@@ -24,6 +25,7 @@ struct CouplingSettings {
     int max_subcycles = 0;   ///< SPH steps a window may take; 0: no limit
     int max_iterations = 1;  ///< 1: staggered with a one-window lag; > 1: fixed-point iteration
     double relaxation = 1.0; ///< omega of the iteration's load update
+    Accelerator accelerator = Accelerator::aitken; ///< the iterated window's update
     double iteration_tolerance = 0.0; ///< ||F(k+1) - F(k)|| / ||F(k+1)|| that ends the iteration
     /// Run stopped (exit 3) when |interface energy error| exceeds this fraction of the interface
     /// work (with an absolute floor, coupling_monitor.hpp).

@@ -38,6 +38,10 @@ CouplingSettings read_settings(const io::CaseTable& table, const fem::ShellModel
     }
     settings.max_iterations = static_cast<int>(iterations);
     settings.relaxation = table.number_or("relaxation", fallback("relaxation"));
+    settings.accelerator =
+        table.choice_or("accelerator", {"aitken", "quasi_newton"}, "aitken") == "quasi_newton"
+            ? Accelerator::quasi_newton
+            : Accelerator::aitken;
     if (!(settings.relaxation > 0.0 && settings.relaxation <= 1.0)) {
         table.fail("relaxation", "expected a relaxation factor in (0, 1]");
     }

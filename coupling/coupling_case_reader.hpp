@@ -16,7 +16,7 @@ class CaseTable;
 namespace grainload::coupling {
 
 /// The [coupling] table's own keys (docs/user-guide/coupling.md).
-inline constexpr std::array<io::KeySpec, 7> kCouplingKeys{{
+inline constexpr std::array<io::KeySpec, 8> kCouplingKeys{{
     {"window", "time", "the dynamic shell's `fem.time_step`; required for a static shell",
      "FEM step Δt_F: the shell is solved once per window, SPH sub-cycles through it"},
     {"max_subcycles", "integer", "0 (no limit)",
@@ -27,6 +27,9 @@ inline constexpr std::array<io::KeySpec, 7> kCouplingKeys{{
      "ω of the load update F ← F + ω (F_sand − F): every window (staggered), or the iteration's "
      "first step (then Aitken)",
      0.5},
+    {"accelerator", "`aitken` or `quasi_newton`", "aitken",
+     "the iterated window's load update after its first step: Aitken's relaxation, or the "
+     "interface quasi-Newton IQN-ILS (for walls soft enough that Aitken does not converge)"},
     {"iteration_tolerance", "number", "1e-3",
      "the iteration stops when ‖F_new − F‖ / ‖F_new‖ is below it", 1e-3},
     {"energy_error_limit", "number", "0.05",
