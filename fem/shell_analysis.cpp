@@ -333,16 +333,18 @@ Eigen::VectorXd ShellAnalysis::tangent_response(const Eigen::VectorXd& load) {
 }
 
 std::function<Eigen::VectorXd(const Eigen::VectorXd&)> ShellAnalysis::tangent_inverse() {
-    SparseSolver::Matrix k;
+    // The matrix lives as long as the function: UMFPACK's factor (the LU fallback of a tangent
+    // CHOLMOD refuses) solves with pointers into it.
+    auto k = std::make_shared<SparseSolver::Matrix>();
     Eigen::VectorXd internal;
     set_assembly_load_factor(load_factor_);
-    assemble(&k, internal);
+    assemble(k.get(), internal);
     for (auto& e : elements_) {
         e.revert();
     }
     auto solver = std::make_shared<SparseSolver>();
-    solver->factorize(k, tangent_symmetric());
-    return [solver, eq = equation_numbers(), free = free_count_](const Eigen::VectorXd& load) {
+    solver->factorize(*k, tangent_symmetric());
+    return [k, solver, eq = equation_numbers(), free = free_count_](const Eigen::VectorXd& load) {
         Eigen::VectorXd response = Eigen::VectorXd::Zero(load.size());
         scatter_free(eq, solver->solve(free_part(eq, free, load)), response);
         return response;
