@@ -202,13 +202,7 @@ double speedup_of(int threads, const Calibration& c) {
 
 /// The coupled model's window and its estimated limit, as it reports them at t = 0.
 void add_window_limit(const coupling::CoupledModel& coupled, CostEstimate& e) {
-    std::vector<io::ResultFigure> figures;
-    coupled.append_results(0.0, figures);
-    for (const io::ResultFigure& figure : figures) {
-        if (figure.name == "coupling_window_limit") {
-            e.coupling_window_limit = figure.value;
-        }
-    }
+    e.coupling_window_limit = coupled.window_limit();
     e.coupling_window = coupled.stable_time_step();
     e.coupling_static = !coupled.fem().dynamic();
 }

@@ -346,13 +346,10 @@ void CoupledModel::append_results(double t, std::vector<io::ResultFigure>& resul
     results.push_back({"coupling_shell_work", monitor_.shell_work(), "J", std::nullopt, ""});
     results.push_back(
         {"coupling_energy_error", monitor_.relative_energy_error(scale), "", std::nullopt, ""});
-    if (fem_->dynamic()) {
-        results.push_back({"coupling_window_limit", stable_window_max_, "s", std::nullopt,
-                           "staggered, dynamic shell: longest stable window (estimate)"});
-    } else {
-        results.push_back({"coupling_window_limit", stable_window_min_, "s", std::nullopt,
-                           "staggered, static shell: shortest stable window (estimate)"});
-    }
+    results.push_back({"coupling_window_limit", window_limit(), "s", std::nullopt,
+                       fem_->dynamic()
+                           ? "staggered, dynamic shell: longest stable window (estimate)"
+                           : "staggered, static shell: shortest stable window (estimate)"});
     results.push_back({"coupling_largest_subcycles",
                        static_cast<double>(monitor_.largest_subcycles()), "", std::nullopt, ""});
     // The run's `steps` count windows; the SPH steps behind them (every pass of an iterated

@@ -88,6 +88,11 @@ class CoupledModel final : public io::Stepper {
     const CouplingMonitor& monitor() const { return monitor_; }
     /// The estimated stable windows of the staggered exchange, reported in summary.json.
     void set_window_limits(const WindowLimits& limits);
+    /// The estimate summary.json reports as coupling_window_limit: the longest stable window
+    /// of a dynamic shell, the shortest of a static one [s].
+    double window_limit() const {
+        return fem_->dynamic() ? stable_window_max_ : stable_window_min_;
+    }
     /// The shell load of the next window (6 per node).
     const Eigen::VectorXd& interface_load() const { return load_; }
 

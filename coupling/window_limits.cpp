@@ -74,7 +74,6 @@ double largest_eigenvalue(fem::ShellAnalysis& analysis, const Eigen::VectorXd& a
 double shell_mode_compliance(fem::ShellAnalysis& analysis, const std::vector<CoupledPart>& parts) {
     const fem::ShellMesh& mesh = analysis.mesh();
     Eigen::VectorXd area_vectors = Eigen::VectorXd::Zero(analysis.dofs().size());
-    std::vector<char> coupled(static_cast<std::size_t>(mesh.node_count()), 0);
     for (const CoupledPart& part : parts) {
         for (const Index e : part.elements) {
             const fem::ShellElement& element = mesh.element(e);
@@ -86,13 +85,14 @@ double shell_mode_compliance(fem::ShellAnalysis& analysis, const std::vector<Cou
             for (int k = 0; k < corners; ++k) {
                 const Index node = element.nodes[static_cast<std::size_t>(k)];
                 area_vectors.segment<3>(6 * node) += (a / corners) * push;
-                coupled[static_cast<std::size_t>(node)] = 1;
             }
         }
     }
+    // The coupled nodes; one whose pushes cancel (a fold met from both sides, or elements of no
+    // area) takes no pressure and is left out, rather than divided by its zero norm below.
     std::vector<Index> nodes;
     for (Index n = 0; n < mesh.node_count(); ++n) {
-        if (coupled[static_cast<std::size_t>(n)]) {
+        if (area_vectors.segment<3>(6 * n).norm() > 0.0) {
             nodes.push_back(n);
         }
     }

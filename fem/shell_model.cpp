@@ -148,6 +148,11 @@ double ShellModel::kinetic_energy() const {
 }
 
 double ShellModel::strain_energy() const {
+    // Undeformed (as when a scene is built and its figures listed): no energy, and no
+    // assembly of every element to find it.
+    if (analysis_->dofs().isZero(0.0)) {
+        return 0.0;
+    }
     // Assembling touches the elements' trial states, which the committed state restores.
     Eigen::VectorXd internal;
     analysis_->assemble(nullptr, internal);
