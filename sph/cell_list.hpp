@@ -2,6 +2,7 @@
 
 #include "io/types.hpp"
 
+#include <algorithm>
 #include <array>
 #include <span>
 #include <vector>
@@ -11,6 +12,13 @@ namespace grainload::sph {
 /// Uniform grid of cells of edge >= the search radius: the neighbours of a particle lie in its
 /// own cell and the adjacent ones (9 in plane strain, 27 in 3D). Particles are binned by a
 /// counting sort, so a build is O(N) and allocates only when the grid grows.
+///
+/// The grid's cells are stored densely up to a few per particle; a scene whose box needs more
+/// (a few particles far from the rest) first takes coarser cells. Where that would put many
+/// particles in one cell (a wall millions of spacings from the sand: the search turned
+/// quadratic), the grid keeps cells of the search radius and stores only the occupied ones:
+/// the particles sorted by cell, a cell's start found by binary search over their sorted cell
+/// numbers. The order of the particles, and of the candidates, is the dense grid's.
 class CellList {
   public:
     /// dimension 2 keeps a single layer of cells in z.
@@ -48,19 +56,22 @@ class CellList {
                 const Index x_first = c[0] > 0 ? c[0] - 1 : 0;
                 const Index x_last = c[0] + 1 < cells_[0] ? c[0] + 1 : cells_[0] - 1;
                 // Cells adjacent in x are contiguous in the sorted order: one range per row.
-                visit(cell_start_[row + x_first], cell_start_[row + x_last + 1]);
+                visit(cell_start(row + x_first), cell_start(row + x_last + 1));
             }
         }
     }
 
     Index cell_count() const { return cells_[0] * cells_[1] * cells_[2]; }
+    /// Whether only the occupied cells are stored (see the class comment).
+    bool sparse() const { return sparse_; }
     /// Particle indices in cell order, and their coordinates in the same order (contiguous, so
     /// that a search loop over a run of them vectorises).
     const Index* sorted() const { return sorted_.data(); }
     const double* sorted_coordinate(int axis) const { return coordinates_[axis].data(); }
     /// Heap bytes held (cell starts, sorted indices and coordinates).
     std::size_t bytes() const {
-        return (cell_start_.capacity() + sorted_.capacity()) * sizeof(Index) +
+        return (cell_start_.capacity() + sorted_.capacity() + sorted_cell_.capacity()) *
+                   sizeof(Index) +
                (coordinates_[0].capacity() + coordinates_[1].capacity() +
                 coordinates_[2].capacity()) *
                    sizeof(double);
@@ -69,13 +80,26 @@ class CellList {
 
   private:
     std::array<Index, 3> cell_coordinates(const Vec3& x) const;
+    /// The first sorted position of cell c or of a later one.
+    Index cell_start(Index c) const {
+        if (!sparse_) {
+            return cell_start_[c];
+        }
+        return std::lower_bound(sorted_cell_.begin(), sorted_cell_.end(), c) - sorted_cell_.begin();
+    }
     /// Counting sort of the particles i with !skip[i] (all with an empty skip) into the grid.
     void bin(std::span<const Vec3> positions, std::span<const char> skip);
+    /// sorted_ from each particle's cell (negative: skipped), by a counting sort over every
+    /// cell or a sort of the occupied ones; returns the particles sorted.
+    Index sort_dense(const std::vector<Index>& cell);
+    Index sort_sparse(const std::vector<Index>& cell);
 
     Vec3 origin_ = Vec3::Zero();
     double cell_size_ = 1.0;
     std::array<Index, 3> cells_{1, 1, 1};
-    std::vector<Index> cell_start_;                  ///< size cell_count() + 1
+    bool sparse_ = false;
+    std::vector<Index> cell_start_;                  ///< dense: size cell_count() + 1
+    std::vector<Index> sorted_cell_;                 ///< sparse: the cell of sorted_[k] at k
     std::vector<Index> sorted_;                      ///< particle indices ordered by cell
     std::array<std::vector<double>, 3> coordinates_; ///< x, y, z of sorted_[k] at k
 };

@@ -1,3 +1,4 @@
+#include "sph/cell_list.hpp"
 #include "sph/neighbour_list.hpp"
 
 #include <algorithm>
@@ -121,6 +122,44 @@ TEST(NeighbourList, AstrayParticlesAtHugeNonFiniteCoordinatesLeaveTheOthersIntac
         PairSet finite = listed_pairs(list, points, 0.1);
         EXPECT_EQ(finite, brute_force_pairs(points, 0.1)) << astray.transpose();
     }
+}
+
+// Found by the case fuzzer (tests/fuzz/README.md): a floor of wall particles placed 2.2e26 m
+// away coarsened the grid until the sand shared one cell, and the search turned quadratic.
+// Here 2000 particles of sand in a unit cube and a floor of 400 wall particles 1e9 m above it
+// (at 1e9 m a double still resolves 1e-7 m, so the floor's own pairs are real): the grid keeps
+// cells of the search radius (stored sparsely), each sand particle tests the candidates of its
+// 27 cells (about 27 * 2000 * 0.06^3 = 12 on average; the coarsened grid gave every one all
+// 2000), and the lists, the floor's frozen pairs left out, are the brute-force ones.
+TEST(NeighbourList, AWallFarFromTheSandKeepsTheCellsOfTheSearchRadius) {
+    const double radius = 0.06;
+    auto points = random_points(2000, 3, 13u);
+    std::vector<char> frozen(points.size(), 0);
+    for (const Vec3& x : random_points(400, 3, 17u)) {
+        points.emplace_back(x[0], x[1], 1e9 + 0.05 * x[2]);
+        frozen.push_back(1);
+    }
+    CellList cells;
+    cells.build(points, radius, 3);
+    EXPECT_TRUE(cells.sparse());
+    EXPECT_EQ(cells.cell_size(), radius);
+    Index candidates = 0;
+    for (Index i = 0; i < 2000; ++i) {
+        cells.for_each_candidate(points[static_cast<std::size_t>(i)], [&](Index) { ++candidates; });
+    }
+    // Mean 12 at the cube's interior, fewer at its faces: 40 per particle bounds it with room;
+    // the coarsened grid gave 2000.
+    EXPECT_LT(candidates, 40 * 2000);
+
+    NeighbourList list(radius, 0.0, 3);
+    list.update(points, frozen);
+    PairSet expected;
+    for (const auto& [i, j] : brute_force_pairs(points, radius)) {
+        if (!(frozen[static_cast<std::size_t>(i)] && frozen[static_cast<std::size_t>(j)])) {
+            expected.emplace(i, j);
+        }
+    }
+    EXPECT_EQ(listed_pairs(list, points, radius), expected);
 }
 
 } // namespace
