@@ -30,6 +30,8 @@ struct CouplingSettings {
     /// Run stopped (exit 3) when |interface energy error| exceeds this fraction of the interface
     /// work (with an absolute floor, coupling_monitor.hpp).
     double energy_error_limit = 0.05;
+    /// beta of the added-mass springs on a static shell (coupling/added_mass.hpp); 0: none.
+    double added_mass = 0.0;
 };
 
 /// A coupled shell part: the walls' driver and where its particles are in the SPH model.

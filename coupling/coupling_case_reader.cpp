@@ -1,5 +1,6 @@
 #include "coupling/coupling_case_reader.hpp"
 
+#include "coupling/added_mass.hpp"
 #include "coupling/window_limits.hpp"
 #include "io/case_table.hpp"
 #include "sph/wall_bodies.hpp"
@@ -54,6 +55,15 @@ CouplingSettings read_settings(const io::CaseTable& table, const fem::ShellModel
         table.number_or("energy_error_limit", fallback("energy_error_limit"));
     if (!(settings.energy_error_limit > 0.0)) {
         table.fail("energy_error_limit", "expected a positive fraction of the interface work");
+    }
+    settings.added_mass = table.number_or("added_mass", fallback("added_mass"));
+    if (!(settings.added_mass >= 0.0 && settings.added_mass <= 100.0)) {
+        table.fail("added_mass", "expected an added-mass factor from 0 (none) to 100");
+    }
+    if (settings.added_mass > 0.0 && fem.dynamic()) {
+        table.fail("added_mass", "expected 0 with a dynamic shell: its own inertia answers the "
+                                 "sand's in the window it moves (the added mass is for a static "
+                                 "shell)");
     }
     return settings;
 }
@@ -277,8 +287,8 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
                 << sph_step << " s: expected a window of at least one SPH step";
         coupling.fail("window", message.str());
     }
-    const WindowLimits limits =
-        estimate_window_limits(*sph, *fem, parts, settings.relaxation, scene.end_time);
+    const WindowLimits limits = estimate_window_limits(*sph, *fem, parts, settings.relaxation,
+                                                       scene.end_time, settings.added_mass);
     const bool beyond = coupling.boolean_or(
         "beyond_window_limit", io::default_value(kCouplingKeys, "beyond_window_limit") != 0.0);
     if (settings.max_iterations <= 1 && !beyond) {
@@ -292,6 +302,10 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
                 window_warning(limits, settings.window, fem->dynamic(), settings.relaxation)) {
             std::cerr << "grainload: warning: " << *warning << '\n';
         }
+    }
+    if (settings.added_mass > 0.0) {
+        fem->analysis().set_node_springs(added_mass_springs(
+            fem->analysis().mesh(), parts, limits.sand_mass, settings.window, settings.added_mass));
     }
     auto model =
         std::make_unique<CoupledModel>(std::move(sph), std::move(fem), std::move(parts), settings);

@@ -16,7 +16,7 @@ class CaseTable;
 namespace grainload::coupling {
 
 /// The [coupling] table's own keys (docs/user-guide/coupling.md).
-inline constexpr std::array<io::KeySpec, 8> kCouplingKeys{{
+inline constexpr std::array<io::KeySpec, 9> kCouplingKeys{{
     {"window", "time", "the dynamic shell's `fem.time_step`; required for a static shell",
      "FEM step Δt_F: the shell is solved once per window, SPH sub-cycles through it"},
     {"max_subcycles", "integer", "0 (no limit)",
@@ -34,6 +34,12 @@ inline constexpr std::array<io::KeySpec, 8> kCouplingKeys{{
      "the iteration stops when ‖F_new − F‖ / ‖F_new‖ is below it", 1e-3},
     {"energy_error_limit", "number", "0.05",
      "exit 3 when the interface energy error exceeds this fraction of the interface work", 0.05},
+    {"added_mass", "number >= 0", "0",
+     "static shell: springs of β m_s / Δt_F² (the sand's areal mass behind the wall over the "
+     "window squared) from each coupled node to its position at the window's start, so that "
+     "the shell feels the sand's inertia in the window it moves; 0: none. With β (2/ω − 1) ≥ 1 "
+     "the staggered window has no lower limit; a static equilibrium is unchanged",
+     0.0},
     {"beyond_window_limit", "boolean", "false",
      "true: run a staggered window longer than twice its estimated stable limit (refused "
      "otherwise); the energy watchdog is then the only guard",

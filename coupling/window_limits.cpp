@@ -71,9 +71,9 @@ double largest_eigenvalue(fem::ShellAnalysis& analysis, const Eigen::VectorXd& a
 
 } // namespace
 
-double shell_mode_compliance(fem::ShellAnalysis& analysis, const std::vector<CoupledPart>& parts) {
-    const fem::ShellMesh& mesh = analysis.mesh();
-    Eigen::VectorXd area_vectors = Eigen::VectorXd::Zero(analysis.dofs().size());
+Eigen::VectorXd coupled_area_vectors(const fem::ShellMesh& mesh,
+                                     const std::vector<CoupledPart>& parts) {
+    Eigen::VectorXd area_vectors = Eigen::VectorXd::Zero(6 * mesh.node_count());
     for (const CoupledPart& part : parts) {
         for (const Index e : part.elements) {
             const fem::ShellElement& element = mesh.element(e);
@@ -88,6 +88,12 @@ double shell_mode_compliance(fem::ShellAnalysis& analysis, const std::vector<Cou
             }
         }
     }
+    return area_vectors;
+}
+
+double shell_mode_compliance(fem::ShellAnalysis& analysis, const std::vector<CoupledPart>& parts) {
+    const fem::ShellMesh& mesh = analysis.mesh();
+    const Eigen::VectorXd area_vectors = coupled_area_vectors(mesh, parts);
     // The coupled nodes; one whose pushes cancel (a fold met from both sides, or elements of no
     // area) takes no pressure and is left out, rather than divided by its zero norm below.
     std::vector<Index> nodes;
@@ -101,7 +107,7 @@ double shell_mode_compliance(fem::ShellAnalysis& analysis, const std::vector<Cou
 
 WindowLimits estimate_window_limits(const sph::SphModel& sph, fem::ShellModel& fem,
                                     const std::vector<CoupledPart>& parts, double omega,
-                                    double end_time) {
+                                    double end_time, double added_mass) {
     WindowLimits limits;
     const sph::SphSolver& solver = *sph.solver();
     const sph::ParticleSet& p = solver.particles();
@@ -139,7 +145,10 @@ WindowLimits estimate_window_limits(const sph::SphModel& sph, fem::ShellModel& f
     }
     limits.sand_mass = area > 0.0 ? mass / area : 0.0;
     limits.compliance = shell_mode_compliance(analysis, parts);
-    limits.static_min = std::sqrt(limits.sand_mass * limits.compliance / tolerated_gain(omega));
+    // g / (1 + beta g) = T at g = T / (1 - beta T); none when beta T >= 1 (window_limits.hpp).
+    const double tolerated = tolerated_gain(omega);
+    limits.static_min = std::sqrt(limits.sand_mass * limits.compliance *
+                                  std::max(0.0, 1.0 - added_mass * tolerated) / tolerated);
     return limits;
 }
 
@@ -161,7 +170,9 @@ std::optional<std::string> window_refusal(const WindowLimits& limits, double win
             << " s (the sand's areal mass " << limits.sand_mass
             << " kg/m^2 against the shell's compliance " << limits.compliance
             << " m/Pa, relaxation " << omega
-            << "); use a window of at least that, a smaller relaxation, or iterate each window "
+            << "); use a window of at least that, a smaller relaxation, the sand's inertia on "
+               "the shell (added_mass = 4: it ran a strip and a silo wall at 0.2 to 1 times "
+               "this limit, docs/validation/coupling.md), or iterate each window "
                "(max_iterations > 1)";
         return why.str();
     }
@@ -188,7 +199,8 @@ std::optional<std::string> window_warning(const WindowLimits& limits, double win
         << (dynamic ? "" : "; windows up to 1.2 times the estimate have oscillated")
         << "): if the exchange oscillates the interface energy watchdog stops the run; a window "
         << (dynamic ? "of at most " : "of at least ") << (dynamic ? limit : kStaticMargin * limit)
-        << " s, a smaller relaxation or max_iterations > 1 is safe";
+        << " s, a smaller relaxation" << (dynamic ? "" : ", added_mass = 4")
+        << " or max_iterations > 1 is safe";
     return why.str();
 }
 

@@ -17,7 +17,9 @@ namespace grainload::coupling {
 ///  - Static shell: g = m_s C / dt^2, the inertia of the sand behind the wall (areal mass m_s =
 ///    M_sand / A_coupled, the sources' mass to come included) against the shell's compliance C
 ///    in its most compliant mode (shell_mode_compliance). A window shorter than `static_min`
-///    oscillates.
+///    oscillates. With the added mass (coupling/added_mass.hpp, factor beta) the lagged load
+///    meets the compliance C / (1 + beta g) instead, a loop gain g / (1 + beta g) < 1 / beta:
+///    stable for every window once beta (2 / omega - 1) >= 1.
 struct WindowLimits {
     double dynamic_max = std::numeric_limits<double>::infinity(); ///< [s]
     double static_min = 0.0;                                      ///< [s]
@@ -39,12 +41,19 @@ struct WindowLimits {
 /// pressure (R^2 / (E t)).
 double shell_mode_compliance(fem::ShellAnalysis& analysis, const std::vector<CoupledPart>& parts);
 
-/// Estimates the limits for the staggered scheme with relaxation `omega`; the sand's areal
-/// mass counts the mass the sources create up to `end_time`. For a static shell it
-/// solves once with the shell's current tangent (the state is left unchanged).
+/// The coupled nodes' area vectors, 6 entries per node (translations; 0 elsewhere): the sum
+/// of a / corners times the outward normal (against the sand's side) of the coupled elements
+/// at each node.
+Eigen::VectorXd coupled_area_vectors(const fem::ShellMesh& mesh,
+                                     const std::vector<CoupledPart>& parts);
+
+/// Estimates the limits for the staggered scheme with relaxation `omega` and added-mass factor
+/// `added_mass`; the sand's areal mass counts the mass the sources create up to `end_time`.
+/// For a static shell it solves once with the shell's current tangent (the state is left
+/// unchanged).
 WindowLimits estimate_window_limits(const sph::SphModel& sph, fem::ShellModel& fem,
                                     const std::vector<CoupledPart>& parts, double omega,
-                                    double end_time);
+                                    double end_time, double added_mass = 0.0);
 
 /// A refusal when the staggered window is beyond twice its limit (the estimate is good to a
 /// factor of about two), naming the limit and what works instead; std::nullopt otherwise.

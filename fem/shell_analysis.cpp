@@ -171,6 +171,7 @@ void ShellAnalysis::assemble(SparseSolver::Matrix* tangent, Eigen::VectorXd& int
         }
     }
     add_follower_loads(internal, tangent != nullptr ? &triplets : nullptr);
+    add_node_springs(internal, tangent != nullptr ? &triplets : nullptr, prescribed, coupling);
     if (tangent != nullptr) {
         add_moment_load_stiffness(internal, triplets);
         tangent->resize(free_count_, free_count_);

@@ -158,6 +158,17 @@ class ShellAnalysis {
     const std::vector<Index>& equation_numbers();
     /// The loads of history 0.
     const Eigen::VectorXd& reference_load() const { return histories_.front().load; }
+    /// A spring between a node's translations and their committed values (the state at the
+    /// increment's start): internal force K (u - u_committed), tangent K. The coupling's added
+    /// mass puts the sand's inertia on a static shell this way (coupling/added_mass.hpp); at
+    /// rest (u = u_committed) the springs carry nothing, so an equilibrium is not changed.
+    struct NodeSpring {
+        Index node = 0;
+        Mat3 stiffness = Mat3::Zero();
+    };
+    /// Replaces the springs; a constant set keeps a constant tangent.
+    void set_node_springs(std::vector<NodeSpring> springs);
+    const std::vector<NodeSpring>& node_springs() const { return node_springs_; }
     /// Forces applied in full, not scaled by the load factor (6 per node), e.g. the contact
     /// forces the SPH side returns to the walls (thesis section 5.3); zero by default.
     void set_additional_forces(const Eigen::VectorXd& forces) { additional_forces_ = forces; }
@@ -185,6 +196,10 @@ class ShellAnalysis {
                             std::vector<Eigen::Triplet<double>>* triplets) const;
     void add_moment_load_stiffness(const Eigen::VectorXd& internal,
                                    std::vector<Eigen::Triplet<double>>& triplets);
+    /// The node springs' forces, tangent entries (free DOFs) and, with `prescribed`, their
+    /// part of `coupling` (the tangent times the prescribed values).
+    void add_node_springs(Eigen::VectorXd& internal, std::vector<Eigen::Triplet<double>>* triplets,
+                          const Eigen::VectorXd* prescribed, Eigen::VectorXd* coupling) const;
 
     ShellMesh mesh_;
     Kinematics kinematics_;
@@ -213,6 +228,7 @@ class ShellAnalysis {
     std::vector<ShellPart> parts_;
     int active_part_ = -1;
     std::vector<FollowerPressure> follower_pressures_;
+    std::vector<NodeSpring> node_springs_;
     double assembly_load_factor_ = 0.0;
     std::vector<double> prescribed_;      ///< NaN where free
     std::vector<int> prescribed_history_; ///< history of each prescribed value

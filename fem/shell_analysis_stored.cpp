@@ -57,8 +57,15 @@ void ShellAnalysis::assemble_stored(SparseSolver::Matrix* tangent, Eigen::Vector
         *coupling = prescribed != nullptr ? stored_->tangent_times(*prescribed)
                                           : Eigen::VectorXd::Zero(internal.size());
     }
+    std::vector<Eigen::Triplet<double>> springs;
+    add_node_springs(internal, tangent != nullptr ? &springs : nullptr, prescribed, coupling);
     if (tangent != nullptr) {
         *tangent = stored_->free_tangent(eq, free_count_);
+        if (!springs.empty()) {
+            SparseSolver::Matrix spring_matrix(free_count_, free_count_);
+            spring_matrix.setFromTriplets(springs.begin(), springs.end());
+            *tangent += spring_matrix;
+        }
     }
 }
 

@@ -3,7 +3,10 @@
 #include "fem/shell_mesh_generators.hpp"
 #include "materials/linear_elastic.hpp"
 
+#include <cmath>
 #include <gtest/gtest.h>
+#include <memory>
+#include <vector>
 
 namespace grainload::fem {
 namespace {
@@ -71,6 +74,56 @@ TEST(ShellAnalysis, NewmarkFollowsPrescribedMotion) {
     }
     const double tip = analysis.displacement(mesh.node_set("x1")[0]).z();
     EXPECT_NEAR(tip, 0.05, 1e-3);
+}
+
+// Node springs towards the committed state (the coupling's added mass) slow the approach to an
+// equilibrium and leave the equilibrium itself unchanged. The cantilever strip above under its
+// tip force P has the tip flexibility f = u* / P (u* without springs, this mesh's own answer);
+// springs of total stiffness s = 1 / f along z at the tip nodes make each solve at the same
+// load give u_{n+1} = f (P - s (u_{n+1} - u_n)), so u_1 = u* / (1 + f s) = u* / 2 and the error
+// halves per solve: u_2 = 0.75 u* (linear algebra: 1e-9), and u* is reached to the Newton
+// solver's own tolerance: it no longer iterates once the out-of-balance force, K e, is within
+// its force tolerance (1e-6 of the load), which stops this sequence at e = 2^-19 u* = 1.9e-6 u*:
+// 1e-5. With the stored stiffness and with assembly alike.
+TEST(ShellAnalysis, NodeSpringsSlowTheApproachButNotTheEquilibrium) {
+    const materials::LinearElastic material(materials::ElasticConstants::from_young(1.0, 1e9, 0.0));
+    for (const bool stored : {false, true}) {
+        auto strip = [&] {
+            auto analysis = std::make_unique<ShellAnalysis>(make_plate(1.0, 0.1, 20, 1, 0.01),
+                                                            material, Kinematics::linear, 2);
+            const ShellMesh& mesh = analysis->mesh();
+            analysis->prescribe(mesh.node_set("x0"), {0, 1, 2, 3, 4, 5});
+            Eigen::VectorXd forces = Eigen::VectorXd::Zero(6 * mesh.node_count());
+            for (const Index n : mesh.node_set("x1")) {
+                forces(6 * n + 2) = -0.5;
+            }
+            analysis->set_additional_forces(forces);
+            if (stored) {
+                analysis->store_stiffness();
+            }
+            return analysis;
+        };
+        auto free = strip();
+        ASSERT_TRUE(free->equilibrate(NewtonSettings{}).converged);
+        const Index tip = free->mesh().node_set("x1")[0];
+        const double settled = free->displacement(tip).z();
+        auto sprung = strip();
+        std::vector<ShellAnalysis::NodeSpring> springs;
+        for (const Index n : sprung->mesh().node_set("x1")) {
+            Mat3 k = Mat3::Zero();
+            k(2, 2) = 0.5 * 1.0 / std::abs(settled); // half of s = P / u* at each tip node
+            springs.push_back({n, k});
+        }
+        sprung->set_node_springs(springs);
+        ASSERT_TRUE(sprung->equilibrate(NewtonSettings{}).converged);
+        EXPECT_NEAR(sprung->displacement(tip).z() / settled, 0.5, 1e-9) << stored;
+        ASSERT_TRUE(sprung->equilibrate(NewtonSettings{}).converged);
+        EXPECT_NEAR(sprung->displacement(tip).z() / settled, 0.75, 1e-9) << stored;
+        for (int n = 2; n < 40; ++n) {
+            ASSERT_TRUE(sprung->equilibrate(NewtonSettings{}).converged);
+        }
+        EXPECT_NEAR(sprung->displacement(tip).z() / settled, 1.0, 1e-5) << stored;
+    }
 }
 
 } // namespace
