@@ -44,8 +44,8 @@ from vtk_frames import blocks, frames_of  # noqa: E402
 # Geometry of hopper_wagon.geo (cases/hopper_wagon/README.md), m.
 TAN = np.tan(np.radians(49.0))
 Z_RIDGE, X_MID, X_END, Z_SILL, HALF_WIDTH, HALF_LENGTH = 0.9 + 1.5 * TAN, 0.35, 5.78, 0.9, 1.5, 6.33
-SPACING = 0.1
-NEAR = 2.5 * SPACING  # "on" a surface: within the contact potential's reach (2h = 2.6 dp) and a bit
+DENSITY = 2099.0  # the load's, kg/m^3
+NEAR_SPACINGS = 2.5  # "on" a surface: within the contact potential's reach (2h = 2.6 dp) and a bit
 
 
 def rows(path):
@@ -65,14 +65,18 @@ def surface_distances(x):
     }
 
 
-def residue(out, mass_each):
+def residue(out, scene_mass):
+    """The load left in the body. Each particle's mass, and from it the spacing, is the scene's
+    mass over the particles of the last frame (the run's spacing, whatever the case set)."""
     time, vtm = frames_of(out)[-1]
     load = dict(blocks(vtm))["load"]
     if load is None or load.GetNumberOfPoints() == 0:
         return {"time_s": time, "mass_kg": 0.0, "places_kg": {}}
     x = vtk_to_numpy(load.GetPoints().GetData())
+    mass_each = scene_mass / len(x)
+    near_distance = NEAR_SPACINGS * (mass_each / DENSITY) ** (1.0 / 3.0)
     inside = (x[:, 1] < HALF_WIDTH) & (x[:, 0] < HALF_LENGTH) & (x[:, 2] > Z_SILL - 0.3)
-    near = {k: (d < NEAR)[inside] for k, d in surface_distances(x).items()}
+    near = {k: (d < near_distance)[inside] for k, d in surface_distances(x).items()}
     count = np.sum(list(near.values()), axis=0)
     places = {"on an edge (two surfaces)": int(np.sum(count >= 2)),
               "on other particles": int(np.sum(count == 0))}
@@ -148,7 +152,7 @@ def main():
             "wall_time_s": summary["wall_time_s"], "simulated_time_s": summary["simulated_time_s"],
             "load_kg": created, "discharged_kg": mass[-1], "discharge_ends_s": ends,
             "mass_audit_error": results["mass_audit_error"]["value"],
-            "residue": residue(out, SPACING**3 * 2099.0),
+            "residue": residue(out, results["scene_mass"]["value"]),
             "door": door(out, args.open, args.door),
             # A rigid body (`rigid = true`) carries its own weight only: no stresses to report.
             "shell": (shell_peaks(out, args.open)
