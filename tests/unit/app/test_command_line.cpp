@@ -145,4 +145,23 @@ TEST(CommandLine, AStaticWindowWithinTheEstimatesUncertaintyIsWarnedAbout) {
     EXPECT_EQ(stable.output.find("warning"), std::string::npos) << stable.output;
 }
 
+// The added mass lifts the static window's lower limit: with beta (2 / omega - 1) >= 1 the
+// estimate has none (coupling/window_limits.hpp). The flexible silo of the bad cases, refused
+// at its 5 ms window (shortest stable window 20.6 ms at relaxation 0.5), passes the check with
+// added_mass = 4 (beta T = 12), and the check says the window has no lower limit; at 0.25
+// (beta T = 0.75) the limit is sqrt(1 - 0.75) = half of it, 10.3 ms, and 5 ms is still refused.
+TEST(CommandLine, TheAddedMassLetsAStaticWindowOfAnyLengthPass) {
+    const std::string silo =
+        "'" + source_path("tests/data/bad_cases/coupling_window_flexible_silo.toml") + "'";
+    const auto refused = run_cli("check " + silo, log_file());
+    EXPECT_EQ(refused.exit_code, 2) << refused.output;
+    EXPECT_NE(refused.output.find("added_mass = 4"), std::string::npos) << refused.output;
+    const auto held = run_cli("check " + silo + " --set coupling.added_mass=4", log_file());
+    EXPECT_EQ(held.exit_code, 0) << held.output;
+    EXPECT_NE(held.output.find("has no shortest stable window"), std::string::npos) << held.output;
+    const auto weak = run_cli("check " + silo + " --set coupling.added_mass=0.25", log_file());
+    EXPECT_EQ(weak.exit_code, 2) << weak.output;
+    EXPECT_NE(weak.output.find("about 0.0103"), std::string::npos) << weak.output;
+}
+
 } // namespace
