@@ -66,6 +66,9 @@ struct CostEstimate {
     Index contact_entries = 0; ///< between a body and a wall particle
     /// Particles the sources create, averaged over the run (each costs a full kernel support)
     double average_created = 0.0;
+    /// [[sph.sink]] tables: what they remove is still counted to the end time, so a
+    /// discharge's estimate is an upper bound (docs/user-guide/trade.md)
+    int sinks = 0;
     /// A coupled scene: its window and the staggered exchange's estimated limit
     /// (coupling/window_limits.hpp), the shortest stable window for a static shell, the
     /// longest for a dynamic one (0: no coupling).

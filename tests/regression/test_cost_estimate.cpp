@@ -78,6 +78,14 @@ TEST(CostEstimate, SourcesAddTheParticlesTheyCreateAveragedOverTheRun) {
     char text[32];
     std::snprintf(text, sizeof text, "sources: %.0f particles", expected);
     EXPECT_NE(result.output.find(text), std::string::npos) << result.output;
+    // No sink here; the discharge's one sink is named with what the estimate does not count.
+    EXPECT_EQ(result.output.find("sinks:"), std::string::npos) << result.output;
+    const auto discharge = run_cli(
+        "check '" + source_path("cases/silo/silo_discharge_small.toml") + "'", log + ".discharge");
+    ASSERT_EQ(discharge.exit_code, 0) << discharge.output;
+    EXPECT_NE(discharge.output.find("sinks: 1; the particles they take are counted to the end"),
+              std::string::npos)
+        << discharge.output;
 }
 
 } // namespace
