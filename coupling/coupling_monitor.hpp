@@ -60,6 +60,8 @@ class CouplingMonitor {
     /// first call of a fresh run).
     void write_csv(const std::string& directory, bool restarted) const;
 
+    /// The checkpoint's part: the works, impulses and counts, not the wall-clock seconds
+    /// (a restarted run times its own windows).
     std::vector<double> state() const;
     void set_state(const std::vector<double>& state);
 

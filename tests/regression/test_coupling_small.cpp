@@ -141,6 +141,33 @@ TEST(CouplingSmall, TheAddedMassHoldsAStripTheStaggeredExchangeCannotToItsDeflec
     EXPECT_LT(result_value(summary, "coupling_energy_error"), 0.05);
 }
 
+// A coupled run stopped at 0.2 s and restarted from its checkpoint writes, at 0.4 s, the
+// checkpoint of the uninterrupted run byte for byte (the SPH particles, the shell's state with
+// its committed DOFs, which anchor the added-mass springs, the interface load and the coupling
+// monitor's sums; the wall-clock seconds are not in it, so the comparison is exact).
+TEST(CouplingSmall, ARestartedCoupledRunWritesTheUninterruptedRunsCheckpoint) {
+    const std::string options = "--threads 1 --set coupling.relaxation=1 "
+                                "--set coupling.added_mass=4 --set 'case.end_time=0.4 s'";
+    const CaseRun whole = run_case_file("cases/sand_on_plate/sand_on_strip_small.toml",
+                                        "strip_restart_whole", options);
+    ASSERT_EQ(whole.cli.exit_code, 0) << whole.cli.output;
+    const CaseRun part =
+        run_case_file("cases/sand_on_plate/sand_on_strip_small.toml", "strip_restart_part",
+                      options + " --set 'case.end_time=0.2 s'");
+    ASSERT_EQ(part.cli.exit_code, 0) << part.cli.output;
+    // The later --set wins: the first run stopped half way.
+    ASSERT_NE(read_file(part.out + "/summary.json").find("\"simulated_time_s\": 0.2,"),
+              std::string::npos);
+    const auto resumed = run_cli(
+        "run '" + source_path("cases/sand_on_plate/sand_on_strip_small.toml") + "' --out '" +
+            part.out + "' --restart '" + part.out + "/checkpoint.bin' " + options,
+        part.out + ".resumed.log");
+    ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+    const std::string expected = read_file(whole.out + "/checkpoint.bin");
+    ASSERT_FALSE(expected.empty());
+    EXPECT_TRUE(read_file(part.out + "/checkpoint.bin") == expected);
+}
+
 // The same scene with the plate's interface rigid (one key): the layer rests on a rigid wall
 // where the plate was built and the shell gets no load. The wall's vertical force at 0.5 s
 // balances the weight within 0.5 % (the soft layer still sloshes: ±0.2 % measured on a rigid
