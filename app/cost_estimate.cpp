@@ -290,19 +290,21 @@ std::string describe_cost(const CostEstimate& e, const Calibration& calibration)
                   "      estimated wall time %s on %d threads, memory %.0f MiB\n",
                   duration(e.wall_time_s).c_str(), e.threads, e.memory_bytes / (1024.0 * 1024.0));
     out << line;
-    if (e.coupling_window > 0.0 && e.coupling_static && !(e.coupling_window_limit > 0.0)) {
-        // A rigid coupled part or the added mass: no window is too short.
+    if (e.coupling_window > 0.0) {
+        // A static shell with a rigid coupled part or the added mass has no shortest window.
+        char limit[128];
+        if (e.coupling_static && !(e.coupling_window_limit > 0.0)) {
+            std::snprintf(limit, sizeof limit,
+                          "has no shortest stable window (estimate, coupling_window_limit = 0)");
+        } else {
+            std::snprintf(limit, sizeof limit,
+                          "is stable %s about %.3g s (estimate, coupling_window_limit)",
+                          e.coupling_static ? "from windows of" : "up to windows of",
+                          e.coupling_window_limit);
+        }
         std::snprintf(line, sizeof line,
-                      "      coupling: window %.3g s; the staggered exchange has no shortest "
-                      "stable window (estimate, coupling_window_limit = 0)\n",
-                      e.coupling_window);
-        out << line;
-    } else if (e.coupling_window > 0.0) {
-        std::snprintf(line, sizeof line,
-                      "      coupling: window %.3g s; the staggered exchange is stable %s about "
-                      "%.3g s (estimate, coupling_window_limit)\n",
-                      e.coupling_window, e.coupling_static ? "from windows of" : "up to windows of",
-                      e.coupling_window_limit);
+                      "      coupling: window %.3g s; the staggered exchange %s\n",
+                      e.coupling_window, limit);
         out << line;
     }
     out << "      throughput: " << calibration.source << '\n';

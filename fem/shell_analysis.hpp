@@ -168,7 +168,6 @@ class ShellAnalysis {
     };
     /// Replaces the springs; a constant set keeps a constant tangent.
     void set_node_springs(std::vector<NodeSpring> springs);
-    const std::vector<NodeSpring>& node_springs() const { return node_springs_; }
     /// Forces applied in full, not scaled by the load factor (6 per node), e.g. the contact
     /// forces the SPH side returns to the walls (thesis section 5.3); zero by default.
     void set_additional_forces(const Eigen::VectorXd& forces) { additional_forces_ = forces; }

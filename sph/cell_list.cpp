@@ -51,29 +51,26 @@ void CellList::build(std::span<const Vec3> positions, double search_radius, int 
     origin_ = lower;
     cell_size_ = search_radius;
     const double budget = kMaxCellsPerParticle * static_cast<double>(std::max<Index>(n, 1)) + 27.0;
-    for (;;) {
-        // Counted in doubles (half extents: no overflow even for +-1e308), so that particles
-        // flung far away coarsen the grid instead of overflowing its integer size.
+    // Cells per axis at cell_size_, each capped at `cap`; returns their uncapped product. Counted
+    // in doubles (half extents: no overflow even for +-1e308), so that particles flung far away
+    // coarsen the grid instead of overflowing its integer size.
+    auto size_grid = [&](double cap) {
         double count = 1.0;
         for (int a = 0; a < 3; ++a) {
             const bool flat = a == 2 && dimension == 2;
             const double span = 2.0 * ((0.5 * upper[a] - 0.5 * lower[a]) / cell_size_);
-            cells_[a] = flat ? 1 : static_cast<Index>(std::min(span, budget)) + 1;
+            cells_[a] = flat ? 1 : static_cast<Index>(std::min(span, cap)) + 1;
             count *= flat ? 1.0 : span + 1.0;
         }
-        if (count <= budget) {
-            break;
-        }
+        return count;
+    };
+    while (size_grid(budget) > budget) {
         cell_size_ *= 1.5;
     }
     sparse_ = cell_size_ > kSparseBeyond * search_radius;
     if (sparse_) {
         cell_size_ = search_radius;
-        for (int a = 0; a < 3; ++a) {
-            const bool flat = a == 2 && dimension == 2;
-            const double span = 2.0 * ((0.5 * upper[a] - 0.5 * lower[a]) / cell_size_);
-            cells_[a] = flat ? 1 : static_cast<Index>(std::min(span, kSparseAxisCells - 1.0)) + 1;
-        }
+        size_grid(kSparseAxisCells - 1.0);
     }
     bin(positions, {});
 }
