@@ -346,6 +346,10 @@ void CoupledModel::append_results(double t, std::vector<io::ResultFigure>& resul
     results.push_back({"coupling_shell_work", monitor_.shell_work(), "J", std::nullopt, ""});
     results.push_back(
         {"coupling_energy_error", monitor_.relative_energy_error(scale), "", std::nullopt, ""});
+    results.push_back({"coupling_energy_created", monitor_.relative_created_energy(scale), "",
+                       std::nullopt,
+                       "energy the interface created since its error was largest, relative "
+                       "(the watchdog's measure)"});
     results.push_back({"coupling_window_limit", window_limit(), "s", std::nullopt,
                        fem_->dynamic()
                            ? "staggered, dynamic shell: longest stable window (estimate)"

@@ -33,7 +33,10 @@ inline constexpr std::array<io::KeySpec, 9> kCouplingKeys{{
     {"iteration_tolerance", "number", "1e-3",
      "the iteration stops when ‖F_new − F‖ / ‖F_new‖ is below it", 1e-3},
     {"energy_error_limit", "number", "0.05",
-     "exit 3 when the interface energy error exceeds this fraction of the interface work", 0.05},
+     "exit 3 when the energy the interface creates (the shell receives more than the sand's "
+     "work) exceeds this fraction of the interface work and has grown for 10 windows; "
+     "dissipation is no error",
+     0.05},
     {"added_mass", "number >= 0", "0",
      "static shell: springs of β m_s / Δt_F² (the sand's areal mass behind the wall over the "
      "window squared) from each coupled node to its position at the window's start, so that "

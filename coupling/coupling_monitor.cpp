@@ -13,10 +13,14 @@ namespace grainload::coupling {
 
 void CouplingMonitor::add(const WindowRecord& record) {
     windows_.push_back(record);
-    const double before = std::abs(energy_error());
+    const double before = created_energy();
     sand_work_ += record.sand_work;
     shell_work_ += record.shell_work;
-    growing_windows_ = std::abs(energy_error()) > before ? growing_windows_ + 1 : 0;
+    if (energy_error() >= largest_error_) {
+        largest_error_ = energy_error();
+        largest_error_time_ = record.time;
+    }
+    growing_windows_ = created_energy() > before ? growing_windows_ + 1 : 0;
     largest_work_ = std::max(largest_work_, std::abs(sand_work_));
     wall_impulse_ += record.wall_impulse;
     shell_impulse_ += record.shell_impulse;
@@ -32,20 +36,28 @@ double CouplingMonitor::relative_energy_error(double scale) const {
     return reference > 0.0 ? std::abs(energy_error()) / reference : 0.0;
 }
 
+double CouplingMonitor::relative_created_energy(double scale) const {
+    const double reference = std::max(largest_work_, scale);
+    return reference > 0.0 ? created_energy() / reference : 0.0;
+}
+
 std::optional<std::string> CouplingMonitor::check(double limit, double scale) const {
-    const double error = relative_energy_error(scale);
-    if (std::isfinite(error) && (!(error > limit) || growing_windows_ < kGrowthWindows)) {
+    const double created = relative_created_energy(scale);
+    if (std::isfinite(created) && (!(created > limit) || growing_windows_ < kGrowthWindows)) {
         return std::nullopt;
     }
     std::ostringstream out;
     out << "coupling window " << windows_.size()
         << " ending at t = " << (windows_.empty() ? 0.0 : windows_.back().time)
-        << " s: interface energy error (sand work on the walls " << sand_work_
-        << " J minus shell work " << shell_work_ << " J) is " << error
-        << " of the interface work, above the limit " << limit << ", and has grown for "
+        << " s: the interface created energy: since t = " << largest_error_time_
+        << " s the shell received " << created_energy()
+        << " J more than the sand's work on the walls (in all, sand work " << sand_work_
+        << " J, shell work " << shell_work_ << " J), " << created
+        << " of the interface work, above the limit " << limit << ", grown for "
         << growing_windows_
         << " windows; the exchange is unstable: shorten [coupling] window, or iterate "
-           "(max_iterations > 1, relaxation < 1)";
+           "(max_iterations > 1, relaxation < 1), or give a static shell the sand's inertia "
+           "(added_mass = 4)";
     return out.str();
 }
 
@@ -81,6 +93,8 @@ std::vector<double> CouplingMonitor::state() const {
     return {sand_work_,
             shell_work_,
             largest_work_,
+            largest_error_,
+            largest_error_time_,
             static_cast<double>(growing_windows_),
             wall_impulse_.x(),
             wall_impulse_.y(),
@@ -93,23 +107,25 @@ std::vector<double> CouplingMonitor::state() const {
 }
 
 void CouplingMonitor::set_state(const std::vector<double>& state) {
-    if (state.size() != 12) {
-        throw std::runtime_error("checkpoint: the coupling monitor holds 12 values, found " +
+    if (state.size() != 14) {
+        throw std::runtime_error("checkpoint: the coupling monitor holds 14 values, found " +
                                  std::to_string(state.size()));
     }
     sand_work_ = state[0];
     shell_work_ = state[1];
     largest_work_ = state[2];
+    largest_error_ = state[3];
+    largest_error_time_ = state[4];
     constexpr double kMostInt = std::numeric_limits<int>::max();
     // Whole numbers below 2^53 are exact in a double.
     constexpr double kMostExact = 9007199254740992.0;
     growing_windows_ =
-        static_cast<int>(io::state_count(state[3], kMostInt, "the growing coupling windows"));
-    wall_impulse_ = Vec3(state[4], state[5], state[6]);
-    shell_impulse_ = Vec3(state[7], state[8], state[9]);
-    subcycles_ = static_cast<long long>(io::state_count(state[10], kMostExact, "the sub-cycles"));
+        static_cast<int>(io::state_count(state[5], kMostInt, "the growing coupling windows"));
+    wall_impulse_ = Vec3(state[6], state[7], state[8]);
+    shell_impulse_ = Vec3(state[9], state[10], state[11]);
+    subcycles_ = static_cast<long long>(io::state_count(state[12], kMostExact, "the sub-cycles"));
     largest_subcycles_ =
-        static_cast<int>(io::state_count(state[11], kMostInt, "the most sub-cycles of a window"));
+        static_cast<int>(io::state_count(state[13], kMostInt, "the most sub-cycles of a window"));
     // The wall-clock seconds are not state: a restarted run times its own windows, and two
     // runs of one case write the same checkpoint (so `cmp` can compare them).
     sph_seconds_ = 0.0;

@@ -28,8 +28,12 @@ struct WindowRecord {
 /// The coupling's books (issue: interface energy error, momentum balance, sub-cycles, FEM solve
 /// time per window). The interface energy error is the work the sand did on the wall particles
 /// minus the work the shell received from the mapped loads, summed over the windows: zero for
-/// an exact transfer; the one-window lag of the staggered scheme makes it
-/// sum_n (F(n) - F(n-1)) . dU(n), which grows when the exchange goes unstable.
+/// an exact transfer. The staggered scheme's lag makes it, for a static shell of compliance C
+/// taking load increments d(n), 1/2 sum d(n).C d(n) + 1/omega sum d(n+1).C d(n)
+/// (docs/theory/coupling.md, "Monitors"): positive while the load changes smoothly or settles
+/// (the interface dissipates what a static shell cannot hold as vibration), negative and
+/// growing when the exchange's period-two oscillation grows. The watchdog therefore watches
+/// the energy the interface creates, the fall of the error below its largest value.
 class CouplingMonitor {
   public:
     void add(const WindowRecord& record);
@@ -40,6 +44,11 @@ class CouplingMonitor {
     double energy_error() const { return sand_work_ - shell_work_; }
     /// |energy_error| / max(largest |sand work| so far, `scale`).
     double relative_energy_error(double scale) const;
+    /// The energy the interface created since its error was largest: the shell received that
+    /// much more than the sand's work since then [J] (0 while the interface only dissipates).
+    double created_energy() const { return largest_error_ - energy_error(); }
+    /// created_energy() / max(largest |sand work| so far, `scale`).
+    double relative_created_energy(double scale) const;
     const Vec3& wall_impulse() const { return wall_impulse_; }
     const Vec3& shell_impulse() const { return shell_impulse_; }
     long long subcycles() const { return subcycles_; }
@@ -48,11 +57,11 @@ class CouplingMonitor {
     double fem_seconds() const { return fem_seconds_; }
     double map_seconds() const { return map_seconds_; }
 
-    /// A diagnosis naming the window and the quantity when the relative energy error exceeds
-    /// `limit` (scale as in relative_energy_error) and its magnitude has grown in each of the
-    /// last kGrowthWindows windows: an unstable exchange pumps energy window after window,
-    /// while the lag's error during a transient (sand landing on a static plate) stops growing
-    /// when the transient ends. A non-finite error is always a diagnosis.
+    /// A diagnosis naming the window and the quantity when the relative created energy exceeds
+    /// `limit` (scale as in relative_energy_error) and has grown in each of the last
+    /// kGrowthWindows windows: an unstable exchange pumps energy window after window, while a
+    /// noisy load's creation stops within a few windows. Dissipation (sand landing on a static
+    /// plate, the added mass' springs) is no diagnosis. A non-finite error always is.
     std::optional<std::string> check(double limit, double scale) const;
     static constexpr int kGrowthWindows = 10;
 
@@ -70,6 +79,8 @@ class CouplingMonitor {
     double sand_work_ = 0.0;
     double shell_work_ = 0.0;
     double largest_work_ = 0.0;
+    double largest_error_ = 0.0;      ///< largest energy_error() so far [J]
+    double largest_error_time_ = 0.0; ///< the end of the window that reached it [s]
     int growing_windows_ = 0;
     Vec3 wall_impulse_ = Vec3::Zero();
     Vec3 shell_impulse_ = Vec3::Zero();
