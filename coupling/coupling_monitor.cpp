@@ -53,8 +53,7 @@ std::optional<std::string> CouplingMonitor::check(double limit, double scale) co
         << " s the shell received " << created_energy()
         << " J more than the sand's work on the walls (in all, sand work " << sand_work_
         << " J, shell work " << shell_work_ << " J), " << created
-        << " of the interface work, above the limit " << limit << ", grown for "
-        << growing_windows_
+        << " of the interface work, above the limit " << limit << ", grown for " << growing_windows_
         << " windows; the exchange is unstable: shorten [coupling] window, or iterate "
            "(max_iterations > 1, relaxation < 1), or give a static shell the sand's inertia "
            "(added_mass = 4)";

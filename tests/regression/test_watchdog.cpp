@@ -122,13 +122,15 @@ TEST(Watchdog, NewtonNonConvergenceNamesTheNodeOutOfBalance) {
 // Coupling energy growth: sand 100 times heavier per unit area than its plate, staggered
 // without relaxation (tests/data/watchdog/coupling_unstable.toml) goes unstable: the shell
 // receives more than the sand's work on the walls, and that created energy passes its 5 % limit
-// and grows for 10 windows (measured: window 37, 111 %; beyond_window_limit lets the case run a window the reader would refuse). The restart meets
-// it at the same step; its window count restarts from the checkpoint, so only the step is compared.
+// and grows for 10 windows (measured: window 37, 111 %; beyond_window_limit lets the case run a
+// window the reader would refuse). The restart meets it at the same step; its window count restarts
+// from the checkpoint, so only the step is compared.
 TEST(Watchdog, CouplingEnergyGrowthNamesTheWindow) {
     const std::string kase = "tests/data/watchdog/coupling_unstable.toml";
     const CaseRun run = run_case_file(kase, "watchdog_coupling", "--threads 1");
-    const Stopped stopped = expect_stopped(
-        run, {"coupling: coupling window 37 ending at t = 0.037 s", "the interface created energy"});
+    const Stopped stopped =
+        expect_stopped(run, {"coupling: coupling window 37 ending at t = 0.037 s",
+                             "the interface created energy"});
     expect_restart_meets_it_again(kase, "--threads 1", run, stopped, false);
 }
 

@@ -1,9 +1,8 @@
 #include "coupling/coupling_monitor.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <functional>
+#include <gtest/gtest.h>
 #include <optional>
 #include <string>
 #include <vector>
@@ -99,7 +98,8 @@ TEST(CouplingMonitor, ASuddenLoadLosesHalfItsWorkOnAStaticWall) {
 // kGrowthWindows windows. g = 0.25: |l|^2 = g/2 < 1, the oscillation decays, no diagnosis.
 TEST(CouplingMonitor, AGrowingAlternationCreatesEnergyAndIsDiagnosed) {
     const auto foundation = [](double stiffness) {
-        return [stiffness](double u0, double u1, int) { return 1000.0 - stiffness * 0.5 * (u0 + u1); };
+        return
+            [stiffness](double u0, double u1, int) { return 1000.0 - stiffness * 0.5 * (u0 + u1); };
     };
     Exchange unstable;
     std::vector<std::optional<std::string>> checks;
