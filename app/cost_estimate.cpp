@@ -205,6 +205,7 @@ void add_window_limit(const coupling::CoupledModel& coupled, CostEstimate& e) {
     e.coupling_window_limit = coupled.window_limit();
     e.coupling_window = coupled.stable_time_step();
     e.coupling_static = !coupled.fem().dynamic();
+    e.coupling_added_mass_lag = coupled.added_mass_lag();
 }
 
 } // namespace
@@ -306,6 +307,13 @@ std::string describe_cost(const CostEstimate& e, const Calibration& calibration)
                       "      coupling: window %.3g s; the staggered exchange %s\n",
                       e.coupling_window, limit);
         out << line;
+        if (e.coupling_added_mass_lag > 0.0) {
+            std::snprintf(line, sizeof line,
+                          "      added mass: the shell follows a change of the load within about "
+                          "%.3g s (coupling_added_mass_lag)\n",
+                          e.coupling_added_mass_lag);
+            out << line;
+        }
     }
     out << "      throughput: " << calibration.source << '\n';
     return out.str();

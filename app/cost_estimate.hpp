@@ -75,6 +75,9 @@ struct CostEstimate {
     double coupling_window = 0.0;
     double coupling_window_limit = 0.0;
     bool coupling_static = false;
+    /// Static shell with the added mass: how long it takes to follow a load change [s]
+    /// (coupling/window_limits.hpp, added_mass_lag; 0: none).
+    double coupling_added_mass_lag = 0.0;
     int threads = 1;
     double wall_time_s = 0.0;
     double memory_bytes = 0.0;

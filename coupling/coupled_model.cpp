@@ -69,6 +69,7 @@ CoupledModel::CoupledModel(std::unique_ptr<sph::SphModel> sph, std::unique_ptr<f
 void CoupledModel::set_window_limits(const WindowLimits& limits) {
     stable_window_max_ = limits.dynamic_max;
     stable_window_min_ = limits.static_min;
+    added_mass_lag_ = coupling::added_mass_lag(limits, settings_.window, settings_.added_mass);
 }
 
 std::vector<io::FieldArray> CoupledModel::interface_fields() const {
@@ -354,6 +355,10 @@ void CoupledModel::append_results(double t, std::vector<io::ResultFigure>& resul
                        fem_->dynamic()
                            ? "staggered, dynamic shell: longest stable window (estimate)"
                            : "staggered, static shell: shortest stable window (estimate)"});
+    if (added_mass_lag_ > 0.0) {
+        results.push_back({"coupling_added_mass_lag", added_mass_lag_, "s", std::nullopt,
+                           "static shell with the added mass: time to follow a load change"});
+    }
     results.push_back({"coupling_largest_subcycles",
                        static_cast<double>(monitor_.largest_subcycles()), "", std::nullopt, ""});
     // The run's `steps` count windows; the SPH steps behind them (every pass of an iterated

@@ -92,6 +92,9 @@ class CoupledModel final : public io::Stepper {
     void set_window_limits(const WindowLimits& limits);
     /// The estimate summary.json reports as coupling_window_limit: the longest stable window
     /// of a dynamic shell, the shortest of a static one [s].
+    /// How long the static shell with the added mass takes to follow a load change
+    /// (window_limits.hpp, added_mass_lag); 0 without it.
+    double added_mass_lag() const { return added_mass_lag_; }
     double window_limit() const {
         return fem_->dynamic() ? stable_window_max_ : stable_window_min_;
     }
@@ -133,6 +136,7 @@ class CoupledModel final : public io::Stepper {
     std::vector<Vec3> node_normal_;  ///< unit normal towards the sand at each coupled node
     double stable_window_max_ = 0.0; ///< dynamic shell: the staggered window's upper limit
     double stable_window_min_ = 0.0; ///< static shell: its lower limit
+    double added_mass_lag_ = 0.0;    ///< static shell with the added mass: added_mass_lag [s]
 };
 
 } // namespace grainload::coupling

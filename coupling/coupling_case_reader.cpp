@@ -303,6 +303,10 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
             std::cerr << "grainload: warning: " << *warning << '\n';
         }
     }
+    if (auto warning =
+            added_mass_lag_warning(limits, settings.window, settings.added_mass, scene.end_time)) {
+        std::cerr << "grainload: warning: " << *warning << '\n';
+    }
     if (settings.added_mass > 0.0) {
         fem->analysis().set_node_springs(added_mass_springs(
             fem->analysis().mesh(), parts, limits.sand_mass, settings.window, settings.added_mass));

@@ -55,6 +55,18 @@ WindowLimits estimate_window_limits(const sph::SphModel& sph, fem::ShellModel& f
                                     const std::vector<CoupledPart>& parts, double omega,
                                     double end_time, double added_mass = 0.0);
 
+/// How long a static shell with the added mass (factor `added_mass`) takes to follow a change
+/// of the load [s]: each window closes 1 / (1 + beta g) of the gap to its equilibrium, g =
+/// m_s C / dt^2, so the gap falls by e over tau = dt (1 + beta g) = dt + beta m_s C / dt (the
+/// springs act as a damper of beta m_s / dt per unit area, stiffer for shorter windows).
+/// Shortest, 2 sqrt(beta m_s C), at dt = sqrt(beta m_s C). 0 without the added mass.
+double added_mass_lag(const WindowLimits& limits, double window, double added_mass);
+
+/// A warning when that lag exceeds a tenth of the run (`end_time`): the wall's figures then
+/// follow the load late (docs/theory/coupling.md, "Added mass"); std::nullopt otherwise.
+std::optional<std::string> added_mass_lag_warning(const WindowLimits& limits, double window,
+                                                  double added_mass, double end_time);
+
 /// A refusal when the staggered window is beyond twice its limit (the estimate is good to a
 /// factor of about two), naming the limit and what works instead; std::nullopt otherwise.
 std::optional<std::string> window_refusal(const WindowLimits& limits, double window, bool dynamic,
