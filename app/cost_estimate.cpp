@@ -256,41 +256,44 @@ CostEstimate estimate_cost(const Scene& scene, int threads, const Calibration& c
     return e;
 }
 
+namespace {
+
+// One printf-formatted line of the check's report.
+template <class... Values> void add_line(std::ostream& out, const char* format, Values... values) {
+    char line[256];
+    std::snprintf(line, sizeof line, format, values...);
+    out << line;
+}
+
+} // namespace
+
 std::string describe_cost(const CostEstimate& e, const Calibration& calibration) {
     std::ostringstream out;
-    char line[256];
-    std::snprintf(line, sizeof line,
-                  "cost: %lld SPH particles (%lld of them walls), %lld shell nodes (%lld free "
-                  "DOFs)\n",
-                  static_cast<long long>(e.sph_particles), static_cast<long long>(e.wall_particles),
-                  static_cast<long long>(e.shell_nodes), static_cast<long long>(e.shell_dofs));
-    out << line;
+    add_line(out,
+             "cost: %lld SPH particles (%lld of them walls), %lld shell nodes (%lld free DOFs)\n",
+             static_cast<long long>(e.sph_particles), static_cast<long long>(e.wall_particles),
+             static_cast<long long>(e.shell_nodes), static_cast<long long>(e.shell_dofs));
     if (e.average_created > 0.0) {
-        std::snprintf(line, sizeof line,
-                      "      sources: %.0f particles more on average over the run, each with a "
-                      "full kernel support\n",
-                      e.average_created);
-        out << line;
+        add_line(out,
+                 "      sources: %.0f particles more on average over the run, each with a full "
+                 "kernel support\n",
+                 e.average_created);
     }
     if (e.sinks > 0) {
         // When the sinks take the material is the flow's outcome (the quarter wagon's load
         // leaves between 2.5 and 7.5 s of 11: its runs took 0.16-0.36 of the estimate).
-        std::snprintf(line, sizeof line,
-                      "      sinks: %d; the particles they take are counted to the end time, so "
-                      "a discharge takes less than estimated\n",
-                      e.sinks);
-        out << line;
+        add_line(out,
+                 "      sinks: %d; the particles they take are counted to the end time, so a "
+                 "discharge takes less than estimated\n",
+                 e.sinks);
     }
-    std::snprintf(line, sizeof line,
-                  "      step %.3g s at t = 0: %lld steps to the end time (%.3g SPH steps, "
-                  "%.3g particle-steps, %lld + %lld contact neighbour entries)\n",
-                  e.time_step, e.steps, e.sph_steps, e.particle_steps,
-                  static_cast<long long>(e.entries), static_cast<long long>(e.contact_entries));
-    out << line;
-    std::snprintf(line, sizeof line,
-                  "      estimated wall time %s on %d threads, memory %.0f MiB\n",
-                  duration(e.wall_time_s).c_str(), e.threads, e.memory_bytes / (1024.0 * 1024.0));
-    out << line;
+    add_line(out,
+             "      step %.3g s at t = 0: %lld steps to the end time (%.3g SPH steps, %.3g "
+             "particle-steps, %lld + %lld contact neighbour entries)\n",
+             e.time_step, e.steps, e.sph_steps, e.particle_steps, static_cast<long long>(e.entries),
+             static_cast<long long>(e.contact_entries));
+    add_line(out, "      estimated wall time %s on %d threads, memory %.0f MiB\n",
+             duration(e.wall_time_s).c_str(), e.threads, e.memory_bytes / (1024.0 * 1024.0));
     if (e.coupling_window > 0.0) {
         // A static shell with a rigid coupled part or the added mass has no shortest window.
         char limit[128];
@@ -303,16 +306,13 @@ std::string describe_cost(const CostEstimate& e, const Calibration& calibration)
                           e.coupling_static ? "from windows of" : "up to windows of",
                           e.coupling_window_limit);
         }
-        std::snprintf(line, sizeof line,
-                      "      coupling: window %.3g s; the staggered exchange %s\n",
-                      e.coupling_window, limit);
-        out << line;
+        add_line(out, "      coupling: window %.3g s; the staggered exchange %s\n",
+                 e.coupling_window, limit);
         if (e.coupling_added_mass_lag > 0.0) {
-            std::snprintf(line, sizeof line,
-                          "      added mass: the shell follows a change of the load within about "
-                          "%.3g s (coupling_added_mass_lag)\n",
-                          e.coupling_added_mass_lag);
-            out << line;
+            add_line(out,
+                     "      added mass: the shell follows a change of the load within about %.3g "
+                     "s (coupling_added_mass_lag)\n",
+                     e.coupling_added_mass_lag);
         }
     }
     out << "      throughput: " << calibration.source << '\n';
