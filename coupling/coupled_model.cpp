@@ -305,7 +305,30 @@ std::optional<std::string> CoupledModel::diagnose() const {
         return std::string("interface load is not finite");
     }
     const double scale = sph_->solver()->energy_ledger().throughput();
-    return monitor_.check(settings_.energy_error_limit, scale);
+    return monitor_.check(settings_.energy_error_limit, scale, instability_remedy());
+}
+
+std::string CoupledModel::instability_remedy() const {
+    // The staggered exchange is stable below a window for a dynamic shell and above one for a
+    // static shell (window_limits.hpp); iterating converges to the monolithic answer either way.
+    std::ostringstream remedy;
+    if (fem_->dynamic()) {
+        remedy << "shorten [coupling] window (estimated stable up to " << stable_window_max_
+               << " s)";
+    } else {
+        remedy << "lengthen [coupling] window (a static shell needs the longer window";
+        if (stable_window_min_ > 0.0) {
+            remedy << "; estimated stable from " << stable_window_min_ << " s";
+        }
+        remedy << "), give the shell the sand's inertia (added_mass = "
+               << (settings_.added_mass > 0.0 ? "more than " : "")
+               << (settings_.added_mass > 0.0 ? settings_.added_mass : 4.0) << ")";
+    }
+    remedy << ", lower the relaxation (now " << settings_.relaxation << "), or iterate "
+           << (settings_.max_iterations > 1 ? "further (max_iterations now "
+                                            : "(max_iterations > 1")
+           << (settings_.max_iterations > 1 ? std::to_string(settings_.max_iterations) : "") << ")";
+    return remedy.str();
 }
 
 void CoupledModel::append_blocks(io::Frame& frame) const {

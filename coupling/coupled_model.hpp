@@ -95,6 +95,8 @@ class CoupledModel final : public io::Stepper {
     /// How long the static shell with the added mass takes to follow a load change
     /// (window_limits.hpp, added_mass_lag); 0 without it.
     double added_mass_lag() const { return added_mass_lag_; }
+    /// What makes this scene's staggered exchange stable, for the watchdog's diagnosis.
+    std::string instability_remedy() const;
     double window_limit() const {
         return fem_->dynamic() ? stable_window_max_ : stable_window_min_;
     }

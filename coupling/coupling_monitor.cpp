@@ -41,7 +41,8 @@ double CouplingMonitor::relative_created_energy(double scale) const {
     return reference > 0.0 ? created_energy() / reference : 0.0;
 }
 
-std::optional<std::string> CouplingMonitor::check(double limit, double scale) const {
+std::optional<std::string> CouplingMonitor::check(double limit, double scale,
+                                                  const std::string& remedy) const {
     const double created = relative_created_energy(scale);
     if (std::isfinite(created) && (!(created > limit) || growing_windows_ < kGrowthWindows)) {
         return std::nullopt;
@@ -54,9 +55,7 @@ std::optional<std::string> CouplingMonitor::check(double limit, double scale) co
         << " J more than the sand's work on the walls (in all, sand work " << sand_work_
         << " J, shell work " << shell_work_ << " J), " << created
         << " of the interface work, above the limit " << limit << ", grown for " << growing_windows_
-        << " windows; the exchange is unstable: shorten [coupling] window, or iterate "
-           "(max_iterations > 1, relaxation < 1), or give a static shell the sand's inertia "
-           "(added_mass = 4)";
+        << " windows; the exchange is unstable: " << remedy;
     return out.str();
 }
 

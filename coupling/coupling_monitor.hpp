@@ -62,7 +62,8 @@ class CouplingMonitor {
     /// kGrowthWindows windows: an unstable exchange pumps energy window after window, while a
     /// noisy load's creation stops within a few windows. Dissipation (sand landing on a static
     /// plate, the added mass' springs) is no diagnosis. A non-finite error always is.
-    std::optional<std::string> check(double limit, double scale) const;
+    /// `remedy` ends the diagnosis: what makes this scene's exchange stable.
+    std::optional<std::string> check(double limit, double scale, const std::string& remedy) const;
     static constexpr int kGrowthWindows = 10;
 
     /// Appends the windows not yet written to DIRECTORY/coupling.csv (a fresh file at the
