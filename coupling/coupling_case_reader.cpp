@@ -303,6 +303,20 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
             std::cerr << "grainload: warning: " << *warning << '\n';
         }
     }
+    // Time is physical in a coupled run: the ramp that orders a stand-alone static analysis's
+    // load steps would put the structure's own weight on over the run (the wagon's body carried
+    // 23 % of it when its load was heaviest, until session 30; docs/validation/hopper_wagon.md).
+    // A ramp over a few windows (the tipping cone's plate: two) is a start-up, not that.
+    if (fem->has_ramped_loads() &&
+        fem->load_time() > std::max(settings.window, 0.1 * scene.end_time) * (1.0 + 1e-9)) {
+        std::cerr << "grainload: warning: the shell's own loads without a time function "
+                  << "(gravity, pressures, nodal forces) grow linearly until [fem] load_time = "
+                  << fem->load_time()
+                  << " s (by default end_time); in a coupled run time is physical and a "
+                     "structure carries its weight before the sand arrives: set load_time to "
+                     "one window ("
+                  << settings.window << " s) unless the ramp is meant\n";
+    }
     if (auto warning =
             added_mass_lag_warning(limits, settings.window, settings.added_mass, scene.end_time)) {
         std::cerr << "grainload: warning: " << *warning << '\n';

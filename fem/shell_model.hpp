@@ -56,6 +56,11 @@ class ShellModel final : public io::Stepper {
     /// case's loads stay constant, since the forces change.
     void advance_with_forces(double t, double dt, const Eigen::VectorXd& forces);
     bool dynamic() const { return dynamic_; }
+    /// [fem].load_time: when the loads without a time function reach their full value [s].
+    double load_time() const { return load_time_; }
+    /// Whether the case puts loads on the shell that follow the ramp to load_time (gravity,
+    /// pressures, nodal forces without a [[fem.time_function]]).
+    bool has_ramped_loads() const { return analysis_->reference_load().squaredNorm() > 0.0; }
     /// Kinetic energy of the shell (dynamic analysis; 0 for a static one).
     double kinetic_energy() const;
     /// u . Fu(u) / 2: the strain energy of a linear elastic shell (for the energy books).

@@ -147,6 +147,22 @@ TEST(CommandLine, AStaticWindowWithinTheEstimatesUncertaintyIsWarnedAbout) {
     EXPECT_EQ(stable.output.find("warning"), std::string::npos) << stable.output;
 }
 
+// A coupled shell's own loads ramped over the run (load_time defaults to end_time) are warned
+// about: the tipping cone's plate takes its weight over 10 ms (two windows of its 1 s run), no
+// warning; over 1 s, the warning names load_time and proposes one window (5 ms).
+TEST(CommandLine, ACoupledShellsWeightRampedOverTheRunIsWarnedAbout) {
+    const std::string cone = "'" + source_path("cases/tipping_cone/tipping_cone.toml") + "'";
+    const auto at_once = run_cli("check " + cone, log_file());
+    EXPECT_EQ(at_once.exit_code, 0) << at_once.output;
+    EXPECT_EQ(at_once.output.find("load_time"), std::string::npos) << at_once.output;
+    const auto ramped = run_cli("check " + cone + " --set 'fem.load_time=\"1 s\"'", log_file());
+    EXPECT_EQ(ramped.exit_code, 0) << ramped.output;
+    EXPECT_NE(ramped.output.find("grow linearly until [fem] load_time = 1 s"), std::string::npos)
+        << ramped.output;
+    EXPECT_NE(ramped.output.find("set load_time to one window (0.005 s)"), std::string::npos)
+        << ramped.output;
+}
+
 // The added mass lifts the static window's lower limit: with beta (2 / omega - 1) >= 1 the
 // estimate has none (coupling/window_limits.hpp). The flexible silo of the bad cases, refused
 // at its 5 ms window (shortest stable window 20.6 ms at relaxation 0.5), passes the check with
