@@ -3,7 +3,7 @@
 
 Usage:
     /usr/bin/python3 cases/hopper_wagon/analyse_discharge.py OUT [OUT2 ...] [--png FILE]
-                     [--labels A,B] [--open 2.5] [--door 1.22]
+                     [--labels A,B] [--open 2.5] [--door 1.064]
 
 For every run directory OUT it reads summary.json, discharge.csv, wall_forces.csv and the
 frames (VTK's Python bindings, python3-vtk9) and prints, and writes to OUT/wagon_figures.json:
@@ -139,7 +139,8 @@ def main():
     parser.add_argument("--png")
     parser.add_argument("--labels", help="comma-separated legend labels, one per run")
     parser.add_argument("--open", type=float, default=2.5, help="the door starts opening [s]")
-    parser.add_argument("--door", type=float, default=1.22, help="door opening height [m]")
+    parser.add_argument("--door", type=float, default=1.064,
+                        help="door opening height as drawn [m] (hopper_wagon.toml: 1.064)")
     args = parser.parse_args()
     labels = args.labels.split(",") if args.labels else args.outs
     for out, label in zip(args.outs, labels):
