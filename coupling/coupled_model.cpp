@@ -305,7 +305,10 @@ std::optional<std::string> CoupledModel::diagnose() const {
         return std::string("interface load is not finite");
     }
     const double scale = sph_->solver()->energy_ledger().throughput();
-    return monitor_.check(settings_.energy_error_limit, scale, instability_remedy());
+    if (auto problem = monitor_.check(settings_.energy_error_limit, scale)) {
+        return *problem + "; the exchange is unstable: " + instability_remedy();
+    }
+    return std::nullopt;
 }
 
 std::string CoupledModel::instability_remedy() const {
@@ -324,10 +327,12 @@ std::string CoupledModel::instability_remedy() const {
                << (settings_.added_mass > 0.0 ? "more than " : "")
                << (settings_.added_mass > 0.0 ? settings_.added_mass : 4.0) << ")";
     }
-    remedy << ", lower the relaxation (now " << settings_.relaxation << "), or iterate "
-           << (settings_.max_iterations > 1 ? "further (max_iterations now "
-                                            : "(max_iterations > 1")
-           << (settings_.max_iterations > 1 ? std::to_string(settings_.max_iterations) : "") << ")";
+    remedy << ", lower the relaxation (now " << settings_.relaxation << "), or iterate ";
+    if (settings_.max_iterations > 1) {
+        remedy << "further (max_iterations now " << settings_.max_iterations << ")";
+    } else {
+        remedy << "(max_iterations > 1)";
+    }
     return remedy.str();
 }
 

@@ -90,13 +90,13 @@ class CoupledModel final : public io::Stepper {
     const CouplingMonitor& monitor() const { return monitor_; }
     /// The estimated stable windows of the staggered exchange, reported in summary.json.
     void set_window_limits(const WindowLimits& limits);
-    /// The estimate summary.json reports as coupling_window_limit: the longest stable window
-    /// of a dynamic shell, the shortest of a static one [s].
     /// How long the static shell with the added mass takes to follow a load change
     /// (window_limits.hpp, added_mass_lag); 0 without it.
     double added_mass_lag() const { return added_mass_lag_; }
     /// What makes this scene's staggered exchange stable, for the watchdog's diagnosis.
     std::string instability_remedy() const;
+    /// The estimate summary.json reports as coupling_window_limit: the longest stable window
+    /// of a dynamic shell, the shortest of a static one [s].
     double window_limit() const {
         return fem_->dynamic() ? stable_window_max_ : stable_window_min_;
     }

@@ -31,18 +31,20 @@ void CouplingMonitor::add(const WindowRecord& record) {
     map_seconds_ += record.map_seconds;
 }
 
-double CouplingMonitor::relative_energy_error(double scale) const {
+double CouplingMonitor::relative_to_work(double energy, double scale) const {
     const double reference = std::max(largest_work_, scale);
-    return reference > 0.0 ? std::abs(energy_error()) / reference : 0.0;
+    return reference > 0.0 ? energy / reference : 0.0;
+}
+
+double CouplingMonitor::relative_energy_error(double scale) const {
+    return relative_to_work(std::abs(energy_error()), scale);
 }
 
 double CouplingMonitor::relative_created_energy(double scale) const {
-    const double reference = std::max(largest_work_, scale);
-    return reference > 0.0 ? created_energy() / reference : 0.0;
+    return relative_to_work(created_energy(), scale);
 }
 
-std::optional<std::string> CouplingMonitor::check(double limit, double scale,
-                                                  const std::string& remedy) const {
+std::optional<std::string> CouplingMonitor::check(double limit, double scale) const {
     const double created = relative_created_energy(scale);
     if (std::isfinite(created) && (!(created > limit) || growing_windows_ < kGrowthWindows)) {
         return std::nullopt;
@@ -55,7 +57,7 @@ std::optional<std::string> CouplingMonitor::check(double limit, double scale,
         << " J more than the sand's work on the walls (in all, sand work " << sand_work_
         << " J, shell work " << shell_work_ << " J), " << created
         << " of the interface work, above the limit " << limit << ", grown for " << growing_windows_
-        << " windows; the exchange is unstable: " << remedy;
+        << " windows";
     return out.str();
 }
 

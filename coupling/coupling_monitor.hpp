@@ -61,9 +61,9 @@ class CouplingMonitor {
     /// `limit` (scale as in relative_energy_error) and has grown in each of the last
     /// kGrowthWindows windows: an unstable exchange pumps energy window after window, while a
     /// noisy load's creation stops within a few windows. Dissipation (sand landing on a static
-    /// plate, the added mass' springs) is no diagnosis. A non-finite error always is.
-    /// `remedy` ends the diagnosis: what makes this scene's exchange stable.
-    std::optional<std::string> check(double limit, double scale, const std::string& remedy) const;
+    /// plate, the added mass' springs) is no diagnosis. A non-finite error always is. The
+    /// caller adds what makes its exchange stable (CoupledModel::instability_remedy).
+    std::optional<std::string> check(double limit, double scale) const;
     static constexpr int kGrowthWindows = 10;
 
     /// Appends the windows not yet written to DIRECTORY/coupling.csv (a fresh file at the
@@ -76,6 +76,9 @@ class CouplingMonitor {
     void set_state(const std::vector<double>& state);
 
   private:
+    /// `energy` / max(largest |sand work| so far, `scale`).
+    double relative_to_work(double energy, double scale) const;
+
     std::vector<WindowRecord> windows_;
     double sand_work_ = 0.0;
     double shell_work_ = 0.0;

@@ -41,7 +41,7 @@ CouplingMonitor run(Exchange& exchange, int windows,
         record.shell_work = 0.5 * (exchange.applied.back() + load) * (after - before);
         monitor.add(record);
         if (checks != nullptr) {
-            checks->push_back(monitor.check(limit, 0.0, "remedy"));
+            checks->push_back(monitor.check(limit, 0.0));
         }
         exchange.applied.push_back(load);
         load += exchange.omega * (produced - load);
