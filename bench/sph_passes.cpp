@@ -110,7 +110,14 @@ int main(int argc, char** argv) {
     sph::NeighbourList list(kernel.support_radius(),
                             options.verlet_skin_factor * options.smoothing_length,
                             options.dimension);
-    list.update(p.position, frozen, true);
+    // As SphSolver: each same-body pair in one row (the passes take it once).
+    const std::vector<int> keys = sph::continuum_keys(p);
+    auto build = [&] {
+        list.update(p.position, frozen, true);
+        list.halve_pairs(keys);
+    };
+    build();
+    sph::PairScratch scratch;
     const std::vector<const materials::Material*> materials(solver.materials().begin(),
                                                             solver.materials().end());
     std::vector<Mat3> gradient;
@@ -119,14 +126,15 @@ int main(int argc, char** argv) {
     std::vector<double>* factors = options.dimension == 2 ? &inputs.entry_factor : nullptr;
     auto kinematics = [&] {
         sph::compute_velocity_gradient(p, list, kernel, options.kernel_gradient_correction,
-                                       gradient, inputs.gradient_correction, factors);
+                                       gradient, inputs.gradient_correction, factors, &scratch);
     };
     kinematics();
     const double t_gradient = best_seconds(kinematics, reps);
     const double t_inputs = best_seconds(
         [&] { sph::prepare_force_inputs(p, options.artificial_stress, inputs); }, reps);
     const double t_forces = best_seconds(
-        [&] { sph::compute_accelerations(p, list, kernel, options, inputs, heating); }, reps);
+        [&] { sph::compute_accelerations(p, list, kernel, options, inputs, heating, &scratch); },
+        reps);
     sph::ParticleSet updated = p;
     const double t_stress = best_seconds(
         [&] {
@@ -135,7 +143,7 @@ int main(int argc, char** argv) {
             sph::update_stresses(updated, materials, 1e-5);
         },
         reps);
-    const double t_rebuild = best_seconds([&] { list.update(p.position, frozen, true); }, reps);
+    const double t_rebuild = best_seconds(build, reps);
     const sph::WallBodyFilter filter = sph::wall_body_filter(solver.walls());
     const double t_filtered = filter.empty()
                                   ? 0.0
@@ -143,6 +151,7 @@ int main(int argc, char** argv) {
                                         [&] {
                                             list.update(p.position, frozen, true);
                                             list.drop_pairs(p.body_id, filter.apart, filter.groups);
+                                            list.halve_pairs(keys);
                                         },
                                         reps);
     double checksum = 0.0;

@@ -120,13 +120,8 @@ void NeighbourList::rebuild(std::span<const Vec3> positions, std::span<const cha
     ++rebuilds_;
 }
 
-void NeighbourList::drop_pairs(std::span<const int> group, std::span<const char> apart,
-                               int groups) {
+template <class Keep> void NeighbourList::keep_pairs(Keep keep) {
     const auto n = static_cast<Index>(offset_.size()) - 1;
-    auto keep = [&](Index i, std::int32_t j) {
-        return apart[static_cast<std::size_t>(group[i]) * static_cast<std::size_t>(groups) +
-                     static_cast<std::size_t>(group[j])] == 0;
-    };
     // Count, then copy, as rebuild() fills the list: one allocation, rows in parallel.
     std::vector<Index> offset(static_cast<std::size_t>(n + 1), 0);
 #pragma omp parallel for schedule(dynamic, 256)
@@ -152,6 +147,18 @@ void NeighbourList::drop_pairs(std::span<const int> group, std::span<const char>
     }
     offset_ = std::move(offset);
     index_ = std::move(index);
+}
+
+void NeighbourList::drop_pairs(std::span<const int> group, std::span<const char> apart,
+                               int groups) {
+    keep_pairs([&](Index i, std::int32_t j) {
+        return apart[static_cast<std::size_t>(group[i]) * static_cast<std::size_t>(groups) +
+                     static_cast<std::size_t>(group[j])] == 0;
+    });
+}
+
+void NeighbourList::halve_pairs(std::span<const int> key) {
+    keep_pairs([&](Index i, std::int32_t j) { return j > i || key[i] != key[j]; });
 }
 
 std::size_t NeighbourList::bytes() const {

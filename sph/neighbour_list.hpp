@@ -8,9 +8,10 @@
 
 namespace grainload::sph {
 
-/// Full (both-direction) neighbour list in compressed rows: the neighbours of i are
-/// index[offset[i] .. offset[i+1]). Each pair appears in both rows, so a loop over i can
-/// gather from its neighbours in parallel with no atomics.
+/// Neighbour list in compressed rows: the neighbours of i are index[offset[i] .. offset[i+1]).
+/// As built, each pair appears in both rows, so a loop over i can gather from its neighbours in
+/// parallel with no atomics; halve_pairs then leaves the pairs that the passes take once in one
+/// row.
 ///
 /// Verlet list (Verlet 1967): pairs are collected within support + skin and the list is reused
 /// until some particle has moved more than half the skin since the last build; then no pair
@@ -31,6 +32,10 @@ class NeighbourList {
     /// Wall::bodies). The list must have just been rebuilt: it holds no such pair until the next
     /// rebuild, which needs another call. `group` covers every position the list was built on.
     void drop_pairs(std::span<const int> group, std::span<const char> apart, int groups);
+    /// Keep each pair of equal keys (sph/pair_parts.hpp: the same body, neither a wall
+    /// particle) in the row of its lower index only, for the passes that take such a pair once;
+    /// the other pairs stay in both rows. Like drop_pairs, until the next rebuild.
+    void halve_pairs(std::span<const int> key);
     /// Whether update() would rebuild without `force`.
     bool stale(std::span<const Vec3> positions) const;
 
@@ -51,6 +56,7 @@ class NeighbourList {
     std::size_t bytes() const;
 
   private:
+    template <class Keep> void keep_pairs(Keep keep);
     void rebuild(std::span<const Vec3> positions, std::span<const char> frozen, Index rows);
     double max_displacement(std::span<const Vec3> positions) const;
 

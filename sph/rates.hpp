@@ -2,6 +2,7 @@
 
 #include "sph/kernels.hpp"
 #include "sph/neighbour_list.hpp"
+#include "sph/pair_parts.hpp"
 #include "sph/particle_set.hpp"
 #include "sph/sph_options.hpp"
 
@@ -37,10 +38,15 @@ void store_kinematics(ParticleSet& particles, Index i, const Mat3& velocity_grad
 /// With `entry_factor` it also stores W'(r)/r of every same-body neighbour entry inside the
 /// support (indexed like the list's entries; other entries are left as they were), for the
 /// force pass at the same positions.
+/// Each same-body pair is taken once, from the row of its lower index (sph/pair_parts.hpp): the
+/// list may hold it in both rows (the other is skipped) or, as the solver's does
+/// (NeighbourList::halve_pairs), in that row only. `scratch` holds the sums of the threads after
+/// the first between calls (nullptr: allocated per call).
 void compute_velocity_gradient(ParticleSet& particles, const NeighbourList& neighbours,
                                const SmoothingKernel& kernel, bool gradient_correction,
                                std::vector<Mat3>& velocity_gradient, std::vector<Mat3>& correction,
-                               std::vector<double>* entry_factor = nullptr);
+                               std::vector<double>* entry_factor = nullptr,
+                               PairScratch* scratch = nullptr);
 
 /// Per-particle quantities the force pass reads, computed once per step.
 struct ForceInputs {
@@ -74,8 +80,11 @@ void prepare_force_inputs(const ParticleSet& particles, const ArtificialStress& 
 /// Wall particles get only contact; their `acceleration` times mass is the force on the wall.
 /// With Formulation::total_lagrangian the same-body stress terms are left out (TotalLagrangian
 /// adds them); viscosity and contact stay.
+/// Same-body pairs once each, as compute_velocity_gradient takes them (the pair's force on j is
+/// minus its force on i: momentum is conserved pair by pair); contact pairs from both rows.
 void compute_accelerations(ParticleSet& particles, const NeighbourList& neighbours,
                            const SmoothingKernel& kernel, const SphOptions& options,
-                           const ForceInputs& inputs, std::vector<double>& heating_rate);
+                           const ForceInputs& inputs, std::vector<double>& heating_rate,
+                           PairScratch* scratch = nullptr);
 
 } // namespace grainload::sph

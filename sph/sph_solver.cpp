@@ -154,8 +154,8 @@ void SphSolver::add_particles(std::span<const NewParticle> arrivals, bool book_e
 
 void SphSolver::refresh_neighbours() {
     if (options_.symmetry.empty()) {
-        if (neighbours_.update(particles_.position, is_wall_) && !wall_filter_.empty()) {
-            neighbours_.drop_pairs(particles_.body_id, wall_filter_.apart, wall_filter_.groups);
+        if (neighbours_.update(particles_.position, is_wall_)) {
+            filter_pairs(particles_.body_id, particles_.size());
         }
         return;
     }
@@ -171,9 +171,7 @@ void SphSolver::refresh_neighbours() {
 void SphSolver::rebuild_neighbours(std::span<const Vec3> positions) {
     if (options_.symmetry.empty()) {
         neighbours_.update(positions, is_wall_, true);
-        if (!wall_filter_.empty()) {
-            neighbours_.drop_pairs(particles_.body_id, wall_filter_.apart, wall_filter_.groups);
-        }
+        filter_pairs(particles_.body_id, particles_.size());
         return;
     }
     // An image within the support of a particle is within the support of the plane, and during
@@ -201,14 +199,27 @@ void SphSolver::rebuild_neighbours(std::span<const Vec3> positions) {
     // Images of grains need no row (nothing reads their rates); images of wall particles carry
     // the loads of the real grains on them (fold_wall_image_loads).
     neighbours_.update(all, frozen_, true, n + wall_image_count_);
+    // An image belongs to its source's body or wall.
+    std::vector<int> group(particles_.body_id.begin(), particles_.body_id.begin() + n);
+    for (const MirrorImage& image : images_) {
+        group.push_back(particles_.body_id[image.source]);
+    }
+    filter_pairs(group, n);
+}
+
+void SphSolver::filter_pairs(std::span<const int> group, Index real) {
     if (!wall_filter_.empty()) {
-        // An image belongs to its source's body or wall.
-        std::vector<int> group(particles_.body_id.begin(), particles_.body_id.begin() + n);
-        for (const MirrorImage& image : images_) {
-            group.push_back(particles_.body_id[image.source]);
-        }
         neighbours_.drop_pairs(group, wall_filter_.apart, wall_filter_.groups);
     }
+    // The keys of sph/pair_parts.hpp over the list's positions: an image of a grain takes its
+    // source's body, an image of a wall particle a key of its own.
+    const auto count = static_cast<Index>(group.size());
+    std::vector<int> key(group.size());
+    for (Index i = 0; i < count; ++i) {
+        const Index source = i < real ? i : images_[i - real].source;
+        key[i] = is_wall_[source] ? static_cast<int>(-2 - i) : group[i];
+    }
+    neighbours_.halve_pairs(key);
 }
 
 void SphSolver::attach_images(bool kinematics) {
@@ -273,7 +284,8 @@ void SphSolver::compute_forces(double dt) {
     if (!total_lagrangian_) { // its stress terms come from its own pass, not from sigma/rho^2
         prepare_force_inputs(particles_, options_.artificial_stress, force_inputs_);
     }
-    compute_accelerations(particles_, neighbours_, kernel_, options_, force_inputs_, heating_rate_);
+    compute_accelerations(particles_, neighbours_, kernel_, options_, force_inputs_, heating_rate_,
+                          &pair_scratch_);
     if (total_lagrangian_) {
         total_lagrangian_->add_stress_forces(particles_);
     }
@@ -328,7 +340,8 @@ void SphSolver::compute_kinematics() {
     // (about 75 entries) would take the solver past 1 KB per particle.
     compute_velocity_gradient(particles_, neighbours_, kernel_, options_.kernel_gradient_correction,
                               velocity_gradient_, force_inputs_.gradient_correction,
-                              options_.dimension == 2 ? &force_inputs_.entry_factor : nullptr);
+                              options_.dimension == 2 ? &force_inputs_.entry_factor : nullptr,
+                              &pair_scratch_);
 }
 
 // The continuity equation (thesis eq. 4.5.3.13) needs a neighbourhood: a particle that has flown
@@ -419,7 +432,7 @@ std::size_t SphSolver::bytes() const {
         held(force_inputs_.artificial_stress) + held(force_inputs_.sound_speed) +
         held(wave_speed_) + held(force_inputs_.gradient_correction) +
         held(force_inputs_.entry_factor) + held(velocity_gradient_) + held(heating_rate_);
-    return particle_bytes + work + neighbours_.bytes() +
+    return particle_bytes + work + pair_scratch_.bytes() + neighbours_.bytes() +
            (total_lagrangian_ ? total_lagrangian_->bytes() : 0);
 }
 

@@ -131,6 +131,11 @@ class SphSolver {
     void integrate_density(double dt, Index n);
     /// Rebuild the list if stale (mirror images attached, when there are planes).
     void refresh_neighbours();
+    /// After a rebuild over `group` (each position's body or wall; the first `real` are
+    /// particles, the others images_): leave out
+    /// the pairs of walls and the bodies they do not act on, and keep each same-body pair in
+    /// one row (NeighbourList::halve_pairs).
+    void filter_pairs(std::span<const int> group, Index real);
     /// Rebuild the list at `positions` (of the particles without images): with symmetry planes
     /// the images are selected anew, within the list's search radius of a plane.
     void rebuild_neighbours(std::span<const Vec3> positions);
@@ -166,6 +171,7 @@ class SphSolver {
     /// the solver was built with (a restart rebuilds the solver from the case first).
     std::optional<TotalLagrangian> total_lagrangian_;
     std::vector<char> is_wall_;
+    PairScratch pair_scratch_; ///< the pair passes' sums of the threads after the first
     ForceInputs force_inputs_;
     /// P-wave speed of each particle's (scaled) material, for the CFL step; 0 for walls.
     std::vector<double> wave_speed_;

@@ -1,0 +1,287 @@
+#include "sph/contact_force.hpp"
+#include "sph/pair_parts.hpp"
+#include "sph/rates.hpp"
+
+#include <cmath>
+#include <omp.h>
+
+// The force pass of rates.hpp (compute_accelerations): each same-body pair once, from the row
+// of its lower index (sph/pair_parts.hpp); contact pairs from both rows.
+
+namespace grainload::sph {
+
+namespace {
+
+/// Settings of the force pass, read once per call.
+struct ForceSettings {
+    double support_squared;
+    double h;
+    double h2_softening; ///< 0.01 h^2 of Monaghan's mu
+    double w_reference;
+    bool stress_pairs;
+    bool use_artificial_stress;
+    double artificial_exponent;
+    bool use_viscosity;
+    bool use_contact;
+    bool current_pairs_act; ///< whether same-body pairs of the current list exchange anything
+    double alpha;
+    double beta;
+    double viscosity_speed;
+    Vec3 gravity;
+
+    ForceSettings(const SmoothingKernel& kernel, const SphOptions& options)
+        : support_squared(kernel.support_radius() * kernel.support_radius()),
+          h(kernel.smoothing_length()), h2_softening(0.01 * h * h),
+          w_reference(kernel.value(options.particle_spacing)),
+          stress_pairs(options.formulation == Formulation::updated_lagrangian),
+          use_artificial_stress(stress_pairs && options.artificial_stress.epsilon > 0.0),
+          artificial_exponent(options.artificial_stress.exponent),
+          use_viscosity(options.viscosity.alpha > 0.0 || options.viscosity.beta > 0.0),
+          use_contact(options.contact.stiffness > 0.0),
+          current_pairs_act(stress_pairs || use_viscosity), alpha(options.viscosity.alpha),
+          beta(options.viscosity.beta), viscosity_speed(options.viscosity.sound_speed),
+          gravity(options.gravity) {}
+};
+
+/// Where the parts of the force pass add: 3 doubles of acceleration and 1 of heating rate per
+/// particle.
+struct ForceSums {
+    double* acceleration;
+    double* heating;
+};
+
+/// Row i of the force pass in D = 2 or 3 components (plane strain: the z terms are exact zeros
+/// and are left out).
+template <class Shape, int D> struct ForceRow {
+    const ParticleSet& p;
+    const NeighbourList& neighbours;
+    const SmoothingKernel& kernel;
+    const ShapeTerms<Shape> w;
+    const ForceSettings& s;
+    const ContactPotential& contact;
+    const ForceInputs& in;
+    const std::vector<int>& key;
+    /// in.entry_factor's data, or nullptr: the kernel is evaluated here.
+    const double* entry_factor;
+
+    /// Stress, artificial stress and viscosity of a same-body pair i < j: adds m_j T g to i's
+    /// acceleration and -m_i T g to j's (grad_j W_ji = -g, T symmetric in i and j), and the
+    /// viscous heating 1/2 m Pi v_ij . g to both (Monaghan 1992). in_support false: computed
+    /// as if, added nowhere (a branch-free skip).
+    void continuum_pair(Index i, Index j, const double (&d)[D], double r, double r2,
+                        const double (&g)[D], bool in_support, double (&a)[3], double& heating,
+                        const ForceSums& sums) const {
+        double t[D][D] = {};
+        if (s.stress_pairs) {
+            const Mat3& si = in.stress_over_rho2[i];
+            const Mat3& sj = in.stress_over_rho2[j];
+            for (int row = 0; row < D; ++row) {
+                for (int c = 0; c < D; ++c) {
+                    t[row][c] = si(row, c) + sj(row, c);
+                }
+            }
+        }
+        if (s.use_artificial_stress) {
+            const double fn = std::pow(w.value(r) / s.w_reference, s.artificial_exponent);
+            const Mat3& ri = in.artificial_stress[i];
+            const Mat3& rj = in.artificial_stress[j];
+            for (int row = 0; row < D; ++row) {
+                for (int c = 0; c < D; ++c) {
+                    t[row][c] += fn * (ri(row, c) + rj(row, c));
+                }
+            }
+        }
+        const Vec3& vi = p.velocity[i];
+        const Vec3& vj = p.velocity[j];
+        double v_ij[D];
+        double approach = 0.0;
+        for (int c = 0; c < D; ++c) {
+            v_ij[c] = vi[c] - vj[c];
+            approach += v_ij[c] * d[c];
+        }
+        const double mi = p.mass[i];
+        const double mj = p.mass[j];
+        // Branch free: whether the pair approaches is a coin toss per pair, and a mispredicted
+        // branch here costs more than the arithmetic it would skip.
+        if (s.use_viscosity) {
+            const double mu = s.h * approach / (r2 + s.h2_softening);
+            const double c = s.viscosity_speed > 0.0
+                                 ? s.viscosity_speed
+                                 : 0.5 * (in.sound_speed[i] + in.sound_speed[j]);
+            const double rho = 0.5 * (p.density[i] + p.density[j]);
+            const double pi_all = (-s.alpha * c * mu + s.beta * mu * mu) / rho;
+            double power = 0.0;
+            for (int k = 0; k < D; ++k) {
+                power += v_ij[k] * g[k];
+            }
+            const bool viscous = approach < 0.0;
+            const double pi_ij = viscous ? pi_all : 0.0;
+            const double heat = viscous && in_support ? 0.5 * pi_all * power : 0.0;
+            heating += mj * heat;
+            sums.heating[j] += mi * heat;
+            for (int k = 0; k < D; ++k) {
+                t[k][k] -= pi_ij;
+            }
+        }
+        double* aj = sums.acceleration + 3 * j;
+        for (int row = 0; row < D; ++row) {
+            double tg = 0.0;
+            for (int c = 0; c < D; ++c) {
+                tg += t[row][c] * g[c];
+            }
+            tg = in_support ? tg : 0.0;
+            a[row] += mj * tg;
+            aj[row] -= mi * tg;
+        }
+    }
+
+    /// Contact potential (and the dashpot between bodies) of a pair of different bodies.
+    void contact_pair(Index i, Index j, const Vec3& x_ij, double r, bool wall, double volume_i,
+                      double (&a)[3], double& heating) const {
+        const double volumes = volume_i * p.mass[j] / p.density[j];
+        Vec3 add;
+        if (wall || p.wall_id[j] >= 0) {
+            // Undamped here: WallContact damps along the wall normal.
+            const double repulsion = contact_repulsion(kernel, contact, s.w_reference, volumes, r);
+            add = (repulsion / (r * p.mass[i])) * x_ij;
+        } else {
+            const ContactPair pair{x_ij, r, p.velocity[i] - p.velocity[j], volumes,
+                                   p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j])};
+            double dissipation = 0.0;
+            add = contact_pair_force(kernel, contact, s.w_reference, pair, dissipation) / p.mass[i];
+            heating += 0.5 * dissipation / p.mass[i];
+        }
+        for (int c = 0; c < 3; ++c) {
+            a[c] += add[c];
+        }
+    }
+
+    /// Row i: its contact pairs, and its same-body pairs with the particles after it.
+    void operator()(Index i, const ForceSums& sums) const {
+        const bool wall = p.wall_id[i] >= 0;
+        double a[3] = {0.0, 0.0, 0.0};
+        double heating = 0.0;
+        const Vec3& xi = p.position[i];
+        const double volume_i = p.mass[i] / p.density[i];
+        const int key_i = key[i];
+        const auto list = neighbours.neighbours(i);
+        const double* factor_of_entry =
+            entry_factor != nullptr ? entry_factor + neighbours.first_entry(i) : nullptr;
+        for (std::size_t k = 0; k < list.size(); ++k) {
+            const Index j = list[k];
+            const Vec3& xj = p.position[j];
+            double d[D];
+            double r2 = 0.0;
+            for (int c = 0; c < D; ++c) {
+                d[c] = xi[c] - xj[c];
+                r2 += d[c] * d[c];
+            }
+            const bool same = key[j] == key_i;
+            const bool in_support = r2 < s.support_squared && r2 != 0.0;
+            if (!same) {
+                if (in_support && s.use_contact && p.body_id[i] != p.body_id[j]) {
+                    contact_pair(i, j, xi - xj, std::sqrt(r2), wall, volume_i, a, heating);
+                }
+                continue;
+            }
+            if (!s.current_pairs_act || j < i) {
+                continue;
+            }
+            // Total-Lagrangian stress forces come from TotalLagrangian over the reference
+            // pairs; the viscosity still acts between current neighbours. Pairs outside the
+            // support are evaluated at r = support (finite) and not added. The kinematic pass
+            // left W'(r)/r of the pairs inside the support in entry_factor when it is given
+            // (its value there for the others is stale but not added).
+            const bool need_r = factor_of_entry == nullptr || s.use_artificial_stress;
+            const double r = need_r ? std::sqrt(in_support ? r2 : s.support_squared) : 0.0;
+            const double f = factor_of_entry != nullptr ? factor_of_entry[k] : w.gradient_factor(r);
+            double g[D];
+            for (int c = 0; c < D; ++c) {
+                g[c] = f * d[c];
+            }
+            continuum_pair(i, j, d, r, r2, g, in_support, a, heating, sums);
+        }
+        double* ai = sums.acceleration + 3 * i;
+        for (int c = 0; c < 3; ++c) {
+            ai[c] += a[c];
+        }
+        sums.heating[i] += heating;
+    }
+};
+
+} // namespace
+
+void compute_accelerations(ParticleSet& p, const NeighbourList& neighbours,
+                           const SmoothingKernel& kernel, const SphOptions& options,
+                           const ForceInputs& in, std::vector<double>& heating_rate,
+                           PairScratch* scratch) {
+    const Index n = p.size();
+    heating_rate.assign(static_cast<std::size_t>(n), 0.0);
+    if (n == 0) {
+        return;
+    }
+    const ForceSettings settings(kernel, options);
+    const std::vector<int> key = continuum_keys(p);
+    // The first part sums into the particles' accelerations, which start from gravity.
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+        p.acceleration[i] = p.wall_id[i] >= 0 ? Vec3::Zero() : settings.gravity;
+    }
+    const int parts = pass_parts();
+    const std::vector<Index> bounds = balanced_rows(neighbours, n, parts);
+    PairScratch own;
+    PairScratch& sums = scratch != nullptr ? *scratch : own;
+    sums.reserve(parts, n, 4);
+    auto sums_of = [&](int r) {
+        if (r == 0) {
+            return ForceSums{p.acceleration.data()->data(), heating_rate.data()};
+        }
+        double* base = sums.part(r);
+        return ForceSums{base, base + 3 * n};
+    };
+    kernel.visit_shape([&](auto shape) {
+        using Shape = decltype(shape);
+        auto pass = [&](auto dimension) {
+            const ForceRow<Shape, decltype(dimension)::value> row{
+                p,
+                neighbours,
+                kernel,
+                ShapeTerms<Shape>(kernel),
+                settings,
+                options.contact,
+                in,
+                key,
+                in.entry_factor.empty() ? nullptr : in.entry_factor.data()};
+#pragma omp parallel num_threads(parts)
+            for (int r = omp_get_thread_num(); r < parts; r += omp_get_num_threads()) {
+                if (r > 0) {
+                    sums.zero(r, static_cast<std::size_t>(4 * n));
+                }
+                const ForceSums part = sums_of(r);
+                for (Index i = bounds[r]; i < bounds[r + 1]; ++i) {
+                    row(i, part);
+                }
+            }
+        };
+        if (kernel.dimension() == 2) {
+            pass(std::integral_constant<int, 2>{});
+        } else {
+            pass(std::integral_constant<int, 3>{});
+        }
+    });
+    if (parts == 1) {
+        return;
+    }
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+        for (int r = 1; r < parts; ++r) {
+            const ForceSums part = sums_of(r);
+            for (int c = 0; c < 3; ++c) {
+                p.acceleration[i][c] += part.acceleration[3 * i + c];
+            }
+            heating_rate[i] += part.heating[i];
+        }
+    }
+}
+
+} // namespace grainload::sph

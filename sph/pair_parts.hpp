@@ -1,0 +1,47 @@
+#pragma once
+
+#include "sph/neighbour_list.hpp"
+#include "sph/particle_set.hpp"
+
+#include <cstddef>
+#include <vector>
+
+namespace grainload::sph {
+
+/// Which particles exchange stress: key[i] is the body of a material particle and a value no
+/// other particle has (-2 - i) for a wall particle, so key[i] == key[j] exactly for the pairs
+/// that exchange stress (same body, neither a wall particle): one load per neighbour.
+std::vector<int> continuum_keys(const ParticleSet& particles);
+
+/// The passes over same-body pairs visit each pair once, from the row of its lower index, and
+/// add its terms to both particles (Newton's third law in the force pass, the symmetric
+/// velocity difference in the kinematic pass): half the pairs' arithmetic and neighbour loads
+/// of a both-direction list. The rows are split into parts, one per thread; a part adds into
+/// its own accumulators, the first part into the particles' arrays themselves, and the parts
+/// are summed in their order afterwards. The split depends only on the list and the number of
+/// parts, so a run repeats itself bit for bit at a given thread count; between thread counts
+/// the sums are ordered differently (round-off).
+///
+/// Rows [bounds[r], bounds[r + 1]) of part r, for `parts` parts of about equal numbers of list
+/// entries over the first `rows` rows.
+std::vector<Index> balanced_rows(const NeighbourList& list, Index rows, int parts);
+
+/// Accumulators of the parts after the first: `width` doubles per particle each.
+class PairScratch {
+  public:
+    /// Make room for `parts` parts (the first needs none) of n particles of `width` doubles.
+    void reserve(int parts, Index n, int width);
+    /// Part r's accumulators (r >= 1), as reserved; zero() them first.
+    double* part(int r) { return parts_[static_cast<std::size_t>(r - 1)].data(); }
+    /// Set part r's first `count` doubles to zero (by the thread that then fills them).
+    void zero(int r, std::size_t count);
+    std::size_t bytes() const;
+
+  private:
+    std::vector<std::vector<double>> parts_;
+};
+
+/// Number of parts of a pass: the threads OpenMP would use.
+int pass_parts();
+
+} // namespace grainload::sph
