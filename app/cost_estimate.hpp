@@ -15,22 +15,24 @@ struct Scene;
 struct Calibration {
     std::string source = "built-in constants (no calibration file)";
     /// Seconds of one thread per SPH step: per neighbour-list entry between body particles
-    /// (each pair within support + skin, counted from both ends), per entry between a body and
+    /// (each pair within support + skin once: the solver's list holds a pair of one body in one
+    /// row, sph/pair_parts.hpp), per entry between a body and
     /// a wall particle (contact, dashpot, friction; wall-wall pairs are not listed), per body
     /// particle (kinematics, stress update, integration) and per wall particle. A block of the
     /// generalized cap sand (cubic spline, Verlet skin 0.1 h, artificial viscosity, no gradient
     /// correction) at h = 1.3 dp and 2.0 dp, above a floor of wall particles far from it and
     /// touching it.
     /// Built-in: bench/sph_throughput --calibrate on the 2-core development machine (process
-    /// CPU time of one thread, load average 12); 2D idle walls were below its noise.
-    double seconds_per_entry_2d = 2.7e-8;
-    double seconds_per_body_2d = 1.1e-6;
+    /// CPU time of one thread, load average 1-2, 2026-12-03); 2D idle walls were below its
+    /// noise.
+    double seconds_per_entry_2d = 1.5e-8;
+    double seconds_per_body_2d = 9.7e-7;
     double seconds_per_wall_2d = 0.0;
-    double seconds_per_contact_entry_2d = 2.2e-7;
-    double seconds_per_entry_3d = 3.7e-8;
-    double seconds_per_body_3d = 6.4e-7;
-    double seconds_per_wall_3d = 2.9e-7;
-    double seconds_per_contact_entry_3d = 1.8e-7;
+    double seconds_per_contact_entry_2d = 1.9e-7;
+    double seconds_per_entry_3d = 4.0e-8;
+    double seconds_per_body_3d = 5.9e-7;
+    double seconds_per_wall_3d = 2.6e-8;
+    double seconds_per_contact_entry_3d = 6.1e-8;
     /// Speed-up of `threads_measured` threads over one, measured the same way.
     int threads_measured = 1;
     double speedup = 1.0;

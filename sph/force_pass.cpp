@@ -169,18 +169,14 @@ template <class Shape, int D> struct ForceRow {
             entry_factor != nullptr ? entry_factor + neighbours.first_entry(i) : nullptr;
         for (std::size_t k = 0; k < list.size(); ++k) {
             const Index j = list[k];
-            const Vec3& xj = p.position[j];
             double d[D];
-            double r2 = 0.0;
-            for (int c = 0; c < D; ++c) {
-                d[c] = xi[c] - xj[c];
-                r2 += d[c] * d[c];
-            }
+            const double r2 = separation(xi, p.position[j], d);
             const bool same = key[j] == key_i;
             const bool in_support = r2 < s.support_squared && r2 != 0.0;
             if (!same) {
                 if (in_support && s.use_contact && p.body_id[i] != p.body_id[j]) {
-                    contact_pair(i, j, xi - xj, std::sqrt(r2), wall, volume_i, a, heating);
+                    contact_pair(i, j, xi - p.position[j], std::sqrt(r2), wall, volume_i, a,
+                                 heating);
                 }
                 continue;
             }

@@ -41,6 +41,16 @@ class PairScratch {
     std::vector<std::vector<double>> parts_;
 };
 
+/// d = x_i - x_j in the first D components (plane strain: z is 0 and left out); returns |d|^2.
+template <int D> double separation(const Vec3& xi, const Vec3& xj, double (&d)[D]) {
+    double r2 = 0.0;
+    for (int c = 0; c < D; ++c) {
+        d[c] = xi[c] - xj[c];
+        r2 += d[c] * d[c];
+    }
+    return r2;
+}
+
 /// Number of parts of a pass: the threads OpenMP would use.
 int pass_parts();
 

@@ -101,13 +101,8 @@ template <class Shape, int D, bool Corrected> struct GradientRow {
             if (key[j] != key_i || j < i) {
                 continue; // another body, a wall, or the pair's other row
             }
-            const Vec3& xj = p.position[j];
             double d[D];
-            double r2 = 0.0;
-            for (int c = 0; c < D; ++c) {
-                d[c] = xi[c] - xj[c];
-                r2 += d[c] * d[c];
-            }
+            const double r2 = separation(xi, p.position[j], d);
             if (r2 >= support_squared || r2 == 0.0) {
                 continue;
             }

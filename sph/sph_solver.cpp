@@ -24,6 +24,10 @@ SphSolver::SphSolver(ParticleSet particles, MaterialList materials, SphOptions o
     if (!(options_.particle_spacing > 0.0)) {
         throw std::invalid_argument("SphSolver: particle spacing must be positive");
     }
+    // The scene builders append particles one by one: a field's capacity can be up to twice its
+    // size (1.09 KB per particle instead of 0.83 at 1e6 particles, bench/sph_throughput).
+    particles_.for_each_field([](const auto&, auto& values) { values.shrink_to_fit(); });
+    particles_.state.shrink_to_fit();
     const Index n = particles_.size();
     is_wall_.resize(static_cast<std::size_t>(n));
     force_inputs_.sound_speed.resize(static_cast<std::size_t>(n));
