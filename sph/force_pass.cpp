@@ -3,7 +3,6 @@
 #include "sph/rates.hpp"
 
 #include <cmath>
-#include <omp.h>
 
 // The force pass of rates.hpp (compute_accelerations): each same-body pair once, from the row
 // of its lower index (sph/pair_parts.hpp); contact pairs from both rows.
@@ -248,16 +247,8 @@ void compute_accelerations(ParticleSet& p, const NeighbourList& neighbours,
                 in,
                 key,
                 in.entry_factor.empty() ? nullptr : in.entry_factor.data()};
-#pragma omp parallel num_threads(parts)
-            for (int r = omp_get_thread_num(); r < parts; r += omp_get_num_threads()) {
-                if (r > 0) {
-                    sums.zero(r, static_cast<std::size_t>(4 * n));
-                }
-                const ForceSums part = sums_of(r);
-                for (Index i = bounds[r]; i < bounds[r + 1]; ++i) {
-                    row(i, part);
-                }
-            }
+            for_each_part(bounds, sums, static_cast<std::size_t>(4 * n),
+                          [&](Index i, int r) { row(i, sums_of(r)); });
         };
         if (kernel.dimension() == 2) {
             pass(std::integral_constant<int, 2>{});

@@ -10,7 +10,7 @@ std::vector<int> continuum_keys(const ParticleSet& p) {
     const Index n = p.size();
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
-        key[i] = p.wall_id[i] < 0 ? p.body_id[i] : static_cast<int>(-2 - i);
+        key[i] = continuum_key(p.wall_id[i] >= 0, p.body_id[i], i);
     }
     return key;
 }

@@ -4,13 +4,19 @@
 #include "sph/particle_set.hpp"
 
 #include <cstddef>
+#include <omp.h>
 #include <vector>
 
 namespace grainload::sph {
 
-/// Which particles exchange stress: key[i] is the body of a material particle and a value no
-/// other particle has (-2 - i) for a wall particle, so key[i] == key[j] exactly for the pairs
-/// that exchange stress (same body, neither a wall particle): one load per neighbour.
+/// Which particles exchange stress: the key of particle (or mirror image) i is its body for a
+/// material particle and a value no other particle has (-2 - i) for a wall particle, so two
+/// keys are equal exactly for the pairs that exchange stress (same body, neither a wall
+/// particle).
+inline int continuum_key(bool wall, int body, Index i) {
+    return wall ? static_cast<int>(-2 - i) : body;
+}
+/// continuum_key of every particle: one load per neighbour in the pair loops.
 std::vector<int> continuum_keys(const ParticleSet& particles);
 
 /// The passes over same-body pairs visit each pair once, from the row of its lower index, and
@@ -53,5 +59,23 @@ template <int D> double separation(const Vec3& xi, const Vec3& xj, double (&d)[D
 
 /// Number of parts of a pass: the threads OpenMP would use.
 int pass_parts();
+
+/// Runs row(i, r) for the rows i of each part r of `bounds` (balanced_rows), each part on one
+/// thread and its rows in order; part r > 0's first `doubles` accumulators in `scratch` are
+/// zeroed first, by that thread.
+template <class Row>
+void for_each_part(const std::vector<Index>& bounds, PairScratch& scratch, std::size_t doubles,
+                   const Row& row) {
+    const int parts = static_cast<int>(bounds.size()) - 1;
+#pragma omp parallel num_threads(parts)
+    for (int r = omp_get_thread_num(); r < parts; r += omp_get_num_threads()) {
+        if (r > 0) {
+            scratch.zero(r, doubles);
+        }
+        for (Index i = bounds[r]; i < bounds[r + 1]; ++i) {
+            row(i, r);
+        }
+    }
+}
 
 } // namespace grainload::sph

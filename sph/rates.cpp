@@ -6,7 +6,6 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
-#include <omp.h>
 
 namespace grainload::sph {
 
@@ -193,16 +192,8 @@ void velocity_gradient_pass(ParticleSet& p, const NeighbourList& neighbours,
         double* base = scratch.part(r);
         return GradientSums{base, Corrected ? base + 9 * n : nullptr};
     };
-#pragma omp parallel num_threads(parts)
-    for (int r = omp_get_thread_num(); r < parts; r += omp_get_num_threads()) {
-        if (r > 0) {
-            scratch.zero(r, static_cast<std::size_t>(width * n));
-        }
-        const GradientSums sums = sums_of(r);
-        for (Index i = bounds[r]; i < bounds[r + 1]; ++i) {
-            row(i, sums);
-        }
-    }
+    for_each_part(bounds, scratch, static_cast<std::size_t>(width * n),
+                  [&](Index i, int r) { row(i, sums_of(r)); });
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
         if (p.wall_id[i] >= 0) {

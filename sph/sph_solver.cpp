@@ -221,7 +221,7 @@ void SphSolver::filter_pairs(std::span<const int> group, Index real) {
     std::vector<int> key(group.size());
     for (Index i = 0; i < count; ++i) {
         const Index source = i < real ? i : images_[i - real].source;
-        key[i] = is_wall_[source] ? static_cast<int>(-2 - i) : group[i];
+        key[i] = continuum_key(is_wall_[source] != 0, group[i], i);
     }
     neighbours_.halve_pairs(key);
 }
@@ -341,7 +341,7 @@ void SphSolver::compute_kinematics() {
     }
     // The force pass, which always follows at the same positions and list, reuses the
     // kernel gradients of this pass. Plane strain only: in 3D the 8 bytes per list entry
-    // (about 75 entries) would take the solver past 1 KB per particle.
+    // (about 38 entries, each pair of a body once) would take the solver past 1 KB per particle.
     compute_velocity_gradient(particles_, neighbours_, kernel_, options_.kernel_gradient_correction,
                               velocity_gradient_, force_inputs_.gradient_correction,
                               options_.dimension == 2 ? &force_inputs_.entry_factor : nullptr,

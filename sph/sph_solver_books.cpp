@@ -54,8 +54,9 @@ double SphSolver::contact_energy_of(std::span<const char> flagged) const {
             const MirrorImage mirror = image ? images_[entry - n] : MirrorImage{entry, 0};
             const Index j = mirror.source;
             const bool j_counts = all || flagged[j];
-            // The list holds each pair of real particles twice (i in j's list and j in i's):
-            // count it once, from a flagged row, the lower index when both are flagged.
+            // The list holds each pair of two bodies twice (i in j's list and j in i's; only a
+            // pair of one body is halved, sph/pair_parts.hpp): count it once, from a flagged
+            // row, the lower index when both are flagged.
             const bool skip = image ? !(i_counts || j_counts) : !i_counts || (j < i && j_counts);
             if (skip || p.body_id[i] == p.body_id[j]) {
                 continue;
