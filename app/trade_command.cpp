@@ -6,6 +6,7 @@
 #include "io/case_error.hpp"
 #include "io/case_table.hpp"
 #include "io/json_value.hpp"
+#include "io/scene_settings.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -25,7 +26,7 @@ namespace fs = std::filesystem;
 const char* const kUsage =
     "  grainload trade CASE.toml --vary KEY=V1,V2,... [--link KEY=W1,W2,...] [--vary ...]\n"
     "                  --out DIR [--figures NAME,...] [--budget 2%] [--jobs N] [--threads N]\n"
-    "                  [--reference KEY=V] [--set key=value ...]\n";
+    "                  [--reference KEY=V] [--noise N] [--set key=value ...]\n";
 
 std::vector<std::string> split_commas(const std::string& text) {
     std::vector<std::string> parts;
@@ -179,6 +180,16 @@ std::string percent(double relative) {
     return text;
 }
 
+/// A relative scatter: in percent, or as a plain number where that would read 0.00 %.
+std::string scatter(double relative) {
+    if (std::isinf(relative) || relative >= 1e-4 || relative == 0.0) {
+        return percent(relative);
+    }
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1e", relative);
+    return text;
+}
+
 /// The largest |change| of a run over the budget's figures, and which figure; none if any is
 /// missing.
 std::optional<std::pair<double, std::string>> worst_change(const TradeAnalysis& a, std::size_t r) {
@@ -205,11 +216,16 @@ void print_table(const std::vector<TradeRun>& grid, const std::vector<TradeResul
     for (std::size_t r = 0; r < grid.size(); ++r) {
         const auto worst = worst_change(a, r);
         std::string change = worst ? percent(worst->first) + " (" + worst->second + ")" : "-";
-        change = r == a.best ? "(most accurate run)" : change;
+        if (a.member(r) >= 0) {
+            change += a.member(r) == 0 ? "  (most accurate run, round-off member 0)"
+                                       : "  (round-off member " + std::to_string(a.member(r)) + ")";
+        } else if (r == a.best) {
+            change = "(most accurate run)";
+        }
         std::printf("%-*s  %-10s %10s %10s  %s%s\n", static_cast<int>(width), grid[r].id.c_str(),
                     results[r].status.c_str(), seconds(results[r].elapsed_s).c_str(),
                     results[r].steps ? std::to_string(*results[r].steps).c_str() : "-",
-                    change.c_str(), a.within_budget[r] && r != a.best ? "  within budget" : "");
+                    change.c_str(), a.within_budget[r] && a.member(r) < 0 ? "  within budget" : "");
     }
     if (!a.knee) {
         std::printf("knee: none (the most accurate run %s did not complete)\n",
@@ -218,13 +234,36 @@ void print_table(const std::vector<TradeRun>& grid, const std::vector<TradeResul
     }
     const std::size_t k = *a.knee;
     const auto worst = worst_change(a, k);
-    std::printf("knee (budget %s on %zu figures): %s, %s, %.1fx less time than the most "
+    std::printf("knee (budget %s on %zu figures%s): %s, %s, %.1fx less time than the most "
                 "accurate run %s (%s); max |change| %s\n",
-                percent(budget).c_str(), a.figures.size(), grid[k].id.c_str(),
-                seconds(results[k].elapsed_s).c_str(),
+                percent(budget).c_str(), a.figures.size(),
+                a.members.empty() ? "" : ", or 2 sigma of round-off where larger",
+                grid[k].id.c_str(), seconds(results[k].elapsed_s).c_str(),
                 results[a.best].elapsed_s / std::max(results[k].elapsed_s, 1e-9),
                 grid[a.best].id.c_str(), seconds(results[a.best].elapsed_s).c_str(),
                 worst ? (percent(worst->first) + " (" + worst->second + ")").c_str() : "-");
+}
+
+/// The round-off ensemble's scatter per figure, and the tolerance it sets.
+void print_noise(const TradeAnalysis& a, double budget) {
+    if (a.members.empty()) {
+        return;
+    }
+    std::printf("round-off noise (the most accurate run and %zu members, gravity x (1 +- k %.0e)); "
+                "changes are against the ensemble's mean:\n",
+                a.members.size(), kNoiseGravityStep);
+    for (std::size_t f = 0; f < a.figures.size(); ++f) {
+        if (!a.noise[f]) {
+            std::printf("  %s: no scatter (fewer than two members completed with it)\n",
+                        a.figures[f].c_str());
+            continue;
+        }
+        const bool wider = a.tolerance[f] > budget;
+        std::printf("  %s: mean %.6g, standard deviation %s of it; tolerance %s%s\n",
+                    a.figures[f].c_str(), a.reference[f].value_or(0.0),
+                    scatter(*a.noise[f]).c_str(), percent(a.tolerance[f]).c_str(),
+                    wider ? " (2 sigma: the budget is below this figure's round-off scatter)" : "");
+    }
 }
 
 /// scripts/plot_trade.py DIR/trade.csv DIR/trade.svg; says why when it cannot draw.
@@ -265,6 +304,26 @@ std::vector<ProcessSpec> prepare_runs(const TradeOptions& o, const std::string& 
     return commands;
 }
 
+/// The most accurate run's round-off members (--noise), built from the case's gravity under the
+/// common and that run's overrides; refused for a case without gravity.
+std::vector<TradeRun> ensemble_runs(const TradeOptions& o, const std::string& case_path,
+                                    const TradeRun& best) {
+    auto document = io::CaseDocument::from_file(case_path);
+    for (const auto* list : {&o.overrides, &best.overrides}) {
+        for (const std::string& assignment : *list) {
+            document->set(assignment);
+        }
+    }
+    const io::SceneSettings scene =
+        io::read_scene_settings(*document, fs::path(case_path).stem().string());
+    if (scene.gravity.norm() == 0.0) {
+        throw io::CaseError("command line: --noise perturbs gravity by parts in 1e8 to measure "
+                            "each figure's round-off scatter, and this case has no gravity");
+    }
+    return noise_runs(best, {scene.gravity[0], scene.gravity[1], scene.gravity[2]}, scene.dimension,
+                      o.noise);
+}
+
 } // namespace
 
 const char* trade_usage() {
@@ -292,6 +351,13 @@ TradeOptions parse_trade_options(int argc, const char* const* argv) {
             o.figures = split_commas(value_of(i, arg));
         } else if (arg == "--budget") {
             o.budget = parse_budget(value_of(i, arg));
+        } else if (arg == "--noise") {
+            o.noise = positive_integer(value_of(i, arg), arg);
+            if (o.noise < 2) {
+                throw io::CaseError("command line: --noise expects the ensemble's size, at least "
+                                    "2 (the most accurate run and one member), got " +
+                                    std::to_string(o.noise));
+            }
         } else if (arg == "--jobs") {
             o.jobs = positive_integer(value_of(i, arg), arg);
         } else if (arg == "--threads") {
@@ -328,11 +394,18 @@ int run_trade(const TradeOptions& o) {
     for (const std::string& assignment : o.overrides) {
         document->set(assignment);
     }
-    const std::vector<TradeRun> grid = trade_grid(o.axes);
+    std::vector<TradeRun> grid = trade_grid(o.axes);
     for (const std::string& assignment : grid.front().overrides) {
         document->set(assignment);
     }
     const std::size_t best = find_run(grid, most_accurate(o.axes));
+    std::vector<std::size_t> members;
+    if (o.noise > 1) {
+        for (TradeRun& member : ensemble_runs(o, case_path, grid[best])) {
+            members.push_back(grid.size());
+            grid.push_back(std::move(member));
+        }
+    }
     fs::create_directories(o.out);
     check_manifest(o, case_path);
 
@@ -369,9 +442,10 @@ int run_trade(const TradeOptions& o) {
         results.push_back(read_trade_result(o.out + "/" + grid[r].id, records[r]->exit_code,
                                             records[r]->elapsed_s));
     }
-    const TradeAnalysis analysis = analyse_trade(results, best, o.figures, o.budget);
+    const TradeAnalysis analysis = analyse_trade(results, best, o.figures, o.budget, members);
     write_trade_csv(o.out + "/trade.csv", o.axes, grid, results, analysis);
     print_table(grid, results, analysis, o.budget);
+    print_noise(analysis, o.budget);
     std::printf("table: %s/trade.csv\n", o.out.c_str());
     plot(o);
     return 0;

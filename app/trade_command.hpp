@@ -18,6 +18,9 @@ struct TradeOptions {
     double budget = 0.02;               ///< --budget
     int jobs = 1;                       ///< --jobs
     std::optional<int> threads;         ///< --threads per run; default cores / jobs
+    /// --noise N: the most accurate run repeated N - 1 times with gravity perturbed at 1e-8
+    /// (noise_runs), so that each figure's round-off scatter sets a floor under the budget.
+    int noise = 1;
 };
 
 /// Parses `grainload trade CASE.toml --vary ... --out DIR` (argv[1] is "trade"). Throws

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace grainload::app {
@@ -270,6 +271,26 @@ std::size_t find_run(const std::vector<TradeRun>& grid, const std::vector<std::s
         }
     }
     return grid.size();
+}
+
+std::vector<TradeRun> noise_runs(const TradeRun& best, const std::array<double, 3>& gravity,
+                                 int dimension, int members) {
+    std::vector<TradeRun> runs;
+    for (int k = 1; k < members; ++k) {
+        const double step = kNoiseGravityStep * ((k + 1) / 2) * (k % 2 == 1 ? 1.0 : -1.0);
+        std::string value = "\"";
+        for (int d = 0; d < dimension; ++d) {
+            char component[40];
+            std::snprintf(component, sizeof component, "%.17g ",
+                          gravity[static_cast<std::size_t>(d)] * (1.0 + step));
+            value += component;
+        }
+        TradeRun run = best;
+        run.id = best.id + "-noise_" + std::to_string(k);
+        run.overrides.push_back("case.gravity=" + value + "m/s^2\"");
+        runs.push_back(std::move(run));
+    }
+    return runs;
 }
 
 } // namespace grainload::app

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -62,5 +63,18 @@ std::vector<std::size_t> most_accurate(const std::vector<TradeAxis>& axes);
 
 /// The run of `grid` whose indices are `best`.
 std::size_t find_run(const std::vector<TradeRun>& grid, const std::vector<std::size_t>& best);
+
+/// Relative step of gravity between the members of a round-off ensemble (--noise): far below
+/// any physical effect (a figure that follows gravity smoothly moves by about this much), far
+/// above the 1e-16 of double round-off, so that a chaotic figure (a granular residue decided
+/// grain by grain) decorrelates within the run.
+inline constexpr double kNoiseGravityStep = 1e-8;
+
+/// The members 1 .. members-1 of the round-off ensemble of `best` (member 0 is `best` itself):
+/// its overrides plus `case.gravity` scaled by 1 + d_k, d_k = +1, -1, +2, -2, ... times
+/// kNoiseGravityStep; ids "<best id>-noise_<k>". `gravity` is the case's (after the overrides)
+/// in m/s^2, written with `dimension` components.
+std::vector<TradeRun> noise_runs(const TradeRun& best, const std::array<double, 3>& gravity,
+                                 int dimension, int members);
 
 } // namespace grainload::app

@@ -39,16 +39,60 @@ std::string csv_number(std::optional<double> value) {
     return text;
 }
 
-std::optional<double> change_of(const TradeFigure* figure, const TradeFigure* reference) {
-    if (figure == nullptr || reference == nullptr || !figure->value || !reference->value) {
+std::optional<double> change_of(const TradeFigure* figure, std::optional<double> reference) {
+    if (figure == nullptr || !figure->value || !reference) {
         return std::nullopt;
     }
-    const double best = *reference->value;
+    const double best = *reference;
     const double value = *figure->value;
     if (best == 0.0) {
         return value == 0.0 ? 0.0 : std::copysign(std::numeric_limits<double>::infinity(), value);
     }
     return (value - best) / std::abs(best);
+}
+
+/// The values of figure `name` in the completed runs of the ensemble (best and members).
+std::vector<double> ensemble_values(const std::vector<TradeResult>& results, std::size_t best,
+                                    const std::vector<std::size_t>& members,
+                                    const std::string& name) {
+    std::vector<double> values;
+    std::vector<std::size_t> runs{best};
+    runs.insert(runs.end(), members.begin(), members.end());
+    for (const std::size_t r : runs) {
+        const TradeFigure* f = results.at(r).figure(name);
+        if (results[r].status == "completed" && f != nullptr && f->value) {
+            values.push_back(*f->value);
+        }
+    }
+    return values;
+}
+
+/// Sets the reference, noise and tolerance of every figure of `a` (see TradeAnalysis).
+void set_references(TradeAnalysis& a, const std::vector<TradeResult>& results, double budget) {
+    const TradeResult& best = results.at(a.best);
+    for (const std::string& name : a.figures) {
+        const std::vector<double> values = ensemble_values(results, a.best, a.members, name);
+        const TradeFigure* own = best.figure(name);
+        std::optional<double> reference = own != nullptr ? own->value : std::nullopt;
+        std::optional<double> noise;
+        if (best.status == "completed" && values.size() >= 2) {
+            double mean = 0.0;
+            for (const double v : values) {
+                mean += v / static_cast<double>(values.size());
+            }
+            double squares = 0.0;
+            for (const double v : values) {
+                squares += (v - mean) * (v - mean);
+            }
+            reference = mean;
+            const double sd = std::sqrt(squares / static_cast<double>(values.size() - 1));
+            noise = mean != 0.0 ? sd / std::abs(mean)
+                                : (sd == 0.0 ? 0.0 : std::numeric_limits<double>::infinity());
+        }
+        a.reference.push_back(reference);
+        a.noise.push_back(noise);
+        a.tolerance.push_back(noise ? std::max(budget, kNoiseSigmas * *noise) : budget);
+    }
 }
 
 } // namespace
@@ -98,10 +142,23 @@ TradeResult read_trade_result(const std::string& directory, int exit_code, doubl
     return result;
 }
 
+int TradeAnalysis::member(std::size_t r) const {
+    if (members.empty()) {
+        return -1;
+    }
+    if (r == best) {
+        return 0;
+    }
+    const auto at = std::find(members.begin(), members.end(), r);
+    return at == members.end() ? -1 : static_cast<int>(at - members.begin()) + 1;
+}
+
 TradeAnalysis analyse_trade(const std::vector<TradeResult>& results, std::size_t best,
-                            std::vector<std::string> figures, double budget) {
+                            std::vector<std::string> figures, double budget,
+                            const std::vector<std::size_t>& members) {
     TradeAnalysis a;
     a.best = best;
+    a.members = members;
     const TradeResult& reference = results.at(best);
     if (figures.empty()) {
         for (const TradeFigure& f : reference.figures) {
@@ -120,18 +177,19 @@ TradeAnalysis analyse_trade(const std::vector<TradeResult>& results, std::size_t
         }
     }
     a.figures = figures;
+    set_references(a, results, budget);
     for (const TradeResult& r : results) {
         std::vector<std::optional<double>> changes;
         bool ok = reference_ok && r.status == "completed";
-        for (const std::string& name : figures) {
-            changes.push_back(change_of(r.figure(name), reference.figure(name)));
-            ok = ok && changes.back() && std::abs(*changes.back()) <= budget;
+        for (std::size_t f = 0; f < figures.size(); ++f) {
+            changes.push_back(change_of(r.figure(figures[f]), a.reference[f]));
+            ok = ok && changes.back() && std::abs(*changes.back()) <= a.tolerance[f];
         }
         a.change.push_back(std::move(changes));
         a.within_budget.push_back(ok);
     }
     for (std::size_t r = 0; r < results.size(); ++r) {
-        if (!a.within_budget[r]) {
+        if (!a.within_budget[r] || a.member(r) > 0) {
             continue;
         }
         if (!a.knee) {
@@ -156,7 +214,7 @@ void write_trade_csv(const std::string& path, const std::vector<TradeAxis>& axes
             out << ',' << csv_field(axis.key);
         }
         out << ",status,exit_code,elapsed_s,wall_time_s,steps,particles,figure,unit,value,change,"
-               "reference_error,within_budget,most_accurate,knee\n";
+               "noise,tolerance,reference_error,within_budget,most_accurate,noise_member,knee\n";
         for (std::size_t r = 0; r < grid.size(); ++r) {
             const TradeResult& result = results[r];
             std::string head = csv_field(grid[r].id);
@@ -167,22 +225,28 @@ void write_trade_csv(const std::string& path, const std::vector<TradeAxis>& axes
                     csv_number(result.elapsed_s) + ',' + csv_number(result.wall_time_s) + ',' +
                     (result.steps ? std::to_string(*result.steps) : "") + ',' +
                     (result.particles ? std::to_string(*result.particles) : "") + ',';
+            const int member = analysis.member(r);
             const std::string tail = std::string(",") + (analysis.within_budget[r] ? "1" : "0") +
                                      ',' + (analysis.best == r ? "1" : "0") + ',' +
+                                     (member >= 0 ? std::to_string(member) : "") + ',' +
                                      (analysis.knee == r ? "1" : "0") + '\n';
             if (result.figures.empty()) {
-                out << head << ",,,," << tail;
+                out << head << ",,,,,," << tail;
             }
             for (const TradeFigure& f : result.figures) {
                 const auto at = std::find(analysis.figures.begin(), analysis.figures.end(), f.name);
                 std::optional<double> change;
+                std::optional<double> noise;
+                std::optional<double> tolerance;
                 if (at != analysis.figures.end()) {
-                    change =
-                        analysis.change[r][static_cast<std::size_t>(at - analysis.figures.begin())];
+                    const auto i = static_cast<std::size_t>(at - analysis.figures.begin());
+                    change = analysis.change[r][i];
+                    noise = analysis.noise[i];
+                    tolerance = analysis.tolerance[i];
                 }
                 out << head << csv_field(f.name) << ',' << csv_field(f.unit) << ','
-                    << csv_number(f.value) << ',' << csv_number(change) << ','
-                    << csv_number(f.reference_error) << tail;
+                    << csv_number(f.value) << ',' << csv_number(change) << ',' << csv_number(noise)
+                    << ',' << csv_number(tolerance) << ',' << csv_number(f.reference_error) << tail;
             }
         }
     });

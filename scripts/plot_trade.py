@@ -5,8 +5,10 @@ Usage: plot_trade.py DIR/trade.csv OUT.svg [--budget 0.02] [--figures NAME,...]
 
 Each completed run is a point: x its elapsed time, y |change| of the figure against the most
 accurate run of the grid (relative; the most accurate run itself, at 0, sits on the floor of the
-log axis). The budget is a dashed line, the knee a ring, runs outside the budget grey. Runs that
-failed or went unstable are not drawn (they are rows of trade.csv). Called by `grainload trade`
+log axis). The budget is a dashed line, the knee a ring, runs outside the budget grey. With a
+round-off ensemble (`--noise`), changes are against the ensemble's mean, its members are crosses
+and a dotted line marks the figure's tolerance where its 2-sigma scatter exceeds the budget. Runs
+that failed or went unstable are not drawn (they are rows of trade.csv). Called by `grainload trade`
 at the end of a sweep; exits with 4 and says so when matplotlib is missing (Debian:
 python3-matplotlib, installed by scripts/ensure_packages.sh).
 """
@@ -40,6 +42,8 @@ def read_rows(path):
     axes = fields[1:fields.index("status")]
     for r in rows:
         r["label"] = ", ".join(r[a] for a in axes)
+        if r.get("noise_member") not in (None, "", "0"):
+            r["label"] = "noise " + r["noise_member"]
     return rows, axes
 
 
@@ -67,8 +71,9 @@ def main():
         for r in points:
             change = max(abs(float(r["change"])), floor)
             inside = r["within_budget"] == "1"
+            member = r.get("noise_member") not in (None, "", "0")
             panel.scatter(float(r["elapsed_s"]), change, color="C0" if inside else "0.6",
-                          zorder=3)
+                          marker="x" if member else "o", zorder=3)
             if r["knee"] == "1":
                 panel.scatter(float(r["elapsed_s"]), change, s=160, facecolors="none",
                               edgecolors="C3", linewidths=1.5, zorder=4, label="knee")
@@ -76,6 +81,10 @@ def main():
                            xytext=(3, 3), textcoords="offset points",
                            color="black" if inside else "0.45")
         panel.axhline(args.budget, color="C3", linestyle="--", linewidth=1, label="budget")
+        tolerances = {float(r["tolerance"]) for r in points if r.get("tolerance")}
+        if tolerances and max(tolerances) > args.budget:
+            panel.axhline(max(tolerances), color="C1", linestyle=":", linewidth=1.2,
+                          label="2 sigma of round-off")
         panel.set_xscale("log")
         panel.set_yscale("log")
         panel.set_title(name, fontsize=9)

@@ -99,6 +99,52 @@ TEST(TradeCli, FailedRunsAreRowsAndAResumedSweepRunsNothingNew) {
     fs::remove_all(out);
 }
 
+TEST(TradeCli, NoiseEnsemblePerturbsGravityAndMeasuresTheScatter) {
+    // --noise 3: the most accurate run and two members with gravity x (1 + 1e-8) and
+    // x (1 - 1e-8). The free fall's centre height is z0 + vz t - g t^2 / 2 (leapfrog exact), so
+    // the members move it by -+1e-8 g t^2 / 2 and the sample standard deviation over the three
+    // is exactly 1e-8 g t^2 / 2 = 1.962e-9 m at t = 0.2 s, over the mean 1.3038 m. summary.json
+    // writes 12 significant digits: each value is rounded by up to 5e-12 m, which moves the
+    // 2e-9 m deviation by up to 0.5 %; hence 1 %. A case without gravity is refused.
+    const std::string out = test_folder("trade_noise");
+    fs::remove_all(out);
+    const auto result = run_cli("trade " + kCase + " --out '" + out +
+                                    "' --jobs 2 --threads 1 --figures centre_height --noise 3"
+                                    " --vary 'sph.time_step=1 ms,2 ms'",
+                                out + ".log");
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_NE(result.output.find("4 runs, 0 finished earlier, 4 to run"), std::string::npos)
+        << result.output;
+    std::map<std::string, std::map<std::string, std::string>> by_run;
+    for (const auto& row : read_rows(out + "/trade.csv")) {
+        if (row.at("figure") == "centre_height") {
+            by_run[row.at("run")] = row;
+        }
+    }
+    ASSERT_EQ(by_run.size(), 4u);
+    EXPECT_EQ(by_run["time_step_1ms-noise_2"]["noise_member"], "2");
+    EXPECT_EQ(by_run["time_step_1ms"]["noise_member"], "0");
+    EXPECT_EQ(by_run["time_step_2ms"]["noise_member"], "");
+    const double expected = 1e-8 * 9.81 * 0.2 * 0.2 / 2.0 / 1.3038;
+    EXPECT_NEAR(std::stod(by_run["time_step_2ms"]["noise"]), expected, 0.01 * expected);
+    EXPECT_EQ(by_run["time_step_2ms"]["within_budget"], "1");
+    const auto record =
+        grainload::io::read_json_file(out + "/time_step_1ms-noise_1/trade_run.json");
+    const std::string gravity = record.find("overrides")->array.back().string;
+    ASSERT_EQ(gravity.substr(0, 18), "case.gravity=\"0 0 ");
+    EXPECT_EQ(std::stod(gravity.substr(18)), -9.81 * (1.0 + 1e-8)); // %.17g: to the last bit
+
+    const auto weightless = run_cli("trade " + kCase + " --out '" + out +
+                                        "_g0' --noise 2 --vary 'sph.time_step=1 ms,2 ms'"
+                                        " --set 'case.gravity=0 0 0 m/s^2'",
+                                    out + ".log");
+    EXPECT_EQ(weightless.exit_code, 2) << weightless.output;
+    EXPECT_NE(weightless.output.find("this case has no gravity"), std::string::npos)
+        << weightless.output;
+    fs::remove_all(out);
+    fs::remove_all(out + "_g0");
+}
+
 TEST(TradeCli, RefusesAnAxisWithoutAccuracyRule) {
     const auto result = run_cli("trade " + kCase + " --out '" + test_folder("trade_norule") +
                                     "' --vary 'sph.kernel=cubic_spline,"

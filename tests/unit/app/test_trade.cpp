@@ -164,6 +164,64 @@ class TempDir {
     fs::path path_;
 };
 
+TEST(TradeTable, RoundOffEnsembleMeasuresChangesFromItsMeanWithAFloorOfTwoSigma) {
+    // Runs 0 (most accurate), 1 and 2 are one setting under round-off: height 0.100, 0.104,
+    // 0.096 -> mean 0.1, sample standard deviation sqrt((0 + 0.004^2 + 0.004^2) / 2) = 0.004,
+    // 4 % -> tolerance 2 sigma = 8 % above the 2 % budget; run_out does not scatter (2 %).
+    // Run 3 (+6 % height, +1.5 % run-out) is within; run 4 (+9 %) and run 5 (run-out +5 %) are
+    // not. The members are the cheapest runs and still never the knee.
+    TempDir dir;
+    const std::vector<TradeAxis> axes{parse_trade_axis("sph.cfl_safety=0.1,0.2,0.3,0.4", "--vary")};
+    auto grid = trade_grid(axes);
+    for (TradeRun& member : noise_runs(grid[0], {0.0, -9.81, 0.0}, 2, 3)) {
+        grid.push_back(std::move(member));
+    }
+    ASSERT_EQ(grid.size(), 6u);
+    EXPECT_EQ(grid[5].id, "cfl_safety_0.1-noise_2");
+    // "case.gravity=\"0 G m/s^2\"": G is gravity x (1 + 1e-8), then x (1 - 1e-8), to the last bit.
+    const auto vertical = [](const std::string& assignment) {
+        EXPECT_EQ(assignment.substr(0, 16), "case.gravity=\"0 ");
+        return std::stod(assignment.substr(16));
+    };
+    EXPECT_EQ(vertical(grid[4].overrides.back()), -9.81 * (1.0 + 1e-8));
+    EXPECT_EQ(vertical(grid[5].overrides.back()), -9.81 * (1.0 - 1e-8));
+    std::vector<TradeResult> results{
+        result("completed", 100.0, {0.100, 0.2}), result("completed", 10.0, {0.106, 0.203}),
+        result("completed", 5.0, {0.109, 0.2}),   result("completed", 2.0, {0.1, 0.21}),
+        result("completed", 1.0, {0.104, 0.2}),   result("completed", 1.0, {0.096, 0.2})};
+    const TradeAnalysis a = analyse_trade(results, 0, {}, 0.02, {4, 5});
+    EXPECT_NEAR(*a.reference[0], 0.1, 1e-15);
+    EXPECT_NEAR(*a.noise[0], 0.04, 1e-12);
+    EXPECT_NEAR(a.tolerance[0], 0.08, 1e-12);
+    EXPECT_EQ(*a.noise[1], 0.0);
+    EXPECT_EQ(a.tolerance[1], 0.02);
+    EXPECT_NEAR(*a.change[1][0], 0.06, 1e-12);
+    EXPECT_EQ(a.within_budget, (std::vector<bool>{true, true, false, false, true, true}));
+    ASSERT_TRUE(a.knee);
+    EXPECT_EQ(*a.knee, 1u);
+    EXPECT_EQ(a.member(0), 0);
+    EXPECT_EQ(a.member(5), 2);
+    EXPECT_EQ(a.member(3), -1);
+    // Without the ensemble run 1's +6 % is outside the budget: only the most accurate run stays.
+    EXPECT_EQ(*analyse_trade(results, 0, {}, 0.02).knee, 0u);
+    // A member that went unstable leaves two values: 0.100, 0.104 -> mean 0.102, sd 0.0028284.
+    results[5].status = "unstable";
+    const TradeAnalysis two = analyse_trade(results, 0, {"height"}, 0.02, {4, 5});
+    EXPECT_NEAR(*two.noise[0], 0.004 / std::sqrt(2.0) / 0.102, 1e-12);
+    write_trade_csv(dir / "trade.csv", axes, grid, results, two);
+    std::ifstream in(dir / "trade.csv");
+    std::vector<std::vector<std::string>> rows;
+    for (std::string line; std::getline(in, line);) {
+        rows.push_back(split_csv_line(line));
+    }
+    EXPECT_EQ(rows[0][12], "noise");
+    EXPECT_EQ(rows[0][17], "noise_member");
+    EXPECT_EQ(rows[1][17], "0"); // the most accurate run's height row
+    EXPECT_EQ(rows[11][0], "cfl_safety_0.1-noise_2");
+    EXPECT_EQ(rows[11][1], "0.1"); // a member carries its setting's axis values
+    EXPECT_EQ(rows[11][17], "2");
+}
+
 TEST(TradeTable, CsvHasARowPerRunAndFigureAndFailedRunsAsRows) {
     TempDir dir;
     const std::vector<TradeAxis> axes{parse_trade_axis("sph.cfl_safety=0.1,0.3,0.5", "--vary")};
@@ -182,18 +240,21 @@ TEST(TradeTable, CsvHasARowPerRunAndFigureAndFailedRunsAsRows) {
     }
     ASSERT_EQ(rows.size(), 6u); // header, 2 + 2 figure rows, 1 row for the failed run
     EXPECT_EQ(rows[0][1], "sph.cfl_safety");
-    EXPECT_EQ(rows[0].size(), 16u);
+    EXPECT_EQ(rows[0].size(), 19u);
     for (const auto& row : rows) {
         EXPECT_EQ(row.size(), rows[0].size());
     }
     EXPECT_EQ(rows[3][0], "cfl_safety_0.3");
     EXPECT_EQ(rows[3][8], "height");
     EXPECT_EQ(rows[3][11], "0.001"); // (0.1001 - 0.1) / 0.1
-    EXPECT_EQ(rows[3][15], "1");     // the knee
+    EXPECT_EQ(rows[3][18], "1");     // the knee
+    EXPECT_EQ(rows[3][12], "");      // no round-off ensemble: no noise
+    EXPECT_EQ(rows[3][13], "0.02");  // and the budget as the tolerance
     EXPECT_EQ(rows[5][2], "bad_input");
     EXPECT_EQ(rows[5][3], "2");
     EXPECT_EQ(rows[5][8], "");
-    EXPECT_EQ(rows[1][14], "1"); // most accurate
+    EXPECT_EQ(rows[1][16], "1"); // most accurate
+    EXPECT_EQ(rows[1][17], "");  // no ensemble member
     // `check`'s advice reads the same file back, named after the case.
     fs::copy_file(dir / "trade.csv", dir / "case.trade.csv");
     const auto advice = trade_table_advice(dir / "case.toml");
