@@ -18,7 +18,8 @@ constexpr const char* kRunUsage =
     "                               [--restart DIR/checkpoint.bin]\n"
     "  Runs the case: frames, checkpoints and summary.json in DIR.\n"
     "  --out DIR        output directory (default out/<case name>)\n"
-    "  --threads N      OpenMP threads (default: all cores)\n"
+    "  --threads N      OpenMP threads (default: all cores); 'auto': the cores other work\n"
+    "                   leaves free at start (for a shared machine)\n"
     "  --set key=value  override a case key, e.g. --set sph.body[0].spacing=\"5 mm\"\n"
     "  --restart FILE   continue a run from its checkpoint\n";
 
@@ -111,7 +112,8 @@ const char* usage() {
            "  grainload help [COMMAND]   (or --help, -h)\n"
            "\n"
            "  --out DIR        output directory (default out/<case name>)\n"
-           "  --threads N      OpenMP threads (default: all cores)\n"
+           "  --threads N      OpenMP threads (default: all cores); 'auto': the cores other work\n"
+           "                   leaves free at start (for a shared machine)\n"
            "  --set key=value  override a case key, e.g. --set sph.body[0].spacing=\"5 mm\"\n"
            "  --restart FILE   continue a run from its checkpoint\n"
            "exit codes: 0 done, 1 system error, 2 bad input, 3 run became unstable "
@@ -160,6 +162,12 @@ CommandLine parse_command_line(int argc, const char* const* argv) {
             line.out = value_of(i, arg);
         } else if (arg == "--threads") {
             const std::string text = value_of(i, arg);
+            if (text == "auto") {
+                line.auto_threads = true;
+                line.threads.reset();
+                continue;
+            }
+            line.auto_threads = false;
             std::size_t used = 0;
             int threads = 0;
             try {
@@ -167,7 +175,8 @@ CommandLine parse_command_line(int argc, const char* const* argv) {
             } catch (const std::exception&) {
             }
             if (used != text.size() || threads < 1) {
-                throw io::CaseError("command line: --threads expects a positive integer, got '" +
+                throw io::CaseError("command line: --threads expects a positive integer or "
+                                    "'auto', got '" +
                                     text + "'");
             }
             line.threads = threads;

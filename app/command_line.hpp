@@ -10,9 +10,11 @@ namespace grainload::app {
 struct CommandLine {
     enum class Command { run, check, matpoint, trade, version, help };
     Command command = Command::help;
-    std::string input;                  ///< CASE.toml or DRIVER.toml
-    std::optional<std::string> out;     ///< --out
-    std::optional<int> threads;         ///< --threads
+    std::string input;              ///< CASE.toml or DRIVER.toml
+    std::optional<std::string> out; ///< --out
+    std::optional<int> threads;     ///< --threads N
+    /// --threads auto: the cores other work leaves free at start (app/thread_count.hpp).
+    bool auto_threads = false;
     std::vector<std::string> overrides; ///< --set key=value, in order
     std::optional<std::string> restart; ///< --restart CHECKPOINT
     /// For help: the command whose usage to print ("run"); empty for the overview.

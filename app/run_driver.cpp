@@ -4,6 +4,7 @@
 #include "app/cost_estimate.hpp"
 #include "app/progress_reporter.hpp"
 #include "app/scene.hpp"
+#include "app/thread_count.hpp"
 #include "io/atomic_file.hpp"
 #include "io/run_summary.hpp"
 #include "io/step_collapse.hpp"
@@ -124,8 +125,9 @@ int check_case(const CommandLine& line) {
               << scene->point_count() << " particles and nodes, end time "
               << scene->settings.end_time << " s)\n";
     const Calibration calibration = load_calibration();
-    const CostEstimate cost =
-        estimate_cost(*scene, line.threads.value_or(omp_get_max_threads()), calibration);
+    const int threads =
+        line.auto_threads ? auto_thread_count() : line.threads.value_or(omp_get_max_threads());
+    const CostEstimate cost = estimate_cost(*scene, threads, calibration);
     std::cout << describe_cost(cost, calibration);
     // An hour is where a cheaper setting starts to matter (issue 18): say what the trade table
     // measured, or how to make one.
@@ -142,7 +144,9 @@ int check_case(const CommandLine& line) {
 }
 
 int run_case(const CommandLine& line) {
-    if (line.threads) {
+    if (line.auto_threads) {
+        omp_set_num_threads(auto_thread_count());
+    } else if (line.threads) {
         omp_set_num_threads(*line.threads);
     }
     auto scene = Scene::load(line.input, line.overrides);
@@ -167,7 +171,8 @@ int run_case(const CommandLine& line) {
     ProgressReporter progress(log, scene->settings.end_time);
     progress.message("grainload " + std::string(kVersion) + " (" + kGitHash + "): case " +
                      scene->settings.name + ", " + std::to_string(scene->point_count()) +
-                     " points, " + std::to_string(omp_get_max_threads()) + " threads, output " +
+                     " points, " + std::to_string(omp_get_max_threads()) + " threads" +
+                     (line.auto_threads ? " (auto: the cores free at start)" : "") + ", output " +
                      out);
     const std::string checkpoint = out + "/checkpoint.bin";
     auto write_output = [&] {

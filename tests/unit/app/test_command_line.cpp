@@ -5,8 +5,10 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <gtest/gtest.h>
 #include <regex>
+#include <thread>
 
 namespace {
 
@@ -39,6 +41,35 @@ TEST(CommandLine, HelpPrintsTheUsageAndExitsWithZero) {
     const auto run_help = run_cli("run " + kFreeFall + " --threads 2 -h", log_file());
     EXPECT_EQ(run_help.exit_code, 0) << run_help.output;
     EXPECT_NE(run_help.output.find("--restart FILE"), std::string::npos) << run_help.output;
+}
+
+// --threads auto runs on the cores other work leaves free (at least one, at most all): which
+// count depends on the machine's load, so the test bounds it; a word other than "auto" is
+// refused naming both forms.
+TEST(CommandLine, ThreadsAutoRunsOnTheFreeCoresAndOtherWordsAreRefused) {
+    const std::string out = test_folder("threads_auto");
+    const auto result =
+        run_cli("run " + kFreeFall + " --threads auto --out '" + out + "'", log_file());
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    std::ifstream log(out + "/log.txt");
+    std::string first;
+    std::getline(log, first);
+    const std::smatch threads = [&] {
+        std::smatch m;
+        std::regex_search(first, m,
+                          std::regex(R"(, (\d+) threads \(auto: the cores free at start\))"));
+        return m;
+    }();
+    ASSERT_FALSE(threads.empty()) << first;
+    const int count = std::stoi(threads[1].str());
+    EXPECT_GE(count, 1);
+    EXPECT_LE(count, static_cast<int>(std::thread::hardware_concurrency()));
+    const auto bad = run_cli("run " + kFreeFall + " --threads many", log_file());
+    EXPECT_EQ(bad.exit_code, 2) << bad.output;
+    EXPECT_NE(bad.output.find("--threads expects a positive integer or 'auto', got 'many'"),
+              std::string::npos)
+        << bad.output;
+    std::filesystem::remove_all(out);
 }
 
 TEST(CommandLine, HelpOnAnUnknownCommandIsABadCommandLine) {

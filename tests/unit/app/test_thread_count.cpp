@@ -1,0 +1,48 @@
+// `--threads auto`: the busy cores between two /proc/stat samples, counted from hand-made
+// samples whose busy fractions are known, and the parser on the layout proc(5) documents.
+
+#include "app/thread_count.hpp"
+
+#include <gtest/gtest.h>
+#include <sstream>
+
+namespace {
+
+using grainload::app::CpuTicks;
+using grainload::app::free_cores;
+using grainload::app::parse_cpu_ticks;
+
+TEST(ThreadCount, ParsesThePerCpuLinesOfProcStat) {
+    // user nice system idle iowait irq softirq steal guest guest_nice: busy = all but idle and
+    // iowait; guest time is already inside user (proc(5)), so the first eight fields count.
+    std::istringstream stat("cpu  30 0 10 200 5 0 0 0 0 0\n"
+                            "cpu0 20 0 5 100 2 1 1 0 7 0\n"
+                            "cpu1 10 0 5 100 3 0 0 2 0 0\n"
+                            "intr 12345 0 0\n"
+                            "ctxt 999\n");
+    const auto cpus = parse_cpu_ticks(stat);
+    ASSERT_EQ(cpus.size(), 2u);
+    EXPECT_EQ(cpus[0].busy, 27u);   // 20 + 5 + 1 + 1
+    EXPECT_EQ(cpus[0].total, 129u); // + 100 idle + 2 iowait
+    EXPECT_EQ(cpus[1].busy, 17u);   // 10 + 5 + 2 steal
+    EXPECT_EQ(cpus[1].total, 120u);
+    std::istringstream empty("intr 1\n");
+    EXPECT_TRUE(parse_cpu_ticks(empty).empty());
+}
+
+TEST(ThreadCount, FreeCoresAreTheCpusLessTheBusyOnes) {
+    const std::vector<CpuTicks> start{{1000, 5000}, {2000, 6000}};
+    // Another process holds CPU 1 for all 20 ticks of the sample, CPU 0 idles: one core free.
+    EXPECT_EQ(free_cores(start, {{1000, 5020}, {2020, 6020}}), 1);
+    // Background noise of 3 and 4 ticks in 20 (0.35 core): both free.
+    EXPECT_EQ(free_cores(start, {{1003, 5020}, {2004, 6020}}), 2);
+    // Two busy halves make one busy core: one free.
+    EXPECT_EQ(free_cores(start, {{1010, 5020}, {2010, 6020}}), 1);
+    // Everything busy: still one thread.
+    EXPECT_EQ(free_cores(start, {{1020, 5020}, {2020, 6020}}), 1);
+    // Samples that cannot be compared (a CPU came online): the CPU count.
+    EXPECT_EQ(free_cores(start, {{1020, 5020}, {2020, 6020}, {0, 10}}), 3);
+    EXPECT_EQ(free_cores({}, {}), 1);
+}
+
+} // namespace
