@@ -7,6 +7,7 @@
 #include <omp.h>
 #include <sstream>
 #include <string>
+#include <sys/resource.h>
 #include <thread>
 
 namespace grainload::app {
@@ -35,7 +36,8 @@ std::vector<CpuTicks> parse_cpu_ticks(std::istream& stat) {
     return cpus;
 }
 
-int free_cores(const std::vector<CpuTicks>& before, const std::vector<CpuTicks>& after) {
+int free_cores(const std::vector<CpuTicks>& before, const std::vector<CpuTicks>& after,
+               double own_cores) {
     const int cpus = static_cast<int>(after.size());
     if (cpus == 0 || before.size() != after.size()) {
         return std::max(cpus, 1);
@@ -47,6 +49,7 @@ int free_cores(const std::vector<CpuTicks>& before, const std::vector<CpuTicks>&
             busy += static_cast<double>(after[c].busy - before[c].busy) / total;
         }
     }
+    busy = std::max(0.0, busy - own_cores);
     return std::max(1, cpus - static_cast<int>(std::lround(busy)));
 }
 
@@ -57,16 +60,34 @@ std::vector<CpuTicks> read_cpu_ticks() {
     return parse_cpu_ticks(stat);
 }
 
+/// CPU seconds this process has used, all its threads.
+double own_cpu_seconds() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    const auto seconds = [](const timeval& t) {
+        return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec);
+    };
+    return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
 } // namespace
 
 int auto_thread_count(double seconds) {
+    // This process's own threads are not other work: libopenblas (pthreads build, linked for
+    // CHOLMOD) starts its pool when the program loads, and the pool spins for about 0.1 s of
+    // CPU, more than half a core over the sample.
+    const auto start = std::chrono::steady_clock::now();
+    const double own_start = own_cpu_seconds();
     const std::vector<CpuTicks> before = read_cpu_ticks();
     std::this_thread::sleep_for(std::chrono::duration<double>(seconds));
     const std::vector<CpuTicks> after = read_cpu_ticks();
+    const double own = own_cpu_seconds() - own_start;
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (after.empty()) {
         return omp_get_num_procs();
     }
-    return std::min(free_cores(before, after), omp_get_num_procs());
+    return std::min(free_cores(before, after, own / std::max(elapsed, 1e-3)), omp_get_num_procs());
 }
 
 } // namespace grainload::app

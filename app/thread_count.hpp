@@ -21,13 +21,16 @@ inline constexpr double kAutoThreadSample = 0.2;
 std::vector<CpuTicks> parse_cpu_ticks(std::istream& stat);
 
 /// The cores other processes leave free between two /proc/stat samples: the number of CPUs
-/// less the busy ones (the sum over CPUs of busy / total ticks, rounded to the nearest core),
-/// at least 1. Samples of different CPU counts or without ticks give the CPU count.
-int free_cores(const std::vector<CpuTicks>& before, const std::vector<CpuTicks>& after);
+/// less the busy ones (the sum over CPUs of busy / total ticks, less `own_cores`, the cores
+/// this process itself kept busy meanwhile, rounded to the nearest core), at least 1. Samples
+/// of different CPU counts or without ticks give the CPU count.
+int free_cores(const std::vector<CpuTicks>& before, const std::vector<CpuTicks>& after,
+               double own_cores = 0.0);
 
-/// `--threads auto`: samples /proc/stat over `seconds` (this process sleeps meanwhile, so the
-/// busy cores are other work) and returns free_cores; the CPU count of OpenMP where /proc/stat
-/// cannot be read. docs/performance.md measures why a loaded machine wants fewer threads.
+/// `--threads auto`: samples /proc/stat over `seconds` while the calling thread sleeps,
+/// subtracts what this process's other threads used meanwhile (getrusage), and returns
+/// free_cores; the CPU count of OpenMP where /proc/stat cannot be read. docs/performance.md
+/// measures why a loaded machine wants fewer threads.
 int auto_thread_count(double seconds = kAutoThreadSample);
 
 } // namespace grainload::app

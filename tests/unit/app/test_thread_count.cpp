@@ -38,6 +38,9 @@ TEST(ThreadCount, FreeCoresAreTheCpusLessTheBusyOnes) {
     EXPECT_EQ(free_cores(start, {{1003, 5020}, {2004, 6020}}), 2);
     // Two busy halves make one busy core: one free.
     EXPECT_EQ(free_cores(start, {{1010, 5020}, {2010, 6020}}), 1);
+    // Of the busy core, 0.6 was this process's own threads (a library's spinning pool): the
+    // other work is 0.4 core, both free.
+    EXPECT_EQ(free_cores(start, {{1000, 5020}, {2020, 6020}}, 0.6), 2);
     // Everything busy: still one thread.
     EXPECT_EQ(free_cores(start, {{1020, 5020}, {2020, 6020}}), 1);
     // Samples that cannot be compared (a CPU came online): the CPU count.
