@@ -68,9 +68,16 @@ struct CostEstimate {
     Index contact_entries = 0; ///< between a body and a wall particle
     /// Particles the sources create, averaged over the run (each costs a full kernel support)
     double average_created = 0.0;
-    /// [[sph.sink]] tables: what they remove is still counted to the end time, so a
-    /// discharge's estimate is an upper bound (docs/user-guide/trade.md)
+    /// [[sph.sink]] tables. What those with a declared outlet (outlet_width) take at Beverloo's
+    /// rate from the opening is subtracted; the others' is counted to the end time, an upper
+    /// bound (docs/user-guide/trade.md)
     int sinks = 0;
+    double average_discharged = 0.0; ///< particles the outlets take, averaged over the run
+    double outlet_rate = 0.0;        ///< kg/s (kg/m/s in plane strain)
+    double outlet_opening = 0.0;     ///< s
+    bool outlet_declared = false;
+    bool outlet_known = true; ///< the opening time is known before the run
+    bool plane_strain = false;
     /// A coupled scene: its window and the staggered exchange's estimated limit
     /// (coupling/window_limits.hpp), the shortest stable window for a static shell, the
     /// longest for a dynamic one (0: no coupling).

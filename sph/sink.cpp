@@ -41,11 +41,41 @@ io::Region read_region(const io::CaseTable& table, int dimension) {
     return io::Region::box(lower, upper, dimension);
 }
 
+std::optional<Outlet> read_outlet(const io::CaseTable& table, int dimension) {
+    if (!table.has("outlet_width")) {
+        for (const char* key : {"outlet_length", "bulk_density"}) {
+            if (table.has(key)) {
+                table.fail(key, "needs outlet_width (the outlet's effective width)");
+            }
+        }
+        return std::nullopt;
+    }
+    Outlet outlet;
+    outlet.width = table.positive_quantity("outlet_width", dim::kLength);
+    if (table.has("outlet_length")) {
+        if (dimension == 2) {
+            table.fail("outlet_length", "plane strain: the outlet is a slot per metre of depth");
+        }
+        outlet.length = table.positive_quantity("outlet_length", dim::kLength);
+    }
+    outlet.bulk_density = table.positive_quantity("bulk_density", dim::kDensity);
+    return outlet;
+}
+
 } // namespace
 
+double Outlet::rate(double gravity, int dimension) const {
+    const double root_g = std::sqrt(gravity);
+    if (dimension == 2 || length > 0.0) {
+        return kBeverlooSlot * bulk_density * root_g * (dimension == 2 ? 1.0 : length) *
+               std::pow(width, 1.5);
+    }
+    return kBeverlooCircle * bulk_density * root_g * std::pow(width, 2.5);
+}
+
 SinkSet::SinkSet(const io::CaseTable& sph, const std::vector<std::string>& body_names,
-                 int dimension)
-    : dimension_(dimension) {
+                 int dimension, double gravity, double share)
+    : dimension_(dimension), gravity_(gravity), share_(share) {
     for (const auto& table : sph.array_of_tables("sink")) {
         Sink sink;
         sink.name = table.string("name");
@@ -58,6 +88,7 @@ SinkSet::SinkSet(const io::CaseTable& sph, const std::vector<std::string>& body_
         if (table.has("body")) {
             sink.body = body_index(table, "body", body_names);
         }
+        sink.outlet = read_outlet(table, dimension);
         sinks_.push_back(std::move(sink));
     }
 }
@@ -138,8 +169,13 @@ void SinkSet::append_results(double scene_mass, double created,
         }
         // summary.json writes NaN as null: too little discharged, or too few output instants.
         const auto fit = io::steady_rate(history_times_, mass);
-        results.push_back(
-            {prefix + "_steady_rate", fit ? fit->rate : nan, mass_unit + "/s", std::nullopt, ""});
+        const auto beverloo = outlet_rate(s);
+        results.push_back({prefix + "_steady_rate", fit ? fit->rate : nan, mass_unit + "/s",
+                           beverloo,
+                           beverloo ? "Beverloo, k d = 0: C' rho_b sqrt(g) L B^1.5 (C' = 1.03; "
+                                      "L = 1 m in plane strain), C rho_b sqrt(g) D^2.5 "
+                                      "(circle, C = 0.58)"
+                                    : ""});
         results.push_back(
             {prefix + "_steady_window_start", fit ? fit->start : nan, "s", std::nullopt, ""});
         results.push_back(
@@ -151,6 +187,14 @@ void SinkSet::append_results(double scene_mass, double created,
     results.push_back({"created_mass", created, mass_unit, std::nullopt, ""});
     results.push_back({"mass_audit_error", audit_error(scene_mass, created), "", 0.0,
                        "mass in the scene + mass discharged = initial mass + mass created"});
+}
+
+std::optional<double> SinkSet::outlet_rate(std::size_t s) const {
+    const Sink& sink = sinks_.at(s);
+    if (!sink.outlet) {
+        return std::nullopt;
+    }
+    return share_ * sink.outlet->rate(gravity_, dimension_);
 }
 
 std::vector<double> SinkSet::state() const {

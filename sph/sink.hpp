@@ -6,6 +6,7 @@
 #include "sph/particle_set.hpp"
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,7 +17,7 @@ class CaseTable;
 namespace grainload::sph {
 
 /// The keys of each [[sph.sink]] table (docs/user-guide/sph.md, "Sinks").
-inline constexpr std::array<io::KeySpec, 7> kSinkKeys{{
+inline constexpr std::array<io::KeySpec, 10> kSinkKeys{{
     {"name", "string", "", "names the sink in discharge.csv and summary.json"},
     {"type", "`plane` or `box`", "",
      "plane: the particles beyond a plane leave; box: the particles inside a box leave"},
@@ -27,7 +28,28 @@ inline constexpr std::array<io::KeySpec, 7> kSinkKeys{{
     {"max", "length vector", "required for a box",
      "the box's upper corner, above min on every axis"},
     {"body", "string", "every body", "only particles of this [[sph.body]] leave through the sink"},
+    {"outlet_width", "length", "none",
+     "the effective width of the outlet the sink drains (a slot's width, a circle's diameter): "
+     "gives the steady rate Beverloo's figure as its reference and `grainload check` a "
+     "discharge law"},
+    {"outlet_length", "length", "3D: a circle",
+     "3D: the length of a rectangular slot outlet; without it the outlet is circular"},
+    {"bulk_density", "density", "required with outlet_width",
+     "the flowing material's bulk density in Beverloo's law"},
 }};
+
+/// Beverloo's discharge rate of a flat-bottomed outlet with k d = 0 (a continuum has no grain
+/// size; shared/silo_hopper_references.md, section 2): a slot of width B and length L,
+/// W = C' rho sqrt(g) L B^(3/2) with C' = 1.03 (per metre of depth in plane strain, L = 1); a
+/// circle of diameter D, W = C rho sqrt(g) D^(5/2) with C = 0.58.
+struct Outlet {
+    double width = 0.0;  ///< B, or D for a circle [m]
+    double length = 0.0; ///< 3D slot's L [m]; 0: a circle (3D) or per metre (plane strain)
+    double bulk_density = 0.0;
+    double rate(double gravity, int dimension) const;
+};
+inline constexpr double kBeverlooSlot = 1.03;
+inline constexpr double kBeverlooCircle = 0.58;
 
 /// The keys of [[sph.wall]] that open an outlet or time a gate (docs/user-guide/sph.md,
 /// "Outlets and gates").
@@ -51,11 +73,15 @@ class SinkSet {
         io::Region region;
         int body = -1; ///< -1: every body
         double discharged = 0.0;
+        std::optional<Outlet> outlet; ///< outlet_width given
     };
 
     SinkSet() = default;
-    /// The [[sph.sink]] tables of `sph`; body names resolve against `body_names`.
-    SinkSet(const io::CaseTable& sph, const std::vector<std::string>& body_names, int dimension);
+    /// The [[sph.sink]] tables of `sph`; body names resolve against `body_names`; `gravity` is
+    /// the magnitude Beverloo's rate takes, `share` the part of each outlet the model holds
+    /// (1/2 per symmetry plane through it).
+    SinkSet(const io::CaseTable& sph, const std::vector<std::string>& body_names, int dimension,
+            double gravity, double share = 1.0);
     /// `dimension` 2: masses are per unit thickness (kg/m), as the particles' are.
     SinkSet(std::vector<Sink> sinks, int dimension)
         : sinks_(std::move(sinks)), dimension_(dimension) {}
@@ -79,10 +105,14 @@ class SinkSet {
     /// time_s, sink, discharged_mass_kg, rate_kg_per_s (the mean rate since the last row).
     void write_csv(const std::string& directory) const;
     /// Per sink: sink_NAME_discharged_mass, sink_NAME_steady_rate (io::steady_rate over the
-    /// history, null when it cannot be fitted), sink_NAME_steady_window_start/_end; then
+    /// history, null when it cannot be fitted; with an outlet, Beverloo's rate as its
+    /// reference), sink_NAME_steady_window_start/_end; then
     /// discharged_mass, initial_mass, created_mass (by sources) and mass_audit_error.
     void append_results(double scene_mass, double created,
                         std::vector<io::ResultFigure>& results) const;
+
+    /// Beverloo's rate of sink s's outlet, the model's share of it (none without outlet_width).
+    std::optional<double> outlet_rate(std::size_t s) const;
 
     /// For checkpoints: the masses, the initial mass and the history.
     std::vector<double> state() const;
@@ -91,6 +121,8 @@ class SinkSet {
   private:
     std::vector<Sink> sinks_;
     int dimension_ = 3;
+    double gravity_ = 0.0;
+    double share_ = 1.0;
     double initial_mass_ = 0.0;
     std::vector<double> history_times_;
     std::vector<std::vector<double>> history_; ///< per row, the discharged mass per sink

@@ -22,7 +22,9 @@ constexpr double kRemovalTimeTolerance = 1e-12;
 } // namespace
 
 void SphModel::build_outlets(const io::CaseTable& sph) {
-    sinks_ = SinkSet(sph, body_names_, dimension_);
+    // A symmetry plane through an outlet leaves the model half of it (each [[sph.symmetry]]).
+    const double share = std::pow(0.5, static_cast<double>(sph.array_of_tables("symmetry").size()));
+    sinks_ = SinkSet(sph, body_names_, dimension_, gravity_.norm(), share);
     bool walls_go = false;
     bool on_settle = false;
     if (solver_) {

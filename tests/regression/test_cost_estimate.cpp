@@ -80,12 +80,45 @@ TEST(CostEstimate, SourcesAddTheParticlesTheyCreateAveragedOverTheRun) {
     EXPECT_NE(result.output.find(text), std::string::npos) << result.output;
     // No sink here; the discharge's one sink is named with what the estimate does not count.
     EXPECT_EQ(result.output.find("sinks:"), std::string::npos) << result.output;
-    const auto discharge = run_cli(
-        "check '" + source_path("cases/silo/silo_discharge_small.toml") + "'", log + ".discharge");
+    const auto discharge =
+        run_cli("check '" + source_path("cases/silo_hopper/silo_hopper_small.toml") + "'",
+                log + ".discharge");
     ASSERT_EQ(discharge.exit_code, 0) << discharge.output;
-    EXPECT_NE(discharge.output.find("sinks: 1; the particles they take are counted to the end"),
+    EXPECT_NE(discharge.output.find("sinks: 1; the particles they take are counted to the end "
+                                    "time (no outlet_width declared)"),
               std::string::npos)
         << discharge.output;
+}
+
+// A sink with a declared outlet takes its particles at Beverloo's rate from the opening: the CI
+// hopper (50 mm, 300 kg/m^3: 0.75 kg/m a grain) holds M = 0.75 n kg/m; its 0.4 m slot drains
+// W = 1.03 * 300 * sqrt(9.81) * 0.4^1.5 = 244.8 kg/m/s from 0.4 s, empty tau = M / W later; over
+// the run's 3 s the grains taken average n (tau / 2 + (2.6 - tau)) / 3 (the printed figure,
+// rounded: to the unit).
+TEST(CostEstimate, ADeclaredOutletTakesItsParticlesAtBeverloosRate) {
+    const std::string log = test_folder("cost_outlet.log");
+    const auto result = run_cli(
+        "check '" + source_path("cases/hopper_discharge/hopper_discharge_small.toml") + "'", log);
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    long long particles = 0;
+    long long walls = 0;
+    const auto cost = result.output.find("cost: ");
+    ASSERT_NE(cost, std::string::npos) << result.output;
+    ASSERT_EQ(std::sscanf(result.output.c_str() + cost, "cost: %lld SPH particles (%lld of them",
+                          &particles, &walls),
+              2);
+    const double grains = static_cast<double>(particles - walls);
+    const double mass = 0.75 * grains;
+    const double rate = 1.03 * 300.0 * std::sqrt(9.81) * std::pow(0.4, 1.5);
+    const double tau = mass / rate;
+    ASSERT_LT(tau, 2.6) << "the hopper empties before the end";
+    const double expected = grains * (0.5 * tau + (2.6 - tau)) / 3.0;
+    char text[128];
+    std::snprintf(text, sizeof text,
+                  "sinks: 1; their outlets' Beverloo rate 244.8 kg/m/s from 0.4 s takes %.0f "
+                  "particles",
+                  expected);
+    EXPECT_NE(result.output.find(text), std::string::npos) << result.output;
 }
 
 } // namespace

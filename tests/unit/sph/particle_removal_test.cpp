@@ -133,9 +133,12 @@ TEST(SinkSet, TakesMaterialParticlesInItsRegionAndBooksTheirMass) {
     Scene scene = make_scene();
     scene.particles.body_id[4] = 7;
     std::vector<SinkSet::Sink> sinks(3);
-    sinks[0] = {"right", io::Region::half_space(Vec3(2.5, 0, 0), Vec3(1, 0, 0), 3), -1, 0.0};
-    sinks[1] = {"box", io::Region::box(Vec3(-1, -1, -1), Vec3(3.5, 10, 1), 3), 0, 0.0};
-    sinks[2] = {"unused", io::Region::half_space(Vec3(0, -100, 0), Vec3(0, -1, 0), 3), -1, 0.0};
+    sinks[0] = {"right", io::Region::half_space(Vec3(2.5, 0, 0), Vec3(1, 0, 0), 3), -1, 0.0,
+                std::nullopt};
+    sinks[1] = {"box", io::Region::box(Vec3(-1, -1, -1), Vec3(3.5, 10, 1), 3), 0, 0.0,
+                std::nullopt};
+    sinks[2] = {"unused", io::Region::half_space(Vec3(0, -100, 0), Vec3(0, -1, 0), 3), -1, 0.0,
+                std::nullopt};
     SinkSet set(std::move(sinks), 3);
     set.set_initial_mass(0.25 * 15);
     std::vector<char> gone(static_cast<std::size_t>(scene.particles.size()), 0);
