@@ -15,6 +15,7 @@ sand scaled by stiffness_scale, v = W / (rho B) with W the run's steady rate and
 and the energy balance error.
 """
 
+import argparse
 import csv
 import json
 import math
@@ -58,16 +59,11 @@ def row(out, label):
 
 
 def main(argv):
-    outs, labels = [], []
-    k = 0
-    while k < len(argv):
-        if argv[k] == "--label":
-            labels.append(argv[k + 1])
-            k += 2
-        else:
-            outs.append(argv[k])
-            k += 1
-    labels += outs[len(labels):]
+    parser = argparse.ArgumentParser(description="slot-silo closure runs side by side")
+    parser.add_argument("outs", nargs="+", help="run directories")
+    parser.add_argument("--label", action="append", default=[], help="a name per run, in order")
+    args = parser.parse_args(argv)
+    outs, labels = args.outs, args.label + args.outs[len(args.label):]
     print("| run | particles | steps | wall time | steady rate (kg/m/s) | discharged (kg/m) | "
           "rest, bottom bin (Pa) | discharge peak (Pa) | closure max, 0-0.2 / 0.2-0.4 m (Pa) | "
           "closure mean, bottom bin (Pa) | closure mean / rest | rest + rho c v (Pa) | "

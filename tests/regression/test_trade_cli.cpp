@@ -45,6 +45,17 @@ std::vector<std::map<std::string, std::string>> read_rows(const std::string& pat
     return rows;
 }
 
+/// Each run's centre_height row (or its row without figures: a run that failed), by run.
+std::map<std::string, std::map<std::string, std::string>> rows_by_run(const std::string& path) {
+    std::map<std::string, std::map<std::string, std::string>> by_run;
+    for (const auto& row : read_rows(path)) {
+        if (row.at("figure") == "centre_height" || row.at("figure").empty()) {
+            by_run[row.at("run")] = row;
+        }
+    }
+    return by_run;
+}
+
 TEST(TradeCli, FailedRunsAreRowsAndAResumedSweepRunsNothingNew) {
     const std::string out = test_folder("trade_cli");
     fs::remove_all(out);
@@ -56,15 +67,9 @@ TEST(TradeCli, FailedRunsAreRowsAndAResumedSweepRunsNothingNew) {
     ASSERT_EQ(first.exit_code, 0) << first.output;
     EXPECT_NE(first.output.find("3 runs, 0 finished earlier, 3 to run"), std::string::npos)
         << first.output;
-    const auto rows = read_rows(out + "/trade.csv");
     // Two figures (centre_height, max_position_error) per completed run, one failed row.
-    ASSERT_EQ(rows.size(), 5u);
-    std::map<std::string, std::map<std::string, std::string>> by_run;
-    for (const auto& row : rows) {
-        if (row.at("figure") == "centre_height" || row.at("figure").empty()) {
-            by_run[row.at("run")] = row;
-        }
-    }
+    ASSERT_EQ(read_rows(out + "/trade.csv").size(), 5u);
+    auto by_run = rows_by_run(out + "/trade.csv");
     EXPECT_EQ(by_run["time_step_fast"]["status"], "bad_input");
     EXPECT_EQ(by_run["time_step_fast"]["exit_code"], "2");
     EXPECT_EQ(by_run["time_step_fast"]["figure"], "");
@@ -115,12 +120,7 @@ TEST(TradeCli, NoiseEnsemblePerturbsGravityAndMeasuresTheScatter) {
     ASSERT_EQ(result.exit_code, 0) << result.output;
     EXPECT_NE(result.output.find("4 runs, 0 finished earlier, 4 to run"), std::string::npos)
         << result.output;
-    std::map<std::string, std::map<std::string, std::string>> by_run;
-    for (const auto& row : read_rows(out + "/trade.csv")) {
-        if (row.at("figure") == "centre_height") {
-            by_run[row.at("run")] = row;
-        }
-    }
+    auto by_run = rows_by_run(out + "/trade.csv");
     ASSERT_EQ(by_run.size(), 4u);
     EXPECT_EQ(by_run["time_step_1ms-noise_2"]["noise_member"], "2");
     EXPECT_EQ(by_run["time_step_1ms"]["noise_member"], "0");
