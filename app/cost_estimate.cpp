@@ -133,19 +133,27 @@ Calibration load_calibration() {
 
 namespace {
 
+/// The particles source `s` creates by `end`: what its rate owes, but no more than its sites
+/// hold (a full box owes on); 0 for one that has not started by then.
+double created_by(const sph::SourceSet::Source& s, double end) {
+    const double stop = std::min(s.end, end);
+    if (!(stop > s.start) || !(s.particle_mass > 0.0)) {
+        return 0.0;
+    }
+    return std::min(s.mass_rate * (stop - s.start) / s.particle_mass,
+                    static_cast<double>(s.sites.size()));
+}
+
 /// The particles the sources create, averaged over the run [0, end]: one created at t is there
-/// for end - t. (Sinks are not subtracted: the estimate of a discharge errs on the long side.)
+/// for end - t. (What the sinks take is average_discharged's.)
 double average_created(const sph::SphModel& sph, double end) {
     double average = 0.0;
+    if (!(end > 0.0)) {
+        return average;
+    }
     for (const sph::SourceSet::Source& s : sph.sources().sources()) {
         const double stop = std::min(s.end, end);
-        if (!(stop > s.start) || !(s.particle_mass > 0.0) || !(end > 0.0)) {
-            continue;
-        }
-        // What the rate owes, but no more than the source's sites hold (a full box owes on).
-        const double count = std::min(s.mass_rate * (stop - s.start) / s.particle_mass,
-                                      static_cast<double>(s.sites.size()));
-        average += count * (end - 0.5 * (s.start + stop)) / end;
+        average += created_by(s, end) * (end - 0.5 * (s.start + stop)) / end;
     }
     return average;
 }
@@ -193,14 +201,9 @@ Discharge average_discharged(const sph::SphModel& sph, double end) {
         count += p.is_wall(i) ? 0.0 : 1.0;
     }
     for (const sph::SourceSet::Source& source : sph.sources().sources()) {
-        const double stop = std::min(source.end, end);
-        const double made =
-            stop > source.start
-                ? std::min(source.mass_rate * (stop - source.start),
-                           source.particle_mass * static_cast<double>(source.sites.size()))
-                : 0.0;
-        mass += made;
-        count += source.particle_mass > 0.0 ? made / source.particle_mass : 0.0;
+        const double made = created_by(source, end);
+        mass += made * source.particle_mass;
+        count += made;
     }
     const double span = end - d.opening;
     if (!(span > 0.0) || !(mass > 0.0) || !(d.rate > 0.0)) {

@@ -304,18 +304,16 @@ std::vector<ProcessSpec> prepare_runs(const TradeOptions& o, const std::string& 
     return commands;
 }
 
-/// The most accurate run's round-off members (--noise), built from the case's gravity under the
-/// common and that run's overrides; refused for a case without gravity.
-std::vector<TradeRun> ensemble_runs(const TradeOptions& o, const std::string& case_path,
-                                    const TradeRun& best) {
-    auto document = io::CaseDocument::from_file(case_path);
-    for (const auto* list : {&o.overrides, &best.overrides}) {
-        for (const std::string& assignment : *list) {
-            document->set(assignment);
-        }
+/// The most accurate run's round-off members (--noise), built from the case's gravity under
+/// that run's overrides (set on `document`, which holds the case and the common overrides);
+/// refused for a case without gravity.
+std::vector<TradeRun> ensemble_runs(const TradeOptions& o, io::CaseDocument& document,
+                                    const std::string& case_path, const TradeRun& best) {
+    for (const std::string& assignment : best.overrides) {
+        document.set(assignment);
     }
     const io::SceneSettings scene =
-        io::read_scene_settings(*document, fs::path(case_path).stem().string());
+        io::read_scene_settings(document, fs::path(case_path).stem().string());
     if (scene.gravity.norm() == 0.0) {
         throw io::CaseError("command line: --noise perturbs gravity by parts in 1e8 to measure "
                             "each figure's round-off scatter, and this case has no gravity");
@@ -401,7 +399,7 @@ int run_trade(const TradeOptions& o) {
     const std::size_t best = find_run(grid, most_accurate(o.axes));
     std::vector<std::size_t> members;
     if (o.noise > 1) {
-        for (TradeRun& member : ensemble_runs(o, case_path, grid[best])) {
+        for (TradeRun& member : ensemble_runs(o, *document, case_path, grid[best])) {
             members.push_back(grid.size());
             grid.push_back(std::move(member));
         }
