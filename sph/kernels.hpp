@@ -34,6 +34,13 @@ struct CubicSplineKernel {
         }
         return 0.0;
     }
+    /// shape_derivative(q) for q < 2, without a branch: both pieces evaluated, one selected.
+    static double shape_derivative_inside(double q) {
+        const double t = 2.0 - q;
+        const double inner = -2.0 * q + 1.5 * q * q;
+        const double outer = -0.5 * t * t;
+        return q < 1.0 ? inner : outer;
+    }
     /// Thesis: 2D 15/(7 pi), 3D 3/(2 pi).
     static double normalisation(int dimension) {
         return dimension == 2 ? 15.0 / (7.0 * std::numbers::pi) : 3.0 / (2.0 * std::numbers::pi);
@@ -57,6 +64,7 @@ struct QuinticSplineKernel {
         const double c = q < 1.0 ? pow4(1.0 - q) : 0.0;
         return -5.0 * (a - 6.0 * b + 15.0 * c);
     }
+    static double shape_derivative_inside(double q) { return shape_derivative(q); }
     static double normalisation(int dimension) {
         return dimension == 2 ? 7.0 / (478.0 * std::numbers::pi) : 1.0 / (120.0 * std::numbers::pi);
     }
@@ -84,6 +92,8 @@ struct WendlandC2Kernel {
         const double t = 1.0 - 0.5 * q;
         return -5.0 * q * t * t * t;
     }
+    /// shape_derivative(q) for q < 2.
+    static double shape_derivative_inside(double q) { return shape_derivative(q); }
     static double normalisation(int dimension) {
         return dimension == 2 ? 7.0 / (4.0 * std::numbers::pi) : 21.0 / (16.0 * std::numbers::pi);
     }
@@ -175,6 +185,10 @@ template <class Shape> struct ShapeTerms {
     /// W'(r) / r: grad_i W_ij = gradient_factor(r) x_ij.
     double gradient_factor(double r) const {
         return alpha_over_h * Shape::shape_derivative(r * inverse_h) / r;
+    }
+    /// gradient_factor(r) for r inside the support: the same value, without a branch.
+    double gradient_factor_inside(double r) const {
+        return alpha_over_h * Shape::shape_derivative_inside(r * inverse_h) / r;
     }
     double inverse_h;
     double alpha;

@@ -82,20 +82,70 @@ template <class Shape, int D, bool Corrected> struct GradientRow {
     const double support_squared;
     double* entry_factor; ///< nullptr, or W'(r)/r of each same-body entry in the support
 
+    /// The row's entries in batches: first the same-body pairs in the support are picked and
+    /// their W'(r)/r computed in a loop of their own (no branch and no dependence between
+    /// pairs, so the square roots and divisions of successive pairs overlap instead of each
+    /// pair's chain waiting on them), then the sums are added in the entries' order.
     void operator()(Index i, const GradientSums& sums) const {
         if (p.wall_id[i] >= 0) {
             return; // a wall particle's key is its own: no same-body pair
         }
-        double l[D][D] = {};
-        double moment[D][D] = {};
-        const Vec3 xi = p.position[i];
-        const Vec3 vi = p.velocity[i];
-        const double mi = p.mass[i];
-        const int key_i = key[i];
+        Sums acc{};
         const auto list = neighbours.neighbours(i);
         double* factor_of_entry =
             entry_factor != nullptr ? entry_factor + neighbours.first_entry(i) : nullptr;
-        for (std::size_t k = 0; k < list.size(); ++k) {
+        Batch b;
+        for (std::size_t start = 0; start < list.size(); start += kBatch) {
+            pick(i, list, start, std::min(list.size(), start + kBatch), b);
+            for (int m = 0; m < b.count; ++m) {
+                b.f[m] = w.gradient_factor_inside(std::sqrt(b.r2[m]));
+            }
+            if (factor_of_entry != nullptr) {
+                for (int m = 0; m < b.count; ++m) {
+                    factor_of_entry[b.k[m]] = b.f[m];
+                }
+            }
+            add_batch(i, b, acc, sums);
+        }
+        double* li = sums.l + 9 * i;
+        for (int r = 0; r < D; ++r) {
+            for (int c = 0; c < D; ++c) {
+                li[3 * c + r] += acc.l[r][c];
+            }
+        }
+        if constexpr (Corrected) {
+            double* mo_i = sums.moment + 9 * i;
+            for (int r = 0; r < D; ++r) {
+                for (int c = 0; c < D; ++c) {
+                    mo_i[3 * c + r] += acc.moment[r][c];
+                }
+            }
+        }
+    }
+
+  private:
+    static constexpr std::size_t kBatch = 64;
+    /// A batch's same-body pairs i < j in the support: j, list entry, r^2, x_ij, W'(r)/r.
+    struct Batch {
+        int count;
+        Index j[kBatch];
+        std::size_t k[kBatch];
+        double r2[kBatch];
+        double d[D][kBatch];
+        double f[kBatch];
+    };
+    struct Sums {
+        double l[D][D];
+        double moment[D][D];
+    };
+
+    /// Entries [start, end) of row i that are same-body pairs i < j in the support.
+    void pick(Index i, std::span<const std::int32_t> list, std::size_t start, std::size_t end,
+              Batch& b) const {
+        b.count = 0;
+        const Vec3 xi = p.position[i];
+        const int key_i = key[i];
+        for (std::size_t k = start; k < end; ++k) {
             const Index j = list[k];
             if (key[j] != key_i || j < i) {
                 continue; // another body, a wall, or the pair's other row
@@ -105,13 +155,25 @@ template <class Shape, int D, bool Corrected> struct GradientRow {
             if (r2 >= support_squared || r2 == 0.0) {
                 continue;
             }
-            const double f = w.gradient_factor(std::sqrt(r2));
-            if (factor_of_entry != nullptr) {
-                factor_of_entry[k] = f;
+            b.j[b.count] = j;
+            b.k[b.count] = k;
+            b.r2[b.count] = r2;
+            for (int c = 0; c < D; ++c) {
+                b.d[c][b.count] = d[c];
             }
+            ++b.count;
+        }
+    }
+
+    /// i gains m_j dv g^T, j gains m_i dv g^T (and the moments), pair by pair in order.
+    void add_batch(Index i, const Batch& b, Sums& acc, const GradientSums& sums) const {
+        const Vec3 vi = p.velocity[i];
+        const double mi = p.mass[i];
+        for (int m = 0; m < b.count; ++m) {
+            const Index j = b.j[m];
             double g[D];
             for (int c = 0; c < D; ++c) {
-                g[c] = f * d[c];
+                g[c] = b.f[m] * b.d[c][m];
             }
             const double mj = p.mass[j];
             const Vec3& vj = p.velocity[j];
@@ -120,7 +182,7 @@ template <class Shape, int D, bool Corrected> struct GradientRow {
                 const double dv = vj[r] - vi[r];
                 for (int c = 0; c < D; ++c) {
                     const double term = dv * g[c];
-                    l[r][c] += mj * term;
+                    acc.l[r][c] += mj * term;
                     lj[3 * c + r] += mi * term;
                 }
             }
@@ -128,24 +190,10 @@ template <class Shape, int D, bool Corrected> struct GradientRow {
                 double* mo_j = sums.moment + 9 * j;
                 for (int r = 0; r < D; ++r) {
                     for (int c = 0; c < D; ++c) {
-                        const double term = d[r] * g[c];
-                        moment[r][c] -= mj * term;
+                        const double term = b.d[r][m] * g[c];
+                        acc.moment[r][c] -= mj * term;
                         mo_j[3 * c + r] -= mi * term;
                     }
-                }
-            }
-        }
-        double* li = sums.l + 9 * i;
-        for (int r = 0; r < D; ++r) {
-            for (int c = 0; c < D; ++c) {
-                li[3 * c + r] += l[r][c];
-            }
-        }
-        if constexpr (Corrected) {
-            double* mo_i = sums.moment + 9 * i;
-            for (int r = 0; r < D; ++r) {
-                for (int c = 0; c < D; ++c) {
-                    mo_i[3 * c + r] += moment[r][c];
                 }
             }
         }

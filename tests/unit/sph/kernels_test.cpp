@@ -47,6 +47,28 @@ TEST(Kernels, DerivativeMatchesFiniteDifference) {
     }
 }
 
+// The pair passes evaluate W'(r)/r of a batch of pairs with the branch-free form (the cubic
+// spline's two pieces computed, one selected); the passes are bit for bit those of the
+// branched form only if the two agree exactly, so the comparison is exact, at the pieces'
+// joins (q = 1, 2 for the quintic) and just below the support included.
+TEST(Kernels, BranchFreeGradientFactorIsTheBranchedOneExactly) {
+    for (const KernelType type : kAllKernels) {
+        const SmoothingKernel kernel(type, 0.013, 3);
+        kernel.visit_shape([&](auto shape) {
+            const ShapeTerms<decltype(shape)> terms(kernel);
+            const double support = kernel.support_radius();
+            std::vector<double> radii{0.013, 0.026, std::nextafter(support, 0.0)};
+            for (int k = 1; k < 1000; ++k) {
+                radii.push_back(support * k / 1000.0);
+            }
+            for (const double r : radii) {
+                EXPECT_EQ(terms.gradient_factor_inside(r), kernel.radial_derivative(r) / r)
+                    << kernel_name(type) << " r = " << r;
+            }
+        });
+    }
+}
+
 TEST(Kernels, SupportRadius) {
     EXPECT_DOUBLE_EQ(SmoothingKernel(KernelType::cubic_spline, 0.5, 2).support_radius(), 1.0);
     EXPECT_DOUBLE_EQ(SmoothingKernel(KernelType::quintic_spline, 0.5, 2).support_radius(), 1.5);
