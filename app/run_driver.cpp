@@ -2,6 +2,7 @@
 
 #include "app/checkpoint.hpp"
 #include "app/cost_estimate.hpp"
+#include "app/openmp_wait.hpp"
 #include "app/progress_reporter.hpp"
 #include "app/scene.hpp"
 #include "app/thread_count.hpp"
@@ -126,7 +127,7 @@ int check_case(const CommandLine& line) {
               << scene->settings.end_time << " s)\n";
     const Calibration calibration = load_calibration();
     const int threads =
-        line.auto_threads ? auto_thread_count() : line.threads.value_or(omp_get_max_threads());
+        line.auto_threads ? auto_threads() : line.threads.value_or(omp_get_max_threads());
     const CostEstimate cost = estimate_cost(*scene, threads, calibration);
     std::cout << describe_cost(cost, calibration);
     // An hour is where a cheaper setting starts to matter (issue 18): say what the trade table
@@ -145,7 +146,7 @@ int check_case(const CommandLine& line) {
 
 int run_case(const CommandLine& line) {
     if (line.auto_threads) {
-        omp_set_num_threads(auto_thread_count());
+        omp_set_num_threads(auto_threads());
     } else if (line.threads) {
         omp_set_num_threads(*line.threads);
     }

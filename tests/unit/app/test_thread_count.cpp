@@ -1,8 +1,11 @@
 // `--threads auto`: the busy cores between two /proc/stat samples, counted from hand-made
-// samples whose busy fractions are known, and the parser on the layout proc(5) documents.
+// samples whose busy fractions are known, and the parser on the layout proc(5) documents; the
+// OpenMP waiting it chooses and the count it hands to the program run again.
 
+#include "app/openmp_wait.hpp"
 #include "app/thread_count.hpp"
 
+#include <cstdlib>
 #include <gtest/gtest.h>
 #include <sstream>
 
@@ -46,6 +49,41 @@ TEST(ThreadCount, FreeCoresAreTheCpusLessTheBusyOnes) {
     // Samples that cannot be compared (a CPU came online): the CPU count.
     EXPECT_EQ(free_cores(start, {{1020, 5020}, {2020, 6020}, {0, 10}}), 3);
     EXPECT_EQ(free_cores({}, {}), 1);
+}
+
+// The spin count follows the threads `auto` found free: long spins only where both cores were
+// free (docs/performance.md measured both on a quiet and a loaded machine).
+TEST(ThreadCount, AutoOnAQuietMachineSpinsLongerThanTheDefault) {
+    char run[] = "grainload";
+    char command[] = "run";
+    char option[] = "--threads";
+    char automatic[] = "auto";
+    char two[] = "2";
+    char* asks[] = {run, command, option, automatic, nullptr};
+    char* fixed[] = {run, command, option, two, nullptr};
+    char* dangling[] = {run, command, option, nullptr};
+    EXPECT_TRUE(grainload::app::asks_auto_threads(asks));
+    EXPECT_FALSE(grainload::app::asks_auto_threads(fixed));
+    EXPECT_FALSE(grainload::app::asks_auto_threads(dangling));
+    EXPECT_EQ(grainload::app::spin_count_for(1), grainload::app::kSharedSpinCount);
+    EXPECT_EQ(grainload::app::spin_count_for(2), grainload::app::kQuietSpinCount);
+    EXPECT_LT(std::stoi(std::string(grainload::app::kSharedSpinCount)),
+              std::stoi(std::string(grainload::app::kQuietSpinCount)));
+}
+
+// The count handed through the environment is taken only when it is a positive integer; any
+// other text means "measure again".
+TEST(ThreadCount, HandedCountIsAPositiveIntegerOrNothing) {
+    const char* name = grainload::app::kAutoThreadsVariable;
+    unsetenv(name);
+    EXPECT_FALSE(grainload::app::handed_auto_threads().has_value());
+    setenv(name, "3", 1);
+    EXPECT_EQ(grainload::app::handed_auto_threads(), 3);
+    for (const char* bad : {"0", "-1", "two", "2x", ""}) {
+        setenv(name, bad, 1);
+        EXPECT_FALSE(grainload::app::handed_auto_threads().has_value()) << bad;
+    }
+    unsetenv(name);
 }
 
 } // namespace
