@@ -130,6 +130,7 @@ void NeighbourList::rebuild(std::span<const Vec3> positions, std::span<const cha
     }
     reference_.assign(positions.begin(), positions.end());
     ++rebuilds_;
+    ++generation_;
 }
 
 template <class Keep> void NeighbourList::keep_pairs(Keep keep) {
@@ -159,6 +160,7 @@ template <class Keep> void NeighbourList::keep_pairs(Keep keep) {
     }
     offset_ = std::move(offset);
     index_ = std::move(index);
+    ++generation_;
 }
 
 void NeighbourList::drop_pairs(std::span<const int> group, std::span<const char> apart,

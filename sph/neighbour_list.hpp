@@ -47,6 +47,9 @@ class NeighbourList {
     /// Position of row i's first entry among all pair_entries(): per-entry arrays index by it.
     Index first_entry(Index i) const { return offset_[i]; }
     Index rebuild_count() const { return rebuilds_; }
+    /// Changes whenever the list's pairs change (a rebuild, drop_pairs, halve_pairs): what is
+    /// derived from the list can be kept until it does.
+    Index generation() const { return generation_; }
     double search_radius() const { return support_ + skin_; }
     double skin() const { return skin_; }
     /// Positions at the last build: a checkpoint stores them so that a restart rebuilds the same
@@ -69,6 +72,7 @@ class NeighbourList {
     std::vector<std::int32_t> index_;
     std::vector<Vec3> reference_; ///< positions at the last build
     Index rebuilds_ = 0;
+    Index generation_ = 0;
 };
 
 } // namespace grainload::sph

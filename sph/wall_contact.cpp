@@ -130,6 +130,7 @@ void WallContact::apply(ParticleSet& p, const NeighbourList& neighbours,
     threads = omp_get_max_threads();
 #endif
     per_thread_.resize(static_cast<std::size_t>(threads));
+    find_particles_near_walls(p, neighbours);
     const Index n = p.size();
     Index sticking = 0;
     Index slipping = 0;
@@ -144,7 +145,7 @@ void WallContact::apply(ParticleSet& p, const NeighbourList& neighbours,
         std::array<WallTouch, kMaxWalls> walls;
 #pragma omp for schedule(dynamic, 256)
         for (Index i = 0; i < n; ++i) {
-            if (p.wall_id[i] >= 0) {
+            if (p.wall_id[i] >= 0 || near_wall_[static_cast<std::size_t>(i)] == 0) {
                 continue;
             }
             const int count =
@@ -207,6 +208,26 @@ void WallContact::apply(ParticleSet& p, const NeighbourList& neighbours,
     sticking_ = sticking;
     slipping_ = slipping;
     distribute_reactions(p, neighbours, kernel);
+}
+
+void WallContact::find_particles_near_walls(const ParticleSet& p, const NeighbourList& neighbours) {
+    const Index n = p.size();
+    if (near_wall_list_ == &neighbours && near_wall_generation_ == neighbours.generation() &&
+        static_cast<Index>(near_wall_.size()) == n) {
+        return;
+    }
+    near_wall_.assign(static_cast<std::size_t>(n), 0);
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+        for (const Index j : neighbours.neighbours(i)) {
+            if (p.wall_id[j] >= 0) {
+                near_wall_[static_cast<std::size_t>(i)] = 1;
+                break;
+            }
+        }
+    }
+    near_wall_list_ = &neighbours;
+    near_wall_generation_ = neighbours.generation();
 }
 
 void WallContact::distribute_reactions(ParticleSet& p, const NeighbourList& neighbours,

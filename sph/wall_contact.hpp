@@ -81,9 +81,17 @@ class WallContact {
     };
     void distribute_reactions(ParticleSet& p, const NeighbourList& neighbours,
                               const SmoothingKernel& kernel);
+    /// near_wall_ for the list as it is now, recomputed only when the list has changed.
+    void find_particles_near_walls(const ParticleSet& p, const NeighbourList& neighbours);
 
     std::vector<std::vector<Record>> per_thread_;
     std::vector<Record> merged_; ///< the threads' records in the particles' order
+    /// Whether a body particle's row holds a wall particle: the others cannot touch a wall, and
+    /// their neighbour walk is skipped. Kept while the list (its address, generation and
+    /// size) stays the same.
+    std::vector<char> near_wall_;
+    const NeighbourList* near_wall_list_ = nullptr;
+    Index near_wall_generation_ = -1;
     double friction_work_ = 0.0;
     double reaction_power_correction_ = 0.0;
     Index sticking_ = 0;
