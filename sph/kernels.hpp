@@ -24,16 +24,7 @@ struct CubicSplineKernel {
         }
         return 0.0;
     }
-    static double shape_derivative(double q) {
-        if (q < 1.0) {
-            return -2.0 * q + 1.5 * q * q;
-        }
-        if (q < 2.0) {
-            const double t = 2.0 - q;
-            return -0.5 * t * t;
-        }
-        return 0.0;
-    }
+    static double shape_derivative(double q) { return q < 2.0 ? shape_derivative_inside(q) : 0.0; }
     /// shape_derivative(q) for q < 2, without a branch: both pieces evaluated, one selected.
     static double shape_derivative_inside(double q) {
         const double t = 2.0 - q;
