@@ -39,6 +39,41 @@ TEST(ShellAnalysis, AdditionalForcesAreEquilibrated) {
     EXPECT_NEAR(vertical, p, 1e-9);
 }
 
+// The von Mises stresses an element reports are those of its faces and mid-surface: a
+// cantilever strip (nu = 0, so the bending stress is uniaxial) under a tip moment is in pure
+// bending, M' = M / b per unit width in every element, so sigma = 6 M' / t^2 on both faces
+// (Euler-Bernoulli; the bilinear element holds constant curvature exactly) and 0 on the
+// mid-surface. No Gauss-Legendre point lies on a face: with two through the thickness the
+// outermost stress is 1/sqrt(3) of the face's, which the element reported before. The section
+// is linear, one solve: agreement to the solver's round-off (1e-9 of sigma).
+TEST(ShellAnalysis, ElementsReportTheFacesStressesInBending) {
+    const materials::LinearElastic material(materials::ElasticConstants::from_young(1.0, 1e9, 0.0));
+    for (const int points : {2, 5}) {
+        ShellAnalysis analysis(make_plate(1.0, 0.1, 10, 1, 0.01), material, Kinematics::linear,
+                               points);
+        const ShellMesh& mesh = analysis.mesh();
+        analysis.prescribe(mesh.node_set("x0"), {0, 1, 2, 3, 4, 5});
+        Eigen::VectorXd forces = Eigen::VectorXd::Zero(6 * mesh.node_count());
+        const double moment = 1.0; // N m about y, half at each tip node
+        for (const Index n : mesh.node_set("x1")) {
+            forces(6 * n + 4) = 0.5 * moment;
+        }
+        analysis.set_additional_forces(forces);
+        ASSERT_TRUE(analysis.equilibrate(NewtonSettings{}).converged);
+        const double width = 0.1;
+        const double thickness = 0.01;
+        const double face = 6.0 * (moment / width) / (thickness * thickness);
+        constexpr double kRoundOff = 1e-9;
+        for (const Mitc4Shell& element : analysis.elements()) {
+            const ShellResultants r = element.resultants();
+            EXPECT_NEAR(std::abs(r.bending(0)), moment / width, kRoundOff * moment / width);
+            EXPECT_NEAR(r.von_mises_top, face, kRoundOff * face) << points;
+            EXPECT_NEAR(r.von_mises_bottom, face, kRoundOff * face) << points;
+            EXPECT_NEAR(r.von_mises_middle, 0.0, kRoundOff * face) << points;
+        }
+    }
+}
+
 // An element that cannot converge makes advance_load cut the increment back and report the
 // failure instead of throwing: here a mechanism (no supports) gives a singular tangent.
 TEST(ShellAnalysis, SingularModelReportsNonConvergence) {
