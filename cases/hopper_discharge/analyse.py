@@ -6,8 +6,10 @@ Usage:
         [--svg FILE] [--label LABEL ...]
 
 For each run reads OUT_DIR/discharge.csv (one sink) and OUT_DIR/summary.json and prints:
-  * the initial mass, the discharged mass fraction at the end, the time after the gate opened
-    (--open, s; the case's remove_at) at which 50 %, 90 % and 99 % were out;
+  * the fill's mass (initial plus created by a source), the discharged mass fraction at the
+    end, the time after the gate opened (--open, s; default the run's settle_time when its gate
+    went on settling, else the placed fill's remove_at, 0.4 s) at which 50 %, 90 % and 99 % were
+    out;
   * the steady rate the run fitted (least squares over 20-80 % of the discharged mass) and the
     time to empty at that rate;
   * Beverloo's slot law per metre of slot length, W/L = C' rho_b sqrt(g) (B - k d)^(3/2),
@@ -47,6 +49,13 @@ def read_run(out):
     return times, masses, summary
 
 
+def opened_at(results):
+    """When the orifice opened: the settle time of a run whose gate goes when the fill settles
+    (hopper_deposition*.toml), else the placed fill's fixed 0.4 s."""
+    settled = results.get("settle_time", {}).get("value")
+    return settled if settled is not None else 0.4
+
+
 def first_time(times, fractions, level):
     for t, f in zip(times, fractions):
         if f >= level:
@@ -55,7 +64,7 @@ def first_time(times, fractions, level):
 
 
 def main(argv):
-    runs, labels, svg, opening = [], [], None, 0.4
+    runs, labels, svg, opening = [], [], None, None
     k = 0
     while k < len(argv):
         if argv[k] == "--svg":
@@ -79,9 +88,10 @@ def main(argv):
     for i, out in enumerate(runs):
         times, masses, summary = read_run(out)
         results = summary["results"]
-        m0 = results["initial_mass"]["value"]
+        m0 = results["initial_mass"]["value"] + results.get("created_mass", {}).get("value", 0.0)
         fractions = [m / m0 for m in masses]
-        after = [t - opening for t in times]
+        opened = opening if opening is not None else opened_at(results)
+        after = [t - opened for t in times]
         rate = results["sink_below_steady_rate"]["value"]
         label = labels[i] if i < len(labels) else out
         print("%s: M0 = %.2f kg/m, %.1f %% out at the end; 50/90/99 %% out %.2f / %.2f / %.2f s "
