@@ -222,7 +222,7 @@ void CoupledModel::advance(double t, double dt) {
 
 void CoupledModel::track_extremes() {
     for (const CoupledPart& part : parts_) {
-        extremes_.update(*fem_, part.elements);
+        extremes_.update(fem_->analysis(), part.elements);
     }
 }
 

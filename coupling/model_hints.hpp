@@ -13,10 +13,11 @@ namespace grainload::coupling {
 /// yield stress needs no plasticity.
 struct ShellExtremes {
     double deflection = 0.0; ///< largest nodal translation of a coupled part [m]
-    double von_mises = 0.0; ///< largest von Mises stress (top, middle, bottom) of its elements [Pa]
+    double von_mises = 0.0;  ///< largest von Mises stress (faces, mid-surface) of any element [Pa]
 
-    /// Take the shell's state at the end of a window into account: the coupled `elements`.
-    void update(const fem::ShellModel& fem, const std::vector<Index>& elements);
+    /// Take the shell's state at the end of a window into account: the deflection of the
+    /// coupled `elements`, the stress of every element of the shell.
+    void update(const fem::ShellAnalysis& analysis, const std::vector<Index>& elements);
 };
 
 /// The hints of the coupled parts: deflection against the particle spacing (skipped when the

@@ -59,6 +59,15 @@ inline double result_value(const std::string& summary, const std::string& name) 
     return match.empty() ? std::nan("") : std::stod(match[1]);
 }
 
+/// The books of a CI discharge run: the mass audit closes to the round-off of sums of at most
+/// `masses` equal particle masses (masses x eps of the total), and the energy books within
+/// 0.3 %, the bound the CI cases keep (docs/user-guide/sph.md).
+inline void expect_books_close(const std::string& summary, int masses) {
+    EXPECT_LT(std::abs(result_value(summary, "mass_audit_error")), masses * 2.2e-16);
+    constexpr double kEnergyBooks = 3e-3;
+    EXPECT_LT(std::abs(result_value(summary, "energy_balance_error")), kEnergyBooks);
+}
+
 /// A top-level number of a summary.json text ("wall_time_s", "material_points", ...).
 inline double summary_number(const std::string& summary, const std::string& name) {
     const std::regex pattern("\"" + name + "\": ([-+0-9.eE]+)");
