@@ -62,6 +62,8 @@ template <class Shape, int D> struct ForceRow {
     const std::vector<int>& key;
     /// in.entry_factor's data, or nullptr: the kernel is evaluated here.
     const double* entry_factor;
+    /// in.symmetric_stress_over_rho2's data, or nullptr: the full tensors (corrected).
+    const std::array<double, 6>* symmetric;
 
     /// Stress, artificial stress and viscosity of a same-body pair i < j: adds m_j T g to i's
     /// acceleration and -m_i T g to j's (grad_j W_ji = -g, T symmetric in i and j), and the
@@ -71,7 +73,20 @@ template <class Shape, int D> struct ForceRow {
                         const double (&g)[D], bool in_support, double (&a)[3], double& heating,
                         const ForceSums& sums) const {
         double t[D][D] = {};
-        if (s.stress_pairs) {
+        if (s.stress_pairs && symmetric != nullptr) {
+            // The six stored entries xx, yy, zz, xy, xz, yz (rates.hpp): the same sums as the
+            // full tensors', each formed once.
+            const double* si = symmetric[i].data();
+            const double* sj = symmetric[j].data();
+            constexpr int kEntry[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
+            for (int row = 0; row < D; ++row) {
+                t[row][row] = si[row] + sj[row];
+                for (int c = row + 1; c < D; ++c) {
+                    t[row][c] = si[kEntry[row][c]] + sj[kEntry[row][c]];
+                    t[c][row] = t[row][c];
+                }
+            }
+        } else if (s.stress_pairs) {
             const Mat3& si = in.stress_over_rho2[i];
             const Mat3& sj = in.stress_over_rho2[j];
             for (int row = 0; row < D; ++row) {
@@ -246,7 +261,9 @@ void compute_accelerations(ParticleSet& p, const NeighbourList& neighbours,
                 options.contact,
                 in,
                 key,
-                in.entry_factor.empty() ? nullptr : in.entry_factor.data()};
+                in.entry_factor.empty() ? nullptr : in.entry_factor.data(),
+                in.symmetric_stress_over_rho2.empty() ? nullptr
+                                                      : in.symmetric_stress_over_rho2.data()};
             for_each_part(bounds, sums, static_cast<std::size_t>(4 * n),
                           [&](Index i, int r) { row(i, sums_of(r)); });
         };

@@ -304,7 +304,14 @@ void compute_velocity_gradient(ParticleSet& p, const NeighbourList& neighbours,
 void prepare_force_inputs(const ParticleSet& p, const ArtificialStress& artificial,
                           ForceInputs& inputs) {
     const Index n = p.size();
-    inputs.stress_over_rho2.resize(static_cast<std::size_t>(n));
+    const bool corrected = !inputs.gradient_correction.empty();
+    if (corrected) {
+        inputs.stress_over_rho2.resize(static_cast<std::size_t>(n));
+        inputs.symmetric_stress_over_rho2.clear();
+    } else {
+        inputs.symmetric_stress_over_rho2.resize(static_cast<std::size_t>(n));
+        inputs.stress_over_rho2.clear();
+    }
     const bool artificial_on = artificial.epsilon > 0.0;
     if (artificial_on) {
         inputs.artificial_stress.resize(static_cast<std::size_t>(n));
@@ -322,10 +329,15 @@ void prepare_force_inputs(const ParticleSet& p, const ArtificialStress& artifici
         const double inv_rho2 = 1.0 / (p.density[i] * p.density[i]);
         const Mat3 sigma = stress_tensor(p.stress[i]);
         // With the correction the momentum equation needs sigma_i/rho_i^2 C_i: formed once here
-        // rather than per pair.
-        inputs.stress_over_rho2[i] = inputs.gradient_correction.empty()
-                                         ? Mat3(sigma * inv_rho2)
-                                         : Mat3(sigma * inv_rho2 * inputs.gradient_correction[i]);
+        // rather than per pair. Without it the entries are those of sigma * inv_rho2, each
+        // product formed as the full tensor's was.
+        if (corrected) {
+            inputs.stress_over_rho2[i] = sigma * inv_rho2 * inputs.gradient_correction[i];
+        } else {
+            inputs.symmetric_stress_over_rho2[i] = {sigma(0, 0) * inv_rho2, sigma(1, 1) * inv_rho2,
+                                                    sigma(2, 2) * inv_rho2, sigma(0, 1) * inv_rho2,
+                                                    sigma(0, 2) * inv_rho2, sigma(1, 2) * inv_rho2};
+        }
         if (!artificial_on) {
             continue;
         }

@@ -6,6 +6,7 @@
 #include "sph/particle_set.hpp"
 #include "sph/sph_options.hpp"
 
+#include <array>
 #include <span>
 #include <vector>
 
@@ -50,8 +51,13 @@ void compute_velocity_gradient(ParticleSet& particles, const NeighbourList& neig
 
 /// Per-particle quantities the force pass reads, computed once per step.
 struct ForceInputs {
-    /// sigma_i / rho_i^2, times C_i when corrected (material particles; wall entries unused)
+    /// sigma_i / rho_i^2 C_i with the gradient correction (material particles; wall entries
+    /// unused); empty without it.
     std::vector<Mat3> stress_over_rho2;
+    /// sigma_i / rho_i^2 without the gradient correction: symmetric, so its six entries xx, yy,
+    /// zz, xy, xz, yz (48 bytes a particle where the full tensor took 72, read once per pair);
+    /// empty with the correction.
+    std::vector<std::array<double, 6>> symmetric_stress_over_rho2;
     std::vector<Mat3> artificial_stress; ///< R_i of material particles; empty when epsilon = 0
     /// c_i of the artificial viscosity: the P-wave speed of the particle's material before its
     /// stiffness_scale (materials/elastic_constants.hpp), so that alpha c does not follow it.
