@@ -2,6 +2,7 @@
 #include "fem/shell_analysis.hpp"
 #include "fem/shell_mesh_generators.hpp"
 #include "materials/linear_elastic.hpp"
+#include "support/cantilever_strip.hpp"
 
 #include <algorithm>
 #include <gtest/gtest.h>
@@ -21,14 +22,8 @@ TEST(ShellExtremes, StressIsTheWholeShellsDeflectionTheCoupledParts) {
     fem::ShellAnalysis analysis(fem::make_plate(1.0, 0.1, 10, 1, 0.01), material,
                                 fem::Kinematics::linear, 2);
     const fem::ShellMesh& mesh = analysis.mesh();
-    analysis.prescribe(mesh.node_set("x0"), {0, 1, 2, 3, 4, 5});
-    Eigen::VectorXd forces = Eigen::VectorXd::Zero(6 * mesh.node_count());
     const double force = 1.0;
-    for (const Index n : mesh.node_set("x1")) {
-        forces(6 * n + 2) = -0.5 * force;
-    }
-    analysis.set_additional_forces(forces);
-    ASSERT_TRUE(analysis.equilibrate(fem::NewtonSettings{}).converged);
+    ASSERT_TRUE(testing::load_clamped_strip(analysis, 2, -force));
     // The element whose nodes lie at the tip, x = 1 m.
     Index tip = -1;
     for (std::size_t e = 0; e < mesh.elements().size(); ++e) {

@@ -2,6 +2,7 @@
 #include "fem/shell_analysis.hpp"
 #include "fem/shell_mesh_generators.hpp"
 #include "materials/linear_elastic.hpp"
+#include "support/cantilever_strip.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -18,14 +19,8 @@ TEST(ShellAnalysis, AdditionalForcesAreEquilibrated) {
     const materials::LinearElastic material(materials::ElasticConstants::from_young(1.0, 1e9, 0.0));
     ShellAnalysis analysis(make_plate(1.0, 0.1, 20, 1, 0.01), material, Kinematics::linear, 2);
     const ShellMesh& mesh = analysis.mesh();
-    analysis.prescribe(mesh.node_set("x0"), {0, 1, 2, 3, 4, 5});
-    Eigen::VectorXd forces = Eigen::VectorXd::Zero(6 * mesh.node_count());
     const double p = 1.0;
-    for (const Index n : mesh.node_set("x1")) {
-        forces(6 * n + 2) = -0.5 * p;
-    }
-    analysis.set_additional_forces(forces);
-    ASSERT_TRUE(analysis.equilibrate(NewtonSettings{}).converged);
+    ASSERT_TRUE(testing::load_clamped_strip(analysis, 2, -p));
     const double inertia = 0.1 * 1e-6 / 12.0;
     const double expected = p / (3.0 * 1e9 * inertia);
     const double tip = -analysis.displacement(mesh.node_set("x1")[0]).z();
@@ -51,15 +46,8 @@ TEST(ShellAnalysis, ElementsReportTheFacesStressesInBending) {
     for (const int points : {2, 5}) {
         ShellAnalysis analysis(make_plate(1.0, 0.1, 10, 1, 0.01), material, Kinematics::linear,
                                points);
-        const ShellMesh& mesh = analysis.mesh();
-        analysis.prescribe(mesh.node_set("x0"), {0, 1, 2, 3, 4, 5});
-        Eigen::VectorXd forces = Eigen::VectorXd::Zero(6 * mesh.node_count());
-        const double moment = 1.0; // N m about y, half at each tip node
-        for (const Index n : mesh.node_set("x1")) {
-            forces(6 * n + 4) = 0.5 * moment;
-        }
-        analysis.set_additional_forces(forces);
-        ASSERT_TRUE(analysis.equilibrate(NewtonSettings{}).converged);
+        const double moment = 1.0; // N m about y
+        ASSERT_TRUE(testing::load_clamped_strip(analysis, 4, moment));
         const double width = 0.1;
         const double thickness = 0.01;
         const double face = 6.0 * (moment / width) / (thickness * thickness);
