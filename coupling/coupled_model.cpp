@@ -222,8 +222,9 @@ void CoupledModel::advance(double t, double dt) {
 
 void CoupledModel::track_extremes() {
     for (const CoupledPart& part : parts_) {
-        extremes_.update(fem_->analysis(), part.elements);
+        extremes_.add_deflection(fem_->analysis(), part.elements);
     }
+    extremes_.add_stress(fem_->analysis());
 }
 
 void CoupledModel::describe_model(std::vector<io::ModelChoice>& choices) const {

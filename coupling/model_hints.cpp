@@ -22,13 +22,17 @@ template <class... Numbers> std::string format(const char* pattern, Numbers... n
 
 } // namespace
 
-void ShellExtremes::update(const fem::ShellAnalysis& analysis, const std::vector<Index>& elements) {
+void ShellExtremes::add_deflection(const fem::ShellAnalysis& analysis,
+                                   const std::vector<Index>& elements) {
     const fem::ShellMesh& mesh = analysis.mesh();
     for (const Index e : elements) {
         for (const Index node : mesh.elements()[static_cast<std::size_t>(e)].nodes) {
             deflection = std::max(deflection, analysis.displacement(node).norm());
         }
     }
+}
+
+void ShellExtremes::add_stress(const fem::ShellAnalysis& analysis) {
     // Every element, not only the coupled ones: the frames, posts and beams that carry the
     // walls' load (a wagon's door posts) are where the structure's peak stress may sit.
     for (const fem::Mitc4Shell& element : analysis.elements()) {

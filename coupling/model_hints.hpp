@@ -15,9 +15,11 @@ struct ShellExtremes {
     double deflection = 0.0; ///< largest nodal translation of a coupled part [m]
     double von_mises = 0.0;  ///< largest von Mises stress (faces, mid-surface) of any element [Pa]
 
-    /// Take the shell's state at the end of a window into account: the deflection of the
-    /// coupled `elements`, the stress of every element of the shell.
-    void update(const fem::ShellAnalysis& analysis, const std::vector<Index>& elements);
+    /// Take the shell's state at the end of a window into account: the deflection of one
+    /// coupled part's `elements` (once per part).
+    void add_deflection(const fem::ShellAnalysis& analysis, const std::vector<Index>& elements);
+    /// ... and the stress of every element of the shell (once per window, whatever the parts).
+    void add_stress(const fem::ShellAnalysis& analysis);
 };
 
 /// The hints of the coupled parts: deflection against the particle spacing (skipped when the

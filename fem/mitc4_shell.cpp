@@ -29,7 +29,7 @@ Mat3 skew(const Vec3& v) {
 /// Chebyshev-like estimate cos(pi (i + 3/4) / (n + 1/2)) (Press et al., Numerical Recipes,
 /// section 4.6), accurate to round-off for the n <= 15 used through a shell's thickness.
 void gauss_legendre(int n, std::vector<double>& points, std::vector<double>& weights) {
-    if (n < 2 || n > 15) {
+    if (n < 2 || n > kMaxThicknessPoints) {
         throw std::invalid_argument("MITC4: thickness_points must be between 2 and 15");
     }
     points.assign(static_cast<std::size_t>(n), 0.0);
@@ -352,7 +352,7 @@ ShellResultants Mitc4Shell::resultants() const {
     const double half = 0.5 * thickness_;
     const std::size_t nz = z_points_.size();
     const std::vector<double>& z = z_points_;
-    std::vector<Mat3> column(nz);
+    std::array<Mat3, kMaxThicknessPoints> column; // no allocation per element and window
     // committed_ holds the thickness points of each in-plane point in turn, lowest first.
     for (std::size_t first = 0; first < committed_.size(); first += nz) {
         for (std::size_t iz = 0; iz < nz; ++iz) {

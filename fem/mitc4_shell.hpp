@@ -26,6 +26,10 @@ struct ShellNodes {
     std::array<Vec3, 4> director;
 };
 
+/// Most Gauss-Legendre points through a shell's thickness (the element's and the case reader's
+/// bound on thickness_points).
+inline constexpr int kMaxThicknessPoints = 15;
+
 /// Membrane forces, bending moments and surface stresses of an element, averaged over its
 /// in-plane integration points, in the local frame of its centre.
 struct ShellResultants {

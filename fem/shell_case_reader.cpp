@@ -163,7 +163,7 @@ read_shell_parts(const io::CaseTable& fem, const std::vector<io::CaseTable>& she
         const bool elastic = part.material->model() == "linear_elastic";
         part.thickness_points =
             static_cast<int>(shell.integer_or("thickness_points", elastic ? 2 : 5));
-        if (part.thickness_points < 2 || part.thickness_points > 15) {
+        if (part.thickness_points < 2 || part.thickness_points > kMaxThicknessPoints) {
             shell.fail("thickness_points", "expected 2 to 15 Gauss points through the thickness");
         }
         meshes.push_back(read_shell_mesh(shell));

@@ -137,8 +137,11 @@ def report(out, flex):
                               results["coupling_energy_error"]["value"]))
         # The beam check reads the frames' pressure (the window's mean load, which the static
         # shell answered): at rest, and at the discharge frame where its resultant is largest.
-        loaded = [(time, np.trapz(profile(vtm, geometry)[2], profile(vtm, geometry)[0]), vtm)
-                  for time, vtm in frames_of(out) if time > opened + 1e-9]
+        loaded = []
+        for time, vtm in frames_of(out):
+            if time > opened + 1e-9:
+                s, _, p = profile(vtm, geometry)
+                loaded.append((time, np.trapz(p, s), vtm))
         for label, row in (("rest", rest), ("discharge peak", max(loaded, key=lambda r: r[1]))):
             s, w, p = profile(row[2], geometry)
             fine, sag, moment = beam_sag(s, p, stiffness)

@@ -36,7 +36,8 @@ TEST(ShellExtremes, StressIsTheWholeShellsDeflectionTheCoupledParts) {
     }
     ASSERT_GE(tip, 0);
     ShellExtremes extremes;
-    extremes.update(analysis, {tip});
+    extremes.add_deflection(analysis, {tip});
+    extremes.add_stress(analysis);
     const double width = 0.1;
     const double thickness = 0.01;
     const double root = 6.0 * force * (1.0 - 0.05) / width / (thickness * thickness);
