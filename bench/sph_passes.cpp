@@ -6,7 +6,9 @@
 // OUT/checkpoint.bin. The checksum line sums the computed rates, so that two builds meant to
 // compute the same can be compared. When a wall of the case acts on some bodies only (`bodies`,
 // e.g. --set 'sph.wall[0].bodies="column"'), the rebuild is also timed with the solver's drop
-// of the other bodies' pairs (sph/wall_bodies.hpp), the one cost such a wall adds.
+// of the other bodies' pairs (sph/wall_bodies.hpp), the one cost such a wall adds. The
+// kinematic and force passes are timed again with their scalar rows (rates.hpp
+// PairArithmetic), and the line says whether the vector lanes gave the same bits.
 //
 // usage: sph_passes [--threads N] [--reps R] [--restart CHECKPOINT] [--set KEY=VALUE]...
 //                   [CASE.toml]
@@ -23,6 +25,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <omp.h>
 #include <string>
@@ -130,11 +133,36 @@ int main(int argc, char** argv) {
     };
     kinematics();
     const double t_gradient = best_seconds(kinematics, reps);
+    // The kinematic pass again with the scalar row everywhere (rates.hpp PairArithmetic).
+    const std::vector<Mat3> lane_gradient = gradient;
+    const double t_scalar_gradient = best_seconds(
+        [&] {
+            sph::compute_velocity_gradient(p, list, kernel, options.kernel_gradient_correction,
+                                           gradient, inputs.gradient_correction, factors, &scratch,
+                                           sph::PairArithmetic::scalar);
+        },
+        reps);
+    const bool same_gradient = std::memcmp(lane_gradient.data(), gradient.data(),
+                                           gradient.size() * sizeof(gradient[0])) == 0;
     const double t_inputs = best_seconds(
         [&] { sph::prepare_force_inputs(p, options.artificial_stress, inputs); }, reps);
     const double t_forces = best_seconds(
         [&] { sph::compute_accelerations(p, list, kernel, options, inputs, heating, &scratch); },
         reps);
+    // The force pass again with the scalar row everywhere (rates.hpp PairArithmetic): its time,
+    // and whether the vector lanes wrote the same bits.
+    const auto lane_acceleration = p.acceleration;
+    const std::vector<double> lane_heating = heating;
+    const double t_scalar = best_seconds(
+        [&] {
+            sph::compute_accelerations(p, list, kernel, options, inputs, heating, &scratch,
+                                       sph::PairArithmetic::scalar);
+        },
+        reps);
+    const bool same_bits =
+        std::memcmp(lane_acceleration.data(), p.acceleration.data(),
+                    lane_acceleration.size() * sizeof(lane_acceleration[0])) == 0 &&
+        std::memcmp(lane_heating.data(), heating.data(), heating.size() * sizeof(double)) == 0;
     sph::ParticleSet updated = p;
     const double t_stress = best_seconds(
         [&] {
@@ -172,6 +200,9 @@ int main(int argc, char** argv) {
         std::printf("list rebuild with the walls' body filter %.4f (%lld entries kept)\n",
                     t_filtered * us, static_cast<long long>(list.pair_entries()));
     }
+    std::printf("scalar rows: velocity gradient %.4f (%s bits)  forces %.4f (%s bits)\n",
+                t_scalar_gradient * us, same_gradient ? "same" : "DIFFERENT", t_scalar * us,
+                same_bits ? "same" : "DIFFERENT");
     std::printf("checksum %.17g\n", checksum);
     return 0;
 }

@@ -1,8 +1,11 @@
 #include "sph/contact_force.hpp"
+#include "sph/pair_lanes.hpp"
 #include "sph/pair_parts.hpp"
 #include "sph/rates.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 // The force pass of rates.hpp (compute_accelerations): each same-body pair once, from the row
 // of its lower index (sph/pair_parts.hpp); contact pairs from both rows.
@@ -62,8 +65,8 @@ template <class Shape, int D> struct ForceRow {
     const std::vector<int>& key;
     /// in.entry_factor's data, or nullptr: the kernel is evaluated here.
     const double* entry_factor;
-    /// in.symmetric_stress_over_rho2's data, or nullptr: the full tensors (corrected).
-    const std::array<double, 6>* symmetric;
+    /// in.pair_records' data, or nullptr: the full tensors (corrected).
+    const PairRecord* records;
 
     /// Stress, artificial stress and viscosity of a same-body pair i < j: adds m_j T g to i's
     /// acceleration and -m_i T g to j's (grad_j W_ji = -g, T symmetric in i and j), and the
@@ -73,11 +76,11 @@ template <class Shape, int D> struct ForceRow {
                         const double (&g)[D], bool in_support, double (&a)[3], double& heating,
                         const ForceSums& sums) const {
         double t[D][D] = {};
-        if (s.stress_pairs && symmetric != nullptr) {
+        if (s.stress_pairs && records != nullptr) {
             // The six stored entries xx, yy, zz, xy, xz, yz (rates.hpp): the same sums as the
             // full tensors', each formed once.
-            const double* si = symmetric[i].data();
-            const double* sj = symmetric[j].data();
+            const double* si = records[i].stress;
+            const double* sj = records[j].stress;
             constexpr int kEntry[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
             for (int row = 0; row < D; ++row) {
                 t[row][row] = si[row] + sj[row];
@@ -170,6 +173,66 @@ template <class Shape, int D> struct ForceRow {
         }
     }
 
+    /// A neighbour entry of another body (or a wall particle) at squared distance r2.
+    void contact_entry(Index i, Index j, double r2, bool wall, double volume_i, double (&a)[3],
+                       double& heating) const {
+        if (r2 < s.support_squared && r2 != 0.0 && s.use_contact && p.body_id[i] != p.body_id[j]) {
+            contact_pair(i, j, p.position[i] - p.position[j], std::sqrt(r2), wall, volume_i, a,
+                         heating);
+        }
+    }
+
+    /// Row i with the terms of its same-body pairs from continuum_lanes (pair_lanes.hpp), a
+    /// batch of entries at a time, added in the list's order as operator() adds them.
+    void lane_row(Index i, const ForceSums& sums, const LaneSettings& lanes) const {
+        const bool wall = p.wall_id[i] >= 0;
+        double a[3] = {0.0, 0.0, 0.0};
+        double heating = 0.0;
+        const double volume_i = p.mass[i] / p.density[i];
+        const int key_i = key[i];
+        const auto list = neighbours.neighbours(i);
+        std::int32_t picked[kLaneBatch];
+        LaneTerms terms;
+        for (std::size_t first = 0; first < list.size(); first += kLaneBatch) {
+            const std::size_t end = std::min(list.size(), first + kLaneBatch);
+            int count = 0;
+            for (std::size_t k = first; k < end; ++k) {
+                const std::int32_t j = list[k];
+                picked[count] = j;
+                count += key[j] == key_i && j > i ? 1 : 0;
+            }
+            if (count > 0) {
+                continuum_lanes(records, i, picked, count, lanes, terms);
+            }
+            int pair = 0;
+            for (std::size_t k = first; k < end; ++k) {
+                const Index j = list[k];
+                if (key[j] != key_i) {
+                    double d[D];
+                    contact_entry(i, j, separation(p.position[i], p.position[j], d), wall, volume_i,
+                                  a, heating);
+                    continue;
+                }
+                if (j < i) {
+                    continue;
+                }
+                heating += terms.term[6][pair];
+                sums.heating[j] += terms.term[7][pair];
+                double* aj = sums.acceleration + 3 * j;
+                for (int row = 0; row < D; ++row) {
+                    a[row] += terms.term[row][pair];
+                    aj[row] -= terms.term[3 + row][pair];
+                }
+                ++pair;
+            }
+        }
+        double* ai = sums.acceleration + 3 * i;
+        for (int c = 0; c < 3; ++c) {
+            ai[c] += a[c];
+        }
+        sums.heating[i] += heating;
+    }
+
     /// Row i: its contact pairs, and its same-body pairs with the particles after it.
     void operator()(Index i, const ForceSums& sums) const {
         const bool wall = p.wall_id[i] >= 0;
@@ -188,10 +251,7 @@ template <class Shape, int D> struct ForceRow {
             const bool same = key[j] == key_i;
             const bool in_support = r2 < s.support_squared && r2 != 0.0;
             if (!same) {
-                if (in_support && s.use_contact && p.body_id[i] != p.body_id[j]) {
-                    contact_pair(i, j, xi - p.position[j], std::sqrt(r2), wall, volume_i, a,
-                                 heating);
-                }
+                contact_entry(i, j, r2, wall, volume_i, a, heating);
                 continue;
             }
             if (!s.current_pairs_act || j < i) {
@@ -219,12 +279,23 @@ template <class Shape, int D> struct ForceRow {
     }
 };
 
+/// Whether the pass's same-body pairs go to the vector lanes: the production form (3D cubic
+/// spline, stress and viscosity without artificial stress or gradient correction, no stored
+/// kernel gradients) on a processor with AVX2, unless the caller asks for the scalar row.
+template <class Shape, int D, class Row>
+bool use_lanes(const ForceSettings& s, const Row& row, PairArithmetic arithmetic) {
+    return arithmetic == PairArithmetic::lanes_where_available && D == 3 &&
+           std::is_same_v<Shape, CubicSplineKernel> && s.stress_pairs && s.use_viscosity &&
+           !s.use_artificial_stress && row.records != nullptr && row.entry_factor == nullptr &&
+           pair_lanes_available();
+}
+
 } // namespace
 
 void compute_accelerations(ParticleSet& p, const NeighbourList& neighbours,
                            const SmoothingKernel& kernel, const SphOptions& options,
                            const ForceInputs& in, std::vector<double>& heating_rate,
-                           PairScratch* scratch) {
+                           PairScratch* scratch, PairArithmetic arithmetic) {
     const Index n = p.size();
     heating_rate.assign(static_cast<std::size_t>(n), 0.0);
     if (n == 0) {
@@ -262,8 +333,21 @@ void compute_accelerations(ParticleSet& p, const NeighbourList& neighbours,
                 in,
                 key,
                 in.entry_factor.empty() ? nullptr : in.entry_factor.data(),
-                in.symmetric_stress_over_rho2.empty() ? nullptr
-                                                      : in.symmetric_stress_over_rho2.data()};
+                in.pair_records.empty() ? nullptr : in.pair_records.data()};
+            constexpr int kDimension = decltype(dimension)::value;
+            if (use_lanes<Shape, kDimension>(settings, row, arithmetic)) {
+                const LaneSettings lanes{settings.support_squared,
+                                         row.w.inverse_h,
+                                         row.w.alpha_over_h,
+                                         settings.h,
+                                         settings.h2_softening,
+                                         settings.alpha,
+                                         settings.beta,
+                                         settings.viscosity_speed};
+                for_each_part(bounds, sums, static_cast<std::size_t>(4 * n),
+                              [&](Index i, int r) { row.lane_row(i, sums_of(r), lanes); });
+                return;
+            }
             for_each_part(bounds, sums, static_cast<std::size_t>(4 * n),
                           [&](Index i, int r) { row(i, sums_of(r)); });
         };

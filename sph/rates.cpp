@@ -6,6 +6,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace grainload::sph {
 
@@ -81,6 +82,9 @@ template <class Shape, int D, bool Corrected> struct GradientRow {
     const std::vector<int>& key;
     const double support_squared;
     double* entry_factor; ///< nullptr, or W'(r)/r of each same-body entry in the support
+    /// The 3D cubic spline without correction, on AVX2: W'(r)/r and the sums in vector lanes
+    /// (pair_lanes.hpp), the same bits.
+    bool lanes;
 
     /// The row's entries in batches: first the same-body pairs in the support are picked and
     /// their W'(r)/r computed in a loop of their own (no branch and no dependence between
@@ -91,21 +95,40 @@ template <class Shape, int D, bool Corrected> struct GradientRow {
             return; // a wall particle's key is its own: no same-body pair
         }
         Sums acc{};
+        double acc_lanes[9] = {}; // column major, as add_gradient_pairs adds
         const auto list = neighbours.neighbours(i);
         double* factor_of_entry =
             entry_factor != nullptr ? entry_factor + neighbours.first_entry(i) : nullptr;
         Batch b;
         for (std::size_t start = 0; start < list.size(); start += kBatch) {
             pick(i, list, start, std::min(list.size(), start + kBatch), b);
-            for (int m = 0; m < b.count; ++m) {
-                b.f[m] = w.gradient_factor_inside(std::sqrt(b.r2[m]));
+            if (lanes) {
+                gradient_factor_lanes(b.r2, b.count, w.inverse_h, w.alpha_over_h, b.f);
+            } else {
+                for (int m = 0; m < b.count; ++m) {
+                    b.f[m] = w.gradient_factor_inside(std::sqrt(b.r2[m]));
+                }
             }
             if (factor_of_entry != nullptr) {
                 for (int m = 0; m < b.count; ++m) {
                     factor_of_entry[b.k[m]] = b.f[m];
                 }
             }
+            if constexpr (D == 3 && !Corrected) {
+                if (lanes) {
+                    add_gradient_pairs(p.velocity.data()->data(), p.mass.data(), i, b.j, b.d[0],
+                                       b.d[1], b.d[2], b.f, b.count, sums.l, acc_lanes);
+                    continue;
+                }
+            }
             add_batch(i, b, acc, sums);
+        }
+        if (lanes) {
+            for (int r = 0; r < D; ++r) {
+                for (int c = 0; c < D; ++c) {
+                    acc.l[r][c] = acc_lanes[3 * c + r];
+                }
+            }
         }
         double* li = sums.l + 9 * i;
         for (int r = 0; r < D; ++r) {
@@ -211,14 +234,18 @@ template <class Shape, int D, bool Corrected>
 void velocity_gradient_pass(ParticleSet& p, const NeighbourList& neighbours,
                             const SmoothingKernel& kernel, std::vector<Mat3>& velocity_gradient,
                             std::vector<Mat3>& correction, double* entry_factor,
-                            PairScratch& scratch) {
+                            PairScratch& scratch, PairArithmetic arithmetic) {
     const std::vector<int> key = continuum_keys(p);
+    const bool lanes = arithmetic == PairArithmetic::lanes_where_available && D == 3 &&
+                       !Corrected && std::is_same_v<Shape, CubicSplineKernel> &&
+                       pair_lanes_available();
     const GradientRow<Shape, D, Corrected> row{p,
                                                neighbours,
                                                ShapeTerms<Shape>(kernel),
                                                key,
                                                kernel.support_radius() * kernel.support_radius(),
-                                               entry_factor};
+                                               entry_factor,
+                                               lanes};
     const Index n = p.size();
     // The first part sums into velocity_gradient and (the moments) correction themselves.
     velocity_gradient.assign(static_cast<std::size_t>(n), Mat3::Zero());
@@ -269,12 +296,33 @@ void velocity_gradient_pass(ParticleSet& p, const NeighbourList& neighbours,
     }
 }
 
+/// Particle i's record of the force pass: sigma/rho^2 entries, each product formed as the full
+/// tensor's was, and the fields its pair terms read.
+PairRecord pair_record(const ParticleSet& p, Index i, const Mat3& sigma, double inv_rho2,
+                       const std::vector<double>& sound_speed) {
+    PairRecord record{};
+    const double stress[6] = {sigma(0, 0), sigma(1, 1), sigma(2, 2),
+                              sigma(0, 1), sigma(0, 2), sigma(1, 2)};
+    for (int k = 0; k < 6; ++k) {
+        record.stress[k] = stress[k] * inv_rho2;
+    }
+    record.mass = p.mass[i];
+    record.density = p.density[i];
+    for (int c = 0; c < 3; ++c) {
+        record.position[c] = p.position[i][c];
+        record.velocity[c] = p.velocity[i][c];
+    }
+    record.sound_speed = sound_speed.empty() ? 0.0 : sound_speed[static_cast<std::size_t>(i)];
+    return record;
+}
+
 } // namespace
 
 void compute_velocity_gradient(ParticleSet& p, const NeighbourList& neighbours,
                                const SmoothingKernel& kernel, bool gradient_correction,
                                std::vector<Mat3>& velocity_gradient, std::vector<Mat3>& correction,
-                               std::vector<double>* entry_factor, PairScratch* scratch) {
+                               std::vector<double>* entry_factor, PairScratch* scratch,
+                               PairArithmetic arithmetic) {
     if (entry_factor != nullptr) {
         entry_factor->resize(static_cast<std::size_t>(neighbours.pair_entries()));
     }
@@ -288,7 +336,7 @@ void compute_velocity_gradient(ParticleSet& p, const NeighbourList& neighbours,
         using Shape = decltype(shape);
         auto pass = [&](auto dimension, auto corrected) {
             velocity_gradient_pass<Shape, decltype(dimension)::value, decltype(corrected)::value>(
-                p, neighbours, kernel, velocity_gradient, correction, factors, sums);
+                p, neighbours, kernel, velocity_gradient, correction, factors, sums, arithmetic);
         };
         using Two = std::integral_constant<int, 2>;
         using Three = std::integral_constant<int, 3>;
@@ -307,9 +355,9 @@ void prepare_force_inputs(const ParticleSet& p, const ArtificialStress& artifici
     const bool corrected = !inputs.gradient_correction.empty();
     if (corrected) {
         inputs.stress_over_rho2.resize(static_cast<std::size_t>(n));
-        inputs.symmetric_stress_over_rho2.clear();
+        inputs.pair_records.clear();
     } else {
-        inputs.symmetric_stress_over_rho2.resize(static_cast<std::size_t>(n));
+        inputs.pair_records.resize(static_cast<std::size_t>(n));
         inputs.stress_over_rho2.clear();
     }
     const bool artificial_on = artificial.epsilon > 0.0;
@@ -334,9 +382,7 @@ void prepare_force_inputs(const ParticleSet& p, const ArtificialStress& artifici
         if (corrected) {
             inputs.stress_over_rho2[i] = sigma * inv_rho2 * inputs.gradient_correction[i];
         } else {
-            inputs.symmetric_stress_over_rho2[i] = {sigma(0, 0) * inv_rho2, sigma(1, 1) * inv_rho2,
-                                                    sigma(2, 2) * inv_rho2, sigma(0, 1) * inv_rho2,
-                                                    sigma(0, 2) * inv_rho2, sigma(1, 2) * inv_rho2};
+            inputs.pair_records[i] = pair_record(p, i, sigma, inv_rho2, inputs.sound_speed);
         }
         if (!artificial_on) {
             continue;

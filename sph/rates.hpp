@@ -2,6 +2,7 @@
 
 #include "sph/kernels.hpp"
 #include "sph/neighbour_list.hpp"
+#include "sph/pair_lanes.hpp"
 #include "sph/pair_parts.hpp"
 #include "sph/particle_set.hpp"
 #include "sph/sph_options.hpp"
@@ -23,6 +24,13 @@ Mat3 correction_inverse(Mat3 moment, int dimension);
 /// From the velocity gradient L of particle i: density_rate = -rho tr L, strain_rate = sym L
 /// (engineering shear), spin = axial vector of skew L.
 void store_kinematics(ParticleSet& particles, Index i, const Mat3& velocity_gradient);
+
+/// How the pair passes do their same-body pairs' arithmetic. The production form (3D cubic
+/// spline, no gradient correction, and for the forces no artificial stress) goes to the vector
+/// units where the processor has AVX2 (pair_lanes.hpp), with the same bits as the scalar rows;
+/// `scalar` keeps the scalar rows everywhere (the reference the tests and benches compare
+/// against).
+enum class PairArithmetic { lanes_where_available, scalar };
 
 /// Kinematic pass over pairs of the same body: velocity gradient
 /// L_i = sum_j (m_j / rho_i) (v_j - v_i) (grad_i W_ij)^T, the velocity-difference form of
@@ -47,17 +55,19 @@ void compute_velocity_gradient(ParticleSet& particles, const NeighbourList& neig
                                const SmoothingKernel& kernel, bool gradient_correction,
                                std::vector<Mat3>& velocity_gradient, std::vector<Mat3>& correction,
                                std::vector<double>* entry_factor = nullptr,
-                               PairScratch* scratch = nullptr);
+                               PairScratch* scratch = nullptr,
+                               PairArithmetic arithmetic = PairArithmetic::lanes_where_available);
 
 /// Per-particle quantities the force pass reads, computed once per step.
 struct ForceInputs {
     /// sigma_i / rho_i^2 C_i with the gradient correction (material particles; wall entries
     /// unused); empty without it.
     std::vector<Mat3> stress_over_rho2;
-    /// sigma_i / rho_i^2 without the gradient correction: symmetric, so its six entries xx, yy,
-    /// zz, xy, xz, yz (48 bytes a particle where the full tensor took 72, read once per pair);
-    /// empty with the correction.
-    std::vector<std::array<double, 6>> symmetric_stress_over_rho2;
+    /// Without the gradient correction: sigma_i / rho_i^2, symmetric, as its six entries xx, yy,
+    /// zz, xy, xz, yz, with the particle's mass, density, position, velocity and c
+    /// (pair_lanes.hpp), so that the force pass loads a neighbour's data as blocks (material
+    /// particles; wall entries unused); empty with the correction.
+    std::vector<PairRecord> pair_records;
     std::vector<Mat3> artificial_stress; ///< R_i of material particles; empty when epsilon = 0
     /// c_i of the artificial viscosity: the P-wave speed of the particle's material before its
     /// stiffness_scale (materials/elastic_constants.hpp), so that alpha c does not follow it.
@@ -70,8 +80,9 @@ struct ForceInputs {
     std::vector<double> entry_factor;
 };
 
-/// Fill stress_over_rho2 and artificial_stress from the particles' current stresses (after
-/// compute_velocity_gradient has set gradient_correction).
+/// Fill stress_over_rho2 or pair_records, and artificial_stress, from the particles' current
+/// state (after compute_velocity_gradient has set gradient_correction, and again whenever
+/// positions, velocities, densities or stresses change before the force pass).
 void prepare_force_inputs(const ParticleSet& particles, const ArtificialStress& artificial,
                           ForceInputs& inputs);
 
@@ -88,9 +99,14 @@ void prepare_force_inputs(const ParticleSet& particles, const ArtificialStress& 
 /// adds them); viscosity and contact stay.
 /// Same-body pairs once each, as compute_velocity_gradient takes them (the pair's force on j is
 /// minus its force on i: momentum is conserved pair by pair); contact pairs from both rows.
+/// The same-body pairs' arithmetic of the production form (3D cubic spline, no gradient
+/// correction or artificial stress) goes four pairs at a time to the vector units where the
+/// processor has AVX2 (pair_lanes.hpp), with the same bits as the scalar row; `scalar` keeps
+/// the scalar row everywhere (the reference the tests and benches compare against).
 void compute_accelerations(ParticleSet& particles, const NeighbourList& neighbours,
                            const SmoothingKernel& kernel, const SphOptions& options,
                            const ForceInputs& inputs, std::vector<double>& heating_rate,
-                           PairScratch* scratch = nullptr);
+                           PairScratch* scratch = nullptr,
+                           PairArithmetic arithmetic = PairArithmetic::lanes_where_available);
 
 } // namespace grainload::sph

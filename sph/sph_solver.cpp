@@ -433,7 +433,7 @@ std::size_t SphSolver::bytes() const {
     p.for_each_field([&](const auto&, const auto& values) { particle_bytes += held(values); });
     const std::size_t work =
         held(is_wall_) + held(force_inputs_.stress_over_rho2) +
-        held(force_inputs_.symmetric_stress_over_rho2) + held(force_inputs_.artificial_stress) +
+        held(force_inputs_.pair_records) + held(force_inputs_.artificial_stress) +
         held(force_inputs_.sound_speed) + held(wave_speed_) +
         held(force_inputs_.gradient_correction) + held(force_inputs_.entry_factor) +
         held(velocity_gradient_) + held(heating_rate_);

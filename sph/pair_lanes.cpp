@@ -1,0 +1,247 @@
+#include "sph/pair_lanes.hpp"
+
+#include <cmath>
+#include <cstdlib>
+
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
+
+// Every operation below mirrors one of ForceRow::continuum_pair (force_pass.cpp) and
+// ShapeTerms::gradient_factor with the cubic spline (kernels.hpp), in the same order; the
+// function is compiled for AVX2 without FMA, so no product is fused into a sum and the lanes
+// round as the scalar row does.
+
+namespace grainload::sph {
+
+#if defined(__x86_64__)
+
+bool pair_lanes_available() {
+    static const bool available = __builtin_cpu_supports("avx2") != 0;
+    return available;
+}
+
+namespace {
+
+/// Two doubles at `low` in the lower half, two at `high` in the upper.
+__attribute__((target("avx2"))) inline __m256d pair(const double* low, const double* high) {
+    return _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(low)), _mm_loadu_pd(high), 1);
+}
+
+/// Block k (four doubles) of the records of particles j[0..3], as lanes: r[c] holds entry c of
+/// the four blocks. Built from 128-bit halves (two records per register, then one unpack per
+/// entry) rather than a 4x4 transpose of whole blocks, which would put twice the shuffles on
+/// the one port that runs lane-crossing ones.
+__attribute__((target("avx2"))) inline void load_block(const double* base, const std::int32_t* j,
+                                                       int k, __m256d (&r)[4]) {
+    constexpr int kDoubles = sizeof(PairRecord) / sizeof(double);
+    const double* a = base + kDoubles * j[0] + 4 * k;
+    const double* b = base + kDoubles * j[1] + 4 * k;
+    const double* c = base + kDoubles * j[2] + 4 * k;
+    const double* d = base + kDoubles * j[3] + 4 * k;
+    const __m256d ac_low = pair(a, c);          // a0 a1 c0 c1
+    const __m256d bd_low = pair(b, d);          // b0 b1 d0 d1
+    const __m256d ac_high = pair(a + 2, c + 2); // a2 a3 c2 c3
+    const __m256d bd_high = pair(b + 2, d + 2);
+    r[0] = _mm256_unpacklo_pd(ac_low, bd_low); // a0 b0 c0 d0
+    r[1] = _mm256_unpackhi_pd(ac_low, bd_low);
+    r[2] = _mm256_unpacklo_pd(ac_high, bd_high);
+    r[3] = _mm256_unpackhi_pd(ac_high, bd_high);
+}
+
+__attribute__((target("avx2"))) inline __m256d select(__m256d mask, __m256d yes, __m256d no) {
+    return _mm256_blendv_pd(no, yes, mask);
+}
+
+/// ((0 + a0 b0) + a1 b1) + a2 b2, as the scalar row's accumulating loops.
+__attribute__((target("avx2"))) inline __m256d dot3(__m256d a0, __m256d a1, __m256d a2, __m256d b0,
+                                                    __m256d b1, __m256d b2) {
+    __m256d sum = _mm256_add_pd(_mm256_setzero_pd(), _mm256_mul_pd(a0, b0));
+    sum = _mm256_add_pd(sum, _mm256_mul_pd(a1, b1));
+    return _mm256_add_pd(sum, _mm256_mul_pd(a2, b2));
+}
+
+} // namespace
+
+__attribute__((target("avx2"))) void continuum_lanes(const PairRecord* records, Index i,
+                                                     const std::int32_t* j, int count,
+                                                     const LaneSettings& s, LaneTerms& out) {
+    const auto* base = reinterpret_cast<const double*>(records);
+    const PairRecord& ri = records[i];
+    const __m256d zero = _mm256_setzero_pd();
+    const __m256d support_squared = _mm256_set1_pd(s.support_squared);
+    const __m256d mi = _mm256_set1_pd(ri.mass);
+    const bool fixed_speed = s.viscosity_speed > 0.0;
+    // The last group repeats the last pair in its spare lanes; their terms are never read.
+    std::int32_t lane_j[kLaneBatch + 3];
+    for (int p = 0; p < count; ++p) {
+        lane_j[p] = j[p];
+    }
+    for (int p = count; p < ((count + 3) & ~3); ++p) {
+        lane_j[p] = j[count - 1];
+    }
+    for (int g = 0; g < count; g += 4) {
+        __m256d stress[4], stress_mass[4], place[4], motion[4];
+        load_block(base, lane_j + g, 0, stress);      // xx yy zz xy
+        load_block(base, lane_j + g, 1, stress_mass); // xz yz m rho
+        load_block(base, lane_j + g, 2, place);       // x y z vx
+        load_block(base, lane_j + g, 3, motion);      // vy vz c -
+        const __m256d d0 = _mm256_sub_pd(_mm256_set1_pd(ri.position[0]), place[0]);
+        const __m256d d1 = _mm256_sub_pd(_mm256_set1_pd(ri.position[1]), place[1]);
+        const __m256d d2 = _mm256_sub_pd(_mm256_set1_pd(ri.position[2]), place[2]);
+        const __m256d r2 = dot3(d0, d1, d2, d0, d1, d2);
+        const __m256d inside = _mm256_and_pd(_mm256_cmp_pd(r2, support_squared, _CMP_LT_OQ),
+                                             _mm256_cmp_pd(r2, zero, _CMP_NEQ_UQ));
+        // W'(r)/r, evaluated at the support for the pairs outside it (then not added).
+        const __m256d r = _mm256_sqrt_pd(select(inside, r2, support_squared));
+        const __m256d q = _mm256_mul_pd(r, _mm256_set1_pd(s.inverse_h));
+        const __m256d t = _mm256_sub_pd(_mm256_set1_pd(2.0), q);
+        const __m256d inner =
+            _mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(-2.0), q),
+                          _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(1.5), q), q));
+        const __m256d outer = _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(-0.5), t), t);
+        __m256d shape = select(_mm256_cmp_pd(q, _mm256_set1_pd(1.0), _CMP_LT_OQ), inner, outer);
+        shape = select(_mm256_cmp_pd(q, _mm256_set1_pd(2.0), _CMP_LT_OQ), shape, zero);
+        const __m256d f = _mm256_div_pd(_mm256_mul_pd(_mm256_set1_pd(s.alpha_over_h), shape), r);
+        const __m256d g0 = _mm256_mul_pd(f, d0);
+        const __m256d g1 = _mm256_mul_pd(f, d1);
+        const __m256d g2 = _mm256_mul_pd(f, d2);
+        // sigma_i/rho_i^2 + sigma_j/rho_j^2, the six entries.
+        __m256d txx = _mm256_add_pd(_mm256_set1_pd(ri.stress[0]), stress[0]);
+        __m256d tyy = _mm256_add_pd(_mm256_set1_pd(ri.stress[1]), stress[1]);
+        __m256d tzz = _mm256_add_pd(_mm256_set1_pd(ri.stress[2]), stress[2]);
+        const __m256d txy = _mm256_add_pd(_mm256_set1_pd(ri.stress[3]), stress[3]);
+        const __m256d txz = _mm256_add_pd(_mm256_set1_pd(ri.stress[4]), stress_mass[0]);
+        const __m256d tyz = _mm256_add_pd(_mm256_set1_pd(ri.stress[5]), stress_mass[1]);
+        const __m256d v0 = _mm256_sub_pd(_mm256_set1_pd(ri.velocity[0]), place[3]);
+        const __m256d v1 = _mm256_sub_pd(_mm256_set1_pd(ri.velocity[1]), motion[0]);
+        const __m256d v2 = _mm256_sub_pd(_mm256_set1_pd(ri.velocity[2]), motion[1]);
+        const __m256d approach = dot3(v0, v1, v2, d0, d1, d2);
+        const __m256d mj = stress_mass[2];
+        // Monaghan's viscosity, as continuum_pair.
+        const __m256d mu = _mm256_div_pd(_mm256_mul_pd(_mm256_set1_pd(s.h), approach),
+                                         _mm256_add_pd(r2, _mm256_set1_pd(s.h2_softening)));
+        const __m256d half = _mm256_set1_pd(0.5);
+        const __m256d c =
+            fixed_speed
+                ? _mm256_set1_pd(s.viscosity_speed)
+                : _mm256_mul_pd(half, _mm256_add_pd(_mm256_set1_pd(ri.sound_speed), motion[2]));
+        const __m256d rho =
+            _mm256_mul_pd(half, _mm256_add_pd(_mm256_set1_pd(ri.density), stress_mass[3]));
+        const __m256d linear = _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(-s.alpha), c), mu);
+        const __m256d quadratic = _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(s.beta), mu), mu);
+        const __m256d pi_all = _mm256_div_pd(_mm256_add_pd(linear, quadratic), rho);
+        const __m256d power = dot3(v0, v1, v2, g0, g1, g2);
+        const __m256d viscous = _mm256_cmp_pd(approach, zero, _CMP_LT_OQ);
+        const __m256d pi_ij = select(viscous, pi_all, zero);
+        const __m256d heat = select(_mm256_and_pd(viscous, inside),
+                                    _mm256_mul_pd(_mm256_mul_pd(half, pi_all), power), zero);
+        txx = _mm256_sub_pd(txx, pi_ij);
+        tyy = _mm256_sub_pd(tyy, pi_ij);
+        tzz = _mm256_sub_pd(tzz, pi_ij);
+        const __m256d tg[3] = {select(inside, dot3(txx, txy, txz, g0, g1, g2), zero),
+                               select(inside, dot3(txy, tyy, tyz, g0, g1, g2), zero),
+                               select(inside, dot3(txz, tyz, tzz, g0, g1, g2), zero)};
+        for (int c3 = 0; c3 < 3; ++c3) {
+            _mm256_store_pd(out.term[c3] + g, _mm256_mul_pd(mj, tg[c3]));
+            _mm256_store_pd(out.term[3 + c3] + g, _mm256_mul_pd(mi, tg[c3]));
+        }
+        _mm256_store_pd(out.term[6] + g, _mm256_mul_pd(mj, heat));
+        _mm256_store_pd(out.term[7] + g, _mm256_mul_pd(mi, heat));
+    }
+}
+
+__attribute__((target("avx2"))) void gradient_factor_lanes(const double* r2, int count,
+                                                           double inverse_h, double alpha_over_h,
+                                                           double* f) {
+    int p = 0;
+    for (; p + 4 <= count; p += 4) {
+        const __m256d r = _mm256_sqrt_pd(_mm256_loadu_pd(r2 + p));
+        const __m256d q = _mm256_mul_pd(r, _mm256_set1_pd(inverse_h));
+        const __m256d t = _mm256_sub_pd(_mm256_set1_pd(2.0), q);
+        const __m256d inner =
+            _mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(-2.0), q),
+                          _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(1.5), q), q));
+        const __m256d outer = _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(-0.5), t), t);
+        const __m256d shape =
+            select(_mm256_cmp_pd(q, _mm256_set1_pd(1.0), _CMP_LT_OQ), inner, outer);
+        _mm256_storeu_pd(f + p,
+                         _mm256_div_pd(_mm256_mul_pd(_mm256_set1_pd(alpha_over_h), shape), r));
+    }
+    for (; p < count; ++p) { // the scalar row's expression, for the last pairs
+        const double r = std::sqrt(r2[p]);
+        const double q = r * inverse_h;
+        const double t = 2.0 - q;
+        const double shape = q < 1.0 ? -2.0 * q + 1.5 * q * q : -0.5 * t * t;
+        f[p] = alpha_over_h * shape / r;
+    }
+}
+
+namespace {
+
+/// (v0, v1, v2, 0) from three doubles, reading none past them.
+__attribute__((target("avx2"))) inline __m256d load3(const double* v) {
+    return _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(v)), _mm_load_sd(v + 2), 1);
+}
+
+} // namespace
+
+__attribute__((target("avx2"))) void add_gradient_pairs(const double* velocity, const double* mass,
+                                                        Index i, const Index* j, const double* d0,
+                                                        const double* d1, const double* d2,
+                                                        const double* f, int count, double* l,
+                                                        double (&acc)[9]) {
+    // The nine entries t_rc = dv_r g_c column major: (t00 t10 t20 t01), (t11 t21 t02 t12), t22.
+    const __m256d vi = load3(velocity + 3 * i);
+    const __m256d mi = _mm256_set1_pd(mass[i]);
+    __m256d acc_a = _mm256_loadu_pd(acc);
+    __m256d acc_b = _mm256_loadu_pd(acc + 4);
+    double acc_s = acc[8];
+    for (int p = 0; p < count; ++p) {
+        const double* vj = velocity + 3 * j[p];
+        const __m256d dv = _mm256_sub_pd(load3(vj), vi);
+        const double g0 = f[p] * d0[p];
+        const double g1 = f[p] * d1[p];
+        const double g2 = f[p] * d2[p];
+        const __m256d ta =
+            _mm256_mul_pd(_mm256_permute4x64_pd(dv, 0b00'10'01'00), _mm256_set_pd(g1, g0, g0, g0));
+        const __m256d tb =
+            _mm256_mul_pd(_mm256_permute4x64_pd(dv, 0b01'00'10'01), _mm256_set_pd(g2, g2, g1, g1));
+        const double ts = (vj[2] - velocity[3 * i + 2]) * g2;
+        const double mj = mass[j[p]];
+        acc_a = _mm256_add_pd(acc_a, _mm256_mul_pd(_mm256_set1_pd(mj), ta));
+        acc_b = _mm256_add_pd(acc_b, _mm256_mul_pd(_mm256_set1_pd(mj), tb));
+        acc_s += mj * ts;
+        double* lj = l + 9 * j[p];
+        _mm256_storeu_pd(lj, _mm256_add_pd(_mm256_loadu_pd(lj), _mm256_mul_pd(mi, ta)));
+        _mm256_storeu_pd(lj + 4, _mm256_add_pd(_mm256_loadu_pd(lj + 4), _mm256_mul_pd(mi, tb)));
+        lj[8] += mass[i] * ts;
+    }
+    _mm256_storeu_pd(acc, acc_a);
+    _mm256_storeu_pd(acc + 4, acc_b);
+    acc[8] = acc_s;
+}
+
+#else
+
+bool pair_lanes_available() {
+    return false;
+}
+
+void continuum_lanes(const PairRecord*, Index, const std::int32_t*, int, const LaneSettings&,
+                     LaneTerms&) {
+    std::abort(); // unreachable: pair_lanes_available() is false
+}
+
+void gradient_factor_lanes(const double*, int, double, double, double*) {
+    std::abort();
+}
+
+void add_gradient_pairs(const double*, const double*, Index, const Index*, const double*,
+                        const double*, const double*, const double*, int, double*, double (&)[9]) {
+    std::abort();
+}
+
+#endif
+
+} // namespace grainload::sph

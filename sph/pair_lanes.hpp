@@ -1,0 +1,73 @@
+#pragma once
+
+#include "io/types.hpp"
+
+#include <cstdint>
+
+// The same-body pair terms of the kinematic and force passes (rates.hpp) in the vector units
+// (AVX2, checked at run time). Each lane does the scalar row's operations in the scalar row's
+// order (no fused multiply-add, IEEE division and square root) and the sums are added in the
+// list's order, so the lanes give the same bits as the scalar rows.
+
+namespace grainload::sph {
+
+/// What the force pass reads of one particle, packed so that four neighbours load as four 4x4
+/// blocks of doubles, transposed into lanes: sigma/rho^2 (xx yy zz xy xz yz), mass, density in
+/// the first cache line (all the plane-strain scalar row reads of it), then position, velocity
+/// and the viscosity's sound speed c.
+struct alignas(64) PairRecord {
+    double stress[6];
+    double mass;
+    double density;
+    double position[3];
+    double velocity[3];
+    double sound_speed;
+    double unused;
+};
+static_assert(sizeof(PairRecord) == 128, "four 32-byte blocks");
+
+/// Settings of the 3D cubic-spline pair terms (rates.hpp compute_accelerations).
+struct LaneSettings {
+    double support_squared;
+    double inverse_h;
+    double alpha_over_h; ///< the kernel's normalisation over h^(d+1)
+    double h;
+    double h2_softening; ///< 0.01 h^2 of Monaghan's mu
+    double alpha;
+    double beta;
+    double viscosity_speed; ///< > 0: fixed c; 0: the mean of the pair's records
+};
+
+/// Pairs per call: a row is taken in batches of this many list entries.
+constexpr int kLaneBatch = 64;
+
+/// Per picked pair p of a batch: m_j T g (0-2), m_i T g (3-5), m_j and m_i times the viscous
+/// heating 1/2 Pi v_ij . g (6, 7); zeros where the pair is outside the support. The rows are
+/// padded to whole groups of four.
+struct LaneTerms {
+    alignas(32) double term[8][kLaneBatch];
+};
+
+/// Whether this processor runs the lanes (AVX2, checked once).
+bool pair_lanes_available();
+
+/// W'(r)/r of the cubic spline at r = sqrt(r2[p]), p < count, pairs inside the support, four
+/// at a time (ShapeTerms::gradient_factor_inside). Requires pair_lanes_available().
+void gradient_factor_lanes(const double* r2, int count, double inverse_h, double alpha_over_h,
+                           double* f);
+
+/// The kinematic pass's pairs (i, j[p]) of one body in 3D, in order: with dv = v_j - v_i and
+/// g = f[p] x_ij (x_ij = (d0, d1, d2)[p]), adds m_j dv g^T to `acc` and m_i dv g^T to particle
+/// j's nine doubles at l + 9 j, both column major, each pair's nine products as one row of
+/// vectors. Requires pair_lanes_available().
+void add_gradient_pairs(const double* velocity, const double* mass, Index i, const Index* j,
+                        const double* d0, const double* d1, const double* d2, const double* f,
+                        int count, double* l, double (&acc)[9]);
+
+/// The terms of the pairs (i, j[p]), p < count <= kLaneBatch, of one body: stress
+/// sigma_i/rho_i^2 + sigma_j/rho_j^2 and Monaghan's viscosity, cubic spline in 3D. Requires
+/// pair_lanes_available().
+void continuum_lanes(const PairRecord* records, Index i, const std::int32_t* j, int count,
+                     const LaneSettings& settings, LaneTerms& out);
+
+} // namespace grainload::sph

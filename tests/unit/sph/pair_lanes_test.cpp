@@ -1,0 +1,125 @@
+#include "sph/lattice_fill.hpp"
+#include "sph/pair_lanes.hpp"
+#include "sph/pair_parts.hpp"
+#include "sph/rates.hpp"
+
+#include <cstring>
+#include <gtest/gtest.h>
+#include <omp.h>
+#include <random>
+
+namespace grainload::sph {
+namespace {
+
+/// A jittered 7 x 7 x 7 lattice at 0.1 m in two bodies (x below 0.35 m and above) over a wall
+/// row at x < 0.1 m, moving and stressed at random: same-body pairs inside and outside the
+/// support (the list's skin), contact pairs between the bodies and with the wall, interleaved
+/// in the rows.
+struct Scene {
+    ParticleSet particles;
+    SmoothingKernel kernel{KernelType::cubic_spline, 0.13, 3};
+    NeighbourList neighbours{0.26, 0.05, 3};
+};
+
+void fill(Scene& s) {
+    LatticeBody body;
+    body.upper = Vec3::Constant(0.7);
+    body.spacing = 0.1;
+    body.density = 1500.0;
+    ParticleSet& p = s.particles;
+    fill_box_lattice(p, body, 3);
+    std::mt19937 generator(11u);
+    std::uniform_real_distribution<double> value(-1.0, 1.0);
+    std::vector<char> frozen(static_cast<std::size_t>(p.size()));
+    for (Index i = 0; i < p.size(); ++i) {
+        p.body_id[i] = p.position[i].x() < 0.35 ? 0 : 1;
+        if (p.position[i].x() < 0.1) {
+            p.wall_id[i] = 0;
+            p.body_id[i] = 2;
+        }
+        frozen[i] = p.wall_id[i] >= 0 ? 1 : 0;
+        p.position[i] += 0.02 * Vec3(value(generator), value(generator), value(generator));
+        p.velocity[i] = Vec3(value(generator), value(generator), value(generator));
+        p.density[i] *= 1.0 + 0.05 * value(generator);
+        for (int c = 0; c < 6; ++c) {
+            p.stress[i][c] = 1e4 * value(generator);
+        }
+    }
+    s.neighbours.update(p.position, frozen, true);
+}
+
+// The vector lanes are meant to do the scalar rows' operations in their order (no fused
+// multiply-add, IEEE division and square root) and to add the terms in the list's order: the
+// velocity gradients, accelerations and heating rates must then be the same bits, not merely
+// close.
+TEST(PairLanes, SameBitsAsTheScalarRows) {
+    if (!pair_lanes_available()) {
+        GTEST_SKIP() << "no AVX2 on this processor: the pair passes run the scalar rows only";
+    }
+    const int threads_before = omp_get_max_threads();
+    for (const double fixed_speed : {0.0, 30.0}) {
+        Scene s;
+        fill(s);
+        ParticleSet& p = s.particles;
+        SphOptions options;
+        options.dimension = 3;
+        options.particle_spacing = 0.1;
+        options.viscosity = {1.0, 2.0, fixed_speed};
+        options.contact.stiffness = 1e6;
+        options.gravity = Vec3(0.0, 0.0, -9.81);
+        for (const bool halve : {false, true}) {
+            if (halve) {
+                s.neighbours.halve_pairs(continuum_keys(p));
+            }
+            for (const int threads : {1, 2}) {
+                omp_set_num_threads(threads);
+                ForceInputs inputs;
+                inputs.sound_speed.assign(static_cast<std::size_t>(p.size()), 0.0);
+                for (Index i = 0; i < p.size(); ++i) {
+                    inputs.sound_speed[i] = 50.0 + static_cast<double>(i % 7);
+                }
+                std::vector<Mat3> scalar_gradient;
+                compute_velocity_gradient(p, s.neighbours, s.kernel, false, scalar_gradient,
+                                          inputs.gradient_correction, nullptr, nullptr,
+                                          PairArithmetic::scalar);
+                std::vector<Mat3> gradient;
+                compute_velocity_gradient(p, s.neighbours, s.kernel, false, gradient,
+                                          inputs.gradient_correction);
+                for (Index i = 0; i < p.size(); ++i) {
+                    for (int k = 0; k < 9; ++k) {
+                        EXPECT_EQ(std::memcmp(gradient[i].data() + k, scalar_gradient[i].data() + k,
+                                              sizeof(double)),
+                                  0)
+                            << "particle " << i << " entry " << k;
+                    }
+                }
+                prepare_force_inputs(p, options.artificial_stress, inputs);
+                ASSERT_FALSE(inputs.pair_records.empty());
+                std::vector<double> heating;
+                compute_accelerations(p, s.neighbours, s.kernel, options, inputs, heating);
+                const std::vector<Vec3> lanes = p.acceleration;
+                const std::vector<double> lanes_heating = heating;
+                compute_accelerations(p, s.neighbours, s.kernel, options, inputs, heating, nullptr,
+                                      PairArithmetic::scalar);
+                double largest = 0.0;
+                for (Index i = 0; i < p.size(); ++i) {
+                    largest = std::max(largest, std::abs(heating[i]));
+                    for (int c = 0; c < 3; ++c) {
+                        EXPECT_EQ(std::memcmp(&lanes[i][c], &p.acceleration[i][c], sizeof(double)),
+                                  0)
+                            << "particle " << i << " component " << c << ": " << lanes[i][c]
+                            << " against " << p.acceleration[i][c];
+                    }
+                    EXPECT_EQ(std::memcmp(&lanes_heating[i], &heating[i], sizeof(double)), 0)
+                        << "particle " << i;
+                }
+                // The scene exercises the viscosity (and so the whole pair term).
+                EXPECT_GT(largest, 0.0);
+            }
+        }
+    }
+    omp_set_num_threads(threads_before);
+}
+
+} // namespace
+} // namespace grainload::sph
