@@ -196,10 +196,23 @@ template <class Shape, int D> struct ForceRow {
         for (std::size_t first = 0; first < list.size(); first += kLaneBatch) {
             const std::size_t end = std::min(list.size(), first + kLaneBatch);
             int count = 0;
+            int others = 0;
             for (std::size_t k = first; k < end; ++k) {
                 const std::int32_t j = list[k];
                 picked[count] = j;
-                count += key[j] == key_i && j > i ? 1 : 0;
+                const bool same = key[j] == key_i;
+                count += same && j > i ? 1 : 0;
+                others += same ? 0 : 1;
+            }
+            if (others == 0) { // no contact term comes between: the lanes add the terms
+                double own[4] = {a[0], a[1], a[2], heating};
+                if (count > 0) {
+                    continuum_lanes_added(records, i, picked, count, lanes, own, sums.acceleration,
+                                          sums.heating);
+                }
+                std::copy_n(own, 3, a);
+                heating = own[3];
+                continue;
             }
             if (count > 0) {
                 continuum_lanes(records, i, picked, count, lanes, terms);

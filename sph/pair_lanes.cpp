@@ -49,6 +49,19 @@ __attribute__((target("avx2"))) inline void load_block(const double* base, const
     r[3] = _mm256_unpackhi_pd(ac_high, bd_high);
 }
 
+/// Rows a, b, c, d of four doubles in, columns out: r[k] = (a[k], b[k], c[k], d[k]).
+__attribute__((target("avx2"))) inline void transpose(__m256d a, __m256d b, __m256d c, __m256d d,
+                                                      __m256d (&r)[4]) {
+    const __m256d ab_low = _mm256_unpacklo_pd(a, b);  // a0 b0 a2 b2
+    const __m256d ab_high = _mm256_unpackhi_pd(a, b); // a1 b1 a3 b3
+    const __m256d cd_low = _mm256_unpacklo_pd(c, d);
+    const __m256d cd_high = _mm256_unpackhi_pd(c, d);
+    r[0] = _mm256_permute2f128_pd(ab_low, cd_low, 0x20);
+    r[1] = _mm256_permute2f128_pd(ab_high, cd_high, 0x20);
+    r[2] = _mm256_permute2f128_pd(ab_low, cd_low, 0x31);
+    r[3] = _mm256_permute2f128_pd(ab_high, cd_high, 0x31);
+}
+
 __attribute__((target("avx2"))) inline __m256d select(__m256d mask, __m256d yes, __m256d no) {
     return _mm256_blendv_pd(no, yes, mask);
 }
@@ -61,94 +74,142 @@ __attribute__((target("avx2"))) inline __m256d dot3(__m256d a0, __m256d a1, __m2
     return _mm256_add_pd(sum, _mm256_mul_pd(a2, b2));
 }
 
-} // namespace
+/// A group's terms, lane p for pair p: m_j T g and m_j times the heating (own), m_i T g and
+/// m_i times the heating (other), as x, y, z, heating.
+struct GroupTerms {
+    __m256d own[4];
+    __m256d other[4];
+};
 
-__attribute__((target("avx2"))) void continuum_lanes(const PairRecord* records, Index i,
-                                                     const std::int32_t* j, int count,
-                                                     const LaneSettings& s, LaneTerms& out) {
-    const auto* base = reinterpret_cast<const double*>(records);
-    const PairRecord& ri = records[i];
+/// The terms of the pairs (i, lane_j[0..3]): every operation one of ForceRow::continuum_pair's.
+__attribute__((target("avx2"))) inline void group_terms(const double* base, const PairRecord& ri,
+                                                        const std::int32_t* lane_j,
+                                                        const LaneSettings& s, GroupTerms& out) {
     const __m256d zero = _mm256_setzero_pd();
     const __m256d support_squared = _mm256_set1_pd(s.support_squared);
     const __m256d mi = _mm256_set1_pd(ri.mass);
     const bool fixed_speed = s.viscosity_speed > 0.0;
-    // The last group repeats the last pair in its spare lanes; their terms are never read.
-    std::int32_t lane_j[kLaneBatch + 3];
+    __m256d stress[4], stress_mass[4], place[4], motion[4];
+    load_block(base, lane_j, 0, stress);      // xx yy zz xy
+    load_block(base, lane_j, 1, stress_mass); // xz yz m rho
+    load_block(base, lane_j, 2, place);       // x y z vx
+    load_block(base, lane_j, 3, motion);      // vy vz c -
+    const __m256d d0 = _mm256_sub_pd(_mm256_set1_pd(ri.position[0]), place[0]);
+    const __m256d d1 = _mm256_sub_pd(_mm256_set1_pd(ri.position[1]), place[1]);
+    const __m256d d2 = _mm256_sub_pd(_mm256_set1_pd(ri.position[2]), place[2]);
+    const __m256d r2 = dot3(d0, d1, d2, d0, d1, d2);
+    const __m256d inside = _mm256_and_pd(_mm256_cmp_pd(r2, support_squared, _CMP_LT_OQ),
+                                         _mm256_cmp_pd(r2, zero, _CMP_NEQ_UQ));
+    // W'(r)/r, evaluated at the support for the pairs outside it (then not added).
+    const __m256d r = _mm256_sqrt_pd(select(inside, r2, support_squared));
+    const __m256d q = _mm256_mul_pd(r, _mm256_set1_pd(s.inverse_h));
+    const __m256d t = _mm256_sub_pd(_mm256_set1_pd(2.0), q);
+    const __m256d inner = _mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(-2.0), q),
+                                        _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(1.5), q), q));
+    const __m256d outer = _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(-0.5), t), t);
+    __m256d shape = select(_mm256_cmp_pd(q, _mm256_set1_pd(1.0), _CMP_LT_OQ), inner, outer);
+    shape = select(_mm256_cmp_pd(q, _mm256_set1_pd(2.0), _CMP_LT_OQ), shape, zero);
+    const __m256d f = _mm256_div_pd(_mm256_mul_pd(_mm256_set1_pd(s.alpha_over_h), shape), r);
+    const __m256d g0 = _mm256_mul_pd(f, d0);
+    const __m256d g1 = _mm256_mul_pd(f, d1);
+    const __m256d g2 = _mm256_mul_pd(f, d2);
+    // sigma_i/rho_i^2 + sigma_j/rho_j^2, the six entries.
+    __m256d txx = _mm256_add_pd(_mm256_set1_pd(ri.stress[0]), stress[0]);
+    __m256d tyy = _mm256_add_pd(_mm256_set1_pd(ri.stress[1]), stress[1]);
+    __m256d tzz = _mm256_add_pd(_mm256_set1_pd(ri.stress[2]), stress[2]);
+    const __m256d txy = _mm256_add_pd(_mm256_set1_pd(ri.stress[3]), stress[3]);
+    const __m256d txz = _mm256_add_pd(_mm256_set1_pd(ri.stress[4]), stress_mass[0]);
+    const __m256d tyz = _mm256_add_pd(_mm256_set1_pd(ri.stress[5]), stress_mass[1]);
+    const __m256d v0 = _mm256_sub_pd(_mm256_set1_pd(ri.velocity[0]), place[3]);
+    const __m256d v1 = _mm256_sub_pd(_mm256_set1_pd(ri.velocity[1]), motion[0]);
+    const __m256d v2 = _mm256_sub_pd(_mm256_set1_pd(ri.velocity[2]), motion[1]);
+    const __m256d approach = dot3(v0, v1, v2, d0, d1, d2);
+    const __m256d mj = stress_mass[2];
+    // Monaghan's viscosity, as continuum_pair.
+    const __m256d mu = _mm256_div_pd(_mm256_mul_pd(_mm256_set1_pd(s.h), approach),
+                                     _mm256_add_pd(r2, _mm256_set1_pd(s.h2_softening)));
+    const __m256d half = _mm256_set1_pd(0.5);
+    const __m256d c =
+        fixed_speed ? _mm256_set1_pd(s.viscosity_speed)
+                    : _mm256_mul_pd(half, _mm256_add_pd(_mm256_set1_pd(ri.sound_speed), motion[2]));
+    const __m256d rho =
+        _mm256_mul_pd(half, _mm256_add_pd(_mm256_set1_pd(ri.density), stress_mass[3]));
+    const __m256d linear = _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(-s.alpha), c), mu);
+    const __m256d quadratic = _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(s.beta), mu), mu);
+    const __m256d pi_all = _mm256_div_pd(_mm256_add_pd(linear, quadratic), rho);
+    const __m256d power = dot3(v0, v1, v2, g0, g1, g2);
+    const __m256d viscous = _mm256_cmp_pd(approach, zero, _CMP_LT_OQ);
+    const __m256d pi_ij = select(viscous, pi_all, zero);
+    const __m256d heat = select(_mm256_and_pd(viscous, inside),
+                                _mm256_mul_pd(_mm256_mul_pd(half, pi_all), power), zero);
+    txx = _mm256_sub_pd(txx, pi_ij);
+    tyy = _mm256_sub_pd(tyy, pi_ij);
+    tzz = _mm256_sub_pd(tzz, pi_ij);
+    const __m256d tg[3] = {select(inside, dot3(txx, txy, txz, g0, g1, g2), zero),
+                           select(inside, dot3(txy, tyy, tyz, g0, g1, g2), zero),
+                           select(inside, dot3(txz, tyz, tzz, g0, g1, g2), zero)};
+    for (int c3 = 0; c3 < 3; ++c3) {
+        out.own[c3] = _mm256_mul_pd(mj, tg[c3]);
+        out.other[c3] = _mm256_mul_pd(mi, tg[c3]);
+    }
+    out.own[3] = _mm256_mul_pd(mj, heat);
+    out.other[3] = _mm256_mul_pd(mi, heat);
+}
+
+/// j[0..count) and the last of them repeated to a whole number of groups of four (spare lanes
+/// compute terms that are never read).
+inline void pad_lanes(const std::int32_t* j, int count, std::int32_t (&lane_j)[kLaneBatch + 3]) {
     for (int p = 0; p < count; ++p) {
         lane_j[p] = j[p];
     }
     for (int p = count; p < ((count + 3) & ~3); ++p) {
         lane_j[p] = j[count - 1];
     }
+}
+
+} // namespace
+
+__attribute__((target("avx2"))) void continuum_lanes(const PairRecord* records, Index i,
+                                                     const std::int32_t* j, int count,
+                                                     const LaneSettings& s, LaneTerms& out) {
+    const auto* base = reinterpret_cast<const double*>(records);
+    std::int32_t lane_j[kLaneBatch + 3];
+    pad_lanes(j, count, lane_j);
     for (int g = 0; g < count; g += 4) {
-        __m256d stress[4], stress_mass[4], place[4], motion[4];
-        load_block(base, lane_j + g, 0, stress);      // xx yy zz xy
-        load_block(base, lane_j + g, 1, stress_mass); // xz yz m rho
-        load_block(base, lane_j + g, 2, place);       // x y z vx
-        load_block(base, lane_j + g, 3, motion);      // vy vz c -
-        const __m256d d0 = _mm256_sub_pd(_mm256_set1_pd(ri.position[0]), place[0]);
-        const __m256d d1 = _mm256_sub_pd(_mm256_set1_pd(ri.position[1]), place[1]);
-        const __m256d d2 = _mm256_sub_pd(_mm256_set1_pd(ri.position[2]), place[2]);
-        const __m256d r2 = dot3(d0, d1, d2, d0, d1, d2);
-        const __m256d inside = _mm256_and_pd(_mm256_cmp_pd(r2, support_squared, _CMP_LT_OQ),
-                                             _mm256_cmp_pd(r2, zero, _CMP_NEQ_UQ));
-        // W'(r)/r, evaluated at the support for the pairs outside it (then not added).
-        const __m256d r = _mm256_sqrt_pd(select(inside, r2, support_squared));
-        const __m256d q = _mm256_mul_pd(r, _mm256_set1_pd(s.inverse_h));
-        const __m256d t = _mm256_sub_pd(_mm256_set1_pd(2.0), q);
-        const __m256d inner =
-            _mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(-2.0), q),
-                          _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(1.5), q), q));
-        const __m256d outer = _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(-0.5), t), t);
-        __m256d shape = select(_mm256_cmp_pd(q, _mm256_set1_pd(1.0), _CMP_LT_OQ), inner, outer);
-        shape = select(_mm256_cmp_pd(q, _mm256_set1_pd(2.0), _CMP_LT_OQ), shape, zero);
-        const __m256d f = _mm256_div_pd(_mm256_mul_pd(_mm256_set1_pd(s.alpha_over_h), shape), r);
-        const __m256d g0 = _mm256_mul_pd(f, d0);
-        const __m256d g1 = _mm256_mul_pd(f, d1);
-        const __m256d g2 = _mm256_mul_pd(f, d2);
-        // sigma_i/rho_i^2 + sigma_j/rho_j^2, the six entries.
-        __m256d txx = _mm256_add_pd(_mm256_set1_pd(ri.stress[0]), stress[0]);
-        __m256d tyy = _mm256_add_pd(_mm256_set1_pd(ri.stress[1]), stress[1]);
-        __m256d tzz = _mm256_add_pd(_mm256_set1_pd(ri.stress[2]), stress[2]);
-        const __m256d txy = _mm256_add_pd(_mm256_set1_pd(ri.stress[3]), stress[3]);
-        const __m256d txz = _mm256_add_pd(_mm256_set1_pd(ri.stress[4]), stress_mass[0]);
-        const __m256d tyz = _mm256_add_pd(_mm256_set1_pd(ri.stress[5]), stress_mass[1]);
-        const __m256d v0 = _mm256_sub_pd(_mm256_set1_pd(ri.velocity[0]), place[3]);
-        const __m256d v1 = _mm256_sub_pd(_mm256_set1_pd(ri.velocity[1]), motion[0]);
-        const __m256d v2 = _mm256_sub_pd(_mm256_set1_pd(ri.velocity[2]), motion[1]);
-        const __m256d approach = dot3(v0, v1, v2, d0, d1, d2);
-        const __m256d mj = stress_mass[2];
-        // Monaghan's viscosity, as continuum_pair.
-        const __m256d mu = _mm256_div_pd(_mm256_mul_pd(_mm256_set1_pd(s.h), approach),
-                                         _mm256_add_pd(r2, _mm256_set1_pd(s.h2_softening)));
-        const __m256d half = _mm256_set1_pd(0.5);
-        const __m256d c =
-            fixed_speed
-                ? _mm256_set1_pd(s.viscosity_speed)
-                : _mm256_mul_pd(half, _mm256_add_pd(_mm256_set1_pd(ri.sound_speed), motion[2]));
-        const __m256d rho =
-            _mm256_mul_pd(half, _mm256_add_pd(_mm256_set1_pd(ri.density), stress_mass[3]));
-        const __m256d linear = _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(-s.alpha), c), mu);
-        const __m256d quadratic = _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(s.beta), mu), mu);
-        const __m256d pi_all = _mm256_div_pd(_mm256_add_pd(linear, quadratic), rho);
-        const __m256d power = dot3(v0, v1, v2, g0, g1, g2);
-        const __m256d viscous = _mm256_cmp_pd(approach, zero, _CMP_LT_OQ);
-        const __m256d pi_ij = select(viscous, pi_all, zero);
-        const __m256d heat = select(_mm256_and_pd(viscous, inside),
-                                    _mm256_mul_pd(_mm256_mul_pd(half, pi_all), power), zero);
-        txx = _mm256_sub_pd(txx, pi_ij);
-        tyy = _mm256_sub_pd(tyy, pi_ij);
-        tzz = _mm256_sub_pd(tzz, pi_ij);
-        const __m256d tg[3] = {select(inside, dot3(txx, txy, txz, g0, g1, g2), zero),
-                               select(inside, dot3(txy, tyy, tyz, g0, g1, g2), zero),
-                               select(inside, dot3(txz, tyz, tzz, g0, g1, g2), zero)};
-        for (int c3 = 0; c3 < 3; ++c3) {
-            _mm256_store_pd(out.term[c3] + g, _mm256_mul_pd(mj, tg[c3]));
-            _mm256_store_pd(out.term[3 + c3] + g, _mm256_mul_pd(mi, tg[c3]));
+        GroupTerms terms;
+        group_terms(base, records[i], lane_j + g, s, terms);
+        for (int c = 0; c < 4; ++c) {
+            _mm256_store_pd(out.term[c == 3 ? 6 : c] + g, terms.own[c]);
+            _mm256_store_pd(out.term[c == 3 ? 7 : 3 + c] + g, terms.other[c]);
         }
-        _mm256_store_pd(out.term[6] + g, _mm256_mul_pd(mj, heat));
-        _mm256_store_pd(out.term[7] + g, _mm256_mul_pd(mi, heat));
     }
+}
+
+__attribute__((target("avx2"))) void continuum_lanes_added(const PairRecord* records, Index i,
+                                                           const std::int32_t* j, int count,
+                                                           const LaneSettings& s, double (&own)[4],
+                                                           double* acceleration, double* heating) {
+    const auto* base = reinterpret_cast<const double*>(records);
+    std::int32_t lane_j[kLaneBatch + 3];
+    pad_lanes(j, count, lane_j);
+    __m256d sum = _mm256_loadu_pd(own); // x, y, z, heating: each its own scalar sum in order
+    for (int g = 0; g < count; g += 4) {
+        GroupTerms terms;
+        group_terms(base, records[i], lane_j + g, s, terms);
+        __m256d mine[4], theirs[4]; // per pair: x, y, z, heating
+        transpose(terms.own[0], terms.own[1], terms.own[2], terms.own[3], mine);
+        transpose(terms.other[0], terms.other[1], terms.other[2], terms.other[3], theirs);
+        const int pairs = count - g < 4 ? count - g : 4;
+        for (int p = 0; p < pairs; ++p) {
+            sum = _mm256_add_pd(sum, mine[p]);
+            double* aj = acceleration + 3 * lane_j[g + p];
+            _mm_storeu_pd(aj, _mm_sub_pd(_mm_loadu_pd(aj), _mm256_castpd256_pd128(theirs[p])));
+            const __m128d z_heat = _mm256_extractf128_pd(theirs[p], 1);
+            aj[2] -= _mm_cvtsd_f64(z_heat);
+            heating[lane_j[g + p]] += _mm_cvtsd_f64(_mm_unpackhi_pd(z_heat, z_heat));
+        }
+    }
+    _mm256_storeu_pd(own, sum);
 }
 
 __attribute__((target("avx2"))) void gradient_factor_lanes(const double* r2, int count,
@@ -231,6 +292,11 @@ bool pair_lanes_available() {
 void continuum_lanes(const PairRecord*, Index, const std::int32_t*, int, const LaneSettings&,
                      LaneTerms&) {
     std::abort(); // unreachable: pair_lanes_available() is false
+}
+
+void continuum_lanes_added(const PairRecord*, Index, const std::int32_t*, int, const LaneSettings&,
+                           double (&)[4], double*, double*) {
+    std::abort();
 }
 
 void gradient_factor_lanes(const double*, int, double, double, double*) {

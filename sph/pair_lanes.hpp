@@ -48,6 +48,14 @@ struct LaneTerms {
     alignas(32) double term[8][kLaneBatch];
 };
 
+/// As continuum_lanes, with the terms added in the pairs' order: m_j T g and m_j times the
+/// heating to own (x, y, z, heating of i); m_i T g taken from acceleration + 3 j[p], m_i times
+/// the heating added to heating[j[p]]. For a batch without entries of other bodies, whose
+/// contact terms would come between.
+void continuum_lanes_added(const PairRecord* records, Index i, const std::int32_t* j, int count,
+                           const LaneSettings& settings, double (&own)[4], double* acceleration,
+                           double* heating);
+
 /// Whether this processor runs the lanes (AVX2, checked once).
 bool pair_lanes_available();
 
