@@ -125,21 +125,28 @@ int main(int argc, char** argv) {
                                                             solver.materials().end());
     std::vector<Mat3> gradient;
     std::vector<double> heating;
-    // As SphSolver: plane strain keeps the kinematic pass's kernel gradients for the forces.
-    std::vector<double>* factors = options.dimension == 2 ? &inputs.entry_factor : nullptr;
+    // As SphSolver: plane strain keeps the kinematic pass's kernel gradients for the forces
+    // where the force pass's scalar rows run (the lanes evaluate them themselves).
+    std::vector<double>* factors =
+        options.dimension == 2 && !sph::force_pass_uses_lanes(kernel, options)
+            ? &inputs.entry_factor
+            : nullptr;
     auto kinematics = [&] {
         sph::compute_velocity_gradient(p, list, kernel, options.kernel_gradient_correction,
                                        gradient, inputs.gradient_correction, factors, &scratch);
     };
     kinematics();
     const double t_gradient = best_seconds(kinematics, reps);
-    // The kinematic pass again with the scalar row everywhere (rates.hpp PairArithmetic).
+    // The kinematic pass again with the scalar row everywhere (rates.hpp PairArithmetic),
+    // storing the kernel gradients in plane strain for the scalar force row below, as the
+    // solver does where the lanes do not run.
     const std::vector<Mat3> lane_gradient = gradient;
+    std::vector<double>* scalar_factors = options.dimension == 2 ? &inputs.entry_factor : nullptr;
     const double t_scalar_gradient = best_seconds(
         [&] {
             sph::compute_velocity_gradient(p, list, kernel, options.kernel_gradient_correction,
-                                           gradient, inputs.gradient_correction, factors, &scratch,
-                                           sph::PairArithmetic::scalar);
+                                           gradient, inputs.gradient_correction, scalar_factors,
+                                           &scratch, sph::PairArithmetic::scalar);
         },
         reps);
     const bool same_gradient = std::memcmp(lane_gradient.data(), gradient.data(),

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <type_traits>
 
 // The force pass of rates.hpp (compute_accelerations): each same-body pair once, from the row
 // of its lower index (sph/pair_parts.hpp); contact pairs from both rows.
@@ -207,15 +206,15 @@ template <class Shape, int D> struct ForceRow {
             if (others == 0) { // no contact term comes between: the lanes add the terms
                 double own[4] = {a[0], a[1], a[2], heating};
                 if (count > 0) {
-                    continuum_lanes_added(records, i, picked, count, lanes, own, sums.acceleration,
-                                          sums.heating);
+                    continuum_lanes_added(D, records, i, picked, count, lanes, own,
+                                          sums.acceleration, sums.heating);
                 }
                 std::copy_n(own, 3, a);
                 heating = own[3];
                 continue;
             }
             if (count > 0) {
-                continuum_lanes(records, i, picked, count, lanes, terms);
+                continuum_lanes(D, records, i, picked, count, lanes, terms);
             }
             int pair = 0;
             for (std::size_t k = first; k < end; ++k) {
@@ -292,34 +291,35 @@ template <class Shape, int D> struct ForceRow {
     }
 };
 
-/// Whether the pass's same-body pairs go to the vector lanes: the production form (3D cubic
-/// spline, stress and viscosity without artificial stress or gradient correction, no stored
-/// kernel gradients) on a processor with AVX2, unless the caller asks for the scalar row.
-template <class Shape, int D, class Row>
-bool use_lanes(const ForceSettings& s, const Row& row, PairArithmetic arithmetic) {
-    return arithmetic == PairArithmetic::lanes_where_available && D == 3 &&
-           std::is_same_v<Shape, CubicSplineKernel> && s.stress_pairs && s.use_viscosity &&
-           !s.use_artificial_stress && row.records != nullptr && row.entry_factor == nullptr &&
+} // namespace
+
+bool force_pass_uses_lanes(const SmoothingKernel& kernel, const SphOptions& options,
+                           PairArithmetic arithmetic) {
+    const ForceSettings s(kernel, options);
+    return arithmetic == PairArithmetic::lanes_where_available &&
+           kernel.type() == KernelType::cubic_spline && s.stress_pairs && s.use_viscosity &&
+           !s.use_artificial_stress && !options.kernel_gradient_correction &&
            pair_lanes_available();
 }
-
-} // namespace
 
 void compute_accelerations(ParticleSet& p, const NeighbourList& neighbours,
                            const SmoothingKernel& kernel, const SphOptions& options,
                            const ForceInputs& in, std::vector<double>& heating_rate,
                            PairScratch* scratch, PairArithmetic arithmetic) {
     const Index n = p.size();
-    heating_rate.assign(static_cast<std::size_t>(n), 0.0);
+    heating_rate.resize(static_cast<std::size_t>(n));
     if (n == 0) {
         return;
     }
     const ForceSettings settings(kernel, options);
+    const bool use_lanes = force_pass_uses_lanes(kernel, options, arithmetic);
     const std::vector<int> key = continuum_keys(p);
-    // The first part sums into the particles' accelerations, which start from gravity.
+    // The first part sums into the particles' accelerations, which start from gravity, and
+    // the heating rates, which start from zero (set on all threads).
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
         p.acceleration[i] = p.wall_id[i] >= 0 ? Vec3::Zero() : settings.gravity;
+        heating_rate[i] = 0.0;
     }
     const int parts = pass_parts();
     const std::vector<Index> bounds = balanced_rows(neighbours, n, parts);
@@ -347,8 +347,7 @@ void compute_accelerations(ParticleSet& p, const NeighbourList& neighbours,
                 key,
                 in.entry_factor.empty() ? nullptr : in.entry_factor.data(),
                 in.pair_records.empty() ? nullptr : in.pair_records.data()};
-            constexpr int kDimension = decltype(dimension)::value;
-            if (use_lanes<Shape, kDimension>(settings, row, arithmetic)) {
+            if (use_lanes && row.records != nullptr) {
                 const LaneSettings lanes{settings.support_squared,
                                          row.w.inverse_h,
                                          row.w.alpha_over_h,

@@ -67,21 +67,26 @@ __attribute__((target("avx2"))) inline __m256d select(__m256d mask, __m256d yes,
 }
 
 /// ((0 + a0 b0) + a1 b1) + a2 b2, as the scalar row's accumulating loops.
-__attribute__((target("avx2"))) inline __m256d dot3(__m256d a0, __m256d a1, __m256d a2, __m256d b0,
-                                                    __m256d b1, __m256d b2) {
-    __m256d sum = _mm256_add_pd(_mm256_setzero_pd(), _mm256_mul_pd(a0, b0));
-    sum = _mm256_add_pd(sum, _mm256_mul_pd(a1, b1));
-    return _mm256_add_pd(sum, _mm256_mul_pd(a2, b2));
+/// ((0 + a0 b0) + a1 b1) [+ a2 b2], as the scalar row's accumulating loops over D components.
+template <int D>
+__attribute__((target("avx2"))) inline __m256d dot(const __m256d (&a)[D], const __m256d (&b)[D]) {
+    __m256d sum = _mm256_setzero_pd();
+    for (int c = 0; c < D; ++c) {
+        sum = _mm256_add_pd(sum, _mm256_mul_pd(a[c], b[c]));
+    }
+    return sum;
 }
 
 /// A group's terms, lane p for pair p: m_j T g and m_j times the heating (own), m_i T g and
-/// m_i times the heating (other), as x, y, z, heating.
+/// m_i times the heating (other), as x, y, z, heating (plane strain: z exactly 0).
 struct GroupTerms {
     __m256d own[4];
     __m256d other[4];
 };
 
-/// The terms of the pairs (i, lane_j[0..3]): every operation one of ForceRow::continuum_pair's.
+/// The terms of the pairs (i, lane_j[0..3]) in D = 2 or 3 components (plane strain leaves out
+/// the z terms, as the scalar row does): every operation one of ForceRow::continuum_pair's.
+template <int D>
 __attribute__((target("avx2"))) inline void group_terms(const double* base, const PairRecord& ri,
                                                         const std::int32_t* lane_j,
                                                         const LaneSettings& s, GroupTerms& out) {
@@ -94,10 +99,13 @@ __attribute__((target("avx2"))) inline void group_terms(const double* base, cons
     load_block(base, lane_j, 1, stress_mass); // xz yz m rho
     load_block(base, lane_j, 2, place);       // x y z vx
     load_block(base, lane_j, 3, motion);      // vy vz c -
-    const __m256d d0 = _mm256_sub_pd(_mm256_set1_pd(ri.position[0]), place[0]);
-    const __m256d d1 = _mm256_sub_pd(_mm256_set1_pd(ri.position[1]), place[1]);
-    const __m256d d2 = _mm256_sub_pd(_mm256_set1_pd(ri.position[2]), place[2]);
-    const __m256d r2 = dot3(d0, d1, d2, d0, d1, d2);
+    const __m256d velocity[3] = {place[3], motion[0], motion[1]};
+    __m256d d[D], v[D], g[D];
+    for (int c = 0; c < D; ++c) {
+        d[c] = _mm256_sub_pd(_mm256_set1_pd(ri.position[c]), place[c]);
+        v[c] = _mm256_sub_pd(_mm256_set1_pd(ri.velocity[c]), velocity[c]);
+    }
+    const __m256d r2 = dot<D>(d, d);
     const __m256d inside = _mm256_and_pd(_mm256_cmp_pd(r2, support_squared, _CMP_LT_OQ),
                                          _mm256_cmp_pd(r2, zero, _CMP_NEQ_UQ));
     // W'(r)/r, evaluated at the support for the pairs outside it (then not added).
@@ -110,20 +118,18 @@ __attribute__((target("avx2"))) inline void group_terms(const double* base, cons
     __m256d shape = select(_mm256_cmp_pd(q, _mm256_set1_pd(1.0), _CMP_LT_OQ), inner, outer);
     shape = select(_mm256_cmp_pd(q, _mm256_set1_pd(2.0), _CMP_LT_OQ), shape, zero);
     const __m256d f = _mm256_div_pd(_mm256_mul_pd(_mm256_set1_pd(s.alpha_over_h), shape), r);
-    const __m256d g0 = _mm256_mul_pd(f, d0);
-    const __m256d g1 = _mm256_mul_pd(f, d1);
-    const __m256d g2 = _mm256_mul_pd(f, d2);
-    // sigma_i/rho_i^2 + sigma_j/rho_j^2, the six entries.
-    __m256d txx = _mm256_add_pd(_mm256_set1_pd(ri.stress[0]), stress[0]);
-    __m256d tyy = _mm256_add_pd(_mm256_set1_pd(ri.stress[1]), stress[1]);
-    __m256d tzz = _mm256_add_pd(_mm256_set1_pd(ri.stress[2]), stress[2]);
-    const __m256d txy = _mm256_add_pd(_mm256_set1_pd(ri.stress[3]), stress[3]);
-    const __m256d txz = _mm256_add_pd(_mm256_set1_pd(ri.stress[4]), stress_mass[0]);
-    const __m256d tyz = _mm256_add_pd(_mm256_set1_pd(ri.stress[5]), stress_mass[1]);
-    const __m256d v0 = _mm256_sub_pd(_mm256_set1_pd(ri.velocity[0]), place[3]);
-    const __m256d v1 = _mm256_sub_pd(_mm256_set1_pd(ri.velocity[1]), motion[0]);
-    const __m256d v2 = _mm256_sub_pd(_mm256_set1_pd(ri.velocity[2]), motion[1]);
-    const __m256d approach = dot3(v0, v1, v2, d0, d1, d2);
+    for (int c = 0; c < D; ++c) {
+        g[c] = _mm256_mul_pd(f, d[c]);
+    }
+    // sigma_i/rho_i^2 + sigma_j/rho_j^2: entries xx yy zz xy xz yz of the records.
+    const __m256d entry_j[6] = {stress[0], stress[1],      stress[2],
+                                stress[3], stress_mass[0], stress_mass[1]};
+    constexpr int kEntry[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
+    __m256d entry[6];
+    for (int e = 0; e < 6; ++e) {
+        entry[e] = _mm256_add_pd(_mm256_set1_pd(ri.stress[e]), entry_j[e]);
+    }
+    const __m256d approach = dot<D>(v, d);
     const __m256d mj = stress_mass[2];
     // Monaghan's viscosity, as continuum_pair.
     const __m256d mu = _mm256_div_pd(_mm256_mul_pd(_mm256_set1_pd(s.h), approach),
@@ -137,20 +143,25 @@ __attribute__((target("avx2"))) inline void group_terms(const double* base, cons
     const __m256d linear = _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(-s.alpha), c), mu);
     const __m256d quadratic = _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(s.beta), mu), mu);
     const __m256d pi_all = _mm256_div_pd(_mm256_add_pd(linear, quadratic), rho);
-    const __m256d power = dot3(v0, v1, v2, g0, g1, g2);
+    const __m256d power = dot<D>(v, g);
     const __m256d viscous = _mm256_cmp_pd(approach, zero, _CMP_LT_OQ);
     const __m256d pi_ij = select(viscous, pi_all, zero);
     const __m256d heat = select(_mm256_and_pd(viscous, inside),
                                 _mm256_mul_pd(_mm256_mul_pd(half, pi_all), power), zero);
-    txx = _mm256_sub_pd(txx, pi_ij);
-    tyy = _mm256_sub_pd(tyy, pi_ij);
-    tzz = _mm256_sub_pd(tzz, pi_ij);
-    const __m256d tg[3] = {select(inside, dot3(txx, txy, txz, g0, g1, g2), zero),
-                           select(inside, dot3(txy, tyy, tyz, g0, g1, g2), zero),
-                           select(inside, dot3(txz, tyz, tzz, g0, g1, g2), zero)};
-    for (int c3 = 0; c3 < 3; ++c3) {
-        out.own[c3] = _mm256_mul_pd(mj, tg[c3]);
-        out.other[c3] = _mm256_mul_pd(mi, tg[c3]);
+    for (int k = 0; k < D; ++k) {
+        entry[k] = _mm256_sub_pd(entry[k], pi_ij);
+    }
+    for (int row = 0; row < 3; ++row) {
+        __m256d tg = zero; // plane strain: the z row is left out, an exact 0
+        if (row < D) {
+            __m256d t_row[D];
+            for (int col = 0; col < D; ++col) {
+                t_row[col] = entry[kEntry[row][col]];
+            }
+            tg = select(inside, dot<D>(t_row, g), zero);
+        }
+        out.own[row] = row < D ? _mm256_mul_pd(mj, tg) : zero;
+        out.other[row] = row < D ? _mm256_mul_pd(mi, tg) : zero;
     }
     out.own[3] = _mm256_mul_pd(mj, heat);
     out.other[3] = _mm256_mul_pd(mi, heat);
@@ -167,17 +178,16 @@ inline void pad_lanes(const std::int32_t* j, int count, std::int32_t (&lane_j)[k
     }
 }
 
-} // namespace
-
-__attribute__((target("avx2"))) void continuum_lanes(const PairRecord* records, Index i,
-                                                     const std::int32_t* j, int count,
-                                                     const LaneSettings& s, LaneTerms& out) {
+template <int D>
+__attribute__((target("avx2"))) void terms_stored(const PairRecord* records, Index i,
+                                                  const std::int32_t* j, int count,
+                                                  const LaneSettings& s, LaneTerms& out) {
     const auto* base = reinterpret_cast<const double*>(records);
     std::int32_t lane_j[kLaneBatch + 3];
     pad_lanes(j, count, lane_j);
     for (int g = 0; g < count; g += 4) {
         GroupTerms terms;
-        group_terms(base, records[i], lane_j + g, s, terms);
+        group_terms<D>(base, records[i], lane_j + g, s, terms);
         for (int c = 0; c < 4; ++c) {
             _mm256_store_pd(out.term[c == 3 ? 6 : c] + g, terms.own[c]);
             _mm256_store_pd(out.term[c == 3 ? 7 : 3 + c] + g, terms.other[c]);
@@ -185,17 +195,17 @@ __attribute__((target("avx2"))) void continuum_lanes(const PairRecord* records, 
     }
 }
 
-__attribute__((target("avx2"))) void continuum_lanes_added(const PairRecord* records, Index i,
-                                                           const std::int32_t* j, int count,
-                                                           const LaneSettings& s, double (&own)[4],
-                                                           double* acceleration, double* heating) {
+template <int D>
+__attribute__((target("avx2"))) void
+terms_added(const PairRecord* records, Index i, const std::int32_t* j, int count,
+            const LaneSettings& s, double (&own)[4], double* acceleration, double* heating) {
     const auto* base = reinterpret_cast<const double*>(records);
     std::int32_t lane_j[kLaneBatch + 3];
     pad_lanes(j, count, lane_j);
     __m256d sum = _mm256_loadu_pd(own); // x, y, z, heating: each its own scalar sum in order
     for (int g = 0; g < count; g += 4) {
         GroupTerms terms;
-        group_terms(base, records[i], lane_j + g, s, terms);
+        group_terms<D>(base, records[i], lane_j + g, s, terms);
         __m256d mine[4], theirs[4]; // per pair: x, y, z, heating
         transpose(terms.own[0], terms.own[1], terms.own[2], terms.own[3], mine);
         transpose(terms.other[0], terms.other[1], terms.other[2], terms.other[3], theirs);
@@ -210,6 +220,27 @@ __attribute__((target("avx2"))) void continuum_lanes_added(const PairRecord* rec
         }
     }
     _mm256_storeu_pd(own, sum);
+}
+
+} // namespace
+
+void continuum_lanes(int dimension, const PairRecord* records, Index i, const std::int32_t* j,
+                     int count, const LaneSettings& settings, LaneTerms& out) {
+    if (dimension == 2) {
+        terms_stored<2>(records, i, j, count, settings, out);
+    } else {
+        terms_stored<3>(records, i, j, count, settings, out);
+    }
+}
+
+void continuum_lanes_added(int dimension, const PairRecord* records, Index i, const std::int32_t* j,
+                           int count, const LaneSettings& settings, double (&own)[4],
+                           double* acceleration, double* heating) {
+    if (dimension == 2) {
+        terms_added<2>(records, i, j, count, settings, own, acceleration, heating);
+    } else {
+        terms_added<3>(records, i, j, count, settings, own, acceleration, heating);
+    }
 }
 
 __attribute__((target("avx2"))) void gradient_factor_lanes(const double* r2, int count,
@@ -289,7 +320,7 @@ bool pair_lanes_available() {
     return false;
 }
 
-void continuum_lanes(const PairRecord*, Index, const std::int32_t*, int, const LaneSettings&,
+void continuum_lanes(int, const PairRecord*, Index, const std::int32_t*, int, const LaneSettings&,
                      LaneTerms&) {
     std::abort(); // unreachable: pair_lanes_available() is false
 }

@@ -52,9 +52,9 @@ struct LaneTerms {
 /// heating to own (x, y, z, heating of i); m_i T g taken from acceleration + 3 j[p], m_i times
 /// the heating added to heating[j[p]]. For a batch without entries of other bodies, whose
 /// contact terms would come between.
-void continuum_lanes_added(const PairRecord* records, Index i, const std::int32_t* j, int count,
-                           const LaneSettings& settings, double (&own)[4], double* acceleration,
-                           double* heating);
+void continuum_lanes_added(int dimension, const PairRecord* records, Index i, const std::int32_t* j,
+                           int count, const LaneSettings& settings, double (&own)[4],
+                           double* acceleration, double* heating);
 
 /// Whether this processor runs the lanes (AVX2, checked once).
 bool pair_lanes_available();
@@ -73,9 +73,10 @@ void add_gradient_pairs(const double* velocity, const double* mass, Index i, con
                         int count, double* l, double (&acc)[9]);
 
 /// The terms of the pairs (i, j[p]), p < count <= kLaneBatch, of one body: stress
-/// sigma_i/rho_i^2 + sigma_j/rho_j^2 and Monaghan's viscosity, cubic spline in 3D. Requires
+/// sigma_i/rho_i^2 + sigma_j/rho_j^2 and Monaghan's viscosity, cubic spline, in `dimension` 3
+/// or 2 (plane strain: the z terms left out, as the scalar row leaves them). Requires
 /// pair_lanes_available().
-void continuum_lanes(const PairRecord* records, Index i, const std::int32_t* j, int count,
-                     const LaneSettings& settings, LaneTerms& out);
+void continuum_lanes(int dimension, const PairRecord* records, Index i, const std::int32_t* j,
+                     int count, const LaneSettings& settings, LaneTerms& out);
 
 } // namespace grainload::sph

@@ -86,6 +86,13 @@ struct ForceInputs {
 void prepare_force_inputs(const ParticleSet& particles, const ArtificialStress& artificial,
                           ForceInputs& inputs);
 
+/// Whether compute_accelerations does the same-body pairs in vector lanes (pair_lanes.hpp): the
+/// cubic spline with stress and viscosity, without artificial stress or gradient correction
+/// (the production form, 3D or plane strain), on a processor with AVX2, unless `arithmetic`
+/// asks for the scalar rows. Its kernel gradients then need not be stored by the kinematic pass.
+bool force_pass_uses_lanes(const SmoothingKernel& kernel, const SphOptions& options,
+                           PairArithmetic arithmetic = PairArithmetic::lanes_where_available);
+
 /// Dynamic pass: acceleration of every particle and the viscous heating rate.
 /// Same-body pairs: momentum, thesis eq. (4.5.4.13) for tension-positive stress,
 ///   dv_i/dt = sum_j m_j (sigma_i/rho_i^2 + sigma_j/rho_j^2 + f^n (R_i + R_j) - Pi_ij I) grad_i
@@ -99,10 +106,8 @@ void prepare_force_inputs(const ParticleSet& particles, const ArtificialStress& 
 /// adds them); viscosity and contact stay.
 /// Same-body pairs once each, as compute_velocity_gradient takes them (the pair's force on j is
 /// minus its force on i: momentum is conserved pair by pair); contact pairs from both rows.
-/// The same-body pairs' arithmetic of the production form (3D cubic spline, no gradient
-/// correction or artificial stress) goes four pairs at a time to the vector units where the
-/// processor has AVX2 (pair_lanes.hpp), with the same bits as the scalar row; `scalar` keeps
-/// the scalar row everywhere (the reference the tests and benches compare against).
+/// `arithmetic` as for compute_velocity_gradient; where force_pass_uses_lanes, the lanes
+/// evaluate W'(r)/r themselves and `inputs.entry_factor` is not read.
 void compute_accelerations(ParticleSet& particles, const NeighbourList& neighbours,
                            const SmoothingKernel& kernel, const SphOptions& options,
                            const ForceInputs& inputs, std::vector<double>& heating_rate,

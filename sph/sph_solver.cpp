@@ -340,11 +340,18 @@ void SphSolver::compute_kinematics() {
         return;
     }
     // The force pass, which always follows at the same positions and list, reuses the
-    // kernel gradients of this pass. Plane strain only: in 3D the 8 bytes per list entry
-    // (about 38 entries, each pair of a body once) would take the solver past 1 KB per particle.
+    // kernel gradients of this pass where its scalar rows run in plane strain. Not in 3D, where
+    // the 8 bytes per list entry (about 38 entries, each pair of a body once) would take the
+    // solver past 1 KB per particle, nor where the force pass's vector lanes evaluate them four
+    // at a time (rates.hpp force_pass_uses_lanes).
+    const bool store_factors = options_.dimension == 2 && !force_pass_uses_lanes(kernel_, options_);
+    if (!store_factors) {
+        force_inputs_.entry_factor.clear();
+        force_inputs_.entry_factor.shrink_to_fit();
+    }
     compute_velocity_gradient(particles_, neighbours_, kernel_, options_.kernel_gradient_correction,
                               velocity_gradient_, force_inputs_.gradient_correction,
-                              options_.dimension == 2 ? &force_inputs_.entry_factor : nullptr,
+                              store_factors ? &force_inputs_.entry_factor : nullptr,
                               &pair_scratch_);
 }
 
@@ -432,11 +439,10 @@ std::size_t SphSolver::bytes() const {
     std::size_t particle_bytes = held(p.state);
     p.for_each_field([&](const auto&, const auto& values) { particle_bytes += held(values); });
     const std::size_t work =
-        held(is_wall_) + held(force_inputs_.stress_over_rho2) +
-        held(force_inputs_.pair_records) + held(force_inputs_.artificial_stress) +
-        held(force_inputs_.sound_speed) + held(wave_speed_) +
-        held(force_inputs_.gradient_correction) + held(force_inputs_.entry_factor) +
-        held(velocity_gradient_) + held(heating_rate_);
+        held(is_wall_) + held(force_inputs_.stress_over_rho2) + held(force_inputs_.pair_records) +
+        held(force_inputs_.artificial_stress) + held(force_inputs_.sound_speed) +
+        held(wave_speed_) + held(force_inputs_.gradient_correction) +
+        held(force_inputs_.entry_factor) + held(velocity_gradient_) + held(heating_rate_);
     return particle_bytes + work + pair_scratch_.bytes() + neighbours_.bytes() +
            (total_lagrangian_ ? total_lagrangian_->bytes() : 0);
 }

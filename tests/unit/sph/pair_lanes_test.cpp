@@ -7,30 +7,34 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 #include <random>
+#include <utility>
 
 namespace grainload::sph {
 namespace {
 
-/// A jittered 7 x 7 x 7 lattice at 0.1 m in two bodies (x below 0.35 m and above) over a wall
-/// row at x < 0.1 m, moving and stressed at random: same-body pairs inside and outside the
-/// support (the list's skin), contact pairs between the bodies and with the wall, interleaved
-/// in the rows.
+/// A jittered lattice at 0.1 m (7 x 7 x 7, or 15 x 15 in plane strain) in two bodies (x below
+/// 0.35 m and above) beside a wall row at x < 0.1 m, moving and stressed at random: same-body
+/// pairs inside and outside the support (the list's skin), contact pairs between the bodies
+/// and with the wall, interleaved in the rows.
 struct Scene {
+    explicit Scene(int dimension)
+        : kernel(KernelType::cubic_spline, 0.13, dimension), neighbours(0.26, 0.05, dimension) {}
     ParticleSet particles;
-    SmoothingKernel kernel{KernelType::cubic_spline, 0.13, 3};
-    NeighbourList neighbours{0.26, 0.05, 3};
+    SmoothingKernel kernel;
+    NeighbourList neighbours;
 };
 
-void fill(Scene& s) {
+void fill(Scene& s, int dimension) {
     LatticeBody body;
-    body.upper = Vec3::Constant(0.7);
+    body.upper = Vec3::Constant(dimension == 3 ? 0.7 : 1.5);
     body.spacing = 0.1;
     body.density = 1500.0;
     ParticleSet& p = s.particles;
-    fill_box_lattice(p, body, 3);
+    fill_box_lattice(p, body, dimension);
     std::mt19937 generator(11u);
     std::uniform_real_distribution<double> value(-1.0, 1.0);
     std::vector<char> frozen(static_cast<std::size_t>(p.size()));
+    const Vec3 plane = dimension == 3 ? Vec3::Ones() : Vec3(1.0, 1.0, 0.0);
     for (Index i = 0; i < p.size(); ++i) {
         p.body_id[i] = p.position[i].x() < 0.35 ? 0 : 1;
         if (p.position[i].x() < 0.1) {
@@ -38,11 +42,14 @@ void fill(Scene& s) {
             p.body_id[i] = 2;
         }
         frozen[i] = p.wall_id[i] >= 0 ? 1 : 0;
-        p.position[i] += 0.02 * Vec3(value(generator), value(generator), value(generator));
-        p.velocity[i] = Vec3(value(generator), value(generator), value(generator));
+        const Vec3 jitter(value(generator), value(generator), value(generator));
+        const Vec3 velocity(value(generator), value(generator), value(generator));
+        p.position[i] += 0.02 * jitter.cwiseProduct(plane);
+        p.velocity[i] = velocity.cwiseProduct(plane);
         p.density[i] *= 1.0 + 0.05 * value(generator);
         for (int c = 0; c < 6; ++c) {
-            p.stress[i][c] = 1e4 * value(generator);
+            // Plane strain: sigma_zz stays, the xz and yz shears are 0.
+            p.stress[i][c] = dimension == 2 && c >= 4 ? 0.0 : 1e4 * value(generator);
         }
     }
     s.neighbours.update(p.position, frozen, true);
@@ -57,16 +64,17 @@ TEST(PairLanes, SameBitsAsTheScalarRows) {
         GTEST_SKIP() << "no AVX2 on this processor: the pair passes run the scalar rows only";
     }
     const int threads_before = omp_get_max_threads();
-    for (const double fixed_speed : {0.0, 30.0}) {
-        Scene s;
-        fill(s);
+    for (const auto& [dimension, fixed_speed] :
+         {std::pair{3, 0.0}, std::pair{3, 30.0}, std::pair{2, 0.0}}) {
+        Scene s(dimension);
+        fill(s, dimension);
         ParticleSet& p = s.particles;
         SphOptions options;
-        options.dimension = 3;
+        options.dimension = dimension;
         options.particle_spacing = 0.1;
         options.viscosity = {1.0, 2.0, fixed_speed};
         options.contact.stiffness = 1e6;
-        options.gravity = Vec3(0.0, 0.0, -9.81);
+        options.gravity = dimension == 3 ? Vec3(0.0, 0.0, -9.81) : Vec3(0.0, -9.81, 0.0);
         for (const bool halve : {false, true}) {
             if (halve) {
                 s.neighbours.halve_pairs(continuum_keys(p));
@@ -82,15 +90,18 @@ TEST(PairLanes, SameBitsAsTheScalarRows) {
                 compute_velocity_gradient(p, s.neighbours, s.kernel, false, scalar_gradient,
                                           inputs.gradient_correction, nullptr, nullptr,
                                           PairArithmetic::scalar);
+                // Plane strain as the solver runs it: the kinematic pass stores W'(r)/r, which
+                // the scalar force row reads and the lanes evaluate again.
                 std::vector<Mat3> gradient;
                 compute_velocity_gradient(p, s.neighbours, s.kernel, false, gradient,
-                                          inputs.gradient_correction);
+                                          inputs.gradient_correction,
+                                          dimension == 2 ? &inputs.entry_factor : nullptr);
                 for (Index i = 0; i < p.size(); ++i) {
                     for (int k = 0; k < 9; ++k) {
                         EXPECT_EQ(std::memcmp(gradient[i].data() + k, scalar_gradient[i].data() + k,
                                               sizeof(double)),
                                   0)
-                            << "particle " << i << " entry " << k;
+                            << dimension << "D, particle " << i << " entry " << k;
                     }
                 }
                 prepare_force_inputs(p, options.artificial_stress, inputs);
@@ -107,11 +118,11 @@ TEST(PairLanes, SameBitsAsTheScalarRows) {
                     for (int c = 0; c < 3; ++c) {
                         EXPECT_EQ(std::memcmp(&lanes[i][c], &p.acceleration[i][c], sizeof(double)),
                                   0)
-                            << "particle " << i << " component " << c << ": " << lanes[i][c]
-                            << " against " << p.acceleration[i][c];
+                            << dimension << "D, particle " << i << " component " << c << ": "
+                            << lanes[i][c] << " against " << p.acceleration[i][c];
                     }
                     EXPECT_EQ(std::memcmp(&lanes_heating[i], &heating[i], sizeof(double)), 0)
-                        << "particle " << i;
+                        << dimension << "D, particle " << i;
                 }
                 // The scene exercises the viscosity (and so the whole pair term).
                 EXPECT_GT(largest, 0.0);
