@@ -1,5 +1,7 @@
 #include "sph/pair_lanes.hpp"
 
+#include "sph/kernels.hpp"
+
 #include <cmath>
 #include <cstdlib>
 
@@ -66,7 +68,15 @@ __attribute__((target("avx2"))) inline __m256d select(__m256d mask, __m256d yes,
     return _mm256_blendv_pd(no, yes, mask);
 }
 
-/// ((0 + a0 b0) + a1 b1) + a2 b2, as the scalar row's accumulating loops.
+/// CubicSplineKernel::shape_derivative_inside in lanes: both pieces evaluated, one selected.
+__attribute__((target("avx2"))) inline __m256d shape_derivative_inside(__m256d q) {
+    const __m256d t = _mm256_sub_pd(_mm256_set1_pd(2.0), q);
+    const __m256d inner = _mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(-2.0), q),
+                                        _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(1.5), q), q));
+    const __m256d outer = _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(-0.5), t), t);
+    return select(_mm256_cmp_pd(q, _mm256_set1_pd(1.0), _CMP_LT_OQ), inner, outer);
+}
+
 /// ((0 + a0 b0) + a1 b1) [+ a2 b2], as the scalar row's accumulating loops over D components.
 template <int D>
 __attribute__((target("avx2"))) inline __m256d dot(const __m256d (&a)[D], const __m256d (&b)[D]) {
@@ -110,13 +120,10 @@ __attribute__((target("avx2"))) inline void group_terms(const double* base, cons
                                          _mm256_cmp_pd(r2, zero, _CMP_NEQ_UQ));
     // W'(r)/r, evaluated at the support for the pairs outside it (then not added).
     const __m256d r = _mm256_sqrt_pd(select(inside, r2, support_squared));
+    // shape_derivative(q): 0 from q = 2 on.
     const __m256d q = _mm256_mul_pd(r, _mm256_set1_pd(s.inverse_h));
-    const __m256d t = _mm256_sub_pd(_mm256_set1_pd(2.0), q);
-    const __m256d inner = _mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(-2.0), q),
-                                        _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(1.5), q), q));
-    const __m256d outer = _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(-0.5), t), t);
-    __m256d shape = select(_mm256_cmp_pd(q, _mm256_set1_pd(1.0), _CMP_LT_OQ), inner, outer);
-    shape = select(_mm256_cmp_pd(q, _mm256_set1_pd(2.0), _CMP_LT_OQ), shape, zero);
+    const __m256d shape =
+        select(_mm256_cmp_pd(q, _mm256_set1_pd(2.0), _CMP_LT_OQ), shape_derivative_inside(q), zero);
     const __m256d f = _mm256_div_pd(_mm256_mul_pd(_mm256_set1_pd(s.alpha_over_h), shape), r);
     for (int c = 0; c < D; ++c) {
         g[c] = _mm256_mul_pd(f, d[c]);
@@ -249,23 +256,13 @@ __attribute__((target("avx2"))) void gradient_factor_lanes(const double* r2, int
     int p = 0;
     for (; p + 4 <= count; p += 4) {
         const __m256d r = _mm256_sqrt_pd(_mm256_loadu_pd(r2 + p));
-        const __m256d q = _mm256_mul_pd(r, _mm256_set1_pd(inverse_h));
-        const __m256d t = _mm256_sub_pd(_mm256_set1_pd(2.0), q);
-        const __m256d inner =
-            _mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(-2.0), q),
-                          _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(1.5), q), q));
-        const __m256d outer = _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(-0.5), t), t);
-        const __m256d shape =
-            select(_mm256_cmp_pd(q, _mm256_set1_pd(1.0), _CMP_LT_OQ), inner, outer);
+        const __m256d shape = shape_derivative_inside(_mm256_mul_pd(r, _mm256_set1_pd(inverse_h)));
         _mm256_storeu_pd(f + p,
                          _mm256_div_pd(_mm256_mul_pd(_mm256_set1_pd(alpha_over_h), shape), r));
     }
-    for (; p < count; ++p) { // the scalar row's expression, for the last pairs
+    for (; p < count; ++p) { // the last pairs, as ShapeTerms::gradient_factor_inside
         const double r = std::sqrt(r2[p]);
-        const double q = r * inverse_h;
-        const double t = 2.0 - q;
-        const double shape = q < 1.0 ? -2.0 * q + 1.5 * q * q : -0.5 * t * t;
-        f[p] = alpha_over_h * shape / r;
+        f[p] = alpha_over_h * CubicSplineKernel::shape_derivative_inside(r * inverse_h) / r;
     }
 }
 
@@ -325,8 +322,8 @@ void continuum_lanes(int, const PairRecord*, Index, const std::int32_t*, int, co
     std::abort(); // unreachable: pair_lanes_available() is false
 }
 
-void continuum_lanes_added(const PairRecord*, Index, const std::int32_t*, int, const LaneSettings&,
-                           double (&)[4], double*, double*) {
+void continuum_lanes_added(int, const PairRecord*, Index, const std::int32_t*, int,
+                           const LaneSettings&, double (&)[4], double*, double*) {
     std::abort();
 }
 

@@ -7,7 +7,6 @@
 #include "sph/particle_set.hpp"
 #include "sph/sph_options.hpp"
 
-#include <array>
 #include <span>
 #include <vector>
 
