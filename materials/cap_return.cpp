@@ -23,6 +23,9 @@ constexpr double kStartTolerance = 1e-8;
 // a below this fraction of I1_tr - L_n (a return next to the corner) is left to the nested
 // solve, which treats a as exact: rho = 3a / (3a + G R^2 dv) must not inherit that round-off.
 constexpr double kResolvedGap = 1e-6;
+// corner_start's estimate of a is used below this fraction of I1_tr - L_n: there the trial's
+// start would cost at least log2(10) ~ 3 halved steps.
+constexpr double kNearCorner = 0.1;
 
 double tolerance_for(const Model& m, double i1_trial, double q_trial, const Hardening& s) {
     return kTolerance * (std::abs(i1_trial) + q_trial + std::abs(s.kappa) + std::abs(m.p.k) + 1.0);
@@ -230,6 +233,33 @@ bool cap_newton(const Model& m, double q_trial, const Hardening& s, const CapBox
     return false;
 }
 
+/// A start for cap_newton next to the corner, where the returns of a stiff hardening law
+/// (3K dv' >> 1) end: dk from the volumetric balance linearised at the trial with a = 0, and a
+/// from the cap condition g = 0 at that dk in the limit 3a << G R^2 dv, where rho = 3a / (G R^2
+/// dv): a^2 (1 + (3 q_tr / (G R dv))^2) = R^2 B^2. From the trial instead, Newton's first steps
+/// leave the box (a < 0) and are halved about log2((I1_tr - L_n) / a) times before it converges
+/// (8-15 iterations against 3-5 from here for the compacting granular block of
+/// bench/sph_throughput). Returns false where the estimate is not next to the corner (a above
+/// kNearCorner of the trial's), where the trial is as good a start.
+bool corner_start(const Model& m, double q_trial, const Hardening& s, const CapBox& box, double& a,
+                  double& dk) {
+    const double rate =
+        centre_change(m.p, s, 0.0).slope + 3.0 * m.bulk * move_cap(m.p, s, 0.0).rate;
+    const double dk_start = box.a_trial / rate;
+    if (!(dk_start > 0.0 && dk_start <= box.dk_max)) {
+        return false;
+    }
+    const double ratio = 3.0 * q_trial / (m.shear * m.p.R * move_cap(m.p, s, dk_start).dv);
+    const double a_start =
+        m.p.R * half_height(m.p, s.kappa + dk_start) / std::sqrt(1.0 + ratio * ratio);
+    if (!(a_start > 0.0 && a_start < kNearCorner * box.a_trial)) {
+        return false;
+    }
+    a = a_start;
+    dk = dk_start;
+    return true;
+}
+
 /// a(dk) = (I1_tr - L_n) - dL(dk) - 3K dv(dk): the volumetric balance solved for a.
 double balance_gap(const Model& m, const Hardening& s, double a_trial, double dk) {
     return a_trial - centre_change(m.p, s, dk).d - 3.0 * m.bulk * move_cap(m.p, s, dk).dv;
@@ -294,9 +324,9 @@ std::pair<double, double> cap_nested(const Model& m, double q_trial, const Harde
 /// Cap return with the unknown a = I1 - L in [0, I1_tr - L_n]; for each a the move dk of kappa
 /// solves the volumetric balance (I1_tr - L_n) - dL(dk) - 3K dv(dk) = a, (4.6.3.35)-(4.6.3.37).
 /// Solving for a rather than L resolves returns that end next to the corner (a ~ R^2, tiny for
-/// small R) and trials within round-off of I1_tr = L_n. cap_newton is tried from the trial,
-/// then from cap_reduced_start; the nested, bracketed solve is the safe path left when both
-/// fail.
+/// small R) and trials within round-off of I1_tr = L_n. cap_newton is tried from corner_start
+/// where that applies, then from the trial, then from cap_reduced_start; the nested, bracketed
+/// solve is the safe path left when all fail.
 Return cap_return(const Model& m, double i1_trial, double q_trial, const Hardening& s) {
     const Parameters& p = m.p;
     if (p.R == 0.0) {
@@ -307,7 +337,13 @@ Return cap_return(const Model& m, double i1_trial, double q_trial, const Hardeni
     const CapBox box{i1_trial - l_n, i1_trial - l_n + (l_n - s.kappa)};
     double a = box.a_trial;
     double dk = 0.0;
-    bool converged = cap_newton(m, q_trial, s, box, a, dk);
+    bool converged =
+        corner_start(m, q_trial, s, box, a, dk) && cap_newton(m, q_trial, s, box, a, dk);
+    if (!converged) {
+        a = box.a_trial;
+        dk = 0.0;
+        converged = cap_newton(m, q_trial, s, box, a, dk);
+    }
     std::optional<Shift> centre; // solved once, for the reduced start and the nested solve
     if (!converged) {
         centre = shift_to(m, i1_trial, s, Target::centre);

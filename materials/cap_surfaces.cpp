@@ -7,7 +7,10 @@
 namespace grainload::materials::cap {
 
 double envelope(const Parameters& p, double i1) {
-    return p.k + p.theta * i1 - p.gamma * std::exp(-p.beta * i1);
+    // k - gamma exp(-B1 I1) written as (k - gamma) - gamma expm1(-B1 I1): with the usual
+    // k = gamma (the apex at the origin) the plain form cancels to round-off of k for small
+    // I1 (|F| below about 1e-16 k is lost entirely), this one keeps F's relative accuracy.
+    return (p.k - p.gamma) + p.theta * i1 - p.gamma * std::expm1(-p.beta * i1);
 }
 
 double envelope_slope(const Parameters& p, double i1) {
