@@ -133,7 +133,9 @@ int main(int argc, char** argv) {
             : nullptr;
     auto kinematics = [&] {
         sph::compute_velocity_gradient(p, list, kernel, options.kernel_gradient_correction,
-                                       gradient, inputs.gradient_correction, factors, &scratch);
+                                       gradient, inputs.gradient_correction, factors, &scratch,
+                                       sph::PairArithmetic::lanes_where_available,
+                                       &inputs.pair_records);
     };
     kinematics();
     const double t_gradient = best_seconds(kinematics, reps);

@@ -1,7 +1,5 @@
 #include "sph/pair_lanes.hpp"
 
-#include "sph/kernels.hpp"
-
 #include <cmath>
 #include <cstdlib>
 
@@ -106,9 +104,9 @@ __attribute__((target("avx2"))) inline void group_terms(const double* base, cons
     const bool fixed_speed = s.viscosity_speed > 0.0;
     __m256d stress[4], stress_mass[4], place[4], motion[4];
     load_block(base, lane_j, 0, stress);      // xx yy zz xy
-    load_block(base, lane_j, 1, stress_mass); // xz yz m rho
+    load_block(base, lane_j, 1, stress_mass); // xz yz rho -
     load_block(base, lane_j, 2, place);       // x y z vx
-    load_block(base, lane_j, 3, motion);      // vy vz c -
+    load_block(base, lane_j, 3, motion);      // vy vz c m
     const __m256d velocity[3] = {place[3], motion[0], motion[1]};
     __m256d d[D], v[D], g[D];
     for (int c = 0; c < D; ++c) {
@@ -137,7 +135,7 @@ __attribute__((target("avx2"))) inline void group_terms(const double* base, cons
         entry[e] = _mm256_add_pd(_mm256_set1_pd(ri.stress[e]), entry_j[e]);
     }
     const __m256d approach = dot<D>(v, d);
-    const __m256d mj = stress_mass[2];
+    const __m256d mj = motion[3];
     // Monaghan's viscosity, as continuum_pair.
     const __m256d mu = _mm256_div_pd(_mm256_mul_pd(_mm256_set1_pd(s.h), approach),
                                      _mm256_add_pd(r2, _mm256_set1_pd(s.h2_softening)));
@@ -146,7 +144,7 @@ __attribute__((target("avx2"))) inline void group_terms(const double* base, cons
         fixed_speed ? _mm256_set1_pd(s.viscosity_speed)
                     : _mm256_mul_pd(half, _mm256_add_pd(_mm256_set1_pd(ri.sound_speed), motion[2]));
     const __m256d rho =
-        _mm256_mul_pd(half, _mm256_add_pd(_mm256_set1_pd(ri.density), stress_mass[3]));
+        _mm256_mul_pd(half, _mm256_add_pd(_mm256_set1_pd(ri.density), stress_mass[2]));
     const __m256d linear = _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(-s.alpha), c), mu);
     const __m256d quadratic = _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(s.beta), mu), mu);
     const __m256d pi_all = _mm256_div_pd(_mm256_add_pd(linear, quadratic), rho);
@@ -210,9 +208,14 @@ terms_added(const PairRecord* records, Index i, const std::int32_t* j, int count
     std::int32_t lane_j[kLaneBatch + 3];
     pad_lanes(j, count, lane_j);
     __m256d sum = _mm256_loadu_pd(own); // x, y, z, heating: each its own scalar sum in order
+    // First every group's terms (independent groups: their square roots and divisions overlap,
+    // where a loop that also added them waited on each group's chain), then the sums.
+    GroupTerms groups[kLaneBatch / 4];
     for (int g = 0; g < count; g += 4) {
-        GroupTerms terms;
-        group_terms<D>(base, records[i], lane_j + g, s, terms);
+        group_terms<D>(base, records[i], lane_j + g, s, groups[g / 4]);
+    }
+    for (int g = 0; g < count; g += 4) {
+        const GroupTerms& terms = groups[g / 4];
         __m256d mine[4], theirs[4]; // per pair: x, y, z, heating
         transpose(terms.own[0], terms.own[1], terms.own[2], terms.own[3], mine);
         transpose(terms.other[0], terms.other[1], terms.other[2], terms.other[3], theirs);
@@ -250,65 +253,98 @@ void continuum_lanes_added(int dimension, const PairRecord* records, Index i, co
     }
 }
 
-__attribute__((target("avx2"))) void gradient_factor_lanes(const double* r2, int count,
-                                                           double inverse_h, double alpha_over_h,
-                                                           double* f) {
-    int p = 0;
-    for (; p + 4 <= count; p += 4) {
-        const __m256d r = _mm256_sqrt_pd(_mm256_loadu_pd(r2 + p));
-        const __m256d shape = shape_derivative_inside(_mm256_mul_pd(r, _mm256_set1_pd(inverse_h)));
-        _mm256_storeu_pd(f + p,
-                         _mm256_div_pd(_mm256_mul_pd(_mm256_set1_pd(alpha_over_h), shape), r));
-    }
-    for (; p < count; ++p) { // the last pairs, as ShapeTerms::gradient_factor_inside
-        const double r = std::sqrt(r2[p]);
-        f[p] = alpha_over_h * CubicSplineKernel::shape_derivative_inside(r * inverse_h) / r;
-    }
-}
-
 namespace {
 
-/// (v0, v1, v2, 0) from three doubles, reading none past them.
-__attribute__((target("avx2"))) inline __m256d load3(const double* v) {
-    return _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(v)), _mm_load_sd(v + 2), 1);
+/// Four of the nine entries (entries first..first+3, column major) of the pairs' m_j dv g^T
+/// and m_i dv g^T, lane p for pair p, added pair by pair in order: to `acc` and to the four
+/// doubles of particle j[p] at l + 9 j[p] + first.
+__attribute__((target("avx2"))) inline void
+add_four_entries(const __m256d (&dv)[3], const __m256d (&grad)[3], __m256d mj, __m256d mi,
+                 int first, const std::int32_t* j, int pairs, double* l, __m256d& acc) {
+    __m256d own[4], other[4];
+    for (int e = 0; e < 4; ++e) {
+        const int entry = first + e; // t_rc = dv_r g_c at entry 3c + r
+        const __m256d t = _mm256_mul_pd(dv[entry % 3], grad[entry / 3]);
+        own[e] = _mm256_mul_pd(mj, t);
+        other[e] = _mm256_mul_pd(mi, t);
+    }
+    __m256d mine[4], theirs[4];
+    transpose(own[0], own[1], own[2], own[3], mine);
+    transpose(other[0], other[1], other[2], other[3], theirs);
+    for (int p = 0; p < pairs; ++p) {
+        acc = _mm256_add_pd(acc, mine[p]);
+        double* lj = l + 9 * j[p] + first;
+        _mm256_storeu_pd(lj, _mm256_add_pd(_mm256_loadu_pd(lj), theirs[p]));
+    }
 }
 
 } // namespace
 
-__attribute__((target("avx2"))) void add_gradient_pairs(const double* velocity, const double* mass,
-                                                        Index i, const Index* j, const double* d0,
-                                                        const double* d1, const double* d2,
-                                                        const double* f, int count, double* l,
-                                                        double (&acc)[9]) {
-    // The nine entries t_rc = dv_r g_c column major: (t00 t10 t20 t01), (t11 t21 t02 t12), t22.
-    const __m256d vi = load3(velocity + 3 * i);
-    const __m256d mi = _mm256_set1_pd(mass[i]);
-    __m256d acc_a = _mm256_loadu_pd(acc);
-    __m256d acc_b = _mm256_loadu_pd(acc + 4);
-    double acc_s = acc[8];
-    for (int p = 0; p < count; ++p) {
-        const double* vj = velocity + 3 * j[p];
-        const __m256d dv = _mm256_sub_pd(load3(vj), vi);
-        const double g0 = f[p] * d0[p];
-        const double g1 = f[p] * d1[p];
-        const double g2 = f[p] * d2[p];
-        const __m256d ta =
-            _mm256_mul_pd(_mm256_permute4x64_pd(dv, 0b00'10'01'00), _mm256_set_pd(g1, g0, g0, g0));
-        const __m256d tb =
-            _mm256_mul_pd(_mm256_permute4x64_pd(dv, 0b01'00'10'01), _mm256_set_pd(g2, g2, g1, g1));
-        const double ts = (vj[2] - velocity[3 * i + 2]) * g2;
-        const double mj = mass[j[p]];
-        acc_a = _mm256_add_pd(acc_a, _mm256_mul_pd(_mm256_set1_pd(mj), ta));
-        acc_b = _mm256_add_pd(acc_b, _mm256_mul_pd(_mm256_set1_pd(mj), tb));
-        acc_s += mj * ts;
-        double* lj = l + 9 * j[p];
-        _mm256_storeu_pd(lj, _mm256_add_pd(_mm256_loadu_pd(lj), _mm256_mul_pd(mi, ta)));
-        _mm256_storeu_pd(lj + 4, _mm256_add_pd(_mm256_loadu_pd(lj + 4), _mm256_mul_pd(mi, tb)));
-        lj[8] += mass[i] * ts;
+__attribute__((target("avx2"))) void gradient_lanes(const PairRecord* records, Index i,
+                                                    const std::int32_t* j, int count,
+                                                    const LaneSettings& s, double* l,
+                                                    double (&acc)[9]) {
+    const auto* base = reinterpret_cast<const double*>(records);
+    const PairRecord& ri = records[i];
+    std::int32_t lane_j[kLaneBatch + 3];
+    pad_lanes(j, count, lane_j);
+    const __m256d zero = _mm256_setzero_pd();
+    const __m256d mi = _mm256_set1_pd(ri.mass);
+    const __m256d support_squared = _mm256_set1_pd(s.support_squared);
+    __m256d acc_low = _mm256_loadu_pd(acc);
+    __m256d acc_high = _mm256_loadu_pd(acc + 4);
+    double acc_last = acc[8];
+    // First every group's dv and g (independent groups: their square roots and divisions
+    // overlap), then the sums pair by pair.
+    struct Group {
+        __m256d dv[3];
+        __m256d grad[3];
+        __m256d mj;
+    };
+    Group groups[kLaneBatch / 4];
+    for (int g = 0; g < count; g += 4) {
+        Group& group = groups[g / 4];
+        __m256d place[4], motion[4];
+        load_block(base, lane_j + g, 2, place);  // x y z vx
+        load_block(base, lane_j + g, 3, motion); // vy vz c m
+        const __m256d velocity[3] = {place[3], motion[0], motion[1]};
+        __m256d d[3];
+        for (int c = 0; c < 3; ++c) {
+            d[c] = _mm256_sub_pd(_mm256_set1_pd(ri.position[c]), place[c]); // separation()
+            group.dv[c] = _mm256_sub_pd(velocity[c], _mm256_set1_pd(ri.velocity[c]));
+        }
+        const __m256d r2 = dot<3>(d, d);
+        const __m256d inside = _mm256_and_pd(_mm256_cmp_pd(r2, support_squared, _CMP_LT_OQ),
+                                             _mm256_cmp_pd(r2, zero, _CMP_NEQ_UQ));
+        // W'(r)/r as ShapeTerms::gradient_factor_inside, at the support for the pairs outside,
+        // whose g is then +0 (their terms +0 or -0, which leave every sum's bits alone).
+        const __m256d r = _mm256_sqrt_pd(select(inside, r2, support_squared));
+        const __m256d shape =
+            shape_derivative_inside(_mm256_mul_pd(r, _mm256_set1_pd(s.inverse_h)));
+        const __m256d f = _mm256_div_pd(_mm256_mul_pd(_mm256_set1_pd(s.alpha_over_h), shape), r);
+        for (int c = 0; c < 3; ++c) {
+            group.grad[c] = select(inside, _mm256_mul_pd(f, d[c]), zero);
+        }
+        group.mj = motion[3];
     }
-    _mm256_storeu_pd(acc, acc_a);
-    _mm256_storeu_pd(acc + 4, acc_b);
-    acc[8] = acc_s;
+    for (int g = 0; g < count; g += 4) {
+        const Group& group = groups[g / 4];
+        const int pairs = count - g < 4 ? count - g : 4;
+        add_four_entries(group.dv, group.grad, group.mj, mi, 0, lane_j + g, pairs, l, acc_low);
+        add_four_entries(group.dv, group.grad, group.mj, mi, 4, lane_j + g, pairs, l, acc_high);
+        const __m256d t = _mm256_mul_pd(group.dv[2], group.grad[2]);
+        alignas(32) double mine[4];
+        alignas(32) double theirs[4];
+        _mm256_store_pd(mine, _mm256_mul_pd(group.mj, t));
+        _mm256_store_pd(theirs, _mm256_mul_pd(mi, t));
+        for (int p = 0; p < pairs; ++p) {
+            acc_last += mine[p];
+            l[9 * lane_j[g + p] + 8] += theirs[p];
+        }
+    }
+    _mm256_storeu_pd(acc, acc_low);
+    _mm256_storeu_pd(acc + 4, acc_high);
+    acc[8] = acc_last;
 }
 
 #else
@@ -327,12 +363,8 @@ void continuum_lanes_added(int, const PairRecord*, Index, const std::int32_t*, i
     std::abort();
 }
 
-void gradient_factor_lanes(const double*, int, double, double, double*) {
-    std::abort();
-}
-
-void add_gradient_pairs(const double*, const double*, Index, const Index*, const double*,
-                        const double*, const double*, const double*, int, double*, double (&)[9]) {
+void gradient_lanes(const PairRecord*, Index, const std::int32_t*, int, const LaneSettings&,
+                    double*, double (&)[9]) {
     std::abort();
 }
 

@@ -11,18 +11,18 @@
 
 namespace grainload::sph {
 
-/// What the force pass reads of one particle, packed so that four neighbours load as four 4x4
-/// blocks of doubles, transposed into lanes: sigma/rho^2 (xx yy zz xy xz yz), mass, density in
-/// the first cache line (all the plane-strain scalar row reads of it), then position, velocity
-/// and the viscosity's sound speed c.
+/// What the pair passes read of one particle, packed so that four neighbours load as 4x4
+/// blocks of doubles, transposed into lanes: sigma/rho^2 (xx yy zz xy xz yz) and the density in
+/// the first cache line (all the plane-strain scalar row reads of it), then position, velocity,
+/// the viscosity's sound speed c and the mass: the second line is all the kinematic pass reads.
 struct alignas(64) PairRecord {
     double stress[6];
-    double mass;
     double density;
+    double unused;
     double position[3];
     double velocity[3];
     double sound_speed;
-    double unused;
+    double mass;
 };
 static_assert(sizeof(PairRecord) == 128, "four 32-byte blocks");
 
@@ -59,18 +59,15 @@ void continuum_lanes_added(int dimension, const PairRecord* records, Index i, co
 /// Whether this processor runs the lanes (AVX2, checked once).
 bool pair_lanes_available();
 
-/// W'(r)/r of the cubic spline at r = sqrt(r2[p]), p < count, pairs inside the support, four
-/// at a time (ShapeTerms::gradient_factor_inside). Requires pair_lanes_available().
-void gradient_factor_lanes(const double* r2, int count, double inverse_h, double alpha_over_h,
-                           double* f);
-
-/// The kinematic pass's pairs (i, j[p]) of one body in 3D, in order: with dv = v_j - v_i and
-/// g = f[p] x_ij (x_ij = (d0, d1, d2)[p]), adds m_j dv g^T to `acc` and m_i dv g^T to particle
-/// j's nine doubles at l + 9 j, both column major, each pair's nine products as one row of
-/// vectors. Requires pair_lanes_available().
-void add_gradient_pairs(const double* velocity, const double* mass, Index i, const Index* j,
-                        const double* d0, const double* d1, const double* d2, const double* f,
-                        int count, double* l, double (&acc)[9]);
+/// The kinematic pass's pairs (i, j[p]), p < count <= kLaneBatch, of one body in 3D, cubic
+/// spline, from the records' positions, velocities and masses: for the pairs inside the support,
+/// with g = W'(r)/r x_ij (ShapeTerms::gradient_factor_inside) and dv = v_j - v_i, adds m_j dv
+/// g^T to `acc` and m_i dv g^T to particle j's nine doubles at l + 9 j, both column major, pair
+/// by pair in order (a pair outside the support adds +0, which leaves every sum's bits as
+/// skipping it would). Only support_squared, inverse_h and alpha_over_h of `settings` are read.
+/// Requires pair_lanes_available().
+void gradient_lanes(const PairRecord* records, Index i, const std::int32_t* j, int count,
+                    const LaneSettings& settings, double* l, double (&acc)[9]);
 
 /// The terms of the pairs (i, j[p]), p < count <= kLaneBatch, of one body: stress
 /// sigma_i/rho_i^2 + sigma_j/rho_j^2 and Monaghan's viscosity, cubic spline, in `dimension` 3

@@ -82,9 +82,9 @@ template <class Shape, int D, bool Corrected> struct GradientRow {
     const std::vector<int>& key;
     const double support_squared;
     double* entry_factor; ///< nullptr, or W'(r)/r of each same-body entry in the support
-    /// The 3D cubic spline without correction, on AVX2: W'(r)/r and the sums in vector lanes
-    /// (pair_lanes.hpp), the same bits.
-    bool lanes;
+    /// The records (pair_lanes.hpp) where the pairs run in vector lanes (3D cubic spline without
+    /// correction, on AVX2; the same bits), else nullptr.
+    const PairRecord* records;
 
     /// The row's entries in batches: first the same-body pairs in the support are picked and
     /// their W'(r)/r computed in a loop of their own (no branch and no dependence between
@@ -94,41 +94,26 @@ template <class Shape, int D, bool Corrected> struct GradientRow {
         if (p.wall_id[i] >= 0) {
             return; // a wall particle's key is its own: no same-body pair
         }
+        if (records != nullptr) {
+            lane_row(i, sums);
+            return;
+        }
         Sums acc{};
-        double acc_lanes[9] = {}; // column major, as add_gradient_pairs adds
         const auto list = neighbours.neighbours(i);
         double* factor_of_entry =
             entry_factor != nullptr ? entry_factor + neighbours.first_entry(i) : nullptr;
         Batch b;
         for (std::size_t start = 0; start < list.size(); start += kBatch) {
             pick(i, list, start, std::min(list.size(), start + kBatch), b);
-            if (lanes) {
-                gradient_factor_lanes(b.r2, b.count, w.inverse_h, w.alpha_over_h, b.f);
-            } else {
-                for (int m = 0; m < b.count; ++m) {
-                    b.f[m] = w.gradient_factor_inside(std::sqrt(b.r2[m]));
-                }
+            for (int m = 0; m < b.count; ++m) {
+                b.f[m] = w.gradient_factor_inside(std::sqrt(b.r2[m]));
             }
             if (factor_of_entry != nullptr) {
                 for (int m = 0; m < b.count; ++m) {
                     factor_of_entry[b.k[m]] = b.f[m];
                 }
             }
-            if constexpr (D == 3 && !Corrected) {
-                if (lanes) {
-                    add_gradient_pairs(p.velocity.data()->data(), p.mass.data(), i, b.j, b.d[0],
-                                       b.d[1], b.d[2], b.f, b.count, sums.l, acc_lanes);
-                    continue;
-                }
-            }
             add_batch(i, b, acc, sums);
-        }
-        if (lanes) {
-            for (int r = 0; r < D; ++r) {
-                for (int c = 0; c < D; ++c) {
-                    acc.l[r][c] = acc_lanes[3 * c + r];
-                }
-            }
         }
         double* li = sums.l + 9 * i;
         for (int r = 0; r < D; ++r) {
@@ -148,6 +133,34 @@ template <class Shape, int D, bool Corrected> struct GradientRow {
 
   private:
     static constexpr std::size_t kBatch = 64;
+
+    /// Row i in vector lanes (gradient_lanes): the row's same-body pairs i < j picked a batch
+    /// of entries at a time, in the list's order, inside the support or not.
+    void lane_row(Index i, const GradientSums& sums) const {
+        const LaneSettings lanes{
+            support_squared, w.inverse_h, w.alpha_over_h, 0.0, 0.0, 0.0, 0.0, 0.0};
+        double acc[9] = {}; // column major
+        const int key_i = key[i];
+        const auto list = neighbours.neighbours(i);
+        std::int32_t picked[kLaneBatch];
+        for (std::size_t first = 0; first < list.size(); first += kLaneBatch) {
+            const std::size_t end = std::min(list.size(), first + kLaneBatch);
+            int count = 0;
+            for (std::size_t k = first; k < end; ++k) {
+                const std::int32_t j = list[k];
+                picked[count] = j;
+                count += key[j] == key_i && j > i ? 1 : 0;
+            }
+            if (count > 0) {
+                gradient_lanes(records, i, picked, count, lanes, sums.l, acc);
+            }
+        }
+        double* li = sums.l + 9 * i;
+        for (int c = 0; c < 9; ++c) {
+            li[c] += acc[c];
+        }
+    }
+
     /// A batch's same-body pairs i < j in the support: j, list entry, r^2, x_ij, W'(r)/r.
     struct Batch {
         int count;
@@ -230,23 +243,47 @@ void add_nine(double* to, const double* from) {
     }
 }
 
+/// The positions, velocities and masses of the material particles' records, all the
+/// kinematic pass's lanes read (the rest is prepare_force_inputs').
+void write_kinematic_records(const ParticleSet& p, std::vector<PairRecord>& records) {
+    const Index n = p.size();
+    records.resize(static_cast<std::size_t>(n));
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+        if (p.wall_id[i] >= 0) {
+            continue;
+        }
+        PairRecord& record = records[static_cast<std::size_t>(i)];
+        for (int c = 0; c < 3; ++c) {
+            record.position[c] = p.position[i][c];
+            record.velocity[c] = p.velocity[i][c];
+        }
+        record.mass = p.mass[i];
+    }
+}
+
 template <class Shape, int D, bool Corrected>
 void velocity_gradient_pass(ParticleSet& p, const NeighbourList& neighbours,
                             const SmoothingKernel& kernel, std::vector<Mat3>& velocity_gradient,
                             std::vector<Mat3>& correction, double* entry_factor,
-                            PairScratch& scratch, PairArithmetic arithmetic) {
+                            PairScratch& scratch, PairArithmetic arithmetic,
+                            std::vector<PairRecord>* records) {
     const std::vector<int> key = continuum_keys(p);
-    const bool lanes = arithmetic == PairArithmetic::lanes_where_available && D == 3 &&
+    const Index n = p.size();
+    const bool lanes = records != nullptr && entry_factor == nullptr &&
+                       arithmetic == PairArithmetic::lanes_where_available && D == 3 &&
                        !Corrected && std::is_same_v<Shape, CubicSplineKernel> &&
                        pair_lanes_available();
+    if (lanes) {
+        write_kinematic_records(p, *records);
+    }
     const GradientRow<Shape, D, Corrected> row{p,
                                                neighbours,
                                                ShapeTerms<Shape>(kernel),
                                                key,
                                                kernel.support_radius() * kernel.support_radius(),
                                                entry_factor,
-                                               lanes};
-    const Index n = p.size();
+                                               lanes ? records->data() : nullptr};
     // The first part sums into velocity_gradient and (the moments) correction themselves.
     // Zeroed on all threads: a serial fill of 72 bytes a particle had the other thread wait.
     velocity_gradient.resize(static_cast<std::size_t>(n));
@@ -330,7 +367,7 @@ void compute_velocity_gradient(ParticleSet& p, const NeighbourList& neighbours,
                                const SmoothingKernel& kernel, bool gradient_correction,
                                std::vector<Mat3>& velocity_gradient, std::vector<Mat3>& correction,
                                std::vector<double>* entry_factor, PairScratch* scratch,
-                               PairArithmetic arithmetic) {
+                               PairArithmetic arithmetic, std::vector<PairRecord>* records) {
     if (entry_factor != nullptr) {
         entry_factor->resize(static_cast<std::size_t>(neighbours.pair_entries()));
     }
@@ -344,7 +381,8 @@ void compute_velocity_gradient(ParticleSet& p, const NeighbourList& neighbours,
         using Shape = decltype(shape);
         auto pass = [&](auto dimension, auto corrected) {
             velocity_gradient_pass<Shape, decltype(dimension)::value, decltype(corrected)::value>(
-                p, neighbours, kernel, velocity_gradient, correction, factors, sums, arithmetic);
+                p, neighbours, kernel, velocity_gradient, correction, factors, sums, arithmetic,
+                records);
         };
         using Two = std::integral_constant<int, 2>;
         using Three = std::integral_constant<int, 3>;

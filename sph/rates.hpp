@@ -49,13 +49,18 @@ enum class PairArithmetic { lanes_where_available, scalar };
 /// Each same-body pair is taken once, from the row of its lower index (sph/pair_parts.hpp): the
 /// list may hold it in both rows (the other is skipped) or, as the solver's does
 /// (NeighbourList::halve_pairs), in that row only. `scratch` holds the sums of the threads after
-/// the first between calls (nullptr: allocated per call).
+/// the first between calls (nullptr: allocated per call). With `records` (and no
+/// `entry_factor`), where the pairs run in vector lanes (the 3D cubic spline without correction,
+/// on AVX2), the pass writes each material particle's position, velocity and mass into its
+/// record (ForceInputs::pair_records, which prepare_force_inputs then completes) and reads the
+/// neighbours' from there; otherwise the scalar rows run. Same bits either way.
 void compute_velocity_gradient(ParticleSet& particles, const NeighbourList& neighbours,
                                const SmoothingKernel& kernel, bool gradient_correction,
                                std::vector<Mat3>& velocity_gradient, std::vector<Mat3>& correction,
                                std::vector<double>* entry_factor = nullptr,
                                PairScratch* scratch = nullptr,
-                               PairArithmetic arithmetic = PairArithmetic::lanes_where_available);
+                               PairArithmetic arithmetic = PairArithmetic::lanes_where_available,
+                               std::vector<PairRecord>* records = nullptr);
 
 /// Per-particle quantities the force pass reads, computed once per step.
 struct ForceInputs {

@@ -351,8 +351,8 @@ void SphSolver::compute_kinematics() {
     }
     compute_velocity_gradient(particles_, neighbours_, kernel_, options_.kernel_gradient_correction,
                               velocity_gradient_, force_inputs_.gradient_correction,
-                              store_factors ? &force_inputs_.entry_factor : nullptr,
-                              &pair_scratch_);
+                              store_factors ? &force_inputs_.entry_factor : nullptr, &pair_scratch_,
+                              PairArithmetic::lanes_where_available, &force_inputs_.pair_records);
 }
 
 // The continuity equation (thesis eq. 4.5.3.13) needs a neighbourhood: a particle that has flown

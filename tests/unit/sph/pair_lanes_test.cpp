@@ -90,12 +90,17 @@ TEST(PairLanes, SameBitsAsTheScalarRows) {
                 compute_velocity_gradient(p, s.neighbours, s.kernel, false, scalar_gradient,
                                           inputs.gradient_correction, nullptr, nullptr,
                                           PairArithmetic::scalar);
-                // Plane strain as the solver runs it: the kinematic pass stores W'(r)/r, which
-                // the scalar force row reads and the lanes evaluate again.
+                // As the solver runs it: in 3D the lanes read the records they write; plane
+                // strain stores W'(r)/r, which the scalar force row reads and the force lanes
+                // evaluate again.
                 std::vector<Mat3> gradient;
-                compute_velocity_gradient(p, s.neighbours, s.kernel, false, gradient,
-                                          inputs.gradient_correction,
-                                          dimension == 2 ? &inputs.entry_factor : nullptr);
+                compute_velocity_gradient(
+                    p, s.neighbours, s.kernel, false, gradient, inputs.gradient_correction,
+                    dimension == 2 ? &inputs.entry_factor : nullptr, nullptr,
+                    PairArithmetic::lanes_where_available, &inputs.pair_records);
+                // The kinematic lanes ran (they alone write records in this pass).
+                EXPECT_EQ(inputs.pair_records.size(),
+                          dimension == 3 ? static_cast<std::size_t>(p.size()) : 0U);
                 for (Index i = 0; i < p.size(); ++i) {
                     for (int k = 0; k < 9; ++k) {
                         EXPECT_EQ(std::memcmp(gradient[i].data() + k, scalar_gradient[i].data() + k,
