@@ -341,24 +341,23 @@ void velocity_gradient_pass(ParticleSet& p, const NeighbourList& neighbours,
     }
 }
 
-/// Particle i's record of the force pass: sigma/rho^2 entries, each product formed as the full
-/// tensor's was, and the fields its pair terms read.
-PairRecord pair_record(const ParticleSet& p, Index i, const Mat3& sigma, double inv_rho2,
-                       const std::vector<double>& sound_speed) {
-    PairRecord record{};
+/// Particle i's record of the force pass, written in place: sigma/rho^2 entries, each product
+/// formed as the full tensor's was, and the fields its pair terms read.
+void write_pair_record(const ParticleSet& p, Index i, const Mat3& sigma, double inv_rho2,
+                       const std::vector<double>& sound_speed, PairRecord& record) {
     const double stress[6] = {sigma(0, 0), sigma(1, 1), sigma(2, 2),
                               sigma(0, 1), sigma(0, 2), sigma(1, 2)};
     for (int k = 0; k < 6; ++k) {
         record.stress[k] = stress[k] * inv_rho2;
     }
-    record.mass = p.mass[i];
     record.density = p.density[i];
+    record.unused = 0.0;
     for (int c = 0; c < 3; ++c) {
         record.position[c] = p.position[i][c];
         record.velocity[c] = p.velocity[i][c];
     }
     record.sound_speed = sound_speed.empty() ? 0.0 : sound_speed[static_cast<std::size_t>(i)];
-    return record;
+    record.mass = p.mass[i];
 }
 
 } // namespace
@@ -428,7 +427,7 @@ void prepare_force_inputs(const ParticleSet& p, const ArtificialStress& artifici
         if (corrected) {
             inputs.stress_over_rho2[i] = sigma * inv_rho2 * inputs.gradient_correction[i];
         } else {
-            inputs.pair_records[i] = pair_record(p, i, sigma, inv_rho2, inputs.sound_speed);
+            write_pair_record(p, i, sigma, inv_rho2, inputs.sound_speed, inputs.pair_records[i]);
         }
         if (!artificial_on) {
             continue;
