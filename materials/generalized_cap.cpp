@@ -215,7 +215,7 @@ PlasticRegion GeneralizedCap::update(const Voigt6& strain_increment, Voigt6& str
                                      std::span<double> state, Matrix6* tangent) const {
     // Compression positive from here on: sigma_c = -sigma, deps_c = -deps. The tangent
     // d sigma / d deps = d sigma_c / d deps_c needs no sign change.
-    const Voigt6 trial = -stress - elastic_.stiffness() * strain_increment;
+    const Voigt6 trial = -stress - elastic_.stress_from_strain(strain_increment);
     const double i1_tr = trial.head<3>().sum();
     Voigt6 s_tr = trial;
     s_tr.head<3>().array() -= i1_tr / 3.0;
