@@ -308,6 +308,40 @@ TEST(GeneralizedCap, VanishingRatioGivesTheFlatCapWithoutNaN) {
     EXPECT_EQ(st[GeneralizedCap::kCapPosition], st[GeneralizedCap::kHardeningParameter]);
 }
 
+// Near the apex of the thesis sand (k = gamma, X0 = 0: the cap starts at the origin) the
+// envelope, the cap and the hardening law are linear in the stress to relative O(B1 I1) and
+// O(D X), so a step's return is homogeneous of degree one in its increment: the stress and the
+// hardening of a step 1e-24 times smaller are 1e-24 times the larger step's, however far below
+// k's round-off they lie (a free-falling grain's stresses are of 1e-85 to 1e-9 Pa). The
+// tolerance is the larger step's nonlinearity, B1 I1 ~ 1e-10, and the return's 1e-14.
+TEST(GeneralizedCap, ReturnsAtTheApexScaleWithTheIncrement) {
+    const GeneralizedCap m(thesis_elastic(), thesis_cap());
+    Voigt6 direction = hydrostatic_strain(1.0) + shear_xy(0.3);
+    direction(4) = -0.2;
+    auto step = [&](double scale) {
+        Voigt6 stress = Voigt6::Zero();
+        std::vector<double> state = initial_state(m);
+        const PlasticRegion region = m.update(scale * direction, stress, state, nullptr);
+        EXPECT_EQ(region, PlasticRegion::cap) << scale;
+        return std::pair{Voigt6(stress / scale), state};
+    };
+    constexpr double kLarge = 1e-16; // I1 ~ 1e-5 Pa: B1 I1 ~ 1e-10
+    constexpr double kSmall = 1e-40; // I1 ~ 1e-29 Pa, 1e-34 of k
+    const auto [large, large_state] = step(kLarge);
+    const auto [small, small_state] = step(kSmall);
+    const double size = large.cwiseAbs().maxCoeff();
+    ASSERT_GT(size, 0.0);
+    EXPECT_LT((large - small).cwiseAbs().maxCoeff(), 1e-8 * size) << large.transpose() << "\n"
+                                                                  << small.transpose();
+    for (const int k : {GeneralizedCap::kCapPosition, GeneralizedCap::kHardeningParameter,
+                        GeneralizedCap::kPlasticVolumetricStrain}) {
+        EXPECT_GT(large_state[k], 0.0) << k;
+        EXPECT_NEAR(small_state[k] / kSmall, large_state[k] / kLarge,
+                    1e-8 * large_state[k] / kLarge)
+            << k;
+    }
+}
+
 TEST(GeneralizedCap, LockedStateStaysFiniteAndElastic) {
     const GeneralizedCap m(thesis_elastic(), thesis_cap());
     Voigt6 stress = Voigt6::Zero();
