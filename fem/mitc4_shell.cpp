@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 namespace grainload::fem {
 
@@ -30,7 +31,8 @@ Mat3 skew(const Vec3& v) {
 /// section 4.6), accurate to round-off for the n <= 15 used through a shell's thickness.
 void gauss_legendre(int n, std::vector<double>& points, std::vector<double>& weights) {
     if (n < 2 || n > kMaxThicknessPoints) {
-        throw std::invalid_argument("MITC4: thickness_points must be between 2 and 15");
+        throw std::invalid_argument("MITC4: thickness_points must be between 2 and " +
+                                    std::to_string(kMaxThicknessPoints));
     }
     points.assign(static_cast<std::size_t>(n), 0.0);
     weights.assign(static_cast<std::size_t>(n), 0.0);

@@ -8,6 +8,7 @@
 #include <array>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 namespace grainload::fem {
 
@@ -164,7 +165,8 @@ read_shell_parts(const io::CaseTable& fem, const std::vector<io::CaseTable>& she
         part.thickness_points =
             static_cast<int>(shell.integer_or("thickness_points", elastic ? 2 : 5));
         if (part.thickness_points < 2 || part.thickness_points > kMaxThicknessPoints) {
-            shell.fail("thickness_points", "expected 2 to 15 Gauss points through the thickness");
+            shell.fail("thickness_points", "expected 2 to " + std::to_string(kMaxThicknessPoints) +
+                                               " Gauss points through the thickness");
         }
         meshes.push_back(read_shell_mesh(shell));
         size = std::max(size, mesh_size(meshes.back()));
