@@ -194,15 +194,7 @@ template <class Shape, int D> struct ForceRow {
         LaneTerms terms;
         for (std::size_t first = 0; first < list.size(); first += kLaneBatch) {
             const std::size_t end = std::min(list.size(), first + kLaneBatch);
-            int count = 0;
-            int others = 0;
-            for (std::size_t k = first; k < end; ++k) {
-                const std::int32_t j = list[k];
-                picked[count] = j;
-                const bool same = key[j] == key_i;
-                count += same && j > i ? 1 : 0;
-                others += same ? 0 : 1;
-            }
+            const auto [count, others] = pick_same_body_pairs(list, first, end, key, i, picked);
             if (others == 0) { // no contact term comes between: the lanes add the terms
                 double own[4] = {a[0], a[1], a[2], heating};
                 if (count > 0) {

@@ -26,7 +26,8 @@ struct alignas(64) PairRecord {
 };
 static_assert(sizeof(PairRecord) == 128, "four 32-byte blocks");
 
-/// Settings of the 3D cubic-spline pair terms (rates.hpp compute_accelerations).
+/// Settings of the cubic-spline pair terms (rates.hpp compute_accelerations and, its first three,
+/// compute_velocity_gradient).
 struct LaneSettings {
     double support_squared;
     double inverse_h;
@@ -63,9 +64,9 @@ bool pair_lanes_available();
 /// spline, from the records' positions, velocities and masses: for the pairs inside the support,
 /// with g = W'(r)/r x_ij (ShapeTerms::gradient_factor_inside) and dv = v_j - v_i, adds m_j dv
 /// g^T to `acc` and m_i dv g^T to particle j's nine doubles at l + 9 j, both column major, pair
-/// by pair in order (a pair outside the support adds +0, which leaves every sum's bits as
-/// skipping it would). Only support_squared, inverse_h and alpha_over_h of `settings` are read.
-/// Requires pair_lanes_available().
+/// by pair in order (a pair outside the support adds +0 or -0, which leaves every sum's bits as
+/// skipping it would: a sum that starts at +0 never becomes -0). Only support_squared, inverse_h
+/// and alpha_over_h of `settings` are read. Requires pair_lanes_available().
 void gradient_lanes(const PairRecord* records, Index i, const std::int32_t* j, int count,
                     const LaneSettings& settings, double* l, double (&acc)[9]);
 

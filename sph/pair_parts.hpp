@@ -4,7 +4,9 @@
 #include "sph/particle_set.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <omp.h>
+#include <span>
 #include <vector>
 
 namespace grainload::sph {
@@ -55,6 +57,29 @@ template <int D> double separation(const Vec3& xi, const Vec3& xj, double (&d)[D
         r2 += d[c] * d[c];
     }
     return r2;
+}
+
+/// The same-body pairs (i, j > i) among entries [first, end) of row i's list, in the list's
+/// order, for the vector lanes (pair_lanes.hpp): each entry is written to `picked` and the end
+/// moved on past the picked ones only (no branch: whether an entry of a halved row is picked
+/// follows no pattern a predictor learns). `others`: entries of another key (contact partners).
+struct PickedPairs {
+    int count = 0;
+    int others = 0;
+};
+inline PickedPairs pick_same_body_pairs(std::span<const std::int32_t> list, std::size_t first,
+                                        std::size_t end, const std::vector<int>& key, Index i,
+                                        std::int32_t* picked) {
+    PickedPairs out;
+    const int key_i = key[static_cast<std::size_t>(i)];
+    for (std::size_t k = first; k < end; ++k) {
+        const std::int32_t j = list[k];
+        picked[out.count] = j;
+        const bool same = key[static_cast<std::size_t>(j)] == key_i;
+        out.count += same && j > i ? 1 : 0;
+        out.others += same ? 0 : 1;
+    }
+    return out;
 }
 
 /// Number of parts of a pass: the threads OpenMP would use.

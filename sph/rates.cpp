@@ -140,17 +140,11 @@ template <class Shape, int D, bool Corrected> struct GradientRow {
         const LaneSettings lanes{
             support_squared, w.inverse_h, w.alpha_over_h, 0.0, 0.0, 0.0, 0.0, 0.0};
         double acc[9] = {}; // column major
-        const int key_i = key[i];
         const auto list = neighbours.neighbours(i);
         std::int32_t picked[kLaneBatch];
         for (std::size_t first = 0; first < list.size(); first += kLaneBatch) {
             const std::size_t end = std::min(list.size(), first + kLaneBatch);
-            int count = 0;
-            for (std::size_t k = first; k < end; ++k) {
-                const std::int32_t j = list[k];
-                picked[count] = j;
-                count += key[j] == key_i && j > i ? 1 : 0;
-            }
+            const int count = pick_same_body_pairs(list, first, end, key, i, picked).count;
             if (count > 0) {
                 gradient_lanes(records, i, picked, count, lanes, sums.l, acc);
             }
@@ -243,22 +237,25 @@ void add_nine(double* to, const double* from) {
     }
 }
 
-/// The positions, velocities and masses of the material particles' records, all the
-/// kinematic pass's lanes read (the rest is prepare_force_inputs').
+/// Particle i's position, velocity and mass in its record: all the kinematic lanes read.
+void write_kinematic_fields(const ParticleSet& p, Index i, PairRecord& record) {
+    for (int c = 0; c < 3; ++c) {
+        record.position[c] = p.position[i][c];
+        record.velocity[c] = p.velocity[i][c];
+    }
+    record.mass = p.mass[i];
+}
+
+/// The kinematic fields of the material particles' records (the rest is
+/// prepare_force_inputs').
 void write_kinematic_records(const ParticleSet& p, std::vector<PairRecord>& records) {
     const Index n = p.size();
     records.resize(static_cast<std::size_t>(n));
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
-        if (p.wall_id[i] >= 0) {
-            continue;
+        if (p.wall_id[i] < 0) {
+            write_kinematic_fields(p, i, records[static_cast<std::size_t>(i)]);
         }
-        PairRecord& record = records[static_cast<std::size_t>(i)];
-        for (int c = 0; c < 3; ++c) {
-            record.position[c] = p.position[i][c];
-            record.velocity[c] = p.velocity[i][c];
-        }
-        record.mass = p.mass[i];
     }
 }
 
@@ -352,12 +349,8 @@ void write_pair_record(const ParticleSet& p, Index i, const Mat3& sigma, double 
     }
     record.density = p.density[i];
     record.unused = 0.0;
-    for (int c = 0; c < 3; ++c) {
-        record.position[c] = p.position[i][c];
-        record.velocity[c] = p.velocity[i][c];
-    }
+    write_kinematic_fields(p, i, record);
     record.sound_speed = sound_speed.empty() ? 0.0 : sound_speed[static_cast<std::size_t>(i)];
-    record.mass = p.mass[i];
 }
 
 } // namespace

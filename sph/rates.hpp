@@ -24,9 +24,10 @@ Mat3 correction_inverse(Mat3 moment, int dimension);
 /// (engineering shear), spin = axial vector of skew L.
 void store_kinematics(ParticleSet& particles, Index i, const Mat3& velocity_gradient);
 
-/// How the pair passes do their same-body pairs' arithmetic. The production form (3D cubic
-/// spline, no gradient correction, and for the forces no artificial stress) goes to the vector
-/// units where the processor has AVX2 (pair_lanes.hpp), with the same bits as the scalar rows;
+/// How the pair passes do their same-body pairs' arithmetic. The production form (cubic spline,
+/// no gradient correction; the forces also without artificial stress, 3D or plane strain; the
+/// kinematic pass in 3D) goes to the vector units where the processor has AVX2
+/// (pair_lanes.hpp), with the same bits as the scalar rows;
 /// `scalar` keeps the scalar rows everywhere (the reference the tests and benches compare
 /// against).
 enum class PairArithmetic { lanes_where_available, scalar };
