@@ -1,5 +1,7 @@
 // Stress updates per second of the constitutive models on one thread, with and without the
-// consistent tangent, and where the returns end (elastic, failure surface, cap, corner, apex).
+// consistent tangent, and through Material::update_points in blocks of 64 points as the SPH
+// stress update calls it (no tangent); and where the returns end (elastic, failure surface, cap,
+// corner, apex).
 // The sand is the thesis's generalized cap (section 7.2, X0 = 0: every compressed point sits on
 // the cap, as in the 3D column collapse) at the full stiffness and at K/1000, and the
 // Drucker-Prager sand of the 2D collapse. Each point follows its own random strain path: a
@@ -15,12 +17,14 @@
 #include "materials/drucker_prager.hpp"
 #include "materials/generalized_cap.hpp"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <numbers>
 #include <random>
+#include <span>
 #include <vector>
 
 namespace {
@@ -33,8 +37,14 @@ struct Figures {
     std::array<long, 5> regions{};
 };
 
+/// How the points are updated: one by one without or with the tangent, or in blocks.
+enum class Calls { single, tangent, blocks };
+
+/// Points a block of the SPH stress update holds (sph/stress_update.cpp).
+constexpr int kBlock = 64;
+
 Figures run(const Material& material, int points, int steps, double stress_step, double shear,
-            bool tangent) {
+            Calls calls) {
     const int n_state = material.state_size();
     std::vector<double> state(static_cast<std::size_t>(points * n_state));
     std::vector<Voigt6> stress(static_cast<std::size_t>(points), Voigt6::Zero());
@@ -51,16 +61,31 @@ Figures run(const Material& material, int points, int steps, double stress_step,
         }
         d.head<3>().array() -= strain_step; // compaction on average (tension positive)
     }
+    std::vector<double*> states(static_cast<std::size_t>(points));
+    for (int i = 0; i < points; ++i) {
+        states[static_cast<std::size_t>(i)] = state.data() + i * n_state;
+    }
+    std::vector<PlasticRegion> regions(static_cast<std::size_t>(points));
     Figures figures;
     Matrix6 d_stress;
     const auto start = std::chrono::steady_clock::now();
     for (int step = 0; step < steps; ++step) {
-        for (int i = 0; i < points; ++i) {
-            const PlasticRegion region =
-                material.update(increments[static_cast<std::size_t>(step * points + i)],
-                                stress[static_cast<std::size_t>(i)],
-                                {state.data() + i * n_state, static_cast<std::size_t>(n_state)},
-                                tangent ? &d_stress : nullptr);
+        const auto step_increments =
+            std::span(increments).subspan(static_cast<std::size_t>(step * points));
+        for (int i = 0; i < points; i += calls == Calls::blocks ? kBlock : 1) {
+            const auto u = static_cast<std::size_t>(i);
+            if (calls == Calls::blocks) {
+                const auto count = static_cast<std::size_t>(std::min(kBlock, points - i));
+                material.update_points(
+                    step_increments.subspan(u, count), std::span(stress).subspan(u, count),
+                    std::span(states).subspan(u, count), std::span(regions).subspan(u, count));
+                continue;
+            }
+            regions[u] = material.update(step_increments[u], stress[u],
+                                         {states[u], static_cast<std::size_t>(n_state)},
+                                         calls == Calls::tangent ? &d_stress : nullptr);
+        }
+        for (const PlasticRegion region : regions) {
             ++figures.regions[static_cast<std::size_t>(region)];
         }
     }
@@ -72,16 +97,19 @@ Figures run(const Material& material, int points, int steps, double stress_step,
 
 void report(const char* name, const Material& material, int points, int steps, double stress_step,
             double shear) {
-    for (const bool tangent : {false, true}) {
-        const Figures f = run(material, points, steps, stress_step, shear, tangent);
+    for (const Calls calls : {Calls::single, Calls::tangent, Calls::blocks}) {
+        const Figures f = run(material, points, steps, stress_step, shear, calls);
         const double total = static_cast<double>(points) * steps;
         std::array<double, 5> percent{};
         for (std::size_t r = 0; r < percent.size(); ++r) {
             percent[r] = 100.0 * static_cast<double>(f.regions[r]) / total;
         }
         std::printf("%-34s %-8s %10.3e   %5.1f %5.1f %5.1f %5.1f %5.1f\n", name,
-                    tangent ? "yes" : "no", f.updates_per_second, percent[0], percent[1],
-                    percent[2], percent[3], percent[4]);
+                    calls == Calls::tangent  ? "yes"
+                    : calls == Calls::blocks ? "blocks"
+                                             : "no",
+                    f.updates_per_second, percent[0], percent[1], percent[2], percent[3],
+                    percent[4]);
     }
 }
 

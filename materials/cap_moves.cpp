@@ -2,23 +2,55 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace grainload::materials::cap {
 
-CapMove move_cap(const Parameters& p, const Hardening& s, double dk) {
-    const double decay_n = hardening_decay(p, s.x);
+CapMoves::CapMoves(const Parameters& p, const Hardening& s)
+    : p_(p), s_(s), decay_n_(hardening_decay(p, s.x)),
+      shifted_(p.gamma * std::exp(-p.beta * s.kappa)), curved_(p.beta * shifted_),
+      envelope_n_(envelope(p, s.kappa)),
+      fast_(decay_n_ >= std::numeric_limits<double>::min() && std::isfinite(curved_)) {}
+
+CapMove CapMoves::operator()(double dk) const {
+    const double arg = -p_.beta * dk;
+    if (!fast_ || !(arg < 1.0)) {
+        return direct(dk);
+    }
+    // With m = expm1(-B1 dk): exp(-B1 kappa) = exp(-B1 kappa_n) (1 + m), so F(kappa) - F(kappa_n)
+    // = theta dk - gamma exp(-B1 kappa_n) m, the term the shift dX already holds.
+    const double m = std::expm1(arg);
+    const double change = p_.theta * dk - shifted_ * m;
+    CapMove c;
+    c.dx = dk + p_.R * change;
+    const double dm = std::expm1(-p_.D * c.dx);
+    const double decay = decay_n_ + decay_n_ * dm; // exp(-D (X_n + dX - X0))
+    const double f = envelope_n_ + change;
+    const double f_slope = p_.theta + (curved_ + curved_ * m);
+    c.dv = -p_.W * decay_n_ * dm;
+    c.rate = p_.W * p_.D * decay * (1.0 + p_.R * f_slope);
+    const double kappa = s_.kappa + dk;
+    const bool clamped = centre_clamped(p_, kappa);
+    c.b = clamped ? std::max(0.0, kappa / p_.R + f) : f;
+    c.b_slope = clamped ? 1.0 / p_.R + f_slope : f_slope;
+    return c;
+}
+
+CapMove CapMoves::direct(double dk) const {
     // F(k_n + dk) - F(k_n) = theta dk - gamma (exp(-B1 (k_n + dk)) - exp(-B1 k_n)); expm1 keeps
     // small moves exact, the plain difference avoids inf * 0 for large contractions.
-    const double shifted = p.gamma * std::exp(-p.beta * s.kappa);
-    const double arg = -p.beta * dk;
-    const double exp_change = arg < 1.0 ? shifted * std::expm1(arg)
-                                        : p.gamma * std::exp(-p.beta * (s.kappa + dk)) - shifted;
+    const double arg = -p_.beta * dk;
+    const double exp_change = arg < 1.0
+                                  ? shifted_ * std::expm1(arg)
+                                  : p_.gamma * std::exp(-p_.beta * (s_.kappa + dk)) - shifted_;
     CapMove c;
-    c.dx = dk + p.R * (p.theta * dk - exp_change);
+    c.dx = dk + p_.R * (p_.theta * dk - exp_change);
     // exp(-D (X_n + dX - X0)) in one exponent: finite even when decay_n has underflowed.
-    const double decay = std::exp(-p.D * (s.x + c.dx - p.X0));
-    c.dv = decay_n > 0.0 ? -p.W * decay_n * std::expm1(-p.D * c.dx) : -p.W * decay;
-    c.rate = p.W * p.D * decay * cap_position_slope(p, s.kappa + dk);
+    const double decay = std::exp(-p_.D * (s_.x + c.dx - p_.X0));
+    c.dv = decay_n_ > 0.0 ? -p_.W * decay_n_ * std::expm1(-p_.D * c.dx) : -p_.W * decay;
+    c.rate = p_.W * p_.D * decay * cap_position_slope(p_, s_.kappa + dk);
+    c.b = half_height(p_, s_.kappa + dk);
+    c.b_slope = half_height_slope(p_, s_.kappa + dk);
     return c;
 }
 
@@ -58,8 +90,9 @@ Shift shift_to(const Model& m, double i1_trial, const Hardening& s, Target targe
     const bool corner = target == Target::corner;
     const double p_n = corner ? corner_point(m.p, s.kappa, m.i1_min).i1 : cap_center(m.p, s.kappa);
     const double a_trial = i1_trial - p_n;
+    const CapMoves moves(m.p, s);
     const auto fn = [&](double dk, double& g, double& dg) {
-        const CapMove c = move_cap(m.p, s, dk);
+        const CapMove c = moves(dk);
         const Change d = corner ? corner_change(m, s, p_n, dk) : centre_change(m.p, s, dk);
         g = a_trial - d.d - 3.0 * m.bulk * c.dv;
         dg = -d.slope - 3.0 * m.bulk * c.rate;

@@ -1,31 +1,15 @@
 #include "materials/cap_return.hpp"
 
 #include "materials/cap_moves.hpp"
+#include "materials/cap_region.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <optional>
-#include <tuple>
-#include <utility>
+#include <vector>
 
 namespace grainload::materials::cap {
 namespace {
-
-// What round-off leaves of a Newton step on the cap, relative to the trial's distance from the
-// cap centre (a few ulps); and how often a step that leaves the admissible box is halved.
-constexpr double kRoundOff = 1e-15;
-constexpr int kMaxStepCuts = 60;
-// How close the reduced cap solve brings its start for the Newton polish (relative to the
-// corner's shift): Newton converges quadratically from there in 2-3 steps.
-constexpr double kStartTolerance = 1e-8;
-// Newton's a carries the round-off of the volumetric balance, about 1e-16 (I1_tr - L_n). An
-// a below this fraction of I1_tr - L_n (a return next to the corner) is left to the nested
-// solve, which treats a as exact: rho = 3a / (3a + G R^2 dv) must not inherit that round-off.
-constexpr double kResolvedGap = 1e-6;
-// corner_start's estimate of a is used below this fraction of I1_tr - L_n: there the trial's
-// start would cost at least log2(10) ~ 3 halved steps.
-constexpr double kNearCorner = 0.1;
 
 double tolerance_for(const Model& m, double i1_trial, double q_trial, const Hardening& s) {
     return kTolerance * (std::abs(i1_trial) + q_trial + std::abs(s.kappa) + std::abs(m.p.k) + 1.0);
@@ -79,7 +63,7 @@ Return corner_return(const Model& m, double i1_trial, double q_trial, const Hard
     if (!shift.feasible) {
         return tension_return(m, i1_trial, q_trial, s); // the corner lies below I1_min
     }
-    const CapMove c = move_cap(m.p, s, shift.dk);
+    const CapMove c = CapMoves(m.p, s)(shift.dk);
     const double corner_n = corner_point(m.p, s.kappa, m.i1_min).i1;
     const Change d = corner_change(m, s, corner_n, shift.dk);
     const double i1 = corner_n + d.d;
@@ -138,42 +122,6 @@ Return failure_return(const Model& m, double i1_trial, double q_trial, const Har
     return r;
 }
 
-/// Cap residual in the unknowns a = I1 - L >= 0 and kappa, with its partial derivatives.
-struct CapResidual {
-    double g, g_a, g_k, g_q;
-    double rho, rho_a, rho_k;
-};
-
-/// Elliptical cap fc = (I1 - L)^2 + R^2 (J2 - B^2), thesis (4.6.3.9), with associated flow
-/// (4.6.3.31)-(4.6.3.33): dv = 6 dlambda a and s = s_tr / (1 + 2 G R^2 dlambda), hence
-/// rho = 3a / (3a + G R^2 dv). fc is divided by (a + R B) > 0 so that the residual stays
-/// linear-like as R -> 0: g = a - R B + R^2 rho^2 q_tr^2 / (a + R B); R = 0 gives g = a.
-/// B = B(kappa) is the half-height (X - L) / R, F(kappa) unless the centre is clamped.
-CapResidual cap_residual(const Model& m, double q_trial, double a, double kappa, const CapMove& c) {
-    const Parameters& p = m.p;
-    const double soft = m.shear * p.R * p.R;
-    const double den = 3.0 * a + soft * c.dv;
-    CapResidual r{};
-    r.rho = 1.0;
-    if (den > 0.0) {
-        r.rho = 3.0 * a / den;
-        r.rho_a = 3.0 * soft * c.dv / (den * den);
-        r.rho_k = -3.0 * a * soft * c.rate / (den * den);
-    }
-    const double b = half_height(p, kappa);
-    const double b_k = half_height_slope(p, kappa);
-    const double sum = a + p.R * b;
-    const double rq2 = p.R * p.R * q_trial * q_trial;
-    const double tail = sum > 0.0 ? rq2 * r.rho * r.rho / sum : 0.0;
-    const double tail_rho = sum > 0.0 ? 2.0 * rq2 * r.rho / sum : 0.0;
-    const double tail_sum = sum > 0.0 ? -tail / sum : 0.0;
-    r.g = a - p.R * b + tail;
-    r.g_a = 1.0 + tail_rho * r.rho_a + tail_sum;
-    r.g_k = -p.R * b_k + tail_rho * r.rho_k + tail_sum * p.R * b_k;
-    r.g_q = sum > 0.0 ? 2.0 * p.R * p.R * q_trial * r.rho * r.rho / sum : 0.0;
-    return r;
-}
-
 /// R = 0: the cap is the plane I1 = X = L (4.6.3.3); below the envelope the deviator is
 /// untouched, above it the solution is the corner's.
 Return flat_cap(Return corner, double q_trial, const Parameters& p) {
@@ -184,196 +132,6 @@ Return flat_cap(Return corner, double q_trial, const Parameters& p) {
         corner.drho_dq = 0.0;
     }
     return corner;
-}
-
-/// What the cap solves share: the trial's distance from the centre and the box for kappa.
-struct CapBox {
-    double a_trial = 0.0; ///< I1_tr - L_n
-    double dk_max = 0.0;  ///< a >= 0 bounds the move: L(kappa) <= I1_tr
-};
-
-/// Newton on both cap equations at once, r1 = (I1_tr - L_n) - dL(dk) - 3K dv(dk) - a and
-/// r2 = g(a, kappa_n + dk), from the start (a, dk) passed in. A step that would leave the
-/// admissible box 0 <= a <= I1_tr - L_n, 0 <= dk <= dk_max is halved until it stays inside:
-/// the first step from the trial overshoots to a < 0 whenever the hardening is stiff
-/// (3K dv'(0) >> 1, e.g. every compressed point of the thesis sand with X0 = 0). Returns false
-/// when no step inside the box is found or the iteration does not converge.
-/// Converged: |da| below kTolerance a or the residual's round-off, about 1e-15 (I1_tr - L_n).
-bool cap_newton(const Model& m, double q_trial, const Hardening& s, const CapBox& box, double& a,
-                double& dk) {
-    const double a_trial = box.a_trial;
-    for (int iteration = 0; iteration < 25; ++iteration) {
-        const CapMove c = move_cap(m.p, s, dk);
-        const Change d = centre_change(m.p, s, dk);
-        const CapResidual r = cap_residual(m, q_trial, a, s.kappa + dk, c);
-        const double r1 = a_trial - d.d - 3.0 * m.bulk * c.dv - a;
-        const double j12 = -d.slope - 3.0 * m.bulk * c.rate; // dr1/da = -1
-        const double det = -r.g_k - j12 * r.g_a;
-        if (!(det != 0.0)) {
-            return false;
-        }
-        double da = (r1 * r.g_k - j12 * r.g) / det;
-        double ddk = (-r.g - r.g_a * r1) / det;
-        for (int cuts = 0;
-             !(a - da >= 0.0 && a - da <= a_trial && dk - ddk >= 0.0 && dk - ddk <= box.dk_max);
-             ++cuts) {
-            if (cuts == kMaxStepCuts) {
-                return false;
-            }
-            da *= 0.5;
-            ddk *= 0.5;
-        }
-        a -= da;
-        dk -= ddk;
-        if (std::abs(da) <= kTolerance * a + kRoundOff * a_trial &&
-            std::abs(ddk) <= kTolerance * box.dk_max) {
-            return true;
-        }
-    }
-    return false;
-}
-
-/// A start for cap_newton next to the corner, where the returns of a stiff hardening law
-/// (3K dv' >> 1) end: dk from the volumetric balance linearised at the trial with a = 0, and a
-/// from the cap condition g = 0 at that dk in the limit 3a << G R^2 dv, where rho = 3a / (G R^2
-/// dv): a^2 (1 + (3 q_tr / (G R dv))^2) = R^2 B^2. From the trial instead, Newton's first steps
-/// leave the box (a < 0) and are halved about log2((I1_tr - L_n) / a) times before it converges
-/// (8-15 iterations against 3-5 from here for the compacting granular block of
-/// bench/sph_throughput). Returns false where the estimate is not next to the corner (a above
-/// kNearCorner of the trial's), where the trial is as good a start.
-bool corner_start(const Model& m, double q_trial, const Hardening& s, const CapBox& box, double& a,
-                  double& dk) {
-    const double rate =
-        centre_change(m.p, s, 0.0).slope + 3.0 * m.bulk * move_cap(m.p, s, 0.0).rate;
-    const double dk_start = box.a_trial / rate;
-    if (!(dk_start > 0.0 && dk_start <= box.dk_max)) {
-        return false;
-    }
-    const double ratio = 3.0 * q_trial / (m.shear * m.p.R * move_cap(m.p, s, dk_start).dv);
-    const double a_start =
-        m.p.R * half_height(m.p, s.kappa + dk_start) / std::sqrt(1.0 + ratio * ratio);
-    if (!(a_start > 0.0 && a_start < kNearCorner * box.a_trial)) {
-        return false;
-    }
-    a = a_start;
-    dk = dk_start;
-    return true;
-}
-
-/// a(dk) = (I1_tr - L_n) - dL(dk) - 3K dv(dk): the volumetric balance solved for a.
-double balance_gap(const Model& m, const Hardening& s, double a_trial, double dk) {
-    return a_trial - centre_change(m.p, s, dk).d - 3.0 * m.bulk * move_cap(m.p, s, dk).dv;
-}
-
-/// A start for cap_newton where the one from the trial fails. The volumetric balance gives a
-/// explicitly, a(dk), so the cap condition reduces to h(dk) = g(a(dk), kappa_n + dk) on
-/// [0, dk_centre]: h(0) > 0 (the trial is outside the cap) and h(dk_centre) = -R B <= 0 (a = 0,
-/// rho = 0). For a trial far above the envelope, R^2 q_tr^2 > (a + R B)^2 makes g decrease with
-/// a and h rise from dk = 0, so Newton from the trial heads out of the box (the thesis sand at
-/// full stiffness: 94 % of its cap returns). The bracketed solve on h does not care; it only
-/// has to get near the root, from where cap_newton converges in a few steps to the coupled
-/// equations' tolerance. Returns false when the centre shift is infeasible.
-bool cap_reduced_start(const Model& m, double q_trial, const Hardening& s, double a_trial,
-                       const Shift& centre, double& a, double& dk) {
-    if (!centre.feasible || !(centre.dk > 0.0)) {
-        return false;
-    }
-    const auto reduced = [&](double dk_try, double& h, double& dh) {
-        const CapMove c = move_cap(m.p, s, dk_try);
-        const Change d = centre_change(m.p, s, dk_try);
-        const double slope = -d.slope - 3.0 * m.bulk * c.rate; // da/dkappa
-        const CapResidual r = cap_residual(
-            m, q_trial, std::max(a_trial - d.d - 3.0 * m.bulk * c.dv, 0.0), s.kappa + dk_try, c);
-        h = r.g;
-        dh = r.g_a * slope + r.g_k;
-    };
-    dk = solve_bracketed(reduced, 0.0, centre.dk, kStartTolerance * centre.dk).value;
-    a = std::max(balance_gap(m, s, a_trial, dk), 0.0);
-    return true;
-}
-
-/// The nested, bracketed cap solve (the safe path): the unknown a in [0, I1_tr - L_n]; for each
-/// a the move dk solves the volumetric balance a(dk) = a on [0, dk_centre]. Returns (a, dk).
-std::pair<double, double> cap_nested(const Model& m, double q_trial, const Hardening& s,
-                                     double a_trial, const Shift& centre) {
-    const double dk_max = centre.dk; // a = 0 bounds dk
-    const double tolerance = kTolerance * dk_max;
-    double last_dk = std::numeric_limits<double>::quiet_NaN(); // warm start
-    const auto move_for = [&](double a_try) {
-        const auto balance = [&](double dk_try, double& g, double& dg) {
-            const CapMove c = move_cap(m.p, s, dk_try);
-            const Change d = centre_change(m.p, s, dk_try);
-            g = a_trial - d.d - 3.0 * m.bulk * c.dv - a_try;
-            dg = -d.slope - 3.0 * m.bulk * c.rate;
-        };
-        last_dk = solve_bracketed(balance, 0.0, dk_max, tolerance, 0.0, last_dk).value;
-        return last_dk;
-    };
-    const auto fn = [&](double a_try, double& g, double& dg) {
-        const double dk_try = move_for(a_try);
-        const CapMove c = move_cap(m.p, s, dk_try);
-        const Change d = centre_change(m.p, s, dk_try);
-        const CapResidual r = cap_residual(m, q_trial, a_try, s.kappa + dk_try, c);
-        g = r.g;
-        dg = r.g_a - r.g_k / (d.slope + 3.0 * m.bulk * c.rate);
-    };
-    const double a = solve_bracketed(fn, 0.0, a_trial, 0.0, kTolerance).value;
-    return {a, move_for(a)};
-}
-
-/// Cap return with the unknown a = I1 - L in [0, I1_tr - L_n]; for each a the move dk of kappa
-/// solves the volumetric balance (I1_tr - L_n) - dL(dk) - 3K dv(dk) = a, (4.6.3.35)-(4.6.3.37).
-/// Solving for a rather than L resolves returns that end next to the corner (a ~ R^2, tiny for
-/// small R) and trials within round-off of I1_tr = L_n. cap_newton is tried from corner_start
-/// where that applies, then from the trial, then from cap_reduced_start; the nested, bracketed
-/// solve is the safe path left when all fail.
-Return cap_return(const Model& m, double i1_trial, double q_trial, const Hardening& s) {
-    const Parameters& p = m.p;
-    if (p.R == 0.0) {
-        return flat_cap(corner_return(m, i1_trial, q_trial, s), q_trial, p);
-    }
-    const double l_n = cap_center(p, s.kappa);
-    // L(kappa) <= I1_tr bounds kappa by I1_tr, i.e. dk <= a_trial + (L_n - kappa_n).
-    const CapBox box{i1_trial - l_n, i1_trial - l_n + (l_n - s.kappa)};
-    double a = box.a_trial;
-    double dk = 0.0;
-    bool converged =
-        corner_start(m, q_trial, s, box, a, dk) && cap_newton(m, q_trial, s, box, a, dk);
-    if (!converged) {
-        a = box.a_trial;
-        dk = 0.0;
-        converged = cap_newton(m, q_trial, s, box, a, dk);
-    }
-    std::optional<Shift> centre; // solved once, for the reduced start and the nested solve
-    if (!converged) {
-        centre = shift_to(m, i1_trial, s, Target::centre);
-        converged = cap_reduced_start(m, q_trial, s, box.a_trial, *centre, a, dk) &&
-                    cap_newton(m, q_trial, s, box, a, dk);
-    }
-    if (!(converged && a >= kResolvedGap * box.a_trial)) {
-        if (!centre) {
-            centre = shift_to(m, i1_trial, s, Target::centre);
-        }
-        std::tie(a, dk) = cap_nested(m, q_trial, s, box.a_trial, *centre);
-    }
-    const CapMove c = move_cap(p, s, dk);
-    const Change d = centre_change(p, s, dk);
-    const double kappa = s.kappa + dk;
-    const CapResidual res = cap_residual(m, q_trial, a, kappa, c);
-    Return r = finish(PlasticRegion::cap, l_n + d.d + a, res.rho, {s.x + c.dx, kappa}, c.dv);
-    // Implicit differentiation of g(a, kappa(a, I1_tr), q_tr) = 0 with
-    // dkappa = (dI1_tr - da) / (L' + 3K dv').
-    const double slope = 1.0 / (d.slope + 3.0 * m.bulk * c.rate);
-    const double g_a = res.g_a - res.g_k * slope;
-    const double a_i1 = -res.g_k * slope / g_a;
-    const double a_q = -res.g_q / g_a;
-    const double k_i1 = slope * (1.0 - a_i1);
-    const double k_q = -slope * a_q;
-    r.di1_di1 = d.slope * k_i1 + a_i1;
-    r.di1_dq = d.slope * k_q + a_q;
-    r.drho_di1 = res.rho_a * a_i1 + res.rho_k * k_i1;
-    r.drho_dq = res.rho_a * a_q + res.rho_k * k_q;
-    return r;
 }
 
 /// Flat top of a cap whose centre is clamped at L = 0 (MAT_025, kappa < 0): between the corner
@@ -404,35 +162,73 @@ bool in_tension_region(const Model& m, double i1_trial, double q_trial, const Ha
            i1_trial <= m.i1_min - 9.0 * m.bulk * envelope_slope(m.p, m.i1_min) * excess / m.shear;
 }
 
-} // namespace
+/// Which return a trial takes (thesis 4.6.3, "Algorithm"; docs/theory/generalized_cap.md).
+enum class Route { elastic, tension, failure, cap, flat_top };
 
-Return return_map(const Model& m, double i1_trial, double q_trial, const Hardening& state) {
+Route route(const Model& m, double i1_trial, double q_trial, const Hardening& state) {
     if (in_tension_region(m, i1_trial, q_trial, state)) {
-        return tension_return(m, i1_trial, q_trial, state);
+        return Route::tension;
     }
     const double l = cap_center(m.p, state.kappa);
     if (i1_trial > l) {
         const double b = half_height(m.p, state.kappa);
         const double a = i1_trial - l;
         const double fc = a * a + m.p.R * m.p.R * (q_trial * q_trial - b * b);
+        if (!(fc > 0.0)) {
+            return Route::elastic;
+        }
         // A locked cap follows the stress elastically (dv = 0); above the envelope only the
         // failure surface can flow.
-        if (fc > 0.0 && locked(m.p, state) && q_trial > envelope(m.p, i1_trial)) {
-            return failure_return(m, i1_trial, q_trial, state);
-        }
-        if (fc > 0.0) {
-            return cap_return(m, i1_trial, q_trial, state);
-        }
-    } else if (centre_clamped(m.p, state.kappa) && q_trial > half_height(m.p, state.kappa) &&
-               i1_trial >= corner_point(m.p, state.kappa, m.i1_min).i1) {
-        return flat_top_return(m, i1_trial, q_trial, state);
-    } else if (q_trial > envelope(m.p, i1_trial)) {
+        return locked(m.p, state) && q_trial > envelope(m.p, i1_trial) ? Route::failure
+                                                                       : Route::cap;
+    }
+    if (centre_clamped(m.p, state.kappa) && q_trial > half_height(m.p, state.kappa) &&
+        i1_trial >= corner_point(m.p, state.kappa, m.i1_min).i1) {
+        return Route::flat_top;
+    }
+    return q_trial > envelope(m.p, i1_trial) ? Route::failure : Route::elastic;
+}
+
+Return along(Route route, const Model& m, double i1_trial, double q_trial, const Hardening& state) {
+    switch (route) {
+    case Route::tension:
+        return tension_return(m, i1_trial, q_trial, state);
+    case Route::failure:
         return failure_return(m, i1_trial, q_trial, state);
+    case Route::cap:
+        return m.p.R == 0.0 ? flat_cap(corner_return(m, i1_trial, q_trial, state), q_trial, m.p)
+                            : cap_return(m, i1_trial, q_trial, state);
+    case Route::flat_top:
+        return flat_top_return(m, i1_trial, q_trial, state);
+    case Route::elastic:
+        break;
     }
     Return r;
     r.i1 = i1_trial;
     r.hardening = state;
     return r;
+}
+
+} // namespace
+
+Return return_map(const Model& m, double i1_trial, double q_trial, const Hardening& state) {
+    return along(route(m, i1_trial, q_trial, state), m, i1_trial, q_trial, state);
+}
+
+void return_map_many(const Model& m, std::span<const double> i1_trial,
+                     std::span<const double> q_trial, std::span<const Hardening> states,
+                     std::span<Return> returns) {
+    std::vector<int> caps;
+    caps.reserve(returns.size());
+    for (std::size_t k = 0; k < returns.size(); ++k) {
+        const Route r = route(m, i1_trial[k], q_trial[k], states[k]);
+        if (r == Route::cap && m.p.R > 0.0) {
+            caps.push_back(static_cast<int>(k));
+        } else {
+            returns[k] = along(r, m, i1_trial[k], q_trial[k], states[k]);
+        }
+    }
+    cap_returns(m, i1_trial, q_trial, states, caps, returns);
 }
 
 } // namespace grainload::materials::cap

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace grainload::materials {
 namespace {
@@ -211,30 +212,61 @@ void GeneralizedCap::initialise_state(std::span<double> state) const {
     state[kPlasticVolumetricStrain] = p.W * (1.0 - cap::hardening_decay(p, x));
 }
 
-PlasticRegion GeneralizedCap::update(const Voigt6& strain_increment, Voigt6& stress,
-                                     std::span<double> state, Matrix6* tangent) const {
+GeneralizedCap::Trial GeneralizedCap::trial(const Voigt6& strain_increment,
+                                            const Voigt6& stress) const {
     // Compression positive from here on: sigma_c = -sigma, deps_c = -deps. The tangent
     // d sigma / d deps = d sigma_c / d deps_c needs no sign change.
-    const Voigt6 trial = -stress - elastic_.stress_from_strain(strain_increment);
-    const double i1_tr = trial.head<3>().sum();
-    Voigt6 s_tr = trial;
-    s_tr.head<3>().array() -= i1_tr / 3.0;
-    const double q_tr = root_j2(s_tr);
+    Trial t;
+    t.deviator = -stress - elastic_.stress_from_strain(strain_increment);
+    t.i1 = t.deviator.head<3>().sum();
+    t.deviator.head<3>().array() -= t.i1 / 3.0;
+    t.q = root_j2(t.deviator);
+    return t;
+}
 
-    const cap::Hardening before{state[kCapPosition], state[kHardeningParameter]};
-    const cap::Return r = cap::return_map(model_, i1_tr, q_tr, before);
-
-    Voigt6 sigma = r.rho * s_tr;
+void GeneralizedCap::apply(const Trial& t, const cap::Return& r, Voigt6& stress,
+                           double* state) const {
+    Voigt6 sigma = r.rho * t.deviator;
     sigma.head<3>().array() += r.i1 / 3.0;
     stress = -sigma;
     state[kCapPosition] = r.hardening.x;
     state[kHardeningParameter] = r.hardening.kappa;
     state[kPlasticVolumetricStrain] += r.hardening_strain;
-    state[kEquivalentPlasticStrain] += equivalent_increment(elastic_, i1_tr, q_tr, r);
+    state[kEquivalentPlasticStrain] += equivalent_increment(elastic_, t.i1, t.q, r);
+}
+
+PlasticRegion GeneralizedCap::update(const Voigt6& strain_increment, Voigt6& stress,
+                                     std::span<double> state, Matrix6* tangent) const {
+    const Trial t = trial(strain_increment, stress);
+    const cap::Hardening before{state[kCapPosition], state[kHardeningParameter]};
+    const cap::Return r = cap::return_map(model_, t.i1, t.q, before);
+    apply(t, r, stress, state.data());
     if (tangent != nullptr) {
-        *tangent = consistent_tangent(elastic_, r, s_tr, q_tr);
+        *tangent = consistent_tangent(elastic_, r, t.deviator, t.q);
     }
     return r.region;
+}
+
+void GeneralizedCap::update_points(std::span<const Voigt6> strain_increments,
+                                   std::span<Voigt6> stresses, std::span<double* const> states,
+                                   std::span<PlasticRegion> regions) const {
+    const std::size_t n = stresses.size();
+    std::vector<Trial> trials(n);
+    std::vector<double> i1(n);
+    std::vector<double> q(n);
+    std::vector<cap::Hardening> before(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        trials[k] = trial(strain_increments[k], stresses[k]);
+        i1[k] = trials[k].i1;
+        q[k] = trials[k].q;
+        before[k] = {states[k][kCapPosition], states[k][kHardeningParameter]};
+    }
+    std::vector<cap::Return> returns(n);
+    cap::return_map_many(model_, i1, q, before, returns);
+    for (std::size_t k = 0; k < n; ++k) {
+        apply(trials[k], returns[k], stresses[k], states[k]);
+        regions[k] = returns[k].region;
+    }
 }
 
 double GeneralizedCap::equivalent_plastic_strain(std::span<const double> state) const {

@@ -48,11 +48,25 @@ class GeneralizedCap final : public Material {
     void initialise_state(std::span<double> state) const override;
     PlasticRegion update(const Voigt6& strain_increment, Voigt6& stress, std::span<double> state,
                          Matrix6* tangent) const override;
+    /// The points' returns through cap::return_map_many: bit for bit as update().
+    void update_points(std::span<const Voigt6> strain_increments, std::span<Voigt6> stresses,
+                       std::span<double* const> states,
+                       std::span<PlasticRegion> regions) const override;
     double equivalent_plastic_strain(std::span<const double> state) const override;
 
     const cap::Parameters& parameters() const { return model_.p; }
 
   private:
+    /// Trial invariants of one point, compression positive.
+    struct Trial {
+        Voigt6 deviator;
+        double i1 = 0.0;
+        double q = 0.0;
+    };
+    Trial trial(const Voigt6& strain_increment, const Voigt6& stress) const;
+    /// Stress and state after the return r from trial t.
+    void apply(const Trial& t, const cap::Return& r, Voigt6& stress, double* state) const;
+
     cap::Model model_;
 };
 

@@ -8,6 +8,15 @@ void Material::initialise_state(std::span<double> state) const {
     std::fill(state.begin(), state.end(), 0.0);
 }
 
+void Material::update_points(std::span<const Voigt6> strain_increments, std::span<Voigt6> stresses,
+                             std::span<double* const> states,
+                             std::span<PlasticRegion> regions) const {
+    const auto size = static_cast<std::size_t>(state_size());
+    for (std::size_t k = 0; k < stresses.size(); ++k) {
+        regions[k] = update(strain_increments[k], stresses[k], {states[k], size}, nullptr);
+    }
+}
+
 double Material::equivalent_plastic_strain(std::span<const double>) const {
     return 0.0;
 }

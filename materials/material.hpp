@@ -41,6 +41,13 @@ class Material {
     virtual PlasticRegion update(const Voigt6& strain_increment, Voigt6& stress,
                                  std::span<double> state, Matrix6* tangent) const = 0;
 
+    /// update() without tangents for several points (states[k] holds point k's state_size()
+    /// doubles), each exactly as update() gives it. The default takes them one after another;
+    /// a model whose return iterates may interleave the points' iterations.
+    virtual void update_points(std::span<const Voigt6> strain_increments,
+                               std::span<Voigt6> stresses, std::span<double* const> states,
+                               std::span<PlasticRegion> regions) const;
+
     /// Equivalent plastic strain carried in `state`, for output.
     virtual double equivalent_plastic_strain(std::span<const double> state) const;
 

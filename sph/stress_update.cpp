@@ -2,44 +2,105 @@
 
 #include "sph/rates.hpp"
 
-#include <Eigen/LU>
+#include <algorithm>
+#include <vector>
 
 namespace grainload::sph {
 
 Mat3 jaumann_rotation(const Vec3& spin, double dt) {
-    Mat3 w;
-    w << 0.0, -spin.z(), spin.y(), spin.z(), 0.0, -spin.x(), -spin.y(), spin.x(), 0.0;
-    const Mat3 half = 0.5 * dt * w;
-    return (Mat3::Identity() - half).inverse() * (Mat3::Identity() + half);
+    // With S = dt/2 W = skew(a), a = dt/2 spin: S^3 = -|a|^2 S, so (I - S)^-1 = I + (S + S^2) /
+    // (1 + |a|^2) and the Cayley transform is Q = I + 2 (S + S^2) / (1 + |a|^2), where
+    // S^2 = a a^T - |a|^2 I: no 3x3 inverse each particle-step.
+    const Vec3 a = 0.5 * dt * spin;
+    const double squared = a.squaredNorm();
+    const double scale = 2.0 / (1.0 + squared);
+    Mat3 s;
+    s << -squared, -a.z(), a.y(), a.z(), -squared, -a.x(), -a.y(), a.x(), -squared;
+    s.noalias() += a * a.transpose();
+    return Mat3::Identity() + scale * s;
 }
+
+namespace {
+
+/// Particles whose stresses one task updates: as many as a dynamic chunk used to hold.
+constexpr Index kBlock = 64;
+
+/// A block's points of one material, handed to Material::update_points together.
+struct PointBatch {
+    std::vector<Index> particles;
+    std::vector<Voigt6> increments;
+    std::vector<Voigt6> stresses;
+    std::vector<Voigt6> old_stresses;
+    std::vector<double*> states;
+    std::vector<materials::PlasticRegion> regions;
+
+    void clear() {
+        particles.clear();
+        increments.clear();
+        stresses.clear();
+        old_stresses.clear();
+        states.clear();
+    }
+};
+
+/// The objective rotation and the strain increment of particle i, queued in the batch.
+void queue(ParticleSet& p, Index i, double dt, PointBatch& b) {
+    const Mat3 q = jaumann_rotation(p.spin[i], dt);
+    b.particles.push_back(i);
+    b.old_stresses.push_back(stress_voigt(q * stress_tensor(p.stress[i]) * q.transpose()));
+    b.stresses.push_back(b.old_stresses.back());
+    b.increments.push_back(p.strain_rate[i] * dt);
+    b.states.push_back(p.state.data() + p.state_offset[i]);
+}
+
+/// The queued points' returns and what the particles keep of them.
+void flush(ParticleSet& p, const materials::Material& material, double dt, PointBatch& b) {
+    b.regions.resize(b.particles.size());
+    material.update_points(b.increments, b.stresses, b.states, b.regions);
+    const auto size = static_cast<std::size_t>(material.state_size());
+    for (std::size_t k = 0; k < b.particles.size(); ++k) {
+        const Index i = b.particles[k];
+        p.plastic_region[i] = static_cast<int>(b.regions[k]);
+        p.plastic_strain[i] = material.equivalent_plastic_strain({b.states[k], size});
+        p.stress[i] = b.stresses[k];
+        // sigma : D with engineering shear strains is the plain Voigt dot product.
+        const double power =
+            0.5 * (b.old_stresses[k] + b.stresses[k]).dot(p.strain_rate[i]) / p.density[i];
+        p.energy_rate[i] = power;
+        p.internal_energy[i] += power * dt;
+    }
+    b.clear();
+}
+
+} // namespace
 
 void update_stresses(ParticleSet& p, std::span<const materials::Material* const> materials,
                      double dt, Index count) {
     const Index n = count < 0 ? p.size() : count;
+    const Index blocks = (n + kBlock - 1) / kBlock;
     // Dynamic: wall particles are skipped and plastic returns cost more than elastic steps, so
     // equal index ranges are unequal work (a static split gave one thread every grain of the
     // column collapse, whose walls come after its grains).
-#pragma omp parallel for schedule(dynamic, 64)
-    for (Index i = 0; i < n; ++i) {
-        if (p.wall_id[i] >= 0) {
-            continue;
+#pragma omp parallel
+    {
+        PointBatch batch;
+#pragma omp for schedule(dynamic, 1)
+        for (Index block = 0; block < blocks; ++block) {
+            int material = -1;
+            for (Index i = block * kBlock; i < std::min(n, (block + 1) * kBlock); ++i) {
+                if (p.wall_id[i] >= 0) {
+                    continue;
+                }
+                if (p.material_id[i] != material && material >= 0) {
+                    flush(p, *materials[static_cast<std::size_t>(material)], dt, batch);
+                }
+                material = p.material_id[i];
+                queue(p, i, dt, batch);
+            }
+            if (material >= 0) {
+                flush(p, *materials[static_cast<std::size_t>(material)], dt, batch);
+            }
         }
-        const materials::Material& material =
-            *materials[static_cast<std::size_t>(p.material_id[i])];
-        const Mat3 q = jaumann_rotation(p.spin[i], dt);
-        const Voigt6 old_stress = stress_voigt(q * stress_tensor(p.stress[i]) * q.transpose());
-        Voigt6 stress = old_stress;
-        const Voigt6 strain_increment = p.strain_rate[i] * dt;
-        const std::span<double> state(p.state.data() + p.state_offset[i],
-                                      static_cast<std::size_t>(material.state_size()));
-        p.plastic_region[i] =
-            static_cast<int>(material.update(strain_increment, stress, state, nullptr));
-        p.plastic_strain[i] = material.equivalent_plastic_strain(state);
-        p.stress[i] = stress;
-        // sigma : D with engineering shear strains is the plain Voigt dot product.
-        const double power = 0.5 * (old_stress + stress).dot(p.strain_rate[i]) / p.density[i];
-        p.energy_rate[i] = power;
-        p.internal_energy[i] += power * dt;
     }
 }
 

@@ -3,6 +3,7 @@
 #include "sph/stress_update.hpp"
 
 #include <Eigen/Geometry>
+#include <Eigen/LU>
 #include <Eigen/SVD>
 #include <gtest/gtest.h>
 #include <random>
@@ -165,6 +166,20 @@ TEST(Rates, JaumannRotationIsOrthogonalAndSecondOrder) {
     const Mat3 rotated = q * sigma * q.transpose();
     const Mat3 jaumann = sigma + dt * (w * sigma - sigma * w);
     EXPECT_LT((rotated - jaumann).norm(), 10.0 * dt * dt * sigma.norm());
+}
+
+// The closed form against the Cayley transform as Hughes & Winget define it, (I - dt/2 W)^-1
+// (I + dt/2 W) with the inverse taken by Eigen, from a small spin to one that turns by more
+// than a radian in the step: the two differ by round-off of the inverse (a few ulps of 1).
+TEST(Rates, JaumannRotationIsTheCayleyTransform) {
+    for (const double dt : {1e-6, 1e-3, 1.0, 3.0}) {
+        const Vec3 spin(0.3, -0.2, 1.1);
+        Mat3 w;
+        w << 0.0, -spin.z(), spin.y(), spin.z(), 0.0, -spin.x(), -spin.y(), spin.x(), 0.0;
+        const Mat3 half = 0.5 * dt * w;
+        const Mat3 cayley = (Mat3::Identity() - half).inverse() * (Mat3::Identity() + half);
+        EXPECT_LT((jaumann_rotation(spin, dt) - cayley).norm(), 1e-15) << "dt = " << dt;
+    }
 }
 
 // A flow front thinned to one row with one neighbour a little off the line: M (the
