@@ -81,6 +81,18 @@ CapBox cap_box(double i1_trial, double l_n, const Hardening& s) {
     return {i1_trial - l_n, i1_trial - l_n + (l_n - s.kappa)};
 }
 
+/// An iterate of the cap solves with its moved cap, c = moves(dk): evaluated once where the
+/// iterate is set, read by the Newton step from it and by the return when it is the solution.
+struct Iterate {
+    double a = 0.0;
+    double dk = 0.0;
+    CapMove c;
+};
+
+Iterate iterate_at(const CapMoves& moves, double a, double dk) {
+    return {a, dk, moves(dk)};
+}
+
 /// Where a Newton iteration on the cap leaves the unknowns.
 enum class Step { more, converged, failed };
 
@@ -91,9 +103,11 @@ enum class Step { more, converged, failed };
 /// point of the thesis sand with X0 = 0). Fails when no step inside the box is found.
 /// Converged: |da| below kTolerance a or the residual's round-off, about 1e-15 (I1_tr - L_n).
 Step newton_step(const Model& m, double q_trial, const Hardening& s, const CapMoves& moves,
-                 const CapBox& box, double& a, double& dk) {
+                 const CapBox& box, Iterate& x) {
     const double a_trial = box.a_trial;
-    const CapMove c = moves(dk);
+    double a = x.a;
+    double dk = x.dk;
+    const CapMove& c = x.c;
     const Change d = centre_change(m.p, s, dk);
     const CapResidual r = cap_residual(m, q_trial, a, c);
     const double r1 = a_trial - d.d - 3.0 * m.bulk * c.dv - a;
@@ -116,6 +130,7 @@ Step newton_step(const Model& m, double q_trial, const Hardening& s, const CapMo
     }
     a -= da;
     dk -= ddk;
+    x = iterate_at(moves, a, dk);
     const bool small = std::abs(da) <= kTolerance * a + kRoundOff * a_trial &&
                        std::abs(ddk) <= kTolerance * box.dk_max;
     return small ? Step::converged : Step::more;
@@ -124,9 +139,9 @@ Step newton_step(const Model& m, double q_trial, const Hardening& s, const CapMo
 /// Newton on the cap equations from the start (a, dk) passed in, newton_step after
 /// newton_step; false when a step fails or kMaxNewtonIterations do not converge.
 bool cap_newton(const Model& m, double q_trial, const Hardening& s, const CapMoves& moves,
-                const CapBox& box, double& a, double& dk) {
+                const CapBox& box, Iterate& x) {
     for (int iteration = 0; iteration < kMaxNewtonIterations; ++iteration) {
-        const Step step = newton_step(m, q_trial, s, moves, box, a, dk);
+        const Step step = newton_step(m, q_trial, s, moves, box, x);
         if (step != Step::more) {
             return step == Step::converged;
         }
@@ -143,7 +158,7 @@ bool cap_newton(const Model& m, double q_trial, const Hardening& s, const CapMov
 /// bench/sph_throughput). Returns false where the estimate is not next to the corner (a above
 /// kNearCorner of the trial's), where the trial is as good a start.
 bool corner_start(const Model& m, double q_trial, const Hardening& s, const CapMoves& moves,
-                  const CapBox& box, double& a, double& dk) {
+                  const CapBox& box, Iterate& x) {
     const double rate = centre_change(m.p, s, 0.0).slope + 3.0 * m.bulk * moves(0.0).rate;
     const double dk_start = box.a_trial / rate;
     if (!(dk_start > 0.0 && dk_start <= box.dk_max)) {
@@ -155,8 +170,7 @@ bool corner_start(const Model& m, double q_trial, const Hardening& s, const CapM
     if (!(a_start > 0.0 && a_start < kNearCorner * box.a_trial)) {
         return false;
     }
-    a = a_start;
-    dk = dk_start;
+    x = {a_start, dk_start, c};
     return true;
 }
 
@@ -222,11 +236,13 @@ std::pair<double, double> cap_nested(const Model& m, double q_trial, const Harde
     return {a, move_for(a)};
 }
 
-/// The return at the converged (a, dk): stress invariants, hardening and the Jacobian of
+/// The return at the converged iterate: stress invariants, hardening and the Jacobian of
 /// (I1, rho) for the consistent tangent.
-Return cap_finish(const Model& m, double q_trial, const Hardening& s, const CapMoves& moves,
-                  double l_n, double a, double dk) {
-    const CapMove c = moves(dk);
+Return cap_finish(const Model& m, double q_trial, const Hardening& s, double l_n,
+                  const Iterate& x) {
+    const double a = x.a;
+    const double dk = x.dk;
+    const CapMove& c = x.c;
     const Change d = centre_change(m.p, s, dk);
     const double kappa = s.kappa + dk;
     const CapResidual res = cap_residual(m, q_trial, a, c);
@@ -263,28 +279,31 @@ Return cap_return(const Model& m, double i1_trial, double q_trial, const Hardeni
     const double l_n = cap_center(m.p, s.kappa);
     const CapBox box = cap_box(i1_trial, l_n, s);
     const CapMoves moves(m.p, s);
-    double a = box.a_trial;
-    double dk = 0.0;
-    bool converged = corner_start(m, q_trial, s, moves, box, a, dk) &&
-                     cap_newton(m, q_trial, s, moves, box, a, dk);
+    Iterate x;
+    bool converged =
+        corner_start(m, q_trial, s, moves, box, x) && cap_newton(m, q_trial, s, moves, box, x);
     if (!converged) {
-        a = box.a_trial;
-        dk = 0.0;
-        converged = cap_newton(m, q_trial, s, moves, box, a, dk);
+        x = iterate_at(moves, box.a_trial, 0.0);
+        converged = cap_newton(m, q_trial, s, moves, box, x);
     }
     std::optional<Shift> centre; // solved once, for the reduced start and the nested solve
+    double a = 0.0;
+    double dk = 0.0;
     if (!converged) {
         centre = shift_to(m, i1_trial, s, Target::centre);
-        converged = cap_reduced_start(m, q_trial, s, moves, box.a_trial, *centre, a, dk) &&
-                    cap_newton(m, q_trial, s, moves, box, a, dk);
+        if (cap_reduced_start(m, q_trial, s, moves, box.a_trial, *centre, a, dk)) {
+            x = iterate_at(moves, a, dk);
+            converged = cap_newton(m, q_trial, s, moves, box, x);
+        }
     }
-    if (!(converged && a >= kResolvedGap * box.a_trial)) {
+    if (!(converged && x.a >= kResolvedGap * box.a_trial)) {
         if (!centre) {
             centre = shift_to(m, i1_trial, s, Target::centre);
         }
         std::tie(a, dk) = cap_nested(m, q_trial, s, moves, box.a_trial, *centre);
+        x = iterate_at(moves, a, dk);
     }
-    return cap_finish(m, q_trial, s, moves, l_n, a, dk);
+    return cap_finish(m, q_trial, s, l_n, x);
 }
 
 void cap_returns(const Model& m, std::span<const double> i1_trial, std::span<const double> q_trial,
@@ -295,8 +314,7 @@ void cap_returns(const Model& m, std::span<const double> i1_trial, std::span<con
         double l_n;
         CapBox box;
         CapMoves moves;
-        double a;
-        double dk;
+        Iterate x;
         Step step;
     };
     std::vector<Lane> lanes;
@@ -306,10 +324,9 @@ void cap_returns(const Model& m, std::span<const double> i1_trial, std::span<con
         const double l_n = cap_center(m.p, s.kappa);
         const CapBox box = cap_box(i1_trial[k], l_n, s);
         const CapMoves moves(m.p, s);
-        double a = box.a_trial;
-        double dk = 0.0;
-        if (corner_start(m, q_trial[k], s, moves, box, a, dk)) {
-            lanes.push_back({k, l_n, box, moves, a, dk, Step::more});
+        Iterate x;
+        if (corner_start(m, q_trial[k], s, moves, box, x)) {
+            lanes.push_back({k, l_n, box, moves, x, Step::more});
         } else {
             returns[k] = cap_return(m, i1_trial[k], q_trial[k], s);
         }
@@ -319,8 +336,7 @@ void cap_returns(const Model& m, std::span<const double> i1_trial, std::span<con
         iterating = false;
         for (Lane& l : lanes) {
             if (l.step == Step::more) {
-                l.step =
-                    newton_step(m, q_trial[l.point], states[l.point], l.moves, l.box, l.a, l.dk);
+                l.step = newton_step(m, q_trial[l.point], states[l.point], l.moves, l.box, l.x);
                 iterating = iterating || l.step == Step::more;
             }
         }
@@ -329,8 +345,8 @@ void cap_returns(const Model& m, std::span<const double> i1_trial, std::span<con
         const int k = l.point;
         // What cap_return would do after the same iterations; the others take its whole chain,
         // which repeats these iterations and goes on to the next start.
-        returns[k] = l.step == Step::converged && l.a >= kResolvedGap * l.box.a_trial
-                         ? cap_finish(m, q_trial[k], states[k], l.moves, l.l_n, l.a, l.dk)
+        returns[k] = l.step == Step::converged && l.x.a >= kResolvedGap * l.box.a_trial
+                         ? cap_finish(m, q_trial[k], states[k], l.l_n, l.x)
                          : cap_return(m, i1_trial[k], q_trial[k], states[k]);
     }
 }
