@@ -9,7 +9,8 @@
 // Each row also prints the kinetic energy after the timed steps, so that a change meant to keep
 // the physics can be checked against the figure of an earlier build (docs/performance.md).
 //
-// usage: sph_throughput [particles ...]   (default 1e4 1e5 1e6)
+// usage: sph_throughput [--granular] [particles ...]   (default 1e4 1e5 1e6; --granular: the
+//                                                      granular rows, issue 20's targets, only)
 //        sph_throughput --calibrate FILE  (the throughput `grainload check` estimates run times
 //                                          with: 2D and 3D blocks of the generalized cap sand,
 //                                          1 thread and all cores; writes FILE as JSON)
@@ -378,7 +379,12 @@ int main(int argc, char** argv) {
         return calibrate(argv[2]);
     }
     std::vector<Index> sizes;
+    bool granular_only = false;
     for (int a = 1; a < argc; ++a) {
+        if (std::string(argv[a]) == "--granular") {
+            granular_only = true;
+            continue;
+        }
         sizes.push_back(static_cast<Index>(std::atof(argv[a])));
     }
     if (sizes.empty()) {
@@ -400,7 +406,9 @@ int main(int argc, char** argv) {
     for (const Index n : sizes) {
         for (const int threads : {1, 2}) {
             for (const Mode& mode : modes) {
-                print(n, threads, mode.label, measure(n, threads, mode, steel));
+                if (!granular_only) {
+                    print(n, threads, mode.label, measure(n, threads, mode, steel));
+                }
             }
             print(n, threads, "granular Drucker-Prager",
                   measure_granular(n, threads, kDruckerPrager));

@@ -6,10 +6,13 @@
 
 namespace grainload::materials::cap {
 
-CapMoves::CapMoves(const Parameters& p, const Hardening& s)
-    : p_(p), s_(s), decay_n_(hardening_decay(p, s.x)),
-      shifted_(p.gamma * std::exp(-p.beta * s.kappa)), curved_(p.beta * shifted_),
-      envelope_n_(envelope(p, s.kappa)),
+StateTerms state_terms(const Parameters& p, const Hardening& s) {
+    return {hardening_decay(p, s.x), envelope(p, s.kappa)};
+}
+
+CapMoves::CapMoves(const Parameters& p, const Hardening& s, const StateTerms& terms)
+    : p_(p), s_(s), decay_n_(terms.decay), shifted_(p.gamma * std::exp(-p.beta * s.kappa)),
+      curved_(p.beta * shifted_), envelope_n_(terms.envelope),
       fast_(decay_n_ >= std::numeric_limits<double>::min() && std::isfinite(curved_)) {}
 
 CapMove CapMoves::operator()(double dk) const {
@@ -34,6 +37,12 @@ CapMove CapMoves::operator()(double dk) const {
     c.b = clamped ? std::max(0.0, kappa / p_.R + f) : f;
     c.b_slope = clamped ? 1.0 / p_.R + f_slope : f_slope;
     return c;
+}
+
+double CapMoves::start_rate() const {
+    // operator()(0.0): m = expm1(-0) = -0, so dX = 0, the decay is decay_n and F' = theta + the
+    // curvature term; the same products in the same order.
+    return fast_ ? p_.W * p_.D * decay_n_ * (1.0 + p_.R * (p_.theta + curved_)) : direct(0.0).rate;
 }
 
 CapMove CapMoves::direct(double dk) const {

@@ -25,6 +25,14 @@ struct CapMove {
     double b_slope = 0.0;
 };
 
+/// The state's exponential terms: exp(-D (X_n - X0)) and F(kappa_n). The return's routing
+/// needs them too (the half-height and whether the cap is locked), and hands them on.
+struct StateTerms {
+    double decay = 0.0;
+    double envelope = 0.0;
+};
+StateTerms state_terms(const Parameters& p, const Hardening& s);
+
 /// The moves of one state's cap. exp(-D (X_n - X0)), exp(-B1 kappa_n) and expm1(-B1 kappa_n)
 /// are formed once, and every exponential at the moved cap is written through them: a move
 /// costs two expm1 (of -B1 dk and of -D dX) where forming each term afresh took eight, which
@@ -32,8 +40,11 @@ struct CapMove {
 /// contractions by more than 1/B1, take the direct form.
 class CapMoves {
   public:
-    CapMoves(const Parameters& p, const Hardening& s);
+    CapMoves(const Parameters& p, const Hardening& s, const StateTerms& terms);
+    CapMoves(const Parameters& p, const Hardening& s) : CapMoves(p, s, state_terms(p, s)) {}
     CapMove operator()(double dk) const;
+    /// d(dv)/d(dk) at dk = 0, as operator()(0.0) gives it, without its exponentials.
+    double start_rate() const;
 
   private:
     CapMove direct(double dk) const;

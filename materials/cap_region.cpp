@@ -159,7 +159,7 @@ bool cap_newton(const Model& m, double q_trial, const Hardening& s, const CapMov
 /// kNearCorner of the trial's), where the trial is as good a start.
 bool corner_start(const Model& m, double q_trial, const Hardening& s, const CapMoves& moves,
                   const CapBox& box, Iterate& x) {
-    const double rate = centre_change(m.p, s, 0.0).slope + 3.0 * m.bulk * moves(0.0).rate;
+    const double rate = centre_change(m.p, s, 0.0).slope + 3.0 * m.bulk * moves.start_rate();
     const double dk_start = box.a_trial / rate;
     if (!(dk_start > 0.0 && dk_start <= box.dk_max)) {
         return false;
@@ -307,8 +307,8 @@ Return cap_return(const Model& m, double i1_trial, double q_trial, const Hardeni
 }
 
 void cap_returns(const Model& m, std::span<const double> i1_trial, std::span<const double> q_trial,
-                 std::span<const Hardening> states, std::span<const int> points,
-                 std::span<Return> returns) {
+                 std::span<const Hardening> states, std::span<const StateTerms> terms,
+                 std::span<const int> points, std::span<Return> returns) {
     struct Lane {
         int point;
         double l_n;
@@ -323,7 +323,7 @@ void cap_returns(const Model& m, std::span<const double> i1_trial, std::span<con
         const Hardening& s = states[k];
         const double l_n = cap_center(m.p, s.kappa);
         const CapBox box = cap_box(i1_trial[k], l_n, s);
-        const CapMoves moves(m.p, s);
+        const CapMoves moves(m.p, s, terms[k]);
         Iterate x;
         if (corner_start(m, q_trial[k], s, moves, box, x)) {
             lanes.push_back({k, l_n, box, moves, x, Step::more});

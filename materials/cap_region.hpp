@@ -1,5 +1,6 @@
 #pragma once
 
+#include "materials/cap_moves.hpp"
 #include "materials/cap_return.hpp"
 
 #include <span>
@@ -17,8 +18,9 @@ Return cap_return(const Model& m, double i1_trial, double q_trial, const Hardeni
 /// compacting points of a granular flow) take their Newton iterations in lockstep, one point's
 /// after another's: each iteration is a chain of exponentials and divisions that waits on
 /// itself, and the processor runs the next point's chain while one point's waits.
+/// terms[k] are point k's state_terms (cap_moves.hpp), which the routing has formed.
 void cap_returns(const Model& m, std::span<const double> i1_trial, std::span<const double> q_trial,
-                 std::span<const Hardening> states, std::span<const int> points,
-                 std::span<Return> returns);
+                 std::span<const Hardening> states, std::span<const StateTerms> terms,
+                 std::span<const int> points, std::span<Return> returns);
 
 } // namespace grainload::materials::cap

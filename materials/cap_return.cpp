@@ -15,12 +15,6 @@ double tolerance_for(const Model& m, double i1_trial, double q_trial, const Hard
     return kTolerance * (std::abs(i1_trial) + q_trial + std::abs(s.kappa) + std::abs(m.p.k) + 1.0);
 }
 
-/// A locked point has exhausted its compaction (eps_v^p = W, exp(-D (X - X0)) = 0): its cap
-/// sits at infinity and only dilatancy can bring it back.
-bool locked(const Parameters& p, const Hardening& s) {
-    return !(hardening_decay(p, s.x) > 0.0);
-}
-
 Return finish(PlasticRegion region, double i1, double rho, const Hardening& after, double dv) {
     Return r;
     r.region = region;
@@ -165,22 +159,29 @@ bool in_tension_region(const Model& m, double i1_trial, double q_trial, const Ha
 /// Which return a trial takes (thesis 4.6.3, "Algorithm"; docs/theory/generalized_cap.md).
 enum class Route { elastic, tension, failure, cap, flat_top };
 
-Route route(const Model& m, double i1_trial, double q_trial, const Hardening& state) {
+/// `terms` receives the state's terms (cap_moves.hpp) where the route is the cap's.
+Route route(const Model& m, double i1_trial, double q_trial, const Hardening& state,
+            StateTerms& terms) {
     if (in_tension_region(m, i1_trial, q_trial, state)) {
         return Route::tension;
     }
     const double l = cap_center(m.p, state.kappa);
     if (i1_trial > l) {
-        const double b = half_height(m.p, state.kappa);
+        // half_height(p, kappa) from the envelope the cap's moves also start from.
+        terms.envelope = envelope(m.p, state.kappa);
+        const double b = centre_clamped(m.p, state.kappa)
+                             ? std::max(0.0, state.kappa / m.p.R + terms.envelope)
+                             : terms.envelope;
         const double a = i1_trial - l;
         const double fc = a * a + m.p.R * m.p.R * (q_trial * q_trial - b * b);
         if (!(fc > 0.0)) {
             return Route::elastic;
         }
-        // A locked cap follows the stress elastically (dv = 0); above the envelope only the
-        // failure surface can flow.
-        return locked(m.p, state) && q_trial > envelope(m.p, i1_trial) ? Route::failure
-                                                                       : Route::cap;
+        // A locked cap (exp(-D (X - X0)) = 0: eps_v^p = W) follows the stress elastically
+        // (dv = 0); above the envelope only the failure surface can flow.
+        terms.decay = hardening_decay(m.p, state.x);
+        return !(terms.decay > 0.0) && q_trial > envelope(m.p, i1_trial) ? Route::failure
+                                                                         : Route::cap;
     }
     if (centre_clamped(m.p, state.kappa) && q_trial > half_height(m.p, state.kappa) &&
         i1_trial >= corner_point(m.p, state.kappa, m.i1_min).i1) {
@@ -212,7 +213,8 @@ Return along(Route route, const Model& m, double i1_trial, double q_trial, const
 } // namespace
 
 Return return_map(const Model& m, double i1_trial, double q_trial, const Hardening& state) {
-    return along(route(m, i1_trial, q_trial, state), m, i1_trial, q_trial, state);
+    StateTerms terms;
+    return along(route(m, i1_trial, q_trial, state, terms), m, i1_trial, q_trial, state);
 }
 
 void return_map_many(const Model& m, std::span<const double> i1_trial,
@@ -220,15 +222,16 @@ void return_map_many(const Model& m, std::span<const double> i1_trial,
                      std::span<Return> returns) {
     std::vector<int> caps;
     caps.reserve(returns.size());
+    std::vector<StateTerms> terms(returns.size());
     for (std::size_t k = 0; k < returns.size(); ++k) {
-        const Route r = route(m, i1_trial[k], q_trial[k], states[k]);
+        const Route r = route(m, i1_trial[k], q_trial[k], states[k], terms[k]);
         if (r == Route::cap && m.p.R > 0.0) {
             caps.push_back(static_cast<int>(k));
         } else {
             returns[k] = along(r, m, i1_trial[k], q_trial[k], states[k]);
         }
     }
-    cap_returns(m, i1_trial, q_trial, states, caps, returns);
+    cap_returns(m, i1_trial, q_trial, states, terms, caps, returns);
 }
 
 } // namespace grainload::materials::cap
