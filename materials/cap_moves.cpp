@@ -63,14 +63,6 @@ CapMove CapMoves::direct(double dk) const {
     return c;
 }
 
-Change centre_change(const Parameters& p, const Hardening& s, double dk) {
-    const double kappa = s.kappa + dk;
-    if (!centre_clamped(p, s.kappa) && !centre_clamped(p, kappa)) {
-        return {dk, 1.0};
-    }
-    return {cap_center(p, kappa) - cap_center(p, s.kappa), cap_center_slope(p, kappa)};
-}
-
 Change corner_change(const Model& m, const Hardening& s, double corner_n, double dk) {
     const double kappa = s.kappa + dk;
     if (!centre_clamped(m.p, s.kappa) && !centre_clamped(m.p, kappa)) {

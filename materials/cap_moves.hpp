@@ -65,7 +65,13 @@ struct Change {
     double d = 0.0;
     double slope = 1.0;
 };
-Change centre_change(const Parameters& p, const Hardening& s, double dk);
+inline Change centre_change(const Parameters& p, const Hardening& s, double dk) {
+    const double kappa = s.kappa + dk;
+    if (!centre_clamped(p, s.kappa) && !centre_clamped(p, kappa)) {
+        return {dk, 1.0};
+    }
+    return {cap_center(p, kappa) - cap_center(p, s.kappa), cap_center_slope(p, kappa)};
+}
 /// Change of the corner I1, c(kappa), when kappa moves by dk (dk itself where c = kappa).
 Change corner_change(const Model& m, const Hardening& s, double corner_n, double dk);
 

@@ -29,18 +29,6 @@ double cap_position_slope(const Parameters& p, double kappa) {
     return 1.0 + p.R * envelope_slope(p, kappa);
 }
 
-bool centre_clamped(const Parameters& p, double kappa) {
-    return p.semantics == Semantics::mat025 && p.R > 0.0 && kappa < 0.0;
-}
-
-double cap_center(const Parameters& p, double kappa) {
-    return centre_clamped(p, kappa) ? 0.0 : kappa;
-}
-
-double cap_center_slope(const Parameters& p, double kappa) {
-    return centre_clamped(p, kappa) ? 0.0 : 1.0;
-}
-
 double half_height(const Parameters& p, double kappa) {
     // (X - L) / R with L = 0: kappa / R + F(kappa), 0 at the lowest cap (X = 0) up to
     // round-off, which must not turn the deviator round; with L = kappa: F(kappa) exactly.
@@ -142,47 +130,6 @@ double hardening_for_corner(const Parameters& p, double i1, double kappa_min) {
     };
     const double scale = std::abs(kappa_min) + std::abs(i1) + p.k;
     return solve_bracketed(fn, kappa_min, 0.0, 1e-15 * scale).value;
-}
-
-Root solve_bracketed(const std::function<void(double, double&, double&)>& fn, double lo, double hi,
-                     double tolerance, double relative, double guess) {
-    double g_lo = 0.0;
-    double g_hi = 0.0;
-    double slope_lo = 0.0;
-    double slope_hi = 0.0;
-    fn(lo, g_lo, slope_lo);
-    if (g_lo == 0.0) {
-        return {lo, slope_lo};
-    }
-    fn(hi, g_hi, slope_hi);
-    if (g_hi == 0.0) {
-        return {hi, slope_hi};
-    }
-    const bool rising = g_lo < 0.0;
-    const bool lo_closer = std::abs(g_lo) < std::abs(g_hi);
-    double u = lo_closer ? lo : hi;
-    double g = lo_closer ? g_lo : g_hi;
-    double slope = lo_closer ? slope_lo : slope_hi;
-    if (guess > std::min(lo, hi) && guess < std::max(lo, hi)) {
-        u = guess;
-        fn(u, g, slope);
-    }
-    for (int iteration = 0; iteration < 200 && g != 0.0; ++iteration) {
-        ((g < 0.0) == rising ? lo : hi) = u;
-        double next = u - g / slope;
-        const bool inside = next > std::min(lo, hi) && next < std::max(lo, hi);
-        if (!(slope != 0.0) || !inside) {
-            next = 0.5 * (lo + hi);
-        }
-        const double step = next - u;
-        u = next;
-        fn(u, g, slope);
-        const double limit = tolerance + relative * std::abs(u);
-        if (std::abs(step) <= limit || std::abs(hi - lo) <= limit) {
-            break;
-        }
-    }
-    return {u, slope};
 }
 
 } // namespace grainload::materials::cap

@@ -1,6 +1,7 @@
 #pragma once
 
-#include <functional>
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 // Scalar building blocks of the generalized cap model (Sandler-DiMaggio-Baladi), written
@@ -51,11 +52,18 @@ double minimum_pressure(const Parameters& p);
 double cap_position(const Parameters& p, double kappa);
 double cap_position_slope(const Parameters& p, double kappa);
 
-/// True where the centre is held at L = 0 while kappa < 0 (MAT_025 with R > 0).
-bool centre_clamped(const Parameters& p, double kappa);
+/// True where the centre is held at L = 0 while kappa < 0 (MAT_025 with R > 0). Inline with the
+/// two below: every Newton step of the cap asks.
+inline bool centre_clamped(const Parameters& p, double kappa) {
+    return p.semantics == Semantics::mat025 && p.R > 0.0 && kappa < 0.0;
+}
 /// Cap centre L(kappa): max(kappa, 0) for MAT_025 with R > 0, kappa otherwise.
-double cap_center(const Parameters& p, double kappa);
-double cap_center_slope(const Parameters& p, double kappa);
+inline double cap_center(const Parameters& p, double kappa) {
+    return centre_clamped(p, kappa) ? 0.0 : kappa;
+}
+inline double cap_center_slope(const Parameters& p, double kappa) {
+    return centre_clamped(p, kappa) ? 0.0 : 1.0;
+}
 /// Half-height B(kappa) = (X - L) / R of the ellipse: F(kappa) where L = kappa.
 double half_height(const Parameters& p, double kappa);
 double half_height_slope(const Parameters& p, double kappa);
@@ -98,8 +106,47 @@ struct Root {
 /// `fn` returns g and g'. Newton steps that leave the bracket are replaced by bisection, so
 /// the solve cannot diverge; it stops at |step| <= tolerance + relative |u|. Newton starts at
 /// `guess` when it lies inside the bracket, else at the end with the smaller |g|.
-Root solve_bracketed(const std::function<void(double, double&, double&)>& fn, double lo, double hi,
-                     double tolerance, double relative = 0.0,
-                     double guess = std::numeric_limits<double>::quiet_NaN());
+/// A template (in the header) so that each caller's residual is inlined into the iteration.
+template <class Fn>
+Root solve_bracketed(const Fn& fn, double lo, double hi, double tolerance, double relative = 0.0,
+                     double guess = std::numeric_limits<double>::quiet_NaN()) {
+    double g_lo = 0.0;
+    double g_hi = 0.0;
+    double slope_lo = 0.0;
+    double slope_hi = 0.0;
+    fn(lo, g_lo, slope_lo);
+    if (g_lo == 0.0) {
+        return {lo, slope_lo};
+    }
+    fn(hi, g_hi, slope_hi);
+    if (g_hi == 0.0) {
+        return {hi, slope_hi};
+    }
+    const bool rising = g_lo < 0.0;
+    const bool lo_closer = std::abs(g_lo) < std::abs(g_hi);
+    double u = lo_closer ? lo : hi;
+    double g = lo_closer ? g_lo : g_hi;
+    double slope = lo_closer ? slope_lo : slope_hi;
+    if (guess > std::min(lo, hi) && guess < std::max(lo, hi)) {
+        u = guess;
+        fn(u, g, slope);
+    }
+    for (int iteration = 0; iteration < 200 && g != 0.0; ++iteration) {
+        ((g < 0.0) == rising ? lo : hi) = u;
+        double next = u - g / slope;
+        const bool inside = next > std::min(lo, hi) && next < std::max(lo, hi);
+        if (!(slope != 0.0) || !inside) {
+            next = 0.5 * (lo + hi);
+        }
+        const double step = next - u;
+        u = next;
+        fn(u, g, slope);
+        const double limit = tolerance + relative * std::abs(u);
+        if (std::abs(step) <= limit || std::abs(hi - lo) <= limit) {
+            break;
+        }
+    }
+    return {u, slope};
+}
 
 } // namespace grainload::materials::cap
