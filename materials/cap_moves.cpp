@@ -15,30 +15,6 @@ CapMoves::CapMoves(const Parameters& p, const Hardening& s, const StateTerms& te
       curved_(p.beta * shifted_), envelope_n_(terms.envelope),
       fast_(decay_n_ >= std::numeric_limits<double>::min() && std::isfinite(curved_)) {}
 
-CapMove CapMoves::operator()(double dk) const {
-    const double arg = -p_.beta * dk;
-    if (!fast_ || !(arg < 1.0)) {
-        return direct(dk);
-    }
-    // With m = expm1(-B1 dk): exp(-B1 kappa) = exp(-B1 kappa_n) (1 + m), so F(kappa) - F(kappa_n)
-    // = theta dk - gamma exp(-B1 kappa_n) m, the term the shift dX already holds.
-    const double m = std::expm1(arg);
-    const double change = p_.theta * dk - shifted_ * m;
-    CapMove c;
-    c.dx = dk + p_.R * change;
-    const double dm = std::expm1(-p_.D * c.dx);
-    const double decay = decay_n_ + decay_n_ * dm; // exp(-D (X_n + dX - X0))
-    const double f = envelope_n_ + change;
-    const double f_slope = p_.theta + (curved_ + curved_ * m);
-    c.dv = -p_.W * decay_n_ * dm;
-    c.rate = p_.W * p_.D * decay * (1.0 + p_.R * f_slope);
-    const double kappa = s_.kappa + dk;
-    const bool clamped = centre_clamped(p_, kappa);
-    c.b = clamped ? std::max(0.0, kappa / p_.R + f) : f;
-    c.b_slope = clamped ? 1.0 / p_.R + f_slope : f_slope;
-    return c;
-}
-
 double CapMoves::start_rate() const {
     // operator()(0.0): m = expm1(-0) = -0, so dX = 0, the decay is decay_n and F' = theta + the
     // curvature term; the same products in the same order.

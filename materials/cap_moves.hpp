@@ -2,6 +2,9 @@
 
 #include "materials/cap_return.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 // Moves of the cap's hardening parameter kappa shared by the returns of cap_return.cpp: the
 // shift of X and the plastic volumetric strain of the hardening law for a move dk, the moves of
 // the centre L(kappa) and of the corner c(kappa), the contraction after dilatant flow, and the
@@ -57,6 +60,32 @@ class CapMoves {
     double envelope_n_; ///< k - gamma + theta kappa_n - gamma expm1(-B1 kappa_n) = F(kappa_n)
     bool fast_;
 };
+
+// Inline: the Newton steps of the cap call it once each, and the call's spills cost about as
+// much as its arithmetic.
+inline CapMove CapMoves::operator()(double dk) const {
+    const double arg = -p_.beta * dk;
+    if (!fast_ || !(arg < 1.0)) {
+        return direct(dk);
+    }
+    // With m = expm1(-B1 dk): exp(-B1 kappa) = exp(-B1 kappa_n) (1 + m), so F(kappa) - F(kappa_n)
+    // = theta dk - gamma exp(-B1 kappa_n) m, the term the shift dX already holds.
+    const double m = std::expm1(arg);
+    const double change = p_.theta * dk - shifted_ * m;
+    CapMove c;
+    c.dx = dk + p_.R * change;
+    const double dm = std::expm1(-p_.D * c.dx);
+    const double decay = decay_n_ + decay_n_ * dm; // exp(-D (X_n + dX - X0))
+    const double f = envelope_n_ + change;
+    const double f_slope = p_.theta + (curved_ + curved_ * m);
+    c.dv = -p_.W * decay_n_ * dm;
+    c.rate = p_.W * p_.D * decay * (1.0 + p_.R * f_slope);
+    const double kappa = s_.kappa + dk;
+    const bool clamped = centre_clamped(p_, kappa);
+    c.b = clamped ? std::max(0.0, kappa / p_.R + f) : f;
+    c.b_slope = clamped ? 1.0 / p_.R + f_slope : f_slope;
+    return c;
+}
 
 /// Change of the cap centre L(kappa) = max(kappa, 0) (MAT_025) or kappa when kappa moves by dk,
 /// and dL/dkappa at the end. Where the centre is kappa on both ends the change is dk itself,

@@ -6,21 +6,6 @@
 
 namespace grainload::materials::cap {
 
-double envelope(const Parameters& p, double i1) {
-    // k - gamma exp(-B1 I1) written as (k - gamma) - gamma expm1(-B1 I1): with the usual
-    // k = gamma (the apex at the origin) the plain form cancels to round-off of k for small
-    // I1 (|F| below about 1e-16 k is lost entirely), this one keeps F's relative accuracy.
-    return (p.k - p.gamma) + p.theta * i1 - p.gamma * std::expm1(-p.beta * i1);
-}
-
-double envelope_slope(const Parameters& p, double i1) {
-    return p.theta + p.gamma * p.beta * std::exp(-p.beta * i1);
-}
-
-double envelope_curvature(const Parameters& p, double i1) {
-    return -p.gamma * p.beta * p.beta * std::exp(-p.beta * i1);
-}
-
 double cap_position(const Parameters& p, double kappa) {
     return kappa + p.R * envelope(p, kappa);
 }
@@ -39,10 +24,6 @@ double half_height(const Parameters& p, double kappa) {
 double half_height_slope(const Parameters& p, double kappa) {
     return centre_clamped(p, kappa) ? 1.0 / p.R + envelope_slope(p, kappa)
                                     : envelope_slope(p, kappa);
-}
-
-double hardening_decay(const Parameters& p, double x) {
-    return std::exp(-p.D * (x - p.X0));
 }
 
 double minimum_pressure(const Parameters& p) {

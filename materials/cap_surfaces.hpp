@@ -36,9 +36,21 @@ struct Parameters {
 
 /// Failure envelope F(I1) = k + theta I1 - gamma exp(-B1 I1), thesis (4.6.3.15): the failure
 /// surface is sqrt(J2) = F(I1).
-double envelope(const Parameters& p, double i1);
-double envelope_slope(const Parameters& p, double i1);
-double envelope_curvature(const Parameters& p, double i1);
+/// Inline, as the other small pieces below: the returns evaluate them at every iteration.
+inline double envelope(const Parameters& p, double i1) {
+    // k - gamma exp(-B1 I1) written as (k - gamma) - gamma expm1(-B1 I1): with the usual
+    // k = gamma (the apex at the origin) the plain form cancels to round-off of k for small
+    // I1 (|F| below about 1e-16 k is lost entirely), this one keeps F's relative accuracy.
+    return (p.k - p.gamma) + p.theta * i1 - p.gamma * std::expm1(-p.beta * i1);
+}
+
+inline double envelope_slope(const Parameters& p, double i1) {
+    return p.theta + p.gamma * p.beta * std::exp(-p.beta * i1);
+}
+
+inline double envelope_curvature(const Parameters& p, double i1) {
+    return -p.gamma * p.beta * p.beta * std::exp(-p.beta * i1);
+}
 
 /// Lowest admissible I1: the tension cutoff -T or the apex of the envelope (F = 0), whichever
 /// is larger.
@@ -71,7 +83,9 @@ double half_height_slope(const Parameters& p, double kappa);
 /// exp(-D (X - X0)): the hardening law (4.6.3.4) reads eps_v^p = W (1 - hardening_decay(X)).
 /// Volumetric plastic strain is always formed as a difference W (decay_n - decay(X)), so that a
 /// locked state (decay -> 0) needs no logarithm.
-double hardening_decay(const Parameters& p, double x);
+inline double hardening_decay(const Parameters& p, double x) {
+    return std::exp(-p.D * (x - p.X0));
+}
 
 /// kappa such that X(kappa) = x, searched from `guess` but not below `floor` (the caller knows
 /// the root lies above it); Newton on the monotone X(kappa), (4.6.3.19).
