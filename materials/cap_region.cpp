@@ -317,8 +317,8 @@ void cap_returns(const Model& m, std::span<const double> i1_trial, std::span<con
         Iterate x;
         Step step;
     };
-    std::vector<Lane> lanes;
-    lanes.reserve(points.size());
+    thread_local std::vector<Lane> lanes; // kept between calls, as GeneralizedCap's buffers
+    lanes.clear();
     for (const int k : points) {
         const Hardening& s = states[k];
         const double l_n = cap_center(m.p, s.kappa);

@@ -220,9 +220,10 @@ Return return_map(const Model& m, double i1_trial, double q_trial, const Hardeni
 void return_map_many(const Model& m, std::span<const double> i1_trial,
                      std::span<const double> q_trial, std::span<const Hardening> states,
                      std::span<Return> returns) {
-    std::vector<int> caps;
-    caps.reserve(returns.size());
-    std::vector<StateTerms> terms(returns.size());
+    thread_local std::vector<int> caps; // kept between calls, as GeneralizedCap's buffers
+    thread_local std::vector<StateTerms> terms;
+    caps.clear();
+    terms.resize(returns.size());
     for (std::size_t k = 0; k < returns.size(); ++k) {
         const Route r = route(m, i1_trial[k], q_trial[k], states[k], terms[k]);
         if (r == Route::cap && m.p.R > 0.0) {

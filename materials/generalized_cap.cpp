@@ -251,17 +251,24 @@ void GeneralizedCap::update_points(std::span<const Voigt6> strain_increments,
                                    std::span<Voigt6> stresses, std::span<double* const> states,
                                    std::span<PlasticRegion> regions) const {
     const std::size_t n = stresses.size();
-    std::vector<Trial> trials(n);
-    std::vector<double> i1(n);
-    std::vector<double> q(n);
-    std::vector<cap::Hardening> before(n);
+    // Buffers of each thread, kept between calls: the SPH stress update calls this for every
+    // block of 64 particles, and five allocations a block were a few per cent of the cap's step.
+    thread_local std::vector<Trial> trials;
+    thread_local std::vector<double> i1;
+    thread_local std::vector<double> q;
+    thread_local std::vector<cap::Hardening> before;
+    thread_local std::vector<cap::Return> returns;
+    trials.resize(n);
+    i1.resize(n);
+    q.resize(n);
+    before.resize(n);
+    returns.resize(n);
     for (std::size_t k = 0; k < n; ++k) {
         trials[k] = trial(strain_increments[k], stresses[k]);
         i1[k] = trials[k].i1;
         q[k] = trials[k].q;
         before[k] = {states[k][kCapPosition], states[k][kHardeningParameter]};
     }
-    std::vector<cap::Return> returns(n);
     cap::return_map_many(model_, i1, q, before, returns);
     for (std::size_t k = 0; k < n; ++k) {
         apply(trials[k], returns[k], stresses[k], states[k]);
