@@ -405,10 +405,8 @@ int main(int argc, char** argv) {
                 "KE, J");
     for (const Index n : sizes) {
         for (const int threads : {1, 2}) {
-            for (const Mode& mode : modes) {
-                if (!granular_only) {
-                    print(n, threads, mode.label, measure(n, threads, mode, steel));
-                }
+            for (const Mode& mode : granular_only ? std::span<const Mode>() : std::span(modes)) {
+                print(n, threads, mode.label, measure(n, threads, mode, steel));
             }
             print(n, threads, "granular Drucker-Prager",
                   measure_granular(n, threads, kDruckerPrager));

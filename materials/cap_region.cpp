@@ -244,14 +244,8 @@ Return cap_finish(const Model& m, double q_trial, const Hardening& s, double l_n
     const double dk = x.dk;
     const CapMove& c = x.c;
     const Change d = centre_change(m.p, s, dk);
-    const double kappa = s.kappa + dk;
     const CapResidual res = cap_residual(m, q_trial, a, c);
-    Return r;
-    r.region = PlasticRegion::cap;
-    r.i1 = l_n + d.d + a;
-    r.rho = res.rho;
-    r.hardening = {s.x + c.dx, kappa};
-    r.hardening_strain = c.dv;
+    Return r = finish(PlasticRegion::cap, l_n + d.d + a, res.rho, {s.x + c.dx, s.kappa + dk}, c.dv);
     // Implicit differentiation of g(a, kappa(a, I1_tr), q_tr) = 0 with
     // dkappa = (dI1_tr - da) / (L' + 3K dv').
     const double slope = 1.0 / (d.slope + 3.0 * m.bulk * c.rate);
@@ -275,10 +269,11 @@ Return cap_finish(const Model& m, double q_trial, const Hardening& s, double l_n
 /// small R) and trials within round-off of I1_tr = L_n. cap_newton is tried from corner_start
 /// where that applies, then from the trial, then from cap_reduced_start; the nested, bracketed
 /// solve is the safe path left when all fail.
-Return cap_return(const Model& m, double i1_trial, double q_trial, const Hardening& s) {
+Return cap_return(const Model& m, double i1_trial, double q_trial, const Hardening& s,
+                  const StateTerms& terms) {
     const double l_n = cap_center(m.p, s.kappa);
     const CapBox box = cap_box(i1_trial, l_n, s);
-    const CapMoves moves(m.p, s);
+    const CapMoves moves(m.p, s, terms);
     Iterate x;
     bool converged =
         corner_start(m, q_trial, s, moves, box, x) && cap_newton(m, q_trial, s, moves, box, x);
@@ -328,7 +323,7 @@ void cap_returns(const Model& m, std::span<const double> i1_trial, std::span<con
         if (corner_start(m, q_trial[k], s, moves, box, x)) {
             lanes.push_back({k, l_n, box, moves, x, Step::more});
         } else {
-            returns[k] = cap_return(m, i1_trial[k], q_trial[k], s);
+            returns[k] = cap_return(m, i1_trial[k], q_trial[k], s, terms[k]);
         }
     }
     bool iterating = !lanes.empty();
@@ -347,7 +342,7 @@ void cap_returns(const Model& m, std::span<const double> i1_trial, std::span<con
         // which repeats these iterations and goes on to the next start.
         returns[k] = l.step == Step::converged && l.x.a >= kResolvedGap * l.box.a_trial
                          ? cap_finish(m, q_trial[k], states[k], l.l_n, l.x)
-                         : cap_return(m, i1_trial[k], q_trial[k], states[k]);
+                         : cap_return(m, i1_trial[k], q_trial[k], states[k], terms[k]);
     }
 }
 

@@ -11,8 +11,10 @@
 // (docs/theory/generalized_cap.md, "Cap return"). Compression positive.
 namespace grainload::materials::cap {
 
-/// The cap return of one point whose trial lies outside the elliptical cap (R > 0).
-Return cap_return(const Model& m, double i1_trial, double q_trial, const Hardening& s);
+/// The cap return of one point whose trial lies outside the elliptical cap (R > 0); `terms` are
+/// its state_terms (cap_moves.hpp), which the routing has formed.
+Return cap_return(const Model& m, double i1_trial, double q_trial, const Hardening& s,
+                  const StateTerms& terms);
 
 /// cap_return for the points listed, bit for bit. The returns that start next to the corner (the
 /// compacting points of a granular flow) take their Newton iterations in lockstep, one point's

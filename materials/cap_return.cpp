@@ -15,16 +15,6 @@ double tolerance_for(const Model& m, double i1_trial, double q_trial, const Hard
     return kTolerance * (std::abs(i1_trial) + q_trial + std::abs(s.kappa) + std::abs(m.p.k) + 1.0);
 }
 
-Return finish(PlasticRegion region, double i1, double rho, const Hardening& after, double dv) {
-    Return r;
-    r.region = region;
-    r.i1 = i1;
-    r.rho = rho;
-    r.hardening = after;
-    r.hardening_strain = dv;
-    return r;
-}
-
 /// Tension cutoff / apex: I1 = I1_min, with sqrt(J2) limited to F(I1_min) (the corner of the
 /// cutoff plane and the envelope; the apex itself when F(I1_min) = 0), or to the half-height B
 /// of a cap whose clamped centre puts its flat top below F(I1_min). The cutoff's flow is
@@ -190,7 +180,9 @@ Route route(const Model& m, double i1_trial, double q_trial, const Hardening& st
     return q_trial > envelope(m.p, i1_trial) ? Route::failure : Route::elastic;
 }
 
-Return along(Route route, const Model& m, double i1_trial, double q_trial, const Hardening& state) {
+/// The return of the route taken; `terms` as route() left them.
+Return along(Route route, const Model& m, double i1_trial, double q_trial, const Hardening& state,
+             const StateTerms& terms) {
     switch (route) {
     case Route::tension:
         return tension_return(m, i1_trial, q_trial, state);
@@ -198,7 +190,7 @@ Return along(Route route, const Model& m, double i1_trial, double q_trial, const
         return failure_return(m, i1_trial, q_trial, state);
     case Route::cap:
         return m.p.R == 0.0 ? flat_cap(corner_return(m, i1_trial, q_trial, state), q_trial, m.p)
-                            : cap_return(m, i1_trial, q_trial, state);
+                            : cap_return(m, i1_trial, q_trial, state, terms);
     case Route::flat_top:
         return flat_top_return(m, i1_trial, q_trial, state);
     case Route::elastic:
@@ -214,7 +206,8 @@ Return along(Route route, const Model& m, double i1_trial, double q_trial, const
 
 Return return_map(const Model& m, double i1_trial, double q_trial, const Hardening& state) {
     StateTerms terms;
-    return along(route(m, i1_trial, q_trial, state, terms), m, i1_trial, q_trial, state);
+    const Route r = route(m, i1_trial, q_trial, state, terms);
+    return along(r, m, i1_trial, q_trial, state, terms);
 }
 
 void return_map_many(const Model& m, std::span<const double> i1_trial,
@@ -229,7 +222,7 @@ void return_map_many(const Model& m, std::span<const double> i1_trial,
         if (r == Route::cap && m.p.R > 0.0) {
             caps.push_back(static_cast<int>(k));
         } else {
-            returns[k] = along(r, m, i1_trial[k], q_trial[k], states[k]);
+            returns[k] = along(r, m, i1_trial[k], q_trial[k], states[k], terms[k]);
         }
     }
     cap_returns(m, i1_trial, q_trial, states, terms, caps, returns);

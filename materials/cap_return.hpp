@@ -42,6 +42,19 @@ struct Return {
     double hardening_strain = 0.0;
 };
 
+/// A plastic return's region, invariants and new hardening; the Jacobian is the region's to
+/// fill in.
+inline Return finish(PlasticRegion region, double i1, double rho, const Hardening& after,
+                     double dv) {
+    Return r;
+    r.region = region;
+    r.i1 = i1;
+    r.rho = rho;
+    r.hardening = after;
+    r.hardening_strain = dv;
+    return r;
+}
+
 Return return_map(const Model& model, double i1_trial, double q_trial, const Hardening& state);
 
 /// return_map of several points, bit for bit; the cap returns iterate together (cap_region.hpp).
