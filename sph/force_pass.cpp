@@ -182,7 +182,8 @@ template <class Shape, int D> struct ForceRow {
     }
 
     /// Row i with the terms of its same-body pairs from continuum_lanes (pair_lanes.hpp), a
-    /// batch of entries at a time, added in the list's order as operator() adds them.
+    /// batch of entries at a time, added in the list's order as operator() adds them; a row of
+    /// such pairs only (NeighbourList::same_key_row) goes to the lanes without picking.
     void lane_row(Index i, const ForceSums& sums, const LaneSettings& lanes) const {
         const bool wall = p.wall_id[i] >= 0;
         double a[3] = {0.0, 0.0, 0.0};
@@ -192,14 +193,17 @@ template <class Shape, int D> struct ForceRow {
         const auto list = neighbours.neighbours(i);
         std::int32_t picked[kLaneBatch];
         LaneTerms terms;
+        const bool whole = neighbours.same_key_row(i); // every entry a pair to take
         for (std::size_t first = 0; first < list.size(); first += kLaneBatch) {
             const std::size_t end = std::min(list.size(), first + kLaneBatch);
-            const auto [count, others] = pick_same_body_pairs(list, first, end, key, i, picked);
+            const auto [count, others] =
+                whole ? PickedPairs{static_cast<int>(end - first), 0}
+                      : pick_same_body_pairs(list, first, end, key, i, picked);
             if (others == 0) { // no contact term comes between: the lanes add the terms
                 double own[4] = {a[0], a[1], a[2], heating};
                 if (count > 0) {
-                    continuum_lanes_added(D, records, i, picked, count, lanes, own,
-                                          sums.acceleration, sums.heating);
+                    continuum_lanes_added(D, records, i, whole ? list.data() + first : picked,
+                                          count, lanes, own, sums.acceleration, sums.heating);
                 }
                 std::copy_n(own, 3, a);
                 heating = own[3];

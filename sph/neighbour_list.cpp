@@ -129,6 +129,7 @@ void NeighbourList::rebuild(std::span<const Vec3> positions, std::span<const cha
         }
     }
     reference_.assign(positions.begin(), positions.end());
+    same_key_row_.clear();
     ++rebuilds_;
     ++generation_;
 }
@@ -160,6 +161,7 @@ template <class Keep> void NeighbourList::keep_pairs(Keep keep) {
     }
     offset_ = std::move(offset);
     index_ = std::move(index);
+    same_key_row_.clear();
     ++generation_;
 }
 
@@ -173,11 +175,20 @@ void NeighbourList::drop_pairs(std::span<const int> group, std::span<const char>
 
 void NeighbourList::halve_pairs(std::span<const int> key) {
     keep_pairs([&](Index i, std::int32_t j) { return j > i || key[i] != key[j]; });
+    const auto n = static_cast<Index>(offset_.size()) - 1;
+    same_key_row_.assign(static_cast<std::size_t>(n), 0);
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+        const auto row = neighbours(i);
+        same_key_row_[static_cast<std::size_t>(i)] = std::all_of(
+            row.begin(), row.end(), [&](std::int32_t j) { return key[i] == key[j] && j > i; });
+    }
 }
 
 std::size_t NeighbourList::bytes() const {
     return offset_.capacity() * sizeof(Index) + index_.capacity() * sizeof(std::int32_t) +
-           reference_.capacity() * sizeof(Vec3) + cells_.bytes() + free_cells_.bytes();
+           reference_.capacity() * sizeof(Vec3) + same_key_row_.capacity() + cells_.bytes() +
+           free_cells_.bytes();
 }
 
 } // namespace grainload::sph

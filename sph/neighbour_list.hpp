@@ -36,6 +36,13 @@ class NeighbourList {
     /// particle) in the row of its lower index only, for the passes that take such a pair once;
     /// the other pairs stay in both rows. Like drop_pairs, until the next rebuild.
     void halve_pairs(std::span<const int> key);
+    /// Whether row i holds only pairs of equal keys, each taken in this row (j > i), as
+    /// halve_pairs leaves the rows of particles that touch no other body or wall: the passes
+    /// then hand the row to the vector lanes as it is, without picking its entries. False for
+    /// every row until halve_pairs, and again after a rebuild or drop_pairs.
+    bool same_key_row(Index i) const {
+        return !same_key_row_.empty() && same_key_row_[static_cast<std::size_t>(i)] != 0;
+    }
     /// Whether update() would rebuild without `force`.
     bool stale(std::span<const Vec3> positions) const;
 
@@ -70,7 +77,8 @@ class NeighbourList {
     CellList free_cells_; ///< the same grid holding only the particles that are not frozen
     std::vector<Index> offset_;
     std::vector<std::int32_t> index_;
-    std::vector<Vec3> reference_; ///< positions at the last build
+    std::vector<Vec3> reference_;    ///< positions at the last build
+    std::vector<char> same_key_row_; ///< per row, set by halve_pairs (same_key_row)
     Index rebuilds_ = 0;
     Index generation_ = 0;
 };

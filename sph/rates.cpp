@@ -135,18 +135,22 @@ template <class Shape, int D, bool Corrected> struct GradientRow {
     static constexpr std::size_t kBatch = 64;
 
     /// Row i in vector lanes (gradient_lanes): the row's same-body pairs i < j picked a batch
-    /// of entries at a time, in the list's order, inside the support or not.
+    /// of entries at a time, in the list's order, inside the support or not (the entries as
+    /// they are where the whole row is such pairs, NeighbourList::same_key_row).
     void lane_row(Index i, const GradientSums& sums) const {
         const LaneSettings lanes{
             support_squared, w.inverse_h, w.alpha_over_h, 0.0, 0.0, 0.0, 0.0, 0.0};
         double acc[9] = {}; // column major
         const auto list = neighbours.neighbours(i);
         std::int32_t picked[kLaneBatch];
+        const bool whole = neighbours.same_key_row(i); // every entry a pair to take
         for (std::size_t first = 0; first < list.size(); first += kLaneBatch) {
             const std::size_t end = std::min(list.size(), first + kLaneBatch);
-            const int count = pick_same_body_pairs(list, first, end, key, i, picked).count;
+            const int count = whole ? static_cast<int>(end - first)
+                                    : pick_same_body_pairs(list, first, end, key, i, picked).count;
             if (count > 0) {
-                gradient_lanes(records, i, picked, count, lanes, sums.l, acc);
+                gradient_lanes(records, i, whole ? list.data() + first : picked, count, lanes,
+                               sums.l, acc);
             }
         }
         double* li = sums.l + 9 * i;

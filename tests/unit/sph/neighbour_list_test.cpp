@@ -162,5 +162,36 @@ TEST(NeighbourList, AWallFarFromTheSandKeepsTheCellsOfTheSearchRadius) {
     EXPECT_EQ(listed_pairs(list, points, radius), expected);
 }
 
+TEST(NeighbourList, SameKeyRowsAreTheHalvedRowsWithoutOtherKeys) {
+    const auto points = random_points(1500, 3, 5u);
+    // Three keys: two bodies split at x = 0.5 and a "wall" key of its own per particle below
+    // z = 0.1, as continuum_key gives wall particles.
+    std::vector<int> key(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        key[i] = points[i][2] < 0.1 ? -1 - static_cast<int>(i) : (points[i][0] < 0.5 ? 0 : 1);
+    }
+    NeighbourList list(0.06, 0.01, 3);
+    list.update(points, {});
+    const auto n = static_cast<Index>(points.size());
+    for (Index i = 0; i < n; ++i) {
+        EXPECT_FALSE(list.same_key_row(i)) << "before halve_pairs, row " << i;
+    }
+    list.halve_pairs(key);
+    Index whole = 0;
+    for (Index i = 0; i < n; ++i) {
+        const auto row = list.neighbours(i);
+        const bool expected = std::all_of(row.begin(), row.end(), [&](std::int32_t j) {
+            return key[static_cast<std::size_t>(i)] == key[static_cast<std::size_t>(j)] && j > i;
+        });
+        EXPECT_EQ(list.same_key_row(i), expected) << "row " << i;
+        whole += expected ? 1 : 0;
+    }
+    // Both kinds occur: rows inside a body, and rows next to the other body or the "wall".
+    EXPECT_GT(whole, n / 4);
+    EXPECT_LT(whole, n);
+    list.update(points, {}, true);
+    EXPECT_FALSE(list.same_key_row(0)) << "a rebuild drops the marks";
+}
+
 } // namespace
 } // namespace grainload::sph
