@@ -13,11 +13,6 @@ namespace {
 
 const Voigt6 kIdentity = (Voigt6() << 1.0, 1.0, 1.0, 0.0, 0.0, 0.0).finished();
 
-/// sqrt(J2) of a deviator in Voigt form with tensor shear components.
-double root_j2(const Voigt6& s) {
-    return std::sqrt(0.5 * s.head<3>().squaredNorm() + s.tail<3>().squaredNorm());
-}
-
 /// Consistent tangent from the invariant-plane Jacobian. With sigma = (I1/3) 1 + rho s_tr,
 /// dI1_tr = 3K 1.deps, ds_tr = D_dev deps and dq_tr = (G/q_tr) s_tr.deps (engineering shear):
 /// C = 1 (x) dI1/3 + rho D_dev + s_tr (x) drho.
@@ -216,19 +211,44 @@ GeneralizedCap::Trial GeneralizedCap::trial(const Voigt6& strain_increment,
                                             const Voigt6& stress) const {
     // Compression positive from here on: sigma_c = -sigma, deps_c = -deps. The tangent
     // d sigma / d deps = d sigma_c / d deps_c needs no sign change.
+    // Component by component in scalars, with the operations and order of
+    // -stress - stress_from_strain(deps), its trace and root_j2: the Voigt temporaries were
+    // stored in 8-byte pieces and read back in 16-byte ones, which the processor cannot forward.
+    const double shear = elastic_.shear_modulus;
+    const double lambda = elastic_.lame_lambda();
+    double diagonal = lambda;
+    diagonal += 2.0 * shear;
+    const double e0 = strain_increment[0];
+    const double e1 = strain_increment[1];
+    const double e2 = strain_increment[2];
+    double s[6];
+    for (int i = 0; i < 3; ++i) {
+        double sum = (i == 0 ? diagonal : lambda) * e0;
+        sum += (i == 1 ? diagonal : lambda) * e1;
+        sum += (i == 2 ? diagonal : lambda) * e2;
+        s[i] = -stress[i] - sum;
+        s[i + 3] = -stress[i + 3] - shear * strain_increment[i + 3];
+    }
     Trial t;
-    t.deviator = -stress - elastic_.stress_from_strain(strain_increment);
-    t.i1 = t.deviator.head<3>().sum();
-    t.deviator.head<3>().array() -= t.i1 / 3.0;
-    t.q = root_j2(t.deviator);
+    t.i1 = (s[0] + s[1]) + s[2];
+    const double third = t.i1 / 3.0;
+    for (int i = 0; i < 3; ++i) {
+        s[i] -= third;
+    }
+    t.q = std::sqrt(0.5 * ((s[0] * s[0] + s[1] * s[1]) + s[2] * s[2]) +
+                    ((s[3] * s[3] + s[4] * s[4]) + s[5] * s[5]));
+    t.deviator << s[0], s[1], s[2], s[3], s[4], s[5];
     return t;
 }
 
 void GeneralizedCap::apply(const Trial& t, const cap::Return& r, Voigt6& stress,
                            double* state) const {
-    Voigt6 sigma = r.rho * t.deviator;
-    sigma.head<3>().array() += r.i1 / 3.0;
-    stress = -sigma;
+    // Component by component, as rho s_tr + (I1/3) 1 with the sign turned (trial's reason).
+    const double third = r.i1 / 3.0;
+    for (int i = 0; i < 3; ++i) {
+        stress[i] = -(r.rho * t.deviator[i] + third);
+        stress[i + 3] = -(r.rho * t.deviator[i + 3]);
+    }
     state[kCapPosition] = r.hardening.x;
     state[kHardeningParameter] = r.hardening.kappa;
     state[kPlasticVolumetricStrain] += r.hardening_strain;
