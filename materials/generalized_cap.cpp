@@ -207,8 +207,7 @@ void GeneralizedCap::initialise_state(std::span<double> state) const {
     state[kPlasticVolumetricStrain] = p.W * (1.0 - cap::hardening_decay(p, x));
 }
 
-GeneralizedCap::Trial GeneralizedCap::trial(const Voigt6& strain_increment,
-                                            const Voigt6& stress) const {
+void GeneralizedCap::trial(const Voigt6& strain_increment, const Voigt6& stress, Trial& t) const {
     // Compression positive from here on: sigma_c = -sigma, deps_c = -deps. The tangent
     // d sigma / d deps = d sigma_c / d deps_c needs no sign change.
     // Component by component in scalars, with the operations and order of
@@ -229,7 +228,6 @@ GeneralizedCap::Trial GeneralizedCap::trial(const Voigt6& strain_increment,
         s[i] = -stress[i] - sum;
         s[i + 3] = -stress[i + 3] - shear * strain_increment[i + 3];
     }
-    Trial t;
     t.i1 = (s[0] + s[1]) + s[2];
     const double third = t.i1 / 3.0;
     for (int i = 0; i < 3; ++i) {
@@ -237,8 +235,9 @@ GeneralizedCap::Trial GeneralizedCap::trial(const Voigt6& strain_increment,
     }
     t.q = std::sqrt(0.5 * ((s[0] * s[0] + s[1] * s[1]) + s[2] * s[2]) +
                     ((s[3] * s[3] + s[4] * s[4]) + s[5] * s[5]));
-    t.deviator << s[0], s[1], s[2], s[3], s[4], s[5];
-    return t;
+    for (int i = 0; i < 6; ++i) {
+        t.deviator[i] = s[i];
+    }
 }
 
 void GeneralizedCap::apply(const Trial& t, const cap::Return& r, Voigt6& stress,
@@ -257,7 +256,8 @@ void GeneralizedCap::apply(const Trial& t, const cap::Return& r, Voigt6& stress,
 
 PlasticRegion GeneralizedCap::update(const Voigt6& strain_increment, Voigt6& stress,
                                      std::span<double> state, Matrix6* tangent) const {
-    const Trial t = trial(strain_increment, stress);
+    Trial t;
+    trial(strain_increment, stress, t);
     const cap::Hardening before{state[kCapPosition], state[kHardeningParameter]};
     const cap::Return r = cap::return_map(model_, t.i1, t.q, before);
     apply(t, r, stress, state.data());
@@ -284,7 +284,7 @@ void GeneralizedCap::update_points(std::span<const Voigt6> strain_increments,
     before.resize(n);
     returns.resize(n);
     for (std::size_t k = 0; k < n; ++k) {
-        trials[k] = trial(strain_increments[k], stresses[k]);
+        trial(strain_increments[k], stresses[k], trials[k]);
         i1[k] = trials[k].i1;
         q[k] = trials[k].q;
         before[k] = {states[k][kCapPosition], states[k][kHardeningParameter]};

@@ -63,7 +63,9 @@ class GeneralizedCap final : public Material {
         double i1 = 0.0;
         double q = 0.0;
     };
-    Trial trial(const Voigt6& strain_increment, const Voigt6& stress) const;
+    /// Written into `t` in place: a Trial returned by value was built on the stack and copied
+    /// in 16-byte pieces over its 8-byte stores, which the processor cannot forward.
+    void trial(const Voigt6& strain_increment, const Voigt6& stress, Trial& t) const;
     /// Stress and state after the return r from trial t.
     void apply(const Trial& t, const cap::Return& r, Voigt6& stress, double* state) const;
 
