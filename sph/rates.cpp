@@ -10,19 +10,6 @@
 
 namespace grainload::sph {
 
-Mat3 stress_tensor(const Voigt6& s) {
-    Mat3 t;
-    t << s[0], s[3], s[5], s[3], s[1], s[4], s[5], s[4], s[2];
-    return t;
-}
-
-Voigt6 stress_voigt(const Mat3& t) {
-    Voigt6 s;
-    s << t(0, 0), t(1, 1), t(2, 2), 0.5 * (t(0, 1) + t(1, 0)), 0.5 * (t(1, 2) + t(2, 1)),
-        0.5 * (t(2, 0) + t(0, 2));
-    return s;
-}
-
 // Randles & Libersky (1996): M^-1 makes L M^-1 exact for linear fields. In plane strain M
 // has no z row or column; its zz entry is set to 1 so that the inverse exists and z stays
 // untouched.

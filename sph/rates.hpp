@@ -13,8 +13,20 @@
 namespace grainload::sph {
 
 /// Conversions between Voigt6 stress (tensor shear, order xx yy zz xy yz zx) and 3x3 tensors.
-Mat3 stress_tensor(const Voigt6& stress);
-Voigt6 stress_voigt(const Mat3& stress);
+/// Inline: the stress update calls them for every particle and step, and their results passed
+/// through the stack were stored in 8-byte pieces and read back in 16-byte ones.
+inline Mat3 stress_tensor(const Voigt6& s) {
+    Mat3 t;
+    t << s[0], s[3], s[5], s[3], s[1], s[4], s[5], s[4], s[2];
+    return t;
+}
+
+inline Voigt6 stress_voigt(const Mat3& t) {
+    Voigt6 s;
+    s << t(0, 0), t(1, 1), t(2, 2), 0.5 * (t(0, 1) + t(1, 0)), 0.5 * (t(1, 2) + t(2, 1)),
+        0.5 * (t(2, 0) + t(0, 2));
+    return s;
+}
 
 /// M^-1 of the Randles-Libersky corrected gradient, blended to I where M is near singular
 /// (smallest singular value below 0.15; none below 0.05). Plane strain: M's zz entry is set to 1.

@@ -7,19 +7,6 @@
 
 namespace grainload::sph {
 
-Mat3 jaumann_rotation(const Vec3& spin, double dt) {
-    // With S = dt/2 W = skew(a), a = dt/2 spin: S^3 = -|a|^2 S, so (I - S)^-1 = I + (S + S^2) /
-    // (1 + |a|^2) and the Cayley transform is Q = I + 2 (S + S^2) / (1 + |a|^2), where
-    // S^2 = a a^T - |a|^2 I: no 3x3 inverse each particle-step.
-    const Vec3 a = 0.5 * dt * spin;
-    const double squared = a.squaredNorm();
-    const double scale = 2.0 / (1.0 + squared);
-    Mat3 s;
-    s << -squared, -a.z(), a.y(), a.z(), -squared, -a.x(), -a.y(), a.x(), -squared;
-    s.noalias() += a * a.transpose();
-    return Mat3::Identity() + scale * s;
-}
-
 namespace {
 
 /// Particles whose stresses one task updates: as many as a dynamic chunk used to hold.

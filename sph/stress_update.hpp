@@ -12,8 +12,19 @@ namespace grainload::sph {
 /// Winget (1980): Q = (I - dt/2 W)^-1 (I + dt/2 W), W the spin tensor of the axial vector
 /// `spin`. Q is exactly orthogonal, so sigma' = Q sigma Q^T keeps the stress invariants to
 /// round-off however large the rotation per step; to second order it is the Jaumann update
-/// sigma + dt (W sigma - sigma W).
-Mat3 jaumann_rotation(const Vec3& spin, double dt);
+/// sigma + dt (W sigma - sigma W). Inline, as stress_tensor.
+inline Mat3 jaumann_rotation(const Vec3& spin, double dt) {
+    // With S = dt/2 W = skew(a), a = dt/2 spin: S^3 = -|a|^2 S, so (I - S)^-1 = I + (S + S^2) /
+    // (1 + |a|^2) and the Cayley transform is Q = I + 2 (S + S^2) / (1 + |a|^2), where
+    // S^2 = a a^T - |a|^2 I: no 3x3 inverse each particle-step.
+    const Vec3 a = 0.5 * dt * spin;
+    const double squared = a.squaredNorm();
+    const double scale = 2.0 / (1.0 + squared);
+    Mat3 s;
+    s << -squared, -a.z(), a.y(), a.z(), -squared, -a.x(), -a.y(), a.x(), -squared;
+    s.noalias() += a * a.transpose();
+    return Mat3::Identity() + scale * s;
+}
 
 /// Per material particle: rotate the stress by jaumann_rotation(), then call the particle's
 /// material with strain increment strain_rate * dt (engineering shear), a block of up to 64
