@@ -267,15 +267,16 @@ std::pair<double, double> cap_nested(const Model& m, double q_trial, const Harde
 }
 
 /// The return at the converged iterate: stress invariants, hardening and the Jacobian of
-/// (I1, rho) for the consistent tangent.
-Return cap_finish(const Model& m, double q_trial, const Hardening& s, double l_n,
-                  const Iterate& x) {
+/// (I1, rho) for the consistent tangent. Written into `r` in place (a Return passed back by
+/// value was copied from the stack over stores the processor could not forward).
+void cap_finish(const Model& m, double q_trial, const Hardening& s, double l_n, const Iterate& x,
+                Return& r) {
     const double a = x.a;
     const double dk = x.dk;
     const CapMove& c = x.c;
     const Change d = centre_change(m.p, s, dk);
     const CapResidual res = cap_residual(m, q_trial, a, c);
-    Return r = finish(PlasticRegion::cap, l_n + d.d + a, res.rho, {s.x + c.dx, s.kappa + dk}, c.dv);
+    r = finish(PlasticRegion::cap, l_n + d.d + a, res.rho, {s.x + c.dx, s.kappa + dk}, c.dv);
     // Implicit differentiation of g(a, kappa(a, I1_tr), q_tr) = 0 with
     // dkappa = (dI1_tr - da) / (L' + 3K dv').
     const double slope = 1.0 / (d.slope + 3.0 * m.bulk * c.rate);
@@ -288,7 +289,6 @@ Return cap_finish(const Model& m, double q_trial, const Hardening& s, double l_n
     r.di1_dq = d.slope * k_q + a_q;
     r.drho_di1 = res.rho_a * a_i1 + res.rho_k * k_i1;
     r.drho_dq = res.rho_a * a_q + res.rho_k * k_q;
-    return r;
 }
 
 } // namespace
@@ -328,32 +328,35 @@ Return cap_return(const Model& m, double i1_trial, double q_trial, const Hardeni
         std::tie(a, dk) = cap_nested(m, q_trial, s, moves, box.a_trial, *centre);
         x = iterate_at(moves, a, dk);
     }
-    return cap_finish(m, q_trial, s, l_n, x);
+    Return r;
+    cap_finish(m, q_trial, s, l_n, x, r);
+    return r;
 }
 
 void cap_returns(const Model& m, std::span<const double> i1_trial, std::span<const double> q_trial,
                  std::span<const Hardening> states, std::span<const StateTerms> terms,
                  std::span<const int> points, std::span<Return> returns) {
+    // Each lane is built where it lies (members initialised in place, the start written into
+    // it): lanes assembled on the stack and copied were read back over stores the processor
+    // could not forward.
     struct Lane {
+        Lane(const Model& m, int k, double i1_trial, const Hardening& s, const StateTerms& terms)
+            : point(k), l_n(cap_center(m.p, s.kappa)), box(cap_box(i1_trial, l_n, s)),
+              moves(m.p, s, terms) {}
         int point;
         double l_n;
         CapBox box;
         CapMoves moves;
         Iterate x;
-        Step step;
+        Step step = Step::more;
     };
     thread_local std::vector<Lane> lanes; // kept between calls, as GeneralizedCap's buffers
     lanes.clear();
     for (const int k : points) {
-        const Hardening& s = states[k];
-        const double l_n = cap_center(m.p, s.kappa);
-        const CapBox box = cap_box(i1_trial[k], l_n, s);
-        const CapMoves moves(m.p, s, terms[k]);
-        Iterate x;
-        if (corner_start(m, q_trial[k], s, moves, box, x)) {
-            lanes.push_back({k, l_n, box, moves, x, Step::more});
-        } else {
-            returns[k] = cap_return(m, i1_trial[k], q_trial[k], s, terms[k]);
+        Lane& l = lanes.emplace_back(m, k, i1_trial[k], states[k], terms[k]);
+        if (!corner_start(m, q_trial[k], states[k], l.moves, l.box, l.x)) {
+            lanes.pop_back();
+            returns[k] = cap_return(m, i1_trial[k], q_trial[k], states[k], terms[k]);
         }
     }
     bool iterating = !lanes.empty();
@@ -370,9 +373,11 @@ void cap_returns(const Model& m, std::span<const double> i1_trial, std::span<con
         const int k = l.point;
         // What cap_return would do after the same iterations; the others take its whole chain,
         // which repeats these iterations and goes on to the next start.
-        returns[k] = l.step == Step::converged && l.x.a >= kResolvedGap * l.box.a_trial
-                         ? cap_finish(m, q_trial[k], states[k], l.l_n, l.x)
-                         : cap_return(m, i1_trial[k], q_trial[k], states[k], terms[k]);
+        if (l.step == Step::converged && l.x.a >= kResolvedGap * l.box.a_trial) {
+            cap_finish(m, q_trial[k], states[k], l.l_n, l.x, returns[k]);
+        } else {
+            returns[k] = cap_return(m, i1_trial[k], q_trial[k], states[k], terms[k]);
+        }
     }
 }
 
