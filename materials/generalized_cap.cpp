@@ -210,9 +210,10 @@ void GeneralizedCap::initialise_state(std::span<double> state) const {
 void GeneralizedCap::trial(const Voigt6& strain_increment, const Voigt6& stress, Trial& t) const {
     // Compression positive from here on: sigma_c = -sigma, deps_c = -deps. The tangent
     // d sigma / d deps = d sigma_c / d deps_c needs no sign change.
-    // Component by component in scalars, with the operations and order of
-    // -stress - stress_from_strain(deps), its trace and root_j2: the Voigt temporaries were
-    // stored in 8-byte pieces and read back in 16-byte ones, which the processor cannot forward.
+    // Component by component in scalars, with the operations and order of the Voigt expressions
+    // -stress - stress_from_strain(deps), head<3>().sum() and sqrt(0.5 |s_n|^2 + |s_s|^2) that it
+    // replaces (the same bits): GCC stored those temporaries in 8-byte pieces and read them back
+    // in 16-byte ones, which the processor cannot forward.
     const double shear = elastic_.shear_modulus;
     const double lambda = elastic_.lame_lambda();
     double diagonal = lambda;
