@@ -206,8 +206,7 @@ Return along(Route route, const Model& m, double i1_trial, double q_trial, const
         break;
     }
     Return r;
-    r.i1 = i1_trial;
-    r.hardening = state;
+    elastic(i1_trial, state, r);
     return r;
 }
 
