@@ -4,6 +4,7 @@
 #include "io/checkpoint_file.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <istream>
 #include <ostream>
 #include <sstream>
@@ -17,6 +18,12 @@ void write_payload(const Scene& scene, const RunClock& clock, std::ostream& out)
     io::write_value(out, clock.t);
     io::write_value(out, clock.step);
     io::write_array(out, clock.frame_times);
+    io::write_value(out, static_cast<std::uint64_t>(clock.streams.size()));
+    for (const io::StreamMark& mark : clock.streams) {
+        io::write_string(out, mark.name);
+        io::write_value(out, mark.length);
+        io::write_value(out, mark.hash);
+    }
     for (const auto& stepper : scene.steppers) {
         stepper->write_checkpoint(out);
     }
@@ -34,12 +41,39 @@ void check_clock(const RunClock& clock) {
     }
 }
 
+/// A stream's name must stay inside the output directory: the restart cuts the file it names.
+void check_stream_name(const std::string& name) {
+    const std::filesystem::path path(name);
+    bool inside = !name.empty() && path.is_relative();
+    for (const auto& part : path) {
+        inside = inside && part != ".." && part != ".";
+    }
+    if (!inside || name.find('\0') != std::string::npos) {
+        throw std::runtime_error("a streamed file's name is not a path inside the output "
+                                 "directory");
+    }
+}
+
+std::vector<io::StreamMark> read_streams(std::istream& in) {
+    // Each mark takes at least its three 8-byte fields.
+    const std::uint64_t count = io::read_count(in, 24);
+    std::vector<io::StreamMark> marks(static_cast<std::size_t>(count));
+    for (io::StreamMark& mark : marks) {
+        mark.name = io::read_string(in);
+        check_stream_name(mark.name);
+        mark.length = io::read_value<std::uint64_t>(in);
+        mark.hash = io::read_value<std::uint64_t>(in);
+    }
+    return marks;
+}
+
 RunClock read_payload(Scene& scene, std::istream& in) {
     RunClock clock;
     clock.t = io::read_value<double>(in);
     clock.step = io::read_value<long long>(in);
     io::read_array(in, clock.frame_times);
     check_clock(clock);
+    clock.streams = read_streams(in);
     for (const auto& stepper : scene.steppers) {
         stepper->read_checkpoint(in);
     }

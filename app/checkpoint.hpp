@@ -1,6 +1,7 @@
 #pragma once
 
 #include "app/scene.hpp"
+#include "io/output_streams.hpp"
 
 #include <string>
 #include <string_view>
@@ -13,6 +14,8 @@ struct RunClock {
     double t = 0.0;
     long long step = 0;
     std::vector<double> frame_times;
+    /// Where each streamed file stood when the checkpoint was written (io/output_streams.hpp).
+    std::vector<io::StreamMark> streams;
     /// Material points summed over this process's steps (particles leaving through a sink stop
     /// counting), for the particle-steps per second of its wall time; not checkpointed.
     double material_point_steps = 0.0;

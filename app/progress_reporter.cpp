@@ -5,7 +5,7 @@
 
 namespace grainload::app {
 
-ProgressReporter::ProgressReporter(std::ostream& log, double end_time)
+ProgressReporter::ProgressReporter(io::StreamedFile& log, double end_time)
     : log_(log), end_time_(end_time), start_(Clock::now()), last_print_(start_) {}
 
 double ProgressReporter::elapsed_seconds() const {
@@ -14,7 +14,7 @@ double ProgressReporter::elapsed_seconds() const {
 
 void ProgressReporter::message(const std::string& text) {
     std::cerr << text << '\n';
-    log_ << text << '\n' << std::flush;
+    log_.append(text + '\n');
 }
 
 void ProgressReporter::update(double t, long long step, double dt, double point_steps, bool force) {

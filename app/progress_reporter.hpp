@@ -1,7 +1,8 @@
 #pragma once
 
+#include "io/output_streams.hpp"
+
 #include <chrono>
-#include <ostream>
 #include <string>
 
 namespace grainload::app {
@@ -10,7 +11,7 @@ namespace grainload::app {
 /// simulated time / end time, step, dt, ETA and particle-steps per second.
 class ProgressReporter {
   public:
-    ProgressReporter(std::ostream& log, double end_time);
+    ProgressReporter(io::StreamedFile& log, double end_time);
 
     /// `point_steps`: the run's material point-steps so far (sub-steps of coupled windows
     /// counted), for the particle-steps per second it prints.
@@ -21,7 +22,7 @@ class ProgressReporter {
 
   private:
     using Clock = std::chrono::steady_clock;
-    std::ostream& log_;
+    io::StreamedFile& log_;
     double end_time_;
     Clock::time_point start_;
     Clock::time_point last_print_;

@@ -7,6 +7,8 @@
 #include "app/scene.hpp"
 #include "app/thread_count.hpp"
 #include "io/atomic_file.hpp"
+#include "io/case_error.hpp"
+#include "io/output_streams.hpp"
 #include "io/run_summary.hpp"
 #include "io/step_collapse.hpp"
 #include "io/version.hpp"
@@ -14,7 +16,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <limits>
 #include <omp.h>
@@ -117,6 +118,40 @@ int stop_unstable(const Scene& scene, const CommandLine& line, const RunClock& c
     return kExitUnstable;
 }
 
+/// The clock of the checkpoint at `path`, the scene restored from it, the frame writer's
+/// history, and the run's streamed files cut back to where the checkpoint found them. Refused
+/// (io::CaseError, exit code 2) before any file is touched: a checkpoint past the case's end time
+/// (there would be nothing to run and no frame at the end time), and an output directory that
+/// does not hold the run up to the checkpoint (its last frame, its streamed files as the run
+/// wrote them): a restart continues the run where it was written.
+RunClock restart_from(Scene& scene, const std::string& path, io::OutputStreams& streams,
+                      io::VtkFrameWriter& writer) {
+    RunClock clock = read_checkpoint(scene, path);
+    const double end = scene.settings.end_time;
+    if (clock.t > end * (1.0 + 1e-12)) {
+        std::ostringstream message;
+        message.precision(9);
+        message << "the end time " << end << " s lies before the time of the checkpoint " << path
+                << ", " << clock.t << " s: a restart continues a run, so the end time must be at "
+                << "least " << clock.t << " s";
+        scene.document->root().table("case").fail("end_time", message.str());
+    }
+    writer.set_history(clock.frame_times);
+    const std::string restart_here = "restart in the output directory of the run that wrote it "
+                                     "(copy that directory to continue the run elsewhere)";
+    if (!std::filesystem::exists(writer.last_frame_path())) {
+        throw io::CaseError(path + ": restart refused: the frame of the checkpoint, " +
+                            writer.last_frame_path() + ", is not in the output directory " +
+                            streams.directory() + "; " + restart_here);
+    }
+    try {
+        streams.resume(clock.streams);
+    } catch (const std::runtime_error& error) {
+        throw io::CaseError(path + ": restart refused: " + error.what() + "; " + restart_here);
+    }
+    return clock;
+}
+
 } // namespace
 
 int check_case(const CommandLine& line) {
@@ -159,30 +194,39 @@ int run_case(const CommandLine& line) {
     }
     const std::string out = line.out.value_or("out/" + scene->settings.name);
     std::filesystem::create_directories(out);
-    std::ofstream log(out + "/log.txt", line.restart ? std::ios::app : std::ios::trunc);
-    for (const auto& stepper : scene->steppers) {
-        stepper->set_output_directory(out);
-    }
+    io::OutputStreams streams(out);
     io::VtkFrameWriter writer(out, scene->settings.name);
     RunClock clock;
     if (line.restart) {
-        clock = read_checkpoint(*scene, *line.restart);
-        writer.set_history(clock.frame_times);
+        clock = restart_from(*scene, *line.restart, streams, writer);
     }
-    ProgressReporter progress(log, scene->settings.end_time);
+    for (const auto& stepper : scene->steppers) {
+        stepper->set_output(streams);
+    }
+    ProgressReporter progress(streams.open("log.txt"), scene->settings.end_time);
     progress.message("grainload " + std::string(kVersion) + " (" + kGitHash + "): case " +
                      scene->settings.name + ", " + std::to_string(scene->point_count()) +
                      " points, " + std::to_string(omp_get_max_threads()) + " threads" +
                      (line.auto_threads ? " (auto: the cores free at start)" : "") + ", output " +
                      out);
+    if (line.restart) {
+        std::ostringstream restarted;
+        restarted.precision(9);
+        restarted << "restarted from " << *line.restart << " at t = " << clock.t << " s (step "
+                  << clock.step << "); every streamed file continues from it";
+        progress.message(restarted.str());
+    }
     const std::string checkpoint = out + "/checkpoint.bin";
+    // The frame's rows and the modules' logs go out before the checkpoint, which records where
+    // every streamed file then stands: a restart cuts the files back to exactly that.
     auto write_output = [&] {
         writer.write(collect_frame(*scene, clock.t));
         clock.frame_times = writer.times();
-        write_checkpoint(*scene, clock, checkpoint);
         for (const auto& stepper : scene->steppers) {
-            stepper->write_logs(out);
+            stepper->write_logs();
         }
+        clock.streams = streams.marks();
+        write_checkpoint(*scene, clock, checkpoint);
     };
     if (clock.frame_times.empty()) {
         write_output();

@@ -412,15 +412,18 @@ void CoupledModel::append_results(double t, std::vector<io::ResultFigure>& resul
     results.push_back({"shell_strain_energy", fem_->strain_energy(), "J", std::nullopt, ""});
 }
 
-void CoupledModel::write_logs(const std::string& directory) const {
-    sph_->write_logs(directory);
-    fem_->write_logs(directory);
-    monitor_.write_csv(directory, restarted_);
+void CoupledModel::write_logs() const {
+    sph_->write_logs();
+    fem_->write_logs();
+    if (output_ != nullptr) {
+        monitor_.write_csv(*output_);
+    }
 }
 
-void CoupledModel::set_output_directory(const std::string& directory) {
-    sph_->set_output_directory(directory);
-    fem_->set_output_directory(directory);
+void CoupledModel::set_output(io::OutputStreams& output) {
+    output_ = &output;
+    sph_->set_output(output);
+    fem_->set_output(output);
 }
 
 void CoupledModel::write_checkpoint(std::ostream& out) const {
@@ -462,7 +465,6 @@ void CoupledModel::read_checkpoint(std::istream& in) {
         io::state_count(windows[0], 9007199254740992.0, "the coupling's window count");
     extremes_.deflection = windows[1];
     extremes_.von_mises = windows[2];
-    restarted_ = true;
 }
 
 } // namespace grainload::coupling

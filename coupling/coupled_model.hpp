@@ -80,8 +80,8 @@ class CoupledModel final : public io::Stepper {
     void append_phases(std::vector<io::PhaseRecord>& records) const override {
         sph_->append_phases(records);
     }
-    void write_logs(const std::string& directory) const override;
-    void set_output_directory(const std::string& directory) override;
+    void write_logs() const override;
+    void set_output(io::OutputStreams& output) override;
     void write_checkpoint(std::ostream& out) const override;
     void read_checkpoint(std::istream& in) override;
 
@@ -131,8 +131,8 @@ class CoupledModel final : public io::Stepper {
     io::StepCollapseWatch step_watch_;
     std::optional<std::string> collapse_;
     WindowRecord pending_;
-    ShellExtremes extremes_; ///< over the run, for the hints
-    bool restarted_ = false;
+    ShellExtremes extremes_;              ///< over the run, for the hints
+    io::OutputStreams* output_ = nullptr; ///< the run's, for coupling.csv
     std::size_t windows_before_restart_ = 0;
     std::vector<double> node_area_;  ///< coupled area around each node (0: not coupled)
     std::vector<Vec3> node_normal_;  ///< unit normal towards the sand at each coupled node

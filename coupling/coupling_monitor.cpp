@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 #include <sstream>
 
@@ -61,15 +59,8 @@ std::optional<std::string> CouplingMonitor::check(double limit, double scale) co
     return out.str();
 }
 
-void CouplingMonitor::write_csv(const std::string& directory, bool restarted) const {
-    const std::string path = (std::filesystem::path(directory) / "coupling.csv").string();
-    const bool fresh = (written_ == 0 && !restarted) || !std::filesystem::exists(path);
-    std::ofstream csv(path, fresh ? std::ios::trunc : std::ios::app);
-    if (fresh) {
-        csv << "time_s,window_s,subcycles,iterations,load_change,sand_work_J,shell_work_J,"
-               "energy_error_J,wall_impulse_x_Ns,wall_impulse_y_Ns,wall_impulse_z_Ns,"
-               "shell_impulse_x_Ns,shell_impulse_y_Ns,shell_impulse_z_Ns,sph_s,fem_s,map_s\n";
-    }
+void CouplingMonitor::write_csv(io::OutputStreams& output) const {
+    std::ostringstream csv;
     csv.precision(12);
     double sand = sand_work_, shell = shell_work_;
     for (std::size_t k = windows_.size(); k-- > written_;) {
@@ -87,6 +78,12 @@ void CouplingMonitor::write_csv(const std::string& directory, bool restarted) co
             << w.shell_impulse.z() << ',' << w.sph_seconds << ',' << w.fem_seconds << ','
             << w.map_seconds << '\n';
     }
+    output
+        .open("coupling.csv",
+              "time_s,window_s,subcycles,iterations,load_change,sand_work_J,shell_work_J,"
+              "energy_error_J,wall_impulse_x_Ns,wall_impulse_y_Ns,wall_impulse_z_Ns,"
+              "shell_impulse_x_Ns,shell_impulse_y_Ns,shell_impulse_z_Ns,sph_s,fem_s,map_s\n")
+        .append(csv.str());
 }
 
 std::vector<double> CouplingMonitor::state() const {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "io/output_streams.hpp"
 #include "io/types.hpp"
 
 #include <optional>
@@ -66,9 +67,8 @@ class CouplingMonitor {
     std::optional<std::string> check(double limit, double scale) const;
     static constexpr int kGrowthWindows = 10;
 
-    /// Appends the windows not yet written to DIRECTORY/coupling.csv (a fresh file at the
-    /// first call of a fresh run).
-    void write_csv(const std::string& directory, bool restarted) const;
+    /// Appends the windows not yet written to coupling.csv, streamed into the run's output.
+    void write_csv(io::OutputStreams& output) const;
 
     /// The checkpoint's part: the works, impulses and counts, not the wall-clock seconds
     /// (a restarted run times its own windows).

@@ -3,11 +3,10 @@
 #include "fem/time_function.hpp"
 #include "io/binary_stream.hpp"
 #include "io/case_table.hpp"
+#include "io/output_streams.hpp"
 
 #include <cctype>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -364,16 +363,13 @@ void ShellModel::append_results(double, std::vector<io::ResultFigure>& results) 
     }
 }
 
-void ShellModel::write_logs(const std::string& directory) const {
-    // Appends the steps since the last call; a fresh run starts the file, a restarted one
-    // (whose in-memory log begins at the checkpoint) continues it.
-    const std::string path = directory + "/fem_convergence.csv";
-    const bool fresh = (logged_steps_ == 0 && !restarted_) || !std::filesystem::exists(path);
-    std::ofstream csv(path, fresh ? std::ios::trunc : std::ios::app);
-    if (fresh) {
-        csv << "time,increment,iteration,displacement_ratio,force_ratio,energy_ratio,"
-               "residual_norm,solver\n";
+void ShellModel::write_logs() const {
+    // Appends the steps since the last call (a restarted run's in-memory log begins at the
+    // checkpoint, where its stream continues).
+    if (output_ == nullptr) {
+        return;
     }
+    std::ostringstream csv;
     csv.precision(10);
     for (; logged_steps_ < log_.size(); ++logged_steps_) {
         const ShellStepLog& entry = log_[logged_steps_];
@@ -388,6 +384,10 @@ void ShellModel::write_logs(const std::string& directory) const {
             }
         }
     }
+    output_
+        ->open("fem_convergence.csv", "time,increment,iteration,displacement_ratio,force_ratio,"
+                                      "energy_ratio,residual_norm,solver\n")
+        .append(csv.str());
 }
 
 void ShellModel::write_checkpoint(std::ostream& out) const {
@@ -414,7 +414,6 @@ void ShellModel::read_checkpoint(std::istream& in) {
                           Eigen::Map<const Eigen::VectorXd>(a.data(), n));
     }
     failure_.reset();
-    restarted_ = true;
     reactions_ = analysis_->reactions();
 }
 

@@ -47,7 +47,8 @@ class ShellModel final : public io::Stepper {
     const std::vector<std::string>& part_names() const { return part_names_; }
     void append_results(double t, std::vector<io::ResultFigure>& results) const override;
     /// DIRECTORY/fem_convergence.csv: one row per Newton iteration of every step.
-    void write_logs(const std::string& directory) const override;
+    void write_logs() const override;
+    void set_output(io::OutputStreams& output) override { output_ = &output; }
     void write_checkpoint(std::ostream& out) const override;
     void read_checkpoint(std::istream& in) override;
 
@@ -94,7 +95,7 @@ class ShellModel final : public io::Stepper {
     std::vector<ShellStepLog> log_;        ///< this process's steps (the convergence CSV's rows)
     ShellStepTotals totals_;               ///< the whole run's, through restarts (summary.json)
     mutable std::size_t logged_steps_ = 0; ///< steps of log_ already in the convergence CSV
-    bool restarted_ = false;
+    io::OutputStreams* output_ = nullptr;  ///< the run's, for the convergence CSV
     Eigen::VectorXd reactions_;
     std::optional<std::string> failure_;
 };

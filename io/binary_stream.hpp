@@ -97,6 +97,23 @@ void read_array(std::istream& in, std::vector<T>& values, std::size_t expected, 
     read_values(in, values, count);
 }
 
+/// A string as its byte count and bytes.
+inline void write_string(std::ostream& out, const std::string& text) {
+    const auto count = static_cast<std::uint64_t>(text.size());
+    out.write(reinterpret_cast<const char*>(&count), sizeof count);
+    out.write(text.data(), static_cast<std::streamsize>(count));
+}
+
+/// Reads what write_string wrote; a count beyond the bytes left is refused before allocating.
+inline std::string read_string(std::istream& in) {
+    std::string text(static_cast<std::size_t>(read_count(in, 1)), '\0');
+    in.read(text.data(), static_cast<std::streamsize>(text.size()));
+    if (!in) {
+        throw std::runtime_error("checkpoint is truncated");
+    }
+    return text;
+}
+
 template <class T> void write_value(std::ostream& out, const T& value) {
     static_assert(kRawDumpable<T>);
     out.write(reinterpret_cast<const char*>(&value), sizeof value);

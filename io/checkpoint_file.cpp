@@ -17,6 +17,8 @@ namespace {
 
 constexpr std::uint64_t kFnvPrime = 0x100000001b3ULL;
 constexpr std::uint64_t kFirstFormatMagic = 0x474c434b50543031; // grainload 0.1's format
+/// The format before the streamed files' marks (io/output_streams.hpp) joined the clock.
+constexpr std::uint64_t kSecondFormatMagic = 0x323054504b434c47; // "GLCKPT02"
 constexpr std::streamoff kMagicBytes = 8;
 constexpr std::streamoff kTrailerBytes = 16; // payload length, hash
 
@@ -56,10 +58,14 @@ void check_framing(std::istream& in, std::uint64_t size) {
     }
     const auto magic = read_value<std::uint64_t>(in);
     if (magic != kCheckpointMagic) {
-        throw std::runtime_error(magic == kFirstFormatMagic
-                                     ? "written in the first checkpoint format, which had no "
-                                       "checksum; rerun the case from the start"
-                                     : "not a grainload checkpoint (wrong magic number)");
+        throw std::runtime_error(
+            magic == kFirstFormatMagic
+                ? "written in the first checkpoint format, which had no checksum; rerun the case "
+                  "from the start"
+            : magic == kSecondFormatMagic
+                ? "written in the second checkpoint format, which did not record where the "
+                  "streamed tables (wall_forces.csv, ...) stood; rerun the case from the start"
+                : "not a grainload checkpoint (wrong magic number)");
     }
     const std::uint64_t payload = size - static_cast<std::uint64_t>(kMagicBytes + kTrailerBytes);
     in.seekg(static_cast<std::streamoff>(size) - kTrailerBytes);

@@ -10,6 +10,8 @@
 
 namespace grainload::io {
 
+class OutputStreams;
+
 /// One physics module as the time loop sees it (SPH, shell FEM, a coupled pair). The driver in
 /// app/ owns the only time loop: it asks for the stable step, advances, checks health, and
 /// collects frames, results and checkpoints at the same instants for every module.
@@ -44,12 +46,14 @@ class Stepper {
     virtual std::vector<std::string> take_events() { return {}; }
     /// The run's phases ([[phase]]) for summary.json's "phases". None by default.
     virtual void append_phases(std::vector<PhaseRecord>& records) const { (void)records; }
-    /// Write the module's own logs into the output directory (the shell FEM's per-step
-    /// convergence CSV); called at every output instant. Nothing by default.
-    virtual void write_logs(const std::string& /*directory*/) const {}
-    /// The run's output directory, for tables a module writes itself (wall_forces.csv, ...).
-    /// Called once by the driver before the first step; a module without such tables ignores it.
-    virtual void set_output_directory(const std::string& directory) { (void)directory; }
+    /// Append the module's own logs since the last call to the run's streams (the shell FEM's
+    /// per-step convergence CSV, the coupling's windows); called at every output instant,
+    /// before the checkpoint records where the streams stand. Nothing by default.
+    virtual void write_logs() const {}
+    /// The run's output: its directory and the streamed files (io/output_streams.hpp) a module
+    /// appends its tables to (wall_forces.csv, ...). Called once by the driver before the first
+    /// step and outliving the module's run; a module without such tables ignores it.
+    virtual void set_output(OutputStreams& output) { (void)output; }
     /// Binary restart state; read_checkpoint must restore exactly what write_checkpoint saved.
     virtual void write_checkpoint(std::ostream& out) const = 0;
     virtual void read_checkpoint(std::istream& in) = 0;

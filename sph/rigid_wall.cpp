@@ -5,7 +5,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
+#include <sstream>
 #include <stdexcept>
 
 namespace grainload::sph {
@@ -208,23 +208,14 @@ std::vector<Vec3> box_wall_normals(const std::vector<Vec3>& points, const Vec3& 
     return normals;
 }
 
-WallForceWriter::WallForceWriter(const std::string& directory) {
-    std::filesystem::create_directories(directory);
-    const std::string file = (std::filesystem::path(directory) / "wall_forces.csv").string();
-    out_.open(file);
-    if (!out_) {
-        throw std::runtime_error("cannot write " + file);
-    }
-    out_ << "time_s,wall,force_x_N,force_y_N,force_z_N,moment_x_Nm,moment_y_Nm,moment_z_Nm\n";
-}
-
-void WallForceWriter::write(double time, const std::vector<Wall>& walls) {
+std::string wall_force_rows(double time, const std::vector<Wall>& walls) {
+    std::ostringstream out;
     for (const Wall& w : walls) {
-        out_ << time << ',' << w.name << ',' << w.force.x() << ',' << w.force.y() << ','
-             << w.force.z() << ',' << w.moment.x() << ',' << w.moment.y() << ',' << w.moment.z()
-             << '\n';
+        out << time << ',' << w.name << ',' << w.force.x() << ',' << w.force.y() << ','
+            << w.force.z() << ',' << w.moment.x() << ',' << w.moment.y() << ',' << w.moment.z()
+            << '\n';
     }
-    out_.flush();
+    return out.str();
 }
 
 } // namespace grainload::sph

@@ -3,8 +3,8 @@
 #include "sph/particle_set.hpp"
 #include "sph/wall.hpp"
 
-#include <fstream>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -72,14 +72,10 @@ Vec3 history_value(const std::vector<std::pair<double, Vec3>>& history, double t
 /// Exact integral of the same function over [from, to].
 Vec3 history_integral(const std::vector<std::pair<double, Vec3>>& history, double from, double to);
 
-/// DIR/wall_forces.csv: one row per wall and output instant.
-class WallForceWriter {
-  public:
-    explicit WallForceWriter(const std::string& directory);
-    void write(double time, const std::vector<Wall>& walls);
-
-  private:
-    std::ofstream out_;
-};
+/// wall_forces.csv, streamed into the run's output: its header, and its rows at one output
+/// instant, one per wall.
+inline constexpr std::string_view kWallForcesHeader =
+    "time_s,wall,force_x_N,force_y_N,force_z_N,moment_x_Nm,moment_y_Nm,moment_z_Nm\n";
+std::string wall_force_rows(double time, const std::vector<Wall>& walls);
 
 } // namespace grainload::sph

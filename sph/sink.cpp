@@ -1,15 +1,14 @@
 #include "sph/sink.hpp"
 
-#include "io/atomic_file.hpp"
 #include "io/binary_stream.hpp"
 #include "io/case_table.hpp"
 #include "io/steady_rate.hpp"
 #include "sph/sph_case_reader.hpp"
 
 #include <cmath>
-#include <filesystem>
 #include <limits>
 #include <ostream>
+#include <sstream>
 #include <stdexcept>
 
 namespace grainload::sph {
@@ -125,9 +124,9 @@ double SinkSet::audit_error(double scene_mass, double created) const {
     return total > 0.0 ? (scene_mass + discharged() - initial_mass_ - created) / total : 0.0;
 }
 
-void SinkSet::record(double time) {
+bool SinkSet::record(double time) {
     if (!history_times_.empty() && !(time > history_times_.back())) {
-        return;
+        return false;
     }
     history_times_.push_back(time);
     std::vector<double> row;
@@ -135,24 +134,26 @@ void SinkSet::record(double time) {
         row.push_back(sink.discharged);
     }
     history_.push_back(std::move(row));
+    return true;
 }
 
-void SinkSet::write_csv(const std::string& directory) const {
-    std::filesystem::create_directories(directory);
-    const char* mass_unit = dimension_ == 2 ? "kg_per_m" : "kg";
-    io::write_file_atomically(directory + "/discharge.csv", [&](std::ostream& out) {
-        out.precision(10);
-        out << "time_s,sink,discharged_mass_" << mass_unit << ",rate_" << mass_unit << "_per_s\n";
-        for (std::size_t k = 0; k < history_times_.size(); ++k) {
-            for (std::size_t s = 0; s < sinks_.size(); ++s) {
-                const double rate = k == 0 ? 0.0
-                                           : (history_[k][s] - history_[k - 1][s]) /
-                                                 (history_times_[k] - history_times_[k - 1]);
-                out << history_times_[k] << ',' << sinks_[s].name << ',' << history_[k][s] << ','
-                    << rate << '\n';
-            }
-        }
-    });
+std::string SinkSet::csv_header() const {
+    const std::string mass_unit = dimension_ == 2 ? "kg_per_m" : "kg";
+    return "time_s,sink,discharged_mass_" + mass_unit + ",rate_" + mass_unit + "_per_s\n";
+}
+
+std::string SinkSet::last_rows() const {
+    std::ostringstream out;
+    out.precision(10);
+    const std::size_t k = history_times_.size() - 1;
+    for (std::size_t s = 0; k < history_times_.size() && s < sinks_.size(); ++s) {
+        const double rate = k == 0 ? 0.0
+                                   : (history_[k][s] - history_[k - 1][s]) /
+                                         (history_times_[k] - history_times_[k - 1]);
+        out << history_times_[k] << ',' << sinks_[s].name << ',' << history_[k][s] << ',' << rate
+            << '\n';
+    }
+    return out.str();
 }
 
 void SinkSet::append_results(double scene_mass, double created,

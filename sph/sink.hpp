@@ -99,11 +99,14 @@ class SinkSet {
     /// mass created).
     double audit_error(double scene_mass, double created) const;
 
-    /// Add a row (time, discharged mass per sink) to the history, at an output instant.
-    void record(double time);
-    /// DIR/discharge.csv, the whole history, written atomically (io::write_file_atomically):
-    /// time_s, sink, discharged_mass_kg, rate_kg_per_s (the mean rate since the last row).
-    void write_csv(const std::string& directory) const;
+    /// Add a row (time, discharged mass per sink) to the history, at an output instant; false
+    /// (and nothing added) when the history already reaches `time`.
+    bool record(double time);
+    /// discharge.csv, streamed into the run's output: its header, and the rows of the history's
+    /// last instant, one per sink: time_s, sink, discharged_mass_kg, rate_kg_per_s (the mean
+    /// rate since the instant before).
+    std::string csv_header() const;
+    std::string last_rows() const;
     /// Per sink: sink_NAME_discharged_mass, sink_NAME_steady_rate (io::steady_rate over the
     /// history, null when it cannot be fitted; with an outlet, Beverloo's rate as its
     /// reference), sink_NAME_steady_window_start/_end; then

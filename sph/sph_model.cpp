@@ -205,10 +205,8 @@ const std::string& SphModel::body_name(int body_id) const {
     return solver_->walls()[static_cast<std::size_t>(body_id - bodies)].name;
 }
 
-void SphModel::set_output_directory(const std::string& directory) {
-    output_directory_ = directory;
-    wall_writer_.reset();
-    probe_writer_.reset();
+void SphModel::set_output(io::OutputStreams& output) {
+    output_ = &output;
 }
 
 void SphModel::read_probes(const io::CaseTable& sph) {

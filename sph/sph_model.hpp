@@ -110,9 +110,9 @@ class SphModel final : public io::Stepper {
     /// Index each current particle had when the case built the scene (particles leave through
     /// sinks and removed walls; the rest keep their order).
     const std::vector<Index>& original_index() const { return origin_; }
-    /// Where wall_forces.csv and probes.csv go: the run's output directory. Defaults to
-    /// out/<case name>, the driver's default; a driver run with --out must set it.
-    void set_output_directory(const std::string& directory) override;
+    /// Where wall_forces.csv, probes.csv, discharge.csv and the wall maps go: the run's output.
+    /// Without it (a model stepped by a test) nothing is written.
+    void set_output(io::OutputStreams& output) override;
 
   private:
     SphModel(const materials::MaterialLibrary& materials) : materials_(&materials) {}
@@ -170,12 +170,10 @@ class SphModel final : public io::Stepper {
     int dimension_ = 3;
     std::vector<WallDefinition> added_walls_;
     std::unique_ptr<SphSolver> solver_;
-    std::string output_directory_;
+    io::OutputStreams* output_ = nullptr;
     /// [[sph.probe]]: a name and the particle nearest to the probe's initial position.
     std::vector<std::pair<std::string, Index>> probes_;
     /// Written at each output instant, i.e. when the driver collects a frame.
-    mutable std::unique_ptr<WallForceWriter> wall_writer_;
-    mutable std::unique_ptr<std::ofstream> probe_writer_;
     mutable double last_row_time_ = -1.0;
     /// [sph.heap]: the measured body's kinetic energy per step and its heap at the end.
     std::optional<HeapMonitor> heap_;

@@ -1,10 +1,10 @@
+#include "io/output_streams.hpp"
 #include "sph/sph_model.hpp"
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 #include <memory>
+#include <sstream>
 #include <utility>
 
 // SphModel's output: the frames' particle and wall blocks, the probes' rows and the
@@ -28,43 +28,38 @@ double von_mises_of(const Voigt6& s) {
 } // namespace
 
 void SphModel::write_output_rows(double time) const {
-    if (output_directory_.empty() || !(time > last_row_time_)) {
+    if (output_ == nullptr || !(time > last_row_time_)) {
         return;
     }
     last_row_time_ = time;
     if (!solver_->walls().empty()) {
-        if (!wall_writer_) {
-            wall_writer_ = std::make_unique<WallForceWriter>(output_directory_);
-        }
-        wall_writer_->write(time, solver_->walls());
+        output_->open("wall_forces.csv", kWallForcesHeader)
+            .append(wall_force_rows(time, solver_->walls()));
     }
-    if (!sinks_.empty()) {
-        sinks_.record(time);
-        sinks_.write_csv(output_directory_);
+    if (!sinks_.empty() && sinks_.record(time)) {
+        output_->open("discharge.csv", sinks_.csv_header()).append(sinks_.last_rows());
     }
     if (!wall_maps_.empty()) {
-        wall_maps_.record(time, output_directory_);
+        wall_maps_.record(time, output_->directory());
     }
     if (probes_.empty()) {
         return;
     }
-    if (!probe_writer_) {
-        std::filesystem::create_directories(output_directory_);
-        probe_writer_ = std::make_unique<std::ofstream>(output_directory_ + "/probes.csv");
-        *probe_writer_ << "time_s,probe,particle,stress_xx_Pa,stress_yy_Pa,stress_zz_Pa,"
-                          "stress_xy_Pa,von_mises_Pa,pressure_Pa,plastic_strain\n";
-    }
+    std::ostringstream rows;
     const auto& p = solver_->particles();
     for (const auto& [name, i] : probes_) {
         if (i < 0) { // its particle left through a sink
             continue;
         }
         const Voigt6& s = p.stress[i];
-        *probe_writer_ << time << ',' << name << ',' << i << ',' << s[0] << ',' << s[1] << ','
-                       << s[2] << ',' << s[3] << ',' << von_mises_of(s) << ',' << pressure_of(s)
-                       << ',' << p.plastic_strain[i] << '\n';
+        rows << time << ',' << name << ',' << i << ',' << s[0] << ',' << s[1] << ',' << s[2] << ','
+             << s[3] << ',' << von_mises_of(s) << ',' << pressure_of(s) << ','
+             << p.plastic_strain[i] << '\n';
     }
-    probe_writer_->flush();
+    output_
+        ->open("probes.csv", "time_s,probe,particle,stress_xx_Pa,stress_yy_Pa,stress_zz_Pa,"
+                             "stress_xy_Pa,von_mises_Pa,pressure_Pa,plastic_strain\n")
+        .append(rows.str());
 }
 
 void SphModel::append_blocks(io::Frame& frame) const {

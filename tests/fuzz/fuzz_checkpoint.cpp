@@ -44,9 +44,8 @@ void print_rebuilds() {
 }
 
 /// The scene as built, with its own checkpoint read back: the state every input starts from.
-/// (Reading a checkpoint marks the shell as restarted and sets the solver's neighbour list
-/// from the checkpoint's reference positions, so a scene only built would differ from a
-/// restored one.)
+/// (Reading a checkpoint sets the solver's neighbour list from the checkpoint's reference
+/// positions, so a scene only built would differ from a restored one.)
 std::unique_ptr<grainload::app::Scene> pristine_scene(const std::string& pristine) {
     auto scene =
         grainload::app::Scene::load(GRAINLOAD_SOURCE_DIR "/tests/fuzz/checkpoint_scene.toml", {});

@@ -1,22 +1,17 @@
-// A run killed with SIGKILL and restarted from its checkpoint, and restarts from checkpoints
-// that are truncated, corrupted or of another case (issue 18, section 6).
+// A run killed with SIGKILL and restarted from its checkpoint, restarts that would lose or
+// invent output (an end time before the checkpoint, streamed files that lost their history),
+// and restarts from checkpoints that are truncated, corrupted or of another case.
 
 #include "support/case_runner.hpp"
 #include "support/cli_runner.hpp"
+#include "support/interrupted_run.hpp"
 #include "support/test_folder.hpp"
 
 #include <algorithm>
-#include <chrono>
-#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
-#include <iostream>
-#include <random>
 #include <string>
-#include <sys/wait.h>
-#include <thread>
-#include <unistd.h>
 #include <vector>
 
 namespace {
@@ -36,120 +31,23 @@ const std::vector<std::string> kRunArguments = {
     "--threads", "1"};
 constexpr const char* kLastFrame = "/frames/column_collapse_2d_small_000030.vtm";
 
-std::string quoted(const std::vector<std::string>& arguments) {
-    std::string line;
-    for (const auto& a : arguments) {
-        line += " '" + a + "'";
-    }
-    return line;
-}
-
-std::string fresh_directory(const std::string& name) {
-    const std::string directory = test_folder(name);
-    fs::remove_all(directory);
-    return directory;
-}
-
-/// Starts the CLI with `arguments` and `--out out`, its output going to out.log.
-pid_t start_cli(const std::vector<std::string>& arguments, const std::string& out) {
-    std::vector<std::string> all = arguments;
-    all.insert(all.end(), {"--out", out});
-    const std::string log = out + ".log";
-    const pid_t pid = fork();
-    if (pid == 0) {
-        std::freopen(log.c_str(), "w", stdout);
-        std::freopen(log.c_str(), "a", stderr);
-        std::vector<char*> argv{const_cast<char*>(GRAINLOAD_EXECUTABLE)};
-        for (auto& a : all) {
-            argv.push_back(a.data());
-        }
-        argv.push_back(nullptr);
-        execv(GRAINLOAD_EXECUTABLE, argv.data());
-        _exit(127);
-    }
-    return pid;
-}
-
-/// The lines of summary.json that a restart must reproduce: steps, simulated time, results
-/// (not the wall time, the speed or the threads).
-std::string reproducible_summary(const std::string& path) {
-    const std::string text = read_file(path);
-    std::string kept;
-    std::size_t start = 0;
-    while (start < text.size()) {
-        const std::size_t end = text.find('\n', start);
-        const std::string line = text.substr(start, end - start);
-        if (line.find("wall_time") == std::string::npos &&
-            line.find("per_second") == std::string::npos &&
-            line.find("\"threads\"") == std::string::npos &&
-            line.find("case_file") == std::string::npos) {
-            kept += line + '\n';
-        }
-        start = end == std::string::npos ? text.size() : end + 1;
-    }
-    return kept;
-}
-
-/// Every frame file (.vtm and the pieces) and the collection, by relative path.
-std::vector<std::string> frame_files(const std::string& out) {
-    std::vector<std::string> files;
-    for (const auto& entry : fs::recursive_directory_iterator(out + "/frames")) {
-        if (entry.is_regular_file() && entry.path().extension() != ".tmp") {
-            files.push_back(fs::relative(entry.path(), out).string());
-        }
-    }
-    std::sort(files.begin(), files.end());
-    return files;
-}
-
-// SIGKILL at a pseudo-random moment after the first checkpoint (the delay drawn anew each run
-// and printed), then a restart from whatever checkpoint the killed run left: every frame file
-// and the summary's figures must equal the uninterrupted run's byte for byte. The restart
-// reproduces a run bit for bit (RestartOfADeformingRunReproducesTheUninterruptedRun), and the
-// atomic writes (write, then rename) mean the kill can leave a stale .tmp but never a partial
-// checkpoint, frame or collection.
+// SIGKILL at pseudo-random moments after the first checkpoint (the delays drawn anew each run
+// and printed), then a restart from whatever checkpoint the killed run left: every file the run
+// writes (frames, collection, wall_forces.csv, log, summary) must equal the uninterrupted run's.
+// The restart reproduces a run bit for bit (RestartOfADeformingRunReproducesTheUninterruptedRun);
+// the atomic writes (write, then rename) mean the kill can leave a stale .tmp but never a
+// partial checkpoint, frame or collection; the streamed tables are cut back to the checkpoint.
 TEST(InterruptedRun, KilledAtARandomMomentAndRestartedReproducesTheUninterruptedRun) {
-    const std::string whole = fresh_directory("whole_run");
-    const auto start = std::chrono::steady_clock::now();
-    const auto reference =
-        run_cli(quoted(kRunArguments) + " --out '" + whole + "'", whole + ".log");
-    ASSERT_EQ(reference.exit_code, 0) << reference.output;
-    const double duration =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-    const std::string killed = fresh_directory("killed_run");
-    const unsigned seed = std::random_device{}();
-    std::mt19937 engine(seed);
-    const double delay = std::uniform_real_distribution<double>(0.0, 0.8 * duration)(engine);
-    const pid_t pid = start_cli(kRunArguments, killed);
-    ASSERT_GT(pid, 0);
-    while (!fs::exists(killed + "/checkpoint.bin")) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    }
-    std::this_thread::sleep_for(std::chrono::duration<double>(delay));
-    kill(pid, SIGKILL);
-    int status = 0;
-    waitpid(pid, &status, 0);
-    const bool was_killed = WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL;
-    std::cout << "seed " << seed << ": SIGKILL " << delay << " s after the first checkpoint of a "
-              << duration << " s run; " << (was_killed ? "killed" : "it had finished") << "\n";
-    const auto restarted = run_cli(quoted(kRunArguments) + " --out '" + killed + "' --restart '" +
-                                       killed + "/checkpoint.bin'",
-                                   killed + ".restart.log");
-    ASSERT_EQ(restarted.exit_code, 0) << restarted.output;
-
-    const auto files = frame_files(whole);
-    ASSERT_EQ(files, frame_files(killed));
-    ASSERT_EQ(std::count_if(files.begin(), files.end(),
+    expect_restarts_reproduce_the_run(kRunArguments, "column_2d", 2);
+    const std::string whole = test_folder("column_2d_whole");
+    EXPECT_TRUE(fs::exists(whole + kLastFrame));
+    const auto files = output_files(whole);
+    EXPECT_EQ(std::count_if(files.begin(), files.end(),
                             [](const std::string& f) { return f.ends_with(".vtm"); }),
               31); // 0 to 0.3 s every 10 ms
-    for (const std::string& file : files) {
-        EXPECT_EQ(read_file(whole + "/" + file), read_file(killed + "/" + file)) << file;
-    }
-    EXPECT_EQ(read_file(whole + "/column_collapse_2d_small.pvd"),
-              read_file(killed + "/column_collapse_2d_small.pvd"));
-    EXPECT_EQ(reproducible_summary(whole + "/summary.json"),
-              reproducible_summary(killed + "/summary.json"));
+    // One row per wall and instant: 0 to 0.3 s every 10 ms, for the two walls of the container.
+    const std::string forces = read_file(whole + "/wall_forces.csv");
+    EXPECT_EQ(std::count(forces.begin(), forces.end(), '\n'), 1 + 31 * 2) << forces;
 }
 
 /// Runs the case to 0.05 s in `out` and returns its checkpoint's bytes.
@@ -178,6 +76,70 @@ std::string short_run(const std::string& out) {
         quoted(kRunArguments) + " --set 'case.end_time=0.05 s' --out '" + out + "'", out + ".log");
     EXPECT_EQ(result.exit_code, 0) << result.output;
     return read_file(out + "/checkpoint.bin");
+}
+
+// A restart whose end time lies before the checkpoint's time has nothing to run and would
+// leave no frame at its end time (it once "completed" and pointed at a .pvd frame that did not
+// exist): refused with exit code 2, naming the key and both times, and nothing touched.
+TEST(InterruptedRun, ARestartEndingBeforeItsCheckpointIsRefused) {
+    const std::string out = fresh_directory("end_before_checkpoint");
+    short_run(out);
+    const auto before = output_files(out);
+    const std::string log = read_file(out + "/log.txt");
+    const std::string summary = read_file(out + "/summary.json");
+    const auto result = run_cli(quoted(kRunArguments) + " --set 'case.end_time=0.03 s' --out '" +
+                                    out + "' --restart '" + out + "/checkpoint.bin'",
+                                out + ".early.log");
+    EXPECT_EQ(result.exit_code, 2) << result.output;
+    EXPECT_NE(result.output.find("case.end_time"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("0.03 s lies before the time of the checkpoint"),
+              std::string::npos)
+        << result.output;
+    EXPECT_NE(result.output.find("0.05 s"), std::string::npos) << result.output;
+    EXPECT_EQ(output_files(out), before);
+    EXPECT_EQ(read_file(out + "/log.txt"), log);
+    EXPECT_EQ(read_file(out + "/summary.json"), summary);
+}
+
+// The streamed tables hold the run's history up to the checkpoint; a restart that does not find
+// it (a table deleted or edited, a restart into another directory) would continue a table
+// without its beginning: refused with exit code 2, naming the file, and no file touched.
+TEST(InterruptedRun, ARestartThatWouldLoseAStreamedHistoryIsRefused) {
+    const std::string out = fresh_directory("lost_history");
+    short_run(out);
+    const std::string forces = read_file(out + "/wall_forces.csv");
+    const std::string log = read_file(out + "/log.txt");
+    std::string edited = forces;
+    edited[edited.size() / 2] = edited[edited.size() / 2] == '1' ? '2' : '1';
+    std::ofstream(out + "/wall_forces.csv", std::ios::trunc) << edited;
+    const std::string command = quoted(kRunArguments) + " --set 'case.end_time=0.1 s' --out '" +
+                                out + "' --restart '" + out + "/checkpoint.bin'";
+    const auto refused = run_cli(command, out + ".edited.log");
+    EXPECT_EQ(refused.exit_code, 2) << refused.output;
+    EXPECT_NE(refused.output.find("wall_forces.csv: the checkpoint was written after its first"),
+              std::string::npos)
+        << refused.output;
+    EXPECT_EQ(read_file(out + "/wall_forces.csv"), edited);
+    EXPECT_EQ(read_file(out + "/log.txt"), log);
+
+    const std::string elsewhere = fresh_directory("lost_history_elsewhere");
+    const auto moved = run_cli(quoted(kRunArguments) + " --set 'case.end_time=0.1 s' --out '" +
+                                   elsewhere + "' --restart '" + out + "/checkpoint.bin'",
+                               out + ".elsewhere.log");
+    EXPECT_EQ(moved.exit_code, 2) << moved.output;
+    EXPECT_NE(moved.output.find("is not in the output directory"), std::string::npos)
+        << moved.output;
+
+    // The table as the run left it: the restart continues it, and the whole run is reproduced.
+    std::ofstream(out + "/wall_forces.csv", std::ios::trunc) << forces;
+    const auto resumed = run_cli(command, out + ".resumed.log");
+    ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+    const std::string whole = fresh_directory("lost_history_whole");
+    ASSERT_EQ(run_cli(quoted(kRunArguments) + " --set 'case.end_time=0.1 s' --out '" + whole + "'",
+                      whole + ".log")
+                  .exit_code,
+              0);
+    EXPECT_EQ(read_file(out + "/wall_forces.csv"), read_file(whole + "/wall_forces.csv"));
 }
 
 void write_bytes(const std::string& path, const std::string& bytes) {

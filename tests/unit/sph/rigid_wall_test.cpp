@@ -1,11 +1,8 @@
 #include "io/case_table.hpp"
 #include "sph/rigid_wall.hpp"
 #include "sph/sph_case_reader.hpp"
-#include "support/test_folder.hpp"
 
 #include <Eigen/Geometry>
-#include <filesystem>
-#include <fstream>
 #include <gtest/gtest.h>
 #include <numbers>
 #include <string>
@@ -97,23 +94,14 @@ angular_velocity_history = [["0.2 s", "0 0 0 rad/s"], ["0.6 s", "0 0 2 rad/s"]]
 }
 
 TEST(RigidWall, WallForcesFileHasOneRowPerWallAndInstant) {
-    const std::filesystem::path directory = testing::test_folder("wall_test");
     Wall wall;
     wall.name = "floor";
     wall.force = Vec3(1.0, 2.0, 3.0);
-    {
-        WallForceWriter writer(directory.string());
-        std::vector<Wall> walls;
-        walls.push_back(wall);
-        writer.write(0.5, walls);
-    }
-    std::ifstream in(directory / "wall_forces.csv");
-    std::string header;
-    std::string row;
-    std::getline(in, header);
-    std::getline(in, row);
-    EXPECT_EQ(header.rfind("time_s,wall,force_x_N", 0), 0u);
-    EXPECT_EQ(row, "0.5,floor,1,2,3,0,0,0");
+    std::vector<Wall> walls{wall, wall};
+    walls[1].name = "door";
+    walls[1].moment = Vec3(0.0, -4.5, 0.0);
+    EXPECT_EQ(std::string(kWallForcesHeader).rfind("time_s,wall,force_x_N", 0), 0u);
+    EXPECT_EQ(wall_force_rows(0.5, walls), "0.5,floor,1,2,3,0,0,0\n0.5,door,1,2,3,0,-4.5,0\n");
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 #include "fem/shell_model.hpp"
 #include "io/case_table.hpp"
+#include "io/output_streams.hpp"
 #include "support/test_folder.hpp"
 
 #include <cstdio>
@@ -68,9 +69,11 @@ TEST(ShellModel, ReportsSolverAndWritesConvergenceCsv) {
     LoadedCase c = load();
     const std::string dir = testing::test_folder("fem_csv_test");
     std::filesystem::create_directories(dir);
+    io::OutputStreams output(dir);
+    c.model->set_output(output);
     for (int step = 0; step < 4; ++step) {
         c.model->advance(0.25 * step, 0.25);
-        c.model->write_logs(dir);
+        c.model->write_logs();
     }
     std::vector<io::ResultFigure> results;
     c.model->append_results(1.0, results);
