@@ -3,6 +3,7 @@
 
 #include "io/checkpoint_file.hpp"
 #include "io/output_streams.hpp"
+#include "support/cli_runner.hpp"
 #include "support/test_folder.hpp"
 
 #include <cerrno>
@@ -21,10 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string read_file(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream bytes;
-    bytes << in.rdbuf();
-    return bytes.str();
+    return grainload::testing::read_file(path.string());
 }
 
 std::string fresh_folder(const std::string& name) {
