@@ -63,7 +63,9 @@ void check_gravity_strain(const io::CaseTable& root, const ParticleSet& particle
     if (g.strain > kLargestGravityStrain) {
         const io::CaseTable table =
             root.array_of_tables("material")[static_cast<std::size_t>(g.material)];
+        const bool deck = table.has("from_lsdyna");
         const char* key = table.has("stiffness_scale")  ? "stiffness_scale"
+                          : deck                        ? "from_lsdyna"
                           : table.has("youngs_modulus") ? "youngs_modulus"
                                                         : "bulk_modulus";
         std::ostringstream message;
@@ -74,6 +76,11 @@ void check_gravity_strain(const io::CaseTable& root, const ParticleSet& particle
                 << materials.name(g.material) << "\", above " << kLargestGravityStrain
                 << ": its elastic constants no longer describe it; expected K + 4G/3 of at least "
                 << g.stress / kLargestGravityStrain << " Pa";
+        if (deck) {
+            // Density and moduli both come from the deck, as its units convert them.
+            message << " (the deck's RO, BULK and G read in \""
+                    << table.table("from_lsdyna").string("units") << "\")";
+        }
         table.fail(key, message.str());
     }
     if (g.contact > kLargestGravityStrain) {
