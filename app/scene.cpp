@@ -4,10 +4,12 @@
 #include "coupling/coupled_model.hpp"
 #include "coupling/coupling_case_reader.hpp"
 #include "fem/shell_model.hpp"
+#include "io/deck_ledger.hpp"
 #include "sph/sph_model.hpp"
 
 #include <algorithm>
 #include <filesystem>
+#include <iostream>
 #include <utility>
 
 namespace grainload::app {
@@ -51,6 +53,10 @@ std::unique_ptr<Scene> Scene::from_document(std::unique_ptr<io::CaseDocument> do
     if (scene->steppers.empty()) {
         root.fail("", "expected at least one physics module: an [sph] table with [[sph.body]] "
                       "or an [fem] table with [[fem.shell]]");
+    }
+    // Once every reader has had its decks: what none of them took, once per deck.
+    for (const std::string& warning : root.deck_ledger().warnings()) {
+        std::cerr << "grainload: warning: " << warning << '\n';
     }
     // The figures at t = 0 name every figure the run reports, so a misspelt reference is
     // refused before the run, not after it.

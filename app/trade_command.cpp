@@ -322,6 +322,43 @@ std::vector<TradeRun> ensemble_runs(const TradeOptions& o, io::CaseDocument& doc
                       o.noise);
 }
 
+/// A sweep whose runs all failed is no trade (every run refusing a misspelt key, say): the
+/// first run's diagnosis from its console.txt, and its exit code (2 bad input, 3 unstable; 1
+/// for anything else) as the sweep's.
+int report_failure(const TradeOptions& o, const std::vector<TradeRun>& grid,
+                   const std::vector<TradeResult>& results) {
+    const std::string console = o.out + "/" + grid.front().id + "/console.txt";
+    std::ifstream in(console);
+    std::string line;
+    std::string said;
+    std::string last;
+    while (std::getline(in, line)) {
+        if (line.starts_with("grainload: error") || line.find("became unstable") != line.npos) {
+            said += "  " + line + "\n";
+        }
+        last = line.empty() ? last : line;
+    }
+    said = said.empty() && !last.empty() ? "  " + last + "\n" : said;
+    const int code = results.front().exit_code;
+    std::fprintf(stderr,
+                 "grainload: error: trade: every run failed; the first, %s (exit %d, %s), "
+                 "said:\n%s",
+                 grid.front().id.c_str(), code, console.c_str(),
+                 said.empty() ? "  nothing\n" : said.c_str());
+    return code == 2 || code == 3 ? code : 1;
+}
+
+/// The plot of a sweep that has a run to show, 0; else report_failure's code.
+int finish(const TradeOptions& o, const std::vector<TradeRun>& grid,
+           const std::vector<TradeResult>& results) {
+    if (std::none_of(results.begin(), results.end(),
+                     [](const TradeResult& r) { return r.exit_code == 0; })) {
+        return report_failure(o, grid, results);
+    }
+    plot(o);
+    return 0;
+}
+
 } // namespace
 
 const char* trade_usage() {
@@ -445,8 +482,7 @@ int run_trade(const TradeOptions& o) {
     print_table(grid, results, analysis, o.budget);
     print_noise(analysis, o.budget);
     std::printf("table: %s/trade.csv\n", o.out.c_str());
-    plot(o);
-    return 0;
+    return finish(o, grid, results);
 }
 
 int trade_main(int argc, const char* const* argv) {

@@ -208,6 +208,17 @@ std::optional<std::string> window_refusal(const WindowLimits& limits, double win
     return std::nullopt;
 }
 
+namespace {
+
+/// `x` to two significant digits, rounded towards zero (down) or away from it (up): a setting
+/// printed for the user stays on the safe side of the value it stands for.
+double two_digits(double x, bool up) {
+    const double unit = std::pow(10.0, std::floor(std::log10(x)) - 1.0);
+    return (up ? std::ceil(x / unit) : std::floor(x / unit)) * unit;
+}
+
+} // namespace
+
 std::optional<std::string> window_warning(const WindowLimits& limits, double window, bool dynamic,
                                           double omega) {
     // Static windows of 1.02-1.20 times static_min oscillated and 1.08 times it ran stable
@@ -220,16 +231,33 @@ std::optional<std::string> window_warning(const WindowLimits& limits, double win
         return std::nullopt;
     }
     const double limit = dynamic ? limits.dynamic_max : limits.static_min;
+    // The loop gain the relaxation that clears the window tolerates (estimate_window_limits):
+    // the dynamic limit grows as T = 2 / omega - 1; the static one squared is m_s C / T - beta
+    // m_s C, which the margin puts at (window / 1.25)^2.
+    const double gain = tolerated_gain(omega);
+    double wanted = gain * window / limits.dynamic_max;
+    if (!dynamic) {
+        const double mc = limits.sand_mass * limits.compliance;
+        const double beta_mc = (mc - limit * limit * gain) / gain;
+        const double margin = window / kStaticMargin;
+        wanted = mc / (margin * margin + beta_mc);
+    }
     std::ostringstream why;
-    why << "the coupling window " << window << " s is "
-        << (dynamic ? "longer than the longest" : "within 25 % of the shortest")
+    why.precision(3);
+    why << "the coupling window " << window << " s is " << window / limit << " times the "
+        << (dynamic ? "longest" : "shortest")
         << " stable staggered window the coupling estimates for this "
-        << (dynamic ? "dynamic" : "static") << " shell, " << limit << " s (relaxation " << omega
-        << (dynamic ? "" : "; windows up to 1.2 times the estimate have oscillated")
-        << "): if the exchange oscillates the interface energy watchdog stops the run; a window "
-        << (dynamic ? "of at most " : "of at least ") << (dynamic ? limit : kStaticMargin * limit)
-        << " s, a smaller relaxation" << (dynamic ? "" : ", added_mass = 4")
-        << " or max_iterations > 1 is safe";
+        << (dynamic ? "dynamic" : "static") << " shell (" << limit << " s at relaxation " << omega
+        << "), "
+        << (dynamic ? "beyond it, where runs have gone either way"
+                    : "within the estimate's 25 % uncertainty: windows up to 1.2 times it have "
+                      "oscillated")
+        << ". The run goes ahead, and should the exchange oscillate the interface energy "
+        << "watchdog stops it with exit 3; to clear it set window = \""
+        << two_digits(dynamic ? limit : kStaticMargin * limit, !dynamic) << " s\" or "
+        << (dynamic ? "shorter" : "longer")
+        << ", relaxation = " << two_digits(2.0 / (1.0 + wanted), false) << " or less, "
+        << (dynamic ? "or " : "added_mass = 4 or ") << "max_iterations = 2";
     return why.str();
 }
 

@@ -3,6 +3,7 @@
 #include "fem/gmsh_reader.hpp"
 #include "fem/keyword_shell_reader.hpp"
 #include "io/case_table.hpp"
+#include "io/deck_ledger.hpp"
 #include "io/gmsh_runner.hpp"
 #include "io/keyword_deck.hpp"
 #include "io/keyword_mesh.hpp"
@@ -61,15 +62,14 @@ ShellMesh read_lsdyna_shell(const io::CaseTable& shell) {
     const std::vector<std::string> parts =
         shell.has("parts") ? shell.name_list("parts") : std::vector<std::string>{};
     const std::string path = shell.file_path("file");
+    io::open_keyword_deck(shell, path, *units);
     io::KeywordMesh deck;
     try {
         deck = io::read_keyword_mesh(io::read_keyword_deck(path), *units);
     } catch (const std::invalid_argument& e) {
         shell.fail("file", e.what());
     }
-    if (const std::string warning = deck.unsupported_warning(path); !warning.empty()) {
-        std::cerr << "grainload: warning: " << warning << '\n';
-    }
+    shell.deck_ledger().leave(path, deck.ignored);
     try {
         return make_keyword_shell_mesh(deck, parts);
     } catch (const std::invalid_argument& e) {

@@ -1,4 +1,5 @@
 #include "io/case_table.hpp"
+#include "io/deck_ledger.hpp"
 
 #include <cerrno>
 #include <charconv>
@@ -14,10 +15,15 @@ namespace grainload::io {
 struct CaseDocument::Impl {
     toml::table root;
     std::unordered_set<const toml::node*> used;
+    DeckLedger decks;
 };
 
 CaseDocument::CaseDocument() : impl_(std::make_unique<Impl>()) {}
 CaseDocument::~CaseDocument() = default;
+
+DeckLedger& CaseDocument::deck_ledger() {
+    return impl_->decks;
+}
 
 namespace {
 

@@ -47,6 +47,10 @@ int CaseTable::spatial_dimension() const {
     return document_->spatial_dimension;
 }
 
+DeckLedger& CaseTable::deck_ledger() const {
+    return document_->deck_ledger();
+}
+
 const toml::node* CaseTable::lookup(std::string_view key) const {
     const toml::node* node = overlay_ != nullptr ? overlay_->get(key) : nullptr;
     node = node != nullptr ? node : table_->get(key);
@@ -65,21 +69,29 @@ const toml::node& CaseTable::require(std::string_view key) const {
 }
 
 void CaseTable::fail(std::string_view key, std::string_view message) const {
+    throw CaseError(where(key) + ": " + std::string(message));
+}
+
+std::string CaseTable::where(std::string_view key) const {
     const toml::node* node =
         key.empty() ? nullptr : (overlay_ != nullptr ? overlay_->get(key) : nullptr);
     node = node != nullptr || key.empty() ? node : table_->get(key);
-    fail_at(node != nullptr ? node : table_, key, message);
+    return located(node != nullptr ? node : table_, key);
 }
 
 void CaseTable::fail_at(const toml::node* node, std::string_view key,
                         std::string_view message) const {
+    throw CaseError(located(node, key) + ": " + std::string(message));
+}
+
+std::string CaseTable::located(const toml::node* node, std::string_view key) const {
     const auto& region = node->source();
     std::ostringstream out;
     out << (region.path && !region.path->empty() ? *region.path : document_->file()) << ':'
         << region.begin.line << ':' << region.begin.column << ": ";
     const std::string full = key_path(key);
-    out << (full.empty() ? std::string("case file") : "key '" + full + "'") << ": " << message;
-    throw CaseError(out.str());
+    out << (full.empty() ? std::string("case file") : "key '" + full + "'");
+    return out.str();
 }
 
 namespace {

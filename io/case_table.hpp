@@ -22,6 +22,7 @@ class node;
 namespace grainload::io {
 
 class CaseDocument;
+class DeckLedger;
 
 /// Read access to one TOML table of a case file. Every read marks the key as used, so that
 /// CaseDocument::reject_unknown_keys() can report typos. Every failure throws CaseError naming
@@ -96,15 +97,21 @@ class CaseTable {
 
     /// Throw a CaseError located at `key` (or at the table itself when `key` is empty).
     [[noreturn]] void fail(std::string_view key, std::string_view message) const;
+    /// Where fail() would locate `key`: "case.toml:12:1: key 'sph.sink[0].min'", for a warning
+    /// that names its key as an error does.
+    std::string where(std::string_view key) const;
 
     /// Dimension of the scene (2 or 3), needed to read vectors; set from [case].dimension.
     int spatial_dimension() const;
+    /// The document's record of the LS-DYNA decks its readers open (io/deck_ledger.hpp).
+    DeckLedger& deck_ledger() const;
 
   private:
     const toml::node* lookup(std::string_view key) const;
     const toml::node& require(std::string_view key) const;
     [[noreturn]] void fail_at(const toml::node* node, std::string_view key,
                               std::string_view message) const;
+    std::string located(const toml::node* node, std::string_view key) const;
     Vec3 vector_from(const toml::node& node, std::string_view key, Dimension expected) const;
 
     CaseDocument* document_;
@@ -132,6 +139,8 @@ class CaseDocument {
     std::string directory() const;
 
     void mark_used(const toml::node* node);
+    /// What the readers took from the LS-DYNA decks the case names (io/deck_ledger.hpp).
+    DeckLedger& deck_ledger();
     /// Throw CaseError for the first key that no reader asked for.
     void reject_unknown_keys() const;
 

@@ -97,10 +97,6 @@ class MeshReader {
                            shell.source.text() + ": *ELEMENT_SHELL " + std::to_string(shell.id));
             }
         }
-        for (const auto& [name, count] : unsupported_) {
-            mesh_.unsupported.push_back(name +
-                                        (count > 1 ? " (" + std::to_string(count) + ")" : ""));
-        }
         return std::move(mesh_);
     }
 
@@ -128,7 +124,7 @@ class MeshReader {
                                            "*ELEMENT_SHELL(_THICKNESS), *SECTION_SHELL(_TITLE), "
                                            "*PART, *ELEMENT_SPH(_VOLUME)");
         } else {
-            ++unsupported_["*" + name];
+            mesh_.ignored.push_back({"*" + name, k.file, k.line});
         }
     }
 
@@ -143,7 +139,7 @@ class MeshReader {
             mesh_.nodes.push_back(units_.length *
                                   Vec3(f.real_or(1, 0.0), f.real_or(2, 0.0), f.real_or(3, 0.0)));
             if (f.real_or(4, 0.0) != 0.0 || f.real_or(5, 0.0) != 0.0) {
-                ++unsupported_["*NODE TC/RC constraints"];
+                mesh_.ignored.push_back({"*NODE TC/RC constraints", card.file, card.line});
             }
         }
     }
@@ -313,7 +309,6 @@ class MeshReader {
     KeywordId node_cards_ = 0; ///< cards of every *NODE keyword: an upper bound on node count
     KeywordMesh mesh_;
     std::set<KeywordId> shell_ids_, node_set_ids_, shell_set_ids_;
-    std::map<std::string, int> unsupported_;
 };
 
 } // namespace
@@ -324,17 +319,6 @@ std::size_t KeywordMesh::node(KeywordId id, const std::string& where) const {
         throw KeywordError(where + ": node " + std::to_string(id) + " is not defined by *NODE");
     }
     return found->second;
-}
-
-std::string KeywordMesh::unsupported_warning(const std::string& file) const {
-    if (unsupported.empty()) {
-        return {};
-    }
-    std::string list;
-    for (const std::string& name : unsupported) {
-        list += (list.empty() ? "" : ", ") + name;
-    }
-    return file + ": ignored what grainload does not read from LS-DYNA decks: " + list;
 }
 
 std::vector<KeywordId> select_parts(const KeywordMesh& mesh, const std::vector<std::string>& names,

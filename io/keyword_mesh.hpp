@@ -1,5 +1,6 @@
 #pragma once
 
+#include "io/deck_ledger.hpp"
 #include "io/keyword_deck.hpp"
 #include "io/keyword_units.hpp"
 #include "io/types.hpp"
@@ -72,7 +73,7 @@ struct KeywordParticle {
 /// *ELEMENT_SHELL_THICKNESS, *SECTION_SHELL(_TITLE), *PART, *SET_NODE_LIST(_TITLE),
 /// *SET_SHELL_LIST(_TITLE), *ELEMENT_SPH(_VOLUME). Variants of these that would change what
 /// the cards mean (*ELEMENT_SHELL_OFFSET, *PART_COMPOSITE, *SECTION_SHELL_ALE, ...) are refused
-/// with a KeywordError; every other keyword is listed in `unsupported`.
+/// with a KeywordError; every other keyword is listed in `ignored`.
 struct KeywordMesh {
     std::vector<KeywordId> node_ids; ///< in reading order
     std::vector<Vec3> nodes;         ///< positions [m], parallel to node_ids
@@ -83,13 +84,12 @@ struct KeywordMesh {
     std::vector<KeywordSet> node_sets;
     std::vector<KeywordSet> shell_sets;
     std::vector<KeywordParticle> particles;
-    /// Keywords (and ignored fields) grainload does not read, with how often: "*MAT_ELASTIC (2)".
-    std::vector<std::string> unsupported;
+    /// Keywords (and fields) grainload does not read from a mesh, each where it stands; the
+    /// case's DeckLedger lists those no other reader took either.
+    std::vector<IgnoredKeyword> ignored;
 
     /// Index of node `id` in `nodes`; throws KeywordError naming `where` if there is none.
     std::size_t node(KeywordId id, const std::string& where) const;
-    /// One line listing `unsupported`, or empty when there is nothing to say.
-    std::string unsupported_warning(const std::string& file) const;
 };
 
 /// The part ids that `names` select, each a *PART title (every part of that title) or an id;

@@ -1,13 +1,17 @@
 #include "materials/lsdyna_material.hpp"
 
 #include "io/case_table.hpp"
+#include "io/deck_ledger.hpp"
 #include "io/keyword_fields.hpp"
 #include "materials/generalized_cap.hpp"
 
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
+#include <iostream>
 #include <optional>
+#include <sstream>
 #include <vector>
 
 namespace grainload::materials {
@@ -211,7 +215,76 @@ std::pair<int, std::size_t> field_of(const std::string& key) {
     return {0, kMid};
 }
 
+std::string number_text(double value, int digits) {
+    std::ostringstream out;
+    out.precision(digits);
+    out << value;
+    return out.str();
+}
+
+/// A pressure in the unit of its size: "30.6 GPa".
+std::string pressure_text(double pascal) {
+    static constexpr std::array<std::pair<double, const char*>, 3> kUnits{
+        {{1e9, "GPa"}, {1e6, "MPa"}, {1e3, "kPa"}}};
+    for (const auto& [size, unit] : kUnits) {
+        if (std::abs(pascal) >= size) {
+            return number_text(pascal / size, 3) + " " + unit;
+        }
+    }
+    return number_text(pascal, 3) + " Pa";
+}
+
 } // namespace
+
+std::string implausible_values(const Mat025Material& m, const io::KeywordUnits& units) {
+    struct Quantity {
+        const char* name;
+        double value; // SI
+        io::Dimension dimension;
+        double least;
+        double most;
+    };
+    const std::array<Quantity, 3> quantities{{
+        {"density", m.elastic.density, dim::kDensity, kLeastDensity, kMostDensity},
+        {"bulk modulus", m.elastic.bulk_modulus, dim::kPressure, kLeastModulus, kMostModulus},
+        {"shear modulus", m.elastic.shear_modulus, dim::kPressure, kLeastModulus, kMostModulus},
+    }};
+    auto inside = [](const Quantity& q, double value) {
+        return value >= q.least && value <= q.most;
+    };
+    std::string odd;
+    for (const Quantity& q : quantities) {
+        if (!inside(q, q.value)) {
+            const bool density = q.dimension == dim::kDensity;
+            odd += std::string(odd.empty() ? "" : ", ") + "its " + q.name + " " +
+                   number_text(q.value, 4) + (density ? " kg/m^3" : " Pa") + " is outside " +
+                   (density ? "100 to 25000 kg/m^3" : "0.1 MPa to 1000 GPa");
+        }
+    }
+    if (odd.empty()) {
+        return "";
+    }
+    odd = "read in \"" + units.name + "\" " + odd;
+    static constexpr std::array<const char*, 8> kCommon{
+        "m-kg-s", "mm-t-s", "mm-kg-ms", "mm-g-ms", "cm-g-us", "cm-g-s", "in-lbf-s", "ft-lbf-s"};
+    for (const char* name : kCommon) {
+        std::string error;
+        const auto other = io::parse_keyword_units(name, &error);
+        std::array<double, 3> values{};
+        bool fits = other.has_value();
+        for (std::size_t k = 0; k < quantities.size() && fits; ++k) {
+            const Quantity& q = quantities[k];
+            values[k] = q.value / units.to_si(q.dimension) * other->to_si(q.dimension);
+            fits = inside(q, values[k]);
+        }
+        if (fits) {
+            return odd + "; read in \"" + std::string(name) + "\" they are " +
+                   number_text(values[0], 4) + " kg/m^3, " + pressure_text(values[1]) + " and " +
+                   pressure_text(values[2]);
+        }
+    }
+    return odd;
+}
 
 Mat025Material read_mat025(const io::KeywordDeck& deck, std::string_view mid,
                            const io::KeywordUnits& units) {
@@ -229,6 +302,8 @@ Mat025Material read_mat025(const io::KeywordDeck& deck, std::string_view mid,
     }
     Mat025Material m;
     m.where = keyword.where();
+    m.file = keyword.file;
+    m.line = keyword.line;
     m.elastic = ElasticConstants::from_bulk_shear(positive(card1, kRo, units.to_si(dim::kDensity)),
                                                   positive(card1, kBulk, pressure),
                                                   positive(card1, kShear, pressure));
@@ -280,14 +355,23 @@ std::unique_ptr<Material> material_from_lsdyna(const io::CaseTable& table) {
         source.fail("mid", "expected one material id or label");
     }
     const std::string path = source.file_path("file");
+    io::open_keyword_deck(source, path, *units);
+    Mat025Material m;
     try {
-        Mat025Material m = read_mat025(io::read_keyword_deck(path), mid.front(), *units);
-        const ElasticConstants elastic =
-            m.elastic.scaled(ElasticConstants::read_stiffness_scale(table));
-        return std::make_unique<GeneralizedCap>(elastic, m.parameters);
+        m = read_mat025(io::read_keyword_deck(path), mid.front(), *units);
     } catch (const std::invalid_argument& e) {
         source.fail("file", e.what());
     }
+    source.deck_ledger().take(path, m.file, m.line);
+    if (const std::string odd = implausible_values(m, *units); !odd.empty()) {
+        std::cerr << "grainload: warning: " << table.where("from_lsdyna") << ": material \""
+                  << table.string("name") << "\" (MID " << mid.front() << " of "
+                  << std::filesystem::path(path).filename().string() << ") " << odd
+                  << ": expected the deck's own unit system in from_lsdyna.units\n";
+    }
+    const ElasticConstants elastic =
+        m.elastic.scaled(ElasticConstants::read_stiffness_scale(table));
+    return std::make_unique<GeneralizedCap>(elastic, m.parameters);
 }
 
 } // namespace grainload::materials

@@ -26,6 +26,8 @@ namespace grainload::materials {
 /// A blank field is 0 unless a default is shown; card 3 may be left out (all defaults).
 struct Mat025Material {
     std::string where; ///< "file:line: *MAT_GEOLOGIC_CAP_MODEL", for messages
+    std::string file;  ///< the file and line of its keyword (the deck or a file it includes)
+    int line = 0;
     ElasticConstants elastic;
     cap::Parameters parameters; ///< MAT_025 semantics
 };
@@ -39,10 +41,30 @@ struct Mat025Material {
 Mat025Material read_mat025(const io::KeywordDeck& deck, std::string_view mid,
                            const io::KeywordUnits& units);
 
+/// The ranges of what a *MAT_GEOLOGIC_CAP_MODEL may describe, a soil, a bulk solid, rock or
+/// concrete, wide enough that only a deck read in other units than its own leaves them (a
+/// mismatch moves a density by 1e3 or more, e.g. 1e12 between mm-t-s and m-kg-s): densities
+/// from the lightest bulk solids (expanded perlite, about 100 kg/m^3) to the densest metal
+/// (osmium, 22 600 kg/m^3); bulk and shear moduli from a tenth of a loose soil's (a few MPa at
+/// the surface) to twice diamond's bulk modulus (443 GPa).
+inline constexpr double kLeastDensity = 100.0;  ///< kg/m^3
+inline constexpr double kMostDensity = 25000.0; ///< kg/m^3
+inline constexpr double kLeastModulus = 1e5;    ///< Pa
+inline constexpr double kMostModulus = 1e12;    ///< Pa
+
+/// "" when the material's density, bulk and shear moduli lie in the ranges above; else what
+/// lies outside, in `units`, and the first unit system of the common ones (m-kg-s, mm-t-s,
+/// mm-kg-ms, mm-g-ms, cm-g-us, cm-g-s, in-lbf-s, ft-lbf-s) that puts all three inside, with
+/// their values there: "read in \"m-kg-s\" its density 2.099e-09 kg/m^3 is outside ...; read in
+/// \"mm-t-s\" they are 2099 kg/m^3, 30.6 GPa and 8.23 GPa".
+std::string implausible_values(const Mat025Material& material, const io::KeywordUnits& units);
+
 /// The [[material]] table's `from_lsdyna = {file = "sand.k", mid = 3, units = "mm-t-s"}`:
 /// reads the deck and builds the GeneralizedCap. `model`, if given, must be
 /// "generalized_cap"; keys the deck gives (density, the elastic pairs, cap_*) are refused. A
 /// deck error becomes a io::CaseError at `from_lsdyna` carrying the deck's file, line and card.
+/// The deck's units are recorded in the case's DeckLedger (one deck, one unit system) with the
+/// keyword it took; values outside the plausible ranges are a warning at `from_lsdyna`.
 std::unique_ptr<Material> material_from_lsdyna(const io::CaseTable& table);
 
 } // namespace grainload::materials

@@ -1,12 +1,12 @@
 #include "sph/keyword_body.hpp"
 
 #include "io/case_table.hpp"
+#include "io/deck_ledger.hpp"
 #include "io/keyword_deck.hpp"
 #include "io/keyword_mesh.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <iostream>
 #include <set>
 #include <sstream>
 
@@ -21,11 +21,10 @@ io::KeywordMesh read_deck(const io::CaseTable& shape) {
         shape.fail("units", error);
     }
     const std::string path = shape.file_path("file");
+    io::open_keyword_deck(shape, path, *units);
     try {
         io::KeywordMesh deck = io::read_keyword_mesh(io::read_keyword_deck(path), *units);
-        if (const std::string warning = deck.unsupported_warning(path); !warning.empty()) {
-            std::cerr << "grainload: warning: " << warning << '\n';
-        }
+        shape.deck_ledger().leave(path, deck.ignored);
         return deck;
     } catch (const std::invalid_argument& e) {
         shape.fail("file", e.what());

@@ -2,6 +2,9 @@
 
 #include "materials/material_library.hpp"
 #include "sph/particle_set.hpp"
+#include "sph/sink.hpp"
+#include "sph/source.hpp"
+#include "sph/wall.hpp"
 
 #include <string>
 #include <vector>
@@ -56,5 +59,33 @@ void check_gravity_strain(const io::CaseTable& root, const ParticleSet& particle
 /// may still hold them, so this warns rather than refuses.
 std::string impact_warning(const ParticleSet& particles, const std::vector<std::string>& body_names,
                            double contact_stiffness);
+
+/// A point starts inside a wall when it lies nearer to a wall particle than this fraction of the
+/// half-sum of the two spacings: the cells the two particles stand for overlap by a tenth of
+/// their widths, where particles that touch a wall (their cells sharing a face) are at the full
+/// half-sum. A point anywhere inside a lattice of wall layers is at most sqrt(3)/2 of the wall's
+/// spacing from a wall particle, within the bound for a body as fine as the wall.
+constexpr double kInsideWall = 0.9;
+
+/// Refuses a body whose particles, or a source whose sites, start inside the particles of a wall
+/// that acts on its body (Wall::bodies): the contact potential throws such particles off at the
+/// first step (measured: a body drawn 30 mm into a box wall of 10 mm particles stopped as
+/// unstable at 0.02 s; a source box drawn across the walls at 0.08 s). The error is at the
+/// body's shape (its `min`, `file` or `type`) or the source's `min` or shape, names the wall and
+/// says how many particles are inside. `sph` is the [sph] table; `support_radius` the kernel's.
+void check_wall_overlaps(const io::CaseTable& sph, const ParticleSet& particles,
+                         const std::vector<Wall>& walls, const SourceSet& sources,
+                         const std::vector<std::string>& body_names, double spacing, int dimension,
+                         double support_radius);
+
+/// Sinks that hold a whole body at t = 0 (every particle inside a sink that takes its body, and
+/// no source of the body making a particle outside them): the body leaves in the first step.
+/// When nothing is left then (every body so held), the scene is refused at the first sink's
+/// `normal` (a plane: the side it points to leaves) or `min` (a box); otherwise each held body
+/// is a warning, returned.
+std::vector<std::string> check_sinks_hold_bodies(const io::CaseTable& sph,
+                                                 const ParticleSet& particles, const SinkSet& sinks,
+                                                 const SourceSet& sources,
+                                                 const std::vector<std::string>& body_names);
 
 } // namespace grainload::sph

@@ -2,10 +2,12 @@
 
 #include "io/case_table.hpp"
 #include "sph/body_generator.hpp"
+#include "sph/outlet_reach.hpp"
 #include "sph/scene_limits.hpp"
 #include "sph/sph_case_reader.hpp"
 #include "sph/wall_bodies.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <limits>
@@ -106,6 +108,7 @@ void SphModel::build(const io::CaseTable& root) {
         }
     }
     build_outlets(sph);
+    check_start(sph);
     phases_.check_conditions(root, solver_ != nullptr, !sinks_.empty());
     if (solver_) {
         apply_phase_starts();
@@ -123,6 +126,35 @@ void SphModel::build(const io::CaseTable& root) {
     escape_watch_ = EscapeWatch(particles(), gravity_, dimension_);
     if (!interactions_) {
         compute_accelerations();
+    }
+}
+
+void SphModel::check_start(const io::CaseTable& sph) const {
+    std::vector<std::string> warnings;
+    for (std::size_t b = 0; b < thin_warnings_.size(); ++b) {
+        const auto& sources = sources_.sources();
+        const bool filled = std::any_of(sources.begin(), sources.end(), [b](const auto& s) {
+            return s.body == static_cast<int>(b);
+        });
+        if (!thin_warnings_[b].empty() && !filled) {
+            warnings.push_back(thin_warnings_[b]);
+        }
+    }
+    if (solver_) {
+        const std::vector<Wall>& walls = solver_->walls();
+        check_wall_overlaps(sph, particles(), walls, sources_, body_names_, spacing_, dimension_,
+                            solver_->kernel().support_radius());
+        for (std::string& w :
+             check_sinks_hold_bodies(sph, particles(), sinks_, sources_, body_names_)) {
+            warnings.push_back(std::move(w));
+        }
+        for (std::string& w : outlet_reach_warnings(sph, particles(), walls, sinks_, sources_,
+                                                    gravity_, spacing_, dimension_)) {
+            warnings.push_back(std::move(w));
+        }
+    }
+    for (const std::string& warning : warnings) {
+        std::cerr << "grainload: warning: " << warning << '\n';
     }
 }
 
@@ -245,10 +277,8 @@ void SphModel::add_body(const io::CaseTable& body, int dimension) {
     const auto& law = (*materials_)[material];
     const auto points =
         generate_body_points(body.table("shape"), spacing, dimension, law.density());
-    if (const std::string warning = thin_body_warning(points, spacing, dimension, name);
-        !warning.empty()) {
-        std::cerr << "grainload: warning: " << warning << '\n';
-    }
+    // Said once the sources are known (check_start): a seed layer a source fills is no warning.
+    thin_warnings_.push_back(thin_body_warning(points, spacing, dimension, name));
     const double particle_mass = law.density() * std::pow(spacing, dimension);
     const int body_index = static_cast<int>(body_names_.size());
     const Index first = particles_.size();

@@ -137,6 +137,11 @@ class SphModel final : public io::Stepper {
     /// Replays the checkpoint's removals on the freshly built scene: before the particle arrays.
     void read_removals(std::istream& in);
     void read_outlet_state(std::istream& in);
+    /// Once walls, sources and sinks are built: refuses bodies and sources inside walls and a
+    /// scene whose sinks take everything at once (sph/scene_limits.hpp); warns of thin bodies
+    /// no source fills, of sinks that hold a body, and of outlets out of reach
+    /// (sph/outlet_reach.hpp).
+    void check_start(const io::CaseTable& sph) const;
     /// Sources (sph_model_sources.cpp): read them and refuse what cannot gain particles.
     void build_sources(const io::CaseTable& sph);
     /// After a step [t, t + dt] (and its removals): the sources' new particles enter.
@@ -194,6 +199,8 @@ class SphModel final : public io::Stepper {
     Index built_count_ = 0;
     /// The material of each body, for sources.
     std::vector<int> body_material_;
+    /// Per body, the thin-body warning of its shape ("" when none), said by check_start.
+    std::vector<std::string> thin_warnings_;
     /// [sph.settle]: the settle phase, and the events (its end) not yet taken by the driver.
     std::optional<SettleWatch> settle_;
     /// [[phase]]: the run's phases, read before the walls and sources that may name them.

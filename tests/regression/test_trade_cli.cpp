@@ -145,6 +145,22 @@ TEST(TradeCli, NoiseEnsemblePerturbsGravityAndMeasuresTheScatter) {
     fs::remove_all(out + "_g0");
 }
 
+// A sweep whose runs all fail is no trade: here a misspelt key that every run refuses (exit 2).
+// The sweep exits with the first run's code and shows its error, instead of a table of failures
+// and exit 0.
+TEST(TradeCli, ASweepWhoseRunsAllFailExitsWithTheFirstRunsError) {
+    const std::string out = test_folder("trade_all_fail");
+    fs::remove_all(out);
+    const auto result = run_cli("trade " + kCase + " --out '" + out +
+                                    "' --jobs 2 --threads 1 --vary 'sph.spacng=10 mm,20 mm'"
+                                    " --reference 'sph.spacng=10 mm'",
+                                out + ".log");
+    EXPECT_EQ(result.exit_code, 2) << result.output;
+    EXPECT_NE(result.output.find("every run failed"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("unknown key 'sph.spacng'"), std::string::npos) << result.output;
+    fs::remove_all(out);
+}
+
 TEST(TradeCli, RefusesAnAxisWithoutAccuracyRule) {
     const auto result = run_cli("trade " + kCase + " --out '" + test_folder("trade_norule") +
                                     "' --vary 'sph.kernel=cubic_spline,"

@@ -1,3 +1,4 @@
+#include "io/deck_ledger.hpp"
 #include "io/keyword_deck.hpp"
 #include "io/keyword_fields.hpp"
 #include "io/keyword_mesh.hpp"
@@ -126,7 +127,7 @@ void expect_two_plates(const KeywordMesh& mesh) {
     ASSERT_EQ(mesh.parts.count(1), 1u);
     EXPECT_EQ(mesh.parts.at(1).title, "plate one");
     EXPECT_EQ(mesh.parts.at(1).section, 1);
-    EXPECT_TRUE(mesh.unsupported.empty());
+    EXPECT_TRUE(mesh.ignored.empty());
 }
 
 TEST(KeywordDeck, FixedFormatCards) {
@@ -257,18 +258,55 @@ TEST(KeywordDeck, UnsupportedKeywordsInOneWarningAndRefusedVariants) {
                              "2, 7.85e-9, 210000., 0.3\n*CONTROL_TERMINATION\n1.0\n"
                              "*BOUNDARY_SPC_SET\n1, 0, 1, 1, 1\n*NODE\n7, 0, 0, 0, 7, 0\n";
     const KeywordMesh mesh = read_mesh(write(dir + "/deck.k", deck));
-    EXPECT_EQ(mesh.unsupported,
-              (std::vector<std::string>{"*BOUNDARY_SPC_SET", "*CONTROL_TERMINATION",
-                                        "*MAT_ELASTIC (2)", "*NODE TC/RC constraints"}));
-    EXPECT_EQ(mesh.unsupported_warning("deck.k"),
-              "deck.k: ignored what grainload does not read from LS-DYNA decks: "
-              "*BOUNDARY_SPC_SET, *CONTROL_TERMINATION, *MAT_ELASTIC (2), *NODE TC/RC "
-              "constraints");
+    // Each where it stands: kFreeDeck's 18 lines before its *END, then these.
+    std::vector<std::string> ignored;
+    for (const IgnoredKeyword& k : mesh.ignored) {
+        ignored.push_back(k.name + " at " + std::to_string(k.line));
+    }
+    EXPECT_EQ(ignored, (std::vector<std::string>{
+                           "*MAT_ELASTIC at 19", "*MAT_ELASTIC at 21", "*CONTROL_TERMINATION at 23",
+                           "*BOUNDARY_SPC_SET at 25", "*NODE TC/RC constraints at 28"}));
+    DeckLedger ledger;
+    ledger.leave(dir + "/deck.k", mesh.ignored);
+    EXPECT_EQ(ledger.warnings(),
+              (std::vector<std::string>{
+                  dir + "/deck.k: ignored what grainload does not read from LS-DYNA decks: "
+                        "*BOUNDARY_SPC_SET, *CONTROL_TERMINATION, *MAT_ELASTIC (2), *NODE TC/RC "
+                        "constraints"}));
     const std::string offset = error_of(
         [&] { read_mesh(write(dir + "/offset.k", "*ELEMENT_SHELL_OFFSET\n1,1,1,2,3,4\n")); });
     EXPECT_NE(offset.find("offset.k:1: *ELEMENT_SHELL_OFFSET: this variant is not supported"),
               std::string::npos)
         << offset;
+}
+
+// One deck read by several readers (a material, bodies, shell parts): one unit system, one
+// warning, and a keyword one reader took is not ignored. The same file under two spellings of
+// its path is one deck; what two readers leave at the same line counts once.
+TEST(KeywordDeck, TheLedgerReportsEachDeckOnceWithWhatNoReaderTook) {
+    const std::string dir = fresh_directory("ledger");
+    const std::string deck = std::string(kFreeDeck).substr(0, std::string(kFreeDeck).find("*END")) +
+                             "*MAT_ELASTIC\n1, 7.85e-9, 210000., 0.3\n*MAT_ELASTIC\n"
+                             "2, 7.85e-9, 210000., 0.3\n";
+    const std::string path = write(dir + "/deck.k", deck);
+    const KeywordMesh mesh = read_mesh(path);
+    DeckLedger ledger;
+    EXPECT_FALSE(ledger.open(path, units("mm-t-s"), "fem.shell[0].units"));
+    ledger.leave(path, mesh.ignored);
+    // The same units named by force: mm-N-s is mm-t-s.
+    EXPECT_FALSE(ledger.open(dir + "/./deck.k", units("mm-N-s"), "fem.shell[1].units"));
+    ledger.leave(dir + "/./deck.k", mesh.ignored);
+    ledger.take(path, path, 19); // a material reader took the first *MAT_ELASTIC
+    EXPECT_EQ(ledger.warnings(),
+              (std::vector<std::string>{
+                  path + ": ignored what grainload does not read from LS-DYNA decks: "
+                         "*MAT_ELASTIC"}));
+    const auto other = ledger.open(path, units("m-kg-s"), "sph.body[0].shape.units");
+    ASSERT_TRUE(other);
+    EXPECT_EQ(other->key, "fem.shell[0].units");
+    EXPECT_EQ(other->units, "mm-t-s");
+    ledger.take(path, path, 21);
+    EXPECT_TRUE(ledger.warnings().empty());
 }
 
 TEST(KeywordDeck, ThicknessSetsAndParticles) {

@@ -170,6 +170,27 @@ TEST(LsdynaMaterial, WagonSetInMillimetreTonneSecondIsTheThesisSetInSi) {
     EXPECT_EQ(m.parameters.semantics, cap::Semantics::mat025);
 }
 
+// A deck read in other units than its own leaves the ranges of a granular material. The wagon
+// set (mm-t-s) read as m-kg-s: rho = 2.099e-9 kg/m^3, K = 30620 Pa, G = 8230 Pa, all three
+// outside; the first common system that puts them inside is its own, where they are the thesis'
+// 2099 kg/m^3, 30.62 GPa and 8.23 GPa. Read as mm-kg-ms (kg/mm^3 = 1e9 kg/m^3, GPa) its density
+// is 2.099 kg/m^3 and its moduli 3.1e13 and 8.2e12 Pa: outside too. In its own units, nothing.
+TEST(LsdynaMaterial, ValuesOutsideTheGranularRangesNameTheUnitsThatFit) {
+    const io::KeywordDeck deck = deck_of(wagon_deck());
+    EXPECT_EQ(implausible_values(read_mat025(deck, "3", units("mm-t-s")), units("mm-t-s")), "");
+    const io::KeywordUnits si = units("m-kg-s");
+    EXPECT_EQ(implausible_values(read_mat025(deck, "3", si), si),
+              "read in \"m-kg-s\" its density 2.099e-09 kg/m^3 is outside 100 to 25000 kg/m^3, "
+              "its bulk modulus 3.062e+04 Pa is outside 0.1 MPa to 1000 GPa, its shear modulus "
+              "8230 Pa is outside 0.1 MPa to 1000 GPa; read in \"mm-t-s\" they are 2099 kg/m^3, "
+              "30.6 GPa and 8.23 GPa");
+    const io::KeywordUnits giga = units("mm-kg-ms");
+    const std::string odd = implausible_values(read_mat025(deck, "3", giga), giga);
+    EXPECT_NE(odd.find("its density 2.099 kg/m^3 is outside"), std::string::npos) << odd;
+    EXPECT_NE(odd.find("its bulk modulus 3.062e+13 Pa is outside"), std::string::npos) << odd;
+    EXPECT_NE(odd.find("read in \"mm-t-s\" they are 2099 kg/m^3"), std::string::npos) << odd;
+}
+
 TEST(LsdynaMaterial, FreeLongAndAliasFormsReadTheSameMaterial) {
     const auto reference = read_mat025(deck_of(wagon_deck()), "3", units("mm-t-s"));
     const std::string free_format = "*KEYWORD\n*MAT_025\n3, 2.099e-9, 30620, 8230, 0.00106, "
