@@ -289,6 +289,12 @@ TEST(CouplingSmall, SandDroppedOnAPlateGivesItItsImpulseAndEnergy) {
     EXPECT_NEAR(momentum_change, -mass * kGravity * t - wall_impulse,
                 1e-9 * std::abs(wall_impulse));
     EXPECT_NEAR(shell_impulse, wall_impulse, 5e-3 * std::abs(wall_impulse));
+    // summary.json states that balance itself: shell_impulse_z beside the sand's impulse on the
+    // walls as its reference, with the relative error, within the same 0.5 %.
+    const FigureReference crossed = figure_reference(summary, "shell_impulse_z");
+    EXPECT_EQ(crossed.reference, wall_impulse);
+    EXPECT_LT(crossed.relative_error, 5e-3);
+    EXPECT_NE(crossed.source.find("momentum conservation across the interface"), std::string::npos);
     EXPECT_LT(std::abs(result_value(summary, "coupling_energy_error")), 1e-3);
     const double initial = 0.5 * mass * 4.0;
     const double held =
