@@ -102,6 +102,11 @@ class CoupledModel final : public io::Stepper {
     }
     /// The shell load of the next window (6 per node).
     const Eigen::VectorXd& interface_load() const { return load_; }
+    /// The interfaces that are rigid walls where the shell was built (`rigid = true`): the
+    /// sand's load on them is the walls' forces, not the shell's.
+    void set_rigid_interfaces(std::vector<std::string> names) {
+        rigid_interfaces_ = std::move(names);
+    }
 
   private:
     /// SPH sub-steps from t to t + dt, walls accumulating (their time booked in `record`);
@@ -121,6 +126,7 @@ class CoupledModel final : public io::Stepper {
     std::unique_ptr<sph::SphModel> sph_;
     std::unique_ptr<fem::ShellModel> fem_;
     std::vector<CoupledPart> parts_;
+    std::vector<std::string> rigid_interfaces_;
     CouplingSettings settings_;
     Eigen::VectorXd load_;
     /// The shell's load at the window's start and end (its integrator's view; see run_window).

@@ -201,6 +201,7 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
     const double support = sph->support_radius(root);
     const auto& names = fem->part_names();
     std::vector<CoupledPart> parts;
+    std::vector<std::string> rigid_interfaces;
     std::vector<sph::SphModel::WallDefinition> walls;
     const auto interfaces = coupling.array_of_tables("interface");
     std::vector<char> coupled(static_cast<std::size_t>(fem->analysis().mesh().element_count()), 0);
@@ -263,7 +264,9 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
             table.boolean_or("rigid", io::default_value(kInterfaceKeys, "rigid") != 0.0);
         wall.driver = rigid ? nullptr : part.wall;
         walls.push_back(std::move(wall));
-        if (!rigid) {
+        if (rigid) {
+            rigid_interfaces.push_back(part.name);
+        } else {
             parts.push_back(std::move(part));
         }
     }
@@ -328,6 +331,7 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
     auto model =
         std::make_unique<CoupledModel>(std::move(sph), std::move(fem), std::move(parts), settings);
     model->set_window_limits(limits);
+    model->set_rigid_interfaces(std::move(rigid_interfaces));
     return model;
 }
 

@@ -80,4 +80,33 @@ void append_shell_hints(const ShellExtremes& extremes, const fem::ShellModel& fe
     }
 }
 
+void append_rigid_interface_hints(const std::vector<std::string>& rigid, bool all_rigid,
+                                  const fem::ShellModel& fem, std::vector<std::string>& hints) {
+    if (rigid.empty()) {
+        return;
+    }
+    std::string names;
+    std::string forces;
+    for (const std::string& name : rigid) {
+        names += (names.empty() ? "" : ", ") + name;
+        forces += (forces.empty() ? "wall_" : ", wall_") + name + "_force_*";
+    }
+    if (all_rigid) {
+        std::string parts;
+        for (const std::string& part : fem.part_names()) {
+            parts += (parts.empty() ? "" : ", ") + part;
+        }
+        hints.push_back("shell (" + parts + "): rigid: self-weight only: every interface (" +
+                        names +
+                        ") is a rigid wall, so the sand's load is not in the shell's stresses "
+                        "and deflections; the frames carry its own loads' as without_sand_*, "
+                        "summary.json no shell stress or deflection; the sand's load on the "
+                        "walls is " +
+                        forces + " (rigid = false couples them)");
+        return;
+    }
+    hints.push_back("interface (" + names + "): rigid: the sand's load on it is " + forces +
+                    ", not in the shell's stresses and deflections");
+}
+
 } // namespace grainload::coupling

@@ -29,4 +29,11 @@ struct ShellExtremes {
 void append_shell_hints(const ShellExtremes& extremes, const fem::ShellModel& fem,
                         const std::string& names, double spacing, std::vector<std::string>& hints);
 
+/// The hints of rigid interfaces (`rigid = true`, named in `rigid`): the sand's load on them is
+/// their walls' forces (wall_NAME_force_*), not in the shell's stresses and deflections. When
+/// `all_rigid`, the shell carries its own loads only: the frames label its arrays and
+/// summary.json reports no shell stress or deflection.
+void append_rigid_interface_hints(const std::vector<std::string>& rigid, bool all_rigid,
+                                  const fem::ShellModel& fem, std::vector<std::string>& hints);
+
 } // namespace grainload::coupling

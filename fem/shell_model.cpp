@@ -222,7 +222,8 @@ void ShellModel::append_blocks(io::Frame& frame) const {
 }
 
 void ShellModel::append_blocks(io::Frame& frame, const std::vector<io::FieldArray>& node_fields,
-                               const std::vector<io::FieldArray>& element_fields) const {
+                               const std::vector<io::FieldArray>& element_fields,
+                               const std::string& label) const {
     const ShellAnalysis& a = *analysis_;
     const ShellMesh& mesh = a.mesh();
     for (std::size_t part = 0; part < part_names_.size(); ++part) {
@@ -241,7 +242,7 @@ void ShellModel::append_blocks(io::Frame& frame, const std::vector<io::FieldArra
         io::Block block;
         block.name = part_names_[part];
         block.kind = io::Block::Kind::shell;
-        append_node_fields(block, nodes, node_fields);
+        append_node_fields(block, nodes, node_fields, label);
         for (const Index e : elements) {
             auto cell = mesh.element(e).nodes;
             for (Index& n : cell) {
@@ -252,7 +253,7 @@ void ShellModel::append_blocks(io::Frame& frame, const std::vector<io::FieldArra
             }
             block.cells.push_back(cell);
         }
-        append_element_fields(block, elements, element_fields);
+        append_element_fields(block, elements, element_fields, label);
         frame.blocks.push_back(std::move(block));
     }
 }
@@ -274,10 +275,12 @@ io::FieldArray slice(const io::FieldArray& field, const std::vector<Index>& indi
 } // namespace
 
 void ShellModel::append_node_fields(io::Block& block, const std::vector<Index>& nodes,
-                                    const std::vector<io::FieldArray>& extra) const {
+                                    const std::vector<io::FieldArray>& extra,
+                                    const std::string& label) const {
     const ShellAnalysis& a = *analysis_;
-    io::FieldArray displacement{"displacement", 3, {}}, rotation{"rotation", 3, {}};
-    io::FieldArray reaction{"reaction_force", 3, {}}, moment{"reaction_moment", 3, {}};
+    io::FieldArray displacement{label + "displacement", 3, {}}, rotation{label + "rotation", 3, {}};
+    io::FieldArray reaction{label + "reaction_force", 3, {}};
+    io::FieldArray moment{label + "reaction_moment", 3, {}};
     for (const Index n : nodes) {
         const Vec3 u = a.displacement(n);
         const Vec3 r = a.rotation(n);
@@ -296,11 +299,14 @@ void ShellModel::append_node_fields(io::Block& block, const std::vector<Index>& 
 }
 
 void ShellModel::append_element_fields(io::Block& block, const std::vector<Index>& elements,
-                                       const std::vector<io::FieldArray>& extra) const {
+                                       const std::vector<io::FieldArray>& extra,
+                                       const std::string& label) const {
     const ShellAnalysis& a = *analysis_;
-    io::FieldArray membrane{"membrane_force", 3, {}}, bending{"bending_moment", 3, {}};
-    io::FieldArray top{"von_mises_top", 1, {}}, middle{"von_mises_middle", 1, {}};
-    io::FieldArray bottom{"von_mises_bottom", 1, {}}, plastic{"plastic_strain", 1, {}};
+    io::FieldArray membrane{label + "membrane_force", 3, {}};
+    io::FieldArray bending{label + "bending_moment", 3, {}};
+    io::FieldArray top{label + "von_mises_top", 1, {}}, middle{label + "von_mises_middle", 1, {}};
+    io::FieldArray bottom{label + "von_mises_bottom", 1, {}};
+    io::FieldArray plastic{label + "plastic_strain", 1, {}};
     io::FieldArray thickness{"thickness", 1, {}};
     for (const Index e : elements) {
         const ShellResultants r = a.elements()[static_cast<std::size_t>(e)].resultants();

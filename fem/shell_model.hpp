@@ -41,9 +41,13 @@ class ShellModel final : public io::Stepper {
     /// One block per shell part, named after it.
     void append_blocks(io::Frame& frame) const override;
     /// The same with extra arrays given on the whole mesh (a value per node or per element,
-    /// e.g. the contact pressure the coupling puts on the shell), sliced per part.
+    /// e.g. the contact pressure the coupling puts on the shell), sliced per part. A non-empty
+    /// `label` is put before the names of the shell's own result arrays (displacements,
+    /// reactions, stress resultants, von Mises stresses, plastic strain): a coupled shell that
+    /// the sand does not load ("without_sand_") must not show them as the sand's effect.
     void append_blocks(io::Frame& frame, const std::vector<io::FieldArray>& node_fields,
-                       const std::vector<io::FieldArray>& element_fields) const;
+                       const std::vector<io::FieldArray>& element_fields,
+                       const std::string& label = "") const;
     const std::vector<std::string>& part_names() const { return part_names_; }
     void append_results(double t, std::vector<io::ResultFigure>& results) const override;
     /// DIRECTORY/fem_convergence.csv: one row per Newton iteration of every step.
@@ -78,9 +82,11 @@ class ShellModel final : public io::Stepper {
     void solve_step(double t, double dt);
     std::string part_of_node(Index node) const;
     void append_node_fields(io::Block& block, const std::vector<Index>& nodes,
-                            const std::vector<io::FieldArray>& extra) const;
+                            const std::vector<io::FieldArray>& extra,
+                            const std::string& label) const;
     void append_element_fields(io::Block& block, const std::vector<Index>& elements,
-                               const std::vector<io::FieldArray>& extra) const;
+                               const std::vector<io::FieldArray>& extra,
+                               const std::string& label) const;
 
     std::vector<std::string> part_names_;
     std::unique_ptr<ShellAnalysis> analysis_;

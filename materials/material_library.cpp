@@ -16,6 +16,10 @@ MaterialLibrary MaterialLibrary::from_case(const io::CaseTable& root) {
         }
         library.materials_.push_back(make_material(table));
         library.names_.push_back(std::move(name));
+        library.grain_sizes_.push_back(
+            table.has("grain_size")
+                ? std::optional(table.positive_quantity("grain_size", io::dimension::kLength))
+                : std::nullopt);
     }
     return library;
 }

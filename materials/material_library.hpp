@@ -3,6 +3,7 @@
 #include "materials/material.hpp"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,11 +24,17 @@ class MaterialLibrary {
         return *materials_[static_cast<std::size_t>(index)];
     }
     const std::string& name(int index) const { return names_[static_cast<std::size_t>(index)]; }
+    /// The material's grain size d (`grain_size`, the mean grain diameter), where it declares
+    /// one: Beverloo's discharge law reduces an outlet by k d (sph/sink.hpp).
+    std::optional<double> grain_size(int index) const {
+        return grain_sizes_[static_cast<std::size_t>(index)];
+    }
     int size() const { return static_cast<int>(materials_.size()); }
 
   private:
     std::vector<std::string> names_;
     std::vector<std::unique_ptr<Material>> materials_;
+    std::vector<std::optional<double>> grain_sizes_;
 };
 
 } // namespace grainload::materials

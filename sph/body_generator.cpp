@@ -4,6 +4,7 @@
 #include "sph/closed_mesh_fill.hpp"
 #include "sph/keyword_body.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <random>
@@ -136,7 +137,7 @@ void cut_points(const io::CaseTable& shape, std::vector<Vec3>& points, int dimen
 }
 
 std::vector<Vec3> generate_body_points(const io::CaseTable& shape, double spacing, int dimension,
-                                       double density) {
+                                       double density, std::vector<RoundedSize>* rounded) {
     namespace dim = io::dimension;
     const std::string type = shape.choice("type", {"box", "cylinder", "cone", "mesh", "lsdyna"});
     std::vector<Vec3> points;
@@ -185,6 +186,11 @@ std::vector<Vec3> generate_body_points(const io::CaseTable& shape, double spacin
                            "spacing");
     }
     cut_points(shape, points, dimension);
+    if (rounded != nullptr) {
+        if (const auto drawn = drawn_bounds(shape, dimension)) {
+            *rounded = lattice_rounding(*drawn, points, spacing, dimension);
+        }
+    }
     if (shape.choice_or("lattice", {"regular", "jittered"}, "regular") == "jittered") {
         const double fraction = shape.number_or("jitter", 0.1);
         if (!(fraction >= 0.0 && fraction < 0.5)) {
@@ -194,6 +200,68 @@ std::vector<Vec3> generate_body_points(const io::CaseTable& shape, double spacin
         jitter_points(points, spacing, fraction, static_cast<std::uint64_t>(seed), dimension);
     }
     return points;
+}
+
+std::optional<std::pair<Vec3, Vec3>> drawn_bounds(const io::CaseTable& shape, int dimension) {
+    namespace dim = io::dimension;
+    const std::string type = shape.string("type");
+    if (shape.has("cut") || (type != "box" && type != "cylinder" && type != "cone")) {
+        return std::nullopt;
+    }
+    if (type == "box") {
+        return std::pair{shape.vector("min", dim::kLength), shape.vector("max", dim::kLength)};
+    }
+    if (type == "cylinder" && dimension == 2) {
+        const Vec3 centre = shape.vector("centre", dim::kLength);
+        const Vec3 reach = Vec3::Constant(shape.quantity("radius", dim::kLength));
+        return std::pair{Vec3(centre - reach), Vec3(centre + reach)};
+    }
+    // A cylinder or cone: the bounding box of its end discs (segments in plane strain). A disc
+    // of radius r normal to the unit axis a reaches r sqrt(1 - a_i^2) along axis i.
+    Vec3 axis = shape.vector("axis", dim::kNone);
+    if (dimension == 2) {
+        axis.z() = 0.0;
+    }
+    axis.normalize();
+    const Vec3 base = shape.vector("base", dim::kLength);
+    const Vec3 top = base + shape.quantity("height", dim::kLength) * axis;
+    const double base_radius = type == "cylinder" ? shape.quantity("radius", dim::kLength)
+                                                  : shape.quantity("base_radius", dim::kLength);
+    const double top_radius =
+        type == "cylinder" ? base_radius : shape.quantity_or("top_radius", dim::kLength, 0.0);
+    Vec3 across;
+    for (int i = 0; i < 3; ++i) {
+        across[i] = std::sqrt(std::max(0.0, 1.0 - axis[i] * axis[i]));
+    }
+    const Vec3 lower = (base - base_radius * across).cwiseMin(top - top_radius * across);
+    const Vec3 upper = (base + base_radius * across).cwiseMax(top + top_radius * across);
+    return std::pair{lower, upper};
+}
+
+std::vector<RoundedSize> lattice_rounding(const std::pair<Vec3, Vec3>& drawn,
+                                          const std::vector<Vec3>& points, double spacing,
+                                          int dimension) {
+    std::vector<RoundedSize> rounded;
+    if (points.empty()) {
+        return rounded;
+    }
+    Vec3 low = points.front();
+    Vec3 high = points.front();
+    for (const Vec3& x : points) {
+        low = low.cwiseMin(x);
+        high = high.cwiseMax(x);
+    }
+    // The lattice's coordinates carry round-off of order 1e-16 of themselves; a rounding the
+    // user can see is a fraction of the spacing.
+    constexpr double kRoundOff = 1e-6;
+    for (int a = 0; a < dimension; ++a) {
+        const double length = drawn.second[a] - drawn.first[a];
+        const double filled = high[a] - low[a] + spacing;
+        if (std::abs(filled - length) > kRoundOff * spacing) {
+            rounded.push_back({a, length, filled});
+        }
+    }
+    return rounded;
 }
 
 std::string thin_body_warning(const std::vector<Vec3>& points, double spacing, int dimension,

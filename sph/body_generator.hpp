@@ -3,7 +3,9 @@
 #include "io/types.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace grainload::io {
@@ -12,14 +14,35 @@ class CaseTable;
 
 namespace grainload::sph {
 
+/// A size of a shape that its lattice changed: along axis `axis` (0 x, 1 y, 2 z) the shape is
+/// drawn `drawn` m long and its particles' cells (cubes of the spacing about the centres)
+/// span `filled` m. A 40 mm cylinder at 3 mm is 13 cells, 39 mm, high.
+struct RoundedSize {
+    int axis = 0;
+    double drawn = 0.0;
+    double filled = 0.0;
+};
+
 /// Particle centres filling one shape of a [[sph.body]] ([sph.body.shape] table: type = "box",
 /// "cylinder", "cone" or "mesh" (a closed surface mesh, see closed_mesh_fill.hpp),
 /// lattice = "regular" or "jittered") on a lattice of the body's spacing, or type = "lsdyna":
 /// the *ELEMENT_SPH particles of a deck (keyword_body.hpp), whose masses are checked against
 /// the body's `density` [kg/m^3] * spacing^dimension.
-/// In 2D (plane strain) the lattice lies in the x-y plane with z = 0.
+/// In 2D (plane strain) the lattice lies in the x-y plane with z = 0. With `rounded`, the
+/// axes along which the lattice (before any jitter) changed the shape's drawn size are added
+/// to it (lattice_rounding).
 std::vector<Vec3> generate_body_points(const io::CaseTable& shape, double spacing, int dimension,
-                                       double density);
+                                       double density, std::vector<RoundedSize>* rounded = nullptr);
+
+/// The drawn bounding box (lower, upper corner) of a box, cylinder or cone shape; none for a
+/// shape cut by planes, a mesh or a deck, whose drawn extent the case does not state.
+std::optional<std::pair<Vec3, Vec3>> drawn_bounds(const io::CaseTable& shape, int dimension);
+
+/// The axes along which the cells of `points` span another length than [lower, upper], by
+/// more than round-off (1e-6 of the spacing).
+std::vector<RoundedSize> lattice_rounding(const std::pair<Vec3, Vec3>& drawn,
+                                          const std::vector<Vec3>& points, double spacing,
+                                          int dimension);
 
 /// [[sph.body.shape.cut]] tables (point, normal, offset): each keeps the points on the side its
 /// normal points to, at least `offset` (default 0) from the plane, (x - point) . n >= offset, so a

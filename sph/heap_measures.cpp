@@ -7,6 +7,7 @@
 #include <limits>
 #include <numeric>
 #include <unordered_map>
+#include <utility>
 
 namespace grainload::sph {
 
@@ -46,6 +47,33 @@ double horizontal(const Vec3& d, const HeapFrame& frame) {
         return d.dot(forward);
     }
     return (d - d.dot(frame.up) * frame.up).norm();
+}
+
+/// Share of the body's mass inside the mass-based run-out: the toe's last per cent, whose
+/// grains a cluster may or may not reach, is left out, so the figure moves with the deposit
+/// instead of jumping when a few particles part from the heap.
+constexpr double kRunOutMassShare = 0.99;
+
+/// The smallest distance from the axis (3D) or back face (2D) such that the particles whose
+/// far edge (centre + dp/2) lies within it hold kRunOutMassShare of the total mass.
+double mass_run_out(const std::vector<Vec3>& position, const std::vector<double>& mass,
+                    const HeapFrame& frame) {
+    std::vector<std::pair<double, double>> edges; // (far edge, mass)
+    double total = 0.0;
+    for (std::size_t i = 0; i < position.size(); ++i) {
+        edges.emplace_back(horizontal(position[i] - frame.origin, frame) + 0.5 * frame.spacing,
+                           mass[i]);
+        total += mass[i];
+    }
+    std::sort(edges.begin(), edges.end());
+    double held = 0.0;
+    for (const auto& [edge, m] : edges) {
+        held += m;
+        if (held >= kRunOutMassShare * total) {
+            return edge;
+        }
+    }
+    return edges.empty() ? 0.0 : edges.back().first;
 }
 
 } // namespace
@@ -101,7 +129,8 @@ std::vector<char> largest_cluster(const std::vector<Vec3>& position, double link
     return member;
 }
 
-HeapMeasures measure_heap(const std::vector<Vec3>& position, const HeapFrame& frame) {
+HeapMeasures measure_heap(const std::vector<Vec3>& position, const std::vector<double>& mass,
+                          const HeapFrame& frame) {
     HeapMeasures result;
     const double dp = frame.spacing;
     const auto member = largest_cluster(position, 1.5 * dp);
@@ -114,6 +143,10 @@ HeapMeasures measure_heap(const std::vector<Vec3>& position, const HeapFrame& fr
     std::vector<Sample> bins;
     double top = -std::numeric_limits<double>::infinity();
     double reach = -std::numeric_limits<double>::infinity();
+    // The axis column: particles whose centre lies within dp of the axis (3D), or in the
+    // first spacing in front of the back face (2D), where a deposit often dips below its
+    // highest point.
+    double axis_top = 0.0;
     for (std::size_t i = 0; i < position.size(); ++i) {
         if (!member[i]) {
             ++result.outside_count;
@@ -125,6 +158,9 @@ HeapMeasures measure_heap(const std::vector<Vec3>& position, const HeapFrame& fr
         const double c = horizontal(d, frame);
         top = std::max(top, height);
         reach = std::max(reach, c + 0.5 * dp);
+        if (std::abs(c) < dp) {
+            axis_top = std::max(axis_top, height);
+        }
         const auto bin = static_cast<std::size_t>(std::max(0.0, std::floor(c / dp)));
         if (bin >= bins.size()) {
             bins.resize(bin + 1);
@@ -137,7 +173,9 @@ HeapMeasures measure_heap(const std::vector<Vec3>& position, const HeapFrame& fr
         return result;
     }
     result.final_height = top;
+    result.axis_height = axis_top;
     result.run_out = reach;
+    result.run_out_99 = mass_run_out(position, mass, frame);
     // Least-squares line top = a + b c through the samples between 20 % and 80 % of the final
     // height: the cone's flank, without the rounded apex and the thin toe of the heap.
     double n = 0.0, sc = 0.0, st = 0.0, scc = 0.0, sct = 0.0;

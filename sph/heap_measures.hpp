@@ -19,7 +19,9 @@ struct HeapFrame {
 /// The heap figures of docs/theory/sph.md, "Heap measures"; lengths in m, angle in rad.
 struct HeapMeasures {
     double final_height = 0.0;   ///< highest particle top of the heap above floor_level
+    double axis_height = 0.0;    ///< highest particle top of the heap within dp of the axis
     double run_out = 0.0;        ///< farthest particle edge from the axis (3D) or back face (2D)
+    double run_out_99 = 0.0;     ///< distance whose particles hold 99 % of the body's mass
     std::optional<double> angle; ///< least-squares slope of the surface from 20 % to 80 % height
     Index heap_count = 0;        ///< particles in the heap (the largest cluster)
     Index outside_count = 0;     ///< particles not connected to it
@@ -30,9 +32,11 @@ struct HeapMeasures {
 /// lowest index.
 std::vector<char> largest_cluster(const std::vector<Vec3>& position, double link_distance);
 
-/// Height, run-out, surface slope and cluster counts of the particles `position` (one body).
-/// The heap is the largest cluster at a link distance of 1.5 spacings.
-HeapMeasures measure_heap(const std::vector<Vec3>& position, const HeapFrame& frame);
+/// Height, run-out, surface slope and cluster counts of the particles `position` of masses
+/// `mass` (one body). The heap is the largest cluster at a link distance of 1.5 spacings; the
+/// mass-based run-out takes every particle of the body, in the heap or not.
+HeapMeasures measure_heap(const std::vector<Vec3>& position, const std::vector<double>& mass,
+                          const HeapFrame& frame);
 
 /// Time to rest from a kinetic-energy history, fed one sample at a time: the first time after
 /// the peak at which the energy falls below `fraction` of the peak. A new peak (the energy

@@ -57,6 +57,16 @@ std::vector<Vec3> HeapMonitor::body_positions(const ParticleSet& particles) cons
     return x;
 }
 
+std::vector<double> HeapMonitor::body_masses(const ParticleSet& particles) const {
+    std::vector<double> m;
+    for (Index i = 0; i < particles.size(); ++i) {
+        if (particles.body_id[i] == body_ && !particles.is_wall(i)) {
+            m.push_back(particles.mass[i]);
+        }
+    }
+    return m;
+}
+
 void HeapMonitor::record(double time, const ParticleSet& particles) {
     double energy = 0.0;
     for (Index i = 0; i < particles.size(); ++i) {
@@ -69,13 +79,19 @@ void HeapMonitor::record(double time, const ParticleSet& particles) {
 
 void HeapMonitor::append_results(const ParticleSet& particles,
                                  std::vector<io::ResultFigure>& results) const {
-    const HeapMeasures heap = measure_heap(body_positions(particles), frame_);
+    const HeapMeasures heap =
+        measure_heap(body_positions(particles), body_masses(particles), frame_);
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const double degrees = 180.0 / std::numbers::pi;
     // summary.json writes NaN as null: an angle that cannot be fitted, a rest not reached.
     results.push_back({"heap_initial_height", initial_height_, "m", std::nullopt, ""});
     results.push_back({"heap_final_height", heap.final_height, "m", std::nullopt, ""});
+    results.push_back({"heap_axis_height", heap.axis_height, "m", std::nullopt,
+                       "the heap's top within one spacing of the axis (2D: of the back face)"});
     results.push_back({"heap_run_out", heap.run_out, "m", std::nullopt, ""});
+    results.push_back({"heap_run_out_99", heap.run_out_99, "m", std::nullopt,
+                       "distance from the axis (2D: the back face) holding 99 % of the body's "
+                       "mass, every particle counted"});
     results.push_back(
         {"heap_angle", heap.angle ? *heap.angle * degrees : nan, "deg", std::nullopt, ""});
     results.push_back(

@@ -32,6 +32,7 @@ class HeapMonitor {
 
   private:
     std::vector<Vec3> body_positions(const ParticleSet& particles) const;
+    std::vector<double> body_masses(const ParticleSet& particles) const;
 
     int body_ = -1;
     HeapFrame frame_;

@@ -6,6 +6,7 @@
 #include "sph/sph_case_reader.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <ostream>
 #include <sstream>
@@ -61,19 +62,64 @@ std::optional<Outlet> read_outlet(const io::CaseTable& table, int dimension) {
     return outlet;
 }
 
+/// The grain size of the bodies the sink takes (`body`, or every body): the one their
+/// materials declare; bodies without one (a structure, a continuum) do not count. Two different
+/// sizes leave Beverloo's k d undefined: the sink must name its body. An outlet no wider than
+/// k d passes nothing in Beverloo's law, which is then no reference.
+void read_grain(const io::CaseTable& table, int body, const std::vector<SinkSet::BodyGrain>& grains,
+                Outlet& outlet) {
+    for (std::size_t b = 0; b < grains.size(); ++b) {
+        const auto& grain = grains[b];
+        if ((body >= 0 && static_cast<int>(b) != body) || !grain.size) {
+            continue;
+        }
+        if (outlet.grain_size > 0.0 && *grain.size != outlet.grain_size) {
+            table.fail("outlet_width", "the bodies it takes declare different grain sizes "
+                                       "(materials '" +
+                                           outlet.grain_material + "' and '" + grain.material +
+                                           "'): expected `body`, the one whose grains flow");
+        }
+        outlet.grain_size = *grain.size;
+        outlet.grain_material = grain.material;
+    }
+    const double reduced = kBeverlooGrain * outlet.grain_size;
+    if (outlet.width <= reduced || (outlet.length > 0.0 && outlet.length <= reduced)) {
+        table.fail(outlet.length > 0.0 && outlet.length <= reduced ? "outlet_length"
+                                                                   : "outlet_width",
+                   "expected an outlet wider than k d = " + std::to_string(reduced) +
+                       " m (Beverloo's k = 1.5 times the grain_size of material '" +
+                       outlet.grain_material + "'): narrower, the law gives no flow");
+    }
+}
+
 } // namespace
 
 double Outlet::rate(double gravity, int dimension) const {
     const double root_g = std::sqrt(gravity);
+    const double reduced = kBeverlooGrain * grain_size;
     if (dimension == 2 || length > 0.0) {
-        return kBeverlooSlot * bulk_density * root_g * (dimension == 2 ? 1.0 : length) *
-               std::pow(width, 1.5);
+        return kBeverlooSlot * bulk_density * root_g * (dimension == 2 ? 1.0 : length - reduced) *
+               std::pow(width - reduced, 1.5);
     }
-    return kBeverlooCircle * bulk_density * root_g * std::pow(width, 2.5);
+    return kBeverlooCircle * bulk_density * root_g * std::pow(width - reduced, 2.5);
+}
+
+std::string Outlet::form(int dimension) const {
+    std::string grain = "k d = 0 (no grain_size in the material)";
+    if (grain_size > 0.0) {
+        char text[160];
+        std::snprintf(text, sizeof text, "k d = 1.5 x %g m (grain_size of material '%s')",
+                      grain_size, grain_material.c_str());
+        grain = text;
+    }
+    const char* law = dimension == 2 ? "C' rho_b sqrt(g) (B - k d)^1.5 per metre, C' = 1.03"
+                      : length > 0.0 ? "C' rho_b sqrt(g) (L - k d) (B - k d)^1.5, C' = 1.03"
+                                     : "C rho_b sqrt(g) (D - k d)^2.5, C = 0.58";
+    return std::string("Beverloo, Leniger & van de Velde 1961: ") + law + "; " + grain;
 }
 
 SinkSet::SinkSet(const io::CaseTable& sph, const std::vector<std::string>& body_names,
-                 int dimension, double gravity, double share)
+                 int dimension, double gravity, double share, const std::vector<BodyGrain>& grains)
     : dimension_(dimension), gravity_(gravity), share_(share) {
     for (const auto& table : sph.array_of_tables("sink")) {
         Sink sink;
@@ -88,6 +134,9 @@ SinkSet::SinkSet(const io::CaseTable& sph, const std::vector<std::string>& body_
             sink.body = body_index(table, "body", body_names);
         }
         sink.outlet = read_outlet(table, dimension);
+        if (sink.outlet) {
+            read_grain(table, sink.body, grains, *sink.outlet);
+        }
         sinks_.push_back(std::move(sink));
     }
 }
@@ -172,11 +221,7 @@ void SinkSet::append_results(double scene_mass, double created,
         const auto fit = io::steady_rate(history_times_, mass);
         const auto beverloo = outlet_rate(s);
         results.push_back({prefix + "_steady_rate", fit ? fit->rate : nan, mass_unit + "/s",
-                           beverloo,
-                           beverloo ? "Beverloo, k d = 0: C' rho_b sqrt(g) L B^1.5 (C' = 1.03; "
-                                      "L = 1 m in plane strain), C rho_b sqrt(g) D^2.5 "
-                                      "(circle, C = 0.58)"
-                                    : ""});
+                           beverloo, beverloo ? sinks_[s].outlet->form(dimension_) : ""});
         results.push_back(
             {prefix + "_steady_window_start", fit ? fit->start : nan, "s", std::nullopt, ""});
         results.push_back(

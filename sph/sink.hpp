@@ -38,18 +38,27 @@ inline constexpr std::array<io::KeySpec, 10> kSinkKeys{{
      "the flowing material's bulk density in Beverloo's law"},
 }};
 
-/// Beverloo's discharge rate of a flat-bottomed outlet with k d = 0 (a continuum has no grain
-/// size; shared/silo_hopper_references.md, section 2): a slot of width B and length L,
-/// W = C' rho sqrt(g) L B^(3/2) with C' = 1.03 (per metre of depth in plane strain, L = 1); a
-/// circle of diameter D, W = C rho sqrt(g) D^(5/2) with C = 0.58.
+/// Beverloo's discharge rate of a flat-bottomed outlet (Beverloo, Leniger & van de Velde 1961,
+/// Chem. Eng. Sci. 15; shared/silo_hopper_references.md, section 2): a slot of width B and
+/// length L, W = C' rho sqrt(g) (L - k d) (B - k d)^(3/2) with C' = 1.03 (per metre of depth in
+/// plane strain: (B - k d)^(3/2)); a circle of diameter D, W = C rho sqrt(g) (D - k d)^(5/2)
+/// with C = 0.58. d is the grain size of the material where it declares one (`grain_size`),
+/// k = 1.5; without one (a continuum has no grain) k d = 0.
 struct Outlet {
     double width = 0.0;  ///< B, or D for a circle [m]
     double length = 0.0; ///< 3D slot's L [m]; 0: a circle (3D) or per metre (plane strain)
     double bulk_density = 0.0;
+    double grain_size = 0.0;    ///< d [m]; 0: none declared
+    std::string grain_material; ///< the material that declared d, for the statement
     double rate(double gravity, int dimension) const;
+    /// Which form rate() used, with its constants: summary.json's source of the reference.
+    std::string form(int dimension) const;
 };
 inline constexpr double kBeverlooSlot = 1.03;
 inline constexpr double kBeverlooCircle = 0.58;
+/// Beverloo's k for spheres, 1.4-1.5 (Beverloo et al. 1961; Nedderman 1992 gives 1.5), "usually
+/// between 1 and 3" for other grains (shared/silo_hopper_references.md, section 2).
+inline constexpr double kBeverlooGrain = 1.5;
 
 /// The keys of [[sph.wall]] that open an outlet or time a gate (docs/user-guide/sph.md,
 /// "Outlets and gates").
@@ -77,11 +86,17 @@ class SinkSet {
     };
 
     SinkSet() = default;
+    /// A body's material and the grain size it declares (none: k d = 0 in Beverloo's law).
+    struct BodyGrain {
+        std::string material;
+        std::optional<double> size;
+    };
+
     /// The [[sph.sink]] tables of `sph`; body names resolve against `body_names`; `gravity` is
     /// the magnitude Beverloo's rate takes, `share` the part of each outlet the model holds
-    /// (1/2 per symmetry plane through it).
+    /// (1/2 per symmetry plane through it), `grains` each body's grain size (empty: none).
     SinkSet(const io::CaseTable& sph, const std::vector<std::string>& body_names, int dimension,
-            double gravity, double share = 1.0);
+            double gravity, double share = 1.0, const std::vector<BodyGrain>& grains = {});
     /// `dimension` 2: masses are per unit thickness (kg/m), as the particles' are.
     SinkSet(std::vector<Sink> sinks, int dimension)
         : sinks_(std::move(sinks)), dimension_(dimension) {}

@@ -275,10 +275,12 @@ void SphModel::add_body(const io::CaseTable& body, int dimension) {
     spacing_ = spacing;
     const Vec3 velocity = body.vector_or("velocity", dim::kVelocity, Vec3::Zero());
     const auto& law = (*materials_)[material];
+    std::vector<RoundedSize> rounded;
     const auto points =
-        generate_body_points(body.table("shape"), spacing, dimension, law.density());
+        generate_body_points(body.table("shape"), spacing, dimension, law.density(), &rounded);
     // Said once the sources are known (check_start): a seed layer a source fills is no warning.
     thin_warnings_.push_back(thin_body_warning(points, spacing, dimension, name));
+    report_rounding(name, rounded, spacing);
     const double particle_mass = law.density() * std::pow(spacing, dimension);
     const int body_index = static_cast<int>(body_names_.size());
     const Index first = particles_.size();
@@ -299,6 +301,28 @@ void SphModel::add_body(const io::CaseTable& body, int dimension) {
     read_initial_stress(body, particles_, first, gravity_, spacing);
     body_names_.push_back(std::move(name));
     body_material_.push_back(material);
+}
+
+void SphModel::report_rounding(const std::string& body, const std::vector<RoundedSize>& rounded,
+                               double spacing) {
+    if (rounded.empty()) {
+        return;
+    }
+    // A note, not a warning: every lattice rounds what it does not tile, and the run is as
+    // valid; but the body's size, and with it its mass, is the filled one.
+    std::ostringstream note;
+    note << "grainload: note: body \"" << body << "\" is filled by the " << spacing * 1e3
+         << " mm lattice to another size than drawn:";
+    for (const RoundedSize& r : rounded) {
+        const std::string axis(1, static_cast<char>('x' + r.axis));
+        note << ' ' << axis << ' ' << r.drawn * 1e3 << " mm drawn, " << r.filled * 1e3
+             << " mm filled (" << std::lround(r.filled / spacing) << " cells);";
+        const std::string source =
+            "the size drawn along " + axis + "; the value is the extent of the particles' cells";
+        body_sizes_.push_back({"body_" + body + "_size_" + axis, r.filled, "m", r.drawn, source});
+    }
+    note << " summary.json: body_" << body << "_size_*\n";
+    std::cerr << note.str();
 }
 
 double SphModel::stable_time_step() const {

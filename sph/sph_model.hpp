@@ -3,6 +3,7 @@
 #include "io/scene_settings.hpp"
 #include "io/stepper.hpp"
 #include "materials/material_library.hpp"
+#include "sph/body_generator.hpp"
 #include "sph/escape_watch.hpp"
 #include "sph/heap_monitor.hpp"
 #include "sph/particle_set.hpp"
@@ -118,6 +119,10 @@ class SphModel final : public io::Stepper {
     SphModel(const materials::MaterialLibrary& materials) : materials_(&materials) {}
     std::vector<FrictionPair> added_wall_friction(const std::vector<Wall>& walls) const;
     void add_body(const io::CaseTable& body, int dimension);
+    /// Says (on stderr, so in `grainload check` too) where the lattice filled `body` to another
+    /// size than drawn, and keeps the sizes for summary.json.
+    void report_rounding(const std::string& body, const std::vector<RoundedSize>& rounded,
+                         double spacing);
     void compute_accelerations();
     void build_solver(const io::CaseTable& sph);
     const std::string& body_name(int body_id) const;
@@ -201,6 +206,9 @@ class SphModel final : public io::Stepper {
     std::vector<int> body_material_;
     /// Per body, the thin-body warning of its shape ("" when none), said by check_start.
     std::vector<std::string> thin_warnings_;
+    /// Per body and axis where its lattice changed its drawn size: the filled size against the
+    /// drawn one, for summary.json (body_NAME_size_AXIS).
+    std::vector<io::ResultFigure> body_sizes_;
     /// [sph.settle]: the settle phase, and the events (its end) not yet taken by the driver.
     std::optional<SettleWatch> settle_;
     /// [[phase]]: the run's phases, read before the walls and sources that may name them.

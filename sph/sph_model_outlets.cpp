@@ -24,7 +24,11 @@ constexpr double kRemovalTimeTolerance = 1e-12;
 void SphModel::build_outlets(const io::CaseTable& sph) {
     // A symmetry plane through an outlet leaves the model half of it (each [[sph.symmetry]]).
     const double share = std::pow(0.5, static_cast<double>(sph.array_of_tables("symmetry").size()));
-    sinks_ = SinkSet(sph, body_names_, dimension_, gravity_.norm(), share);
+    std::vector<SinkSet::BodyGrain> grains;
+    for (const int material : body_material_) {
+        grains.push_back({materials_->name(material), materials_->grain_size(material)});
+    }
+    sinks_ = SinkSet(sph, body_names_, dimension_, gravity_.norm(), share, grains);
     bool walls_go = false;
     bool on_settle = false;
     if (solver_) {

@@ -121,6 +121,7 @@ void SphModel::append_wall_blocks(io::Frame& frame) const {
 }
 
 void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) const {
+    results.insert(results.end(), body_sizes_.begin(), body_sizes_.end());
     if (heap_) {
         heap_->append_results(particles(), results);
     }

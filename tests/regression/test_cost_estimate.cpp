@@ -92,9 +92,10 @@ TEST(CostEstimate, SourcesAddTheParticlesTheyCreateAveragedOverTheRun) {
 
 // A sink with a declared outlet takes its particles at Beverloo's rate from the opening: the CI
 // hopper (50 mm, 300 kg/m^3: 0.75 kg/m a grain) holds M = 0.75 n kg/m; its 0.4 m slot drains
-// W = 1.03 * 300 * sqrt(9.81) * 0.4^1.5 = 244.8 kg/m/s from 0.4 s, empty tau = M / W later; over
-// the run's 3 s the grains taken average n (tau / 2 + (2.6 - tau)) / 3 (the printed figure,
-// rounded: to the unit).
+// spheres of 65 mm (the material's grain_size): W = 1.03 * 300 * sqrt(9.81) * (0.4 - 1.5 *
+// 0.065)^1.5 = 161.02 kg/m/s (printed to 4 digits) from 0.4 s, empty tau = M / W later; over the
+// run's 3 s the grains taken average n (tau / 2 + (2.6 - tau)) / 3 (the printed figure, rounded: to
+// the unit).
 TEST(CostEstimate, ADeclaredOutletTakesItsParticlesAtBeverloosRate) {
     const std::string log = test_folder("cost_outlet.log");
     const auto result = run_cli(
@@ -109,13 +110,13 @@ TEST(CostEstimate, ADeclaredOutletTakesItsParticlesAtBeverloosRate) {
               2);
     const double grains = static_cast<double>(particles - walls);
     const double mass = 0.75 * grains;
-    const double rate = 1.03 * 300.0 * std::sqrt(9.81) * std::pow(0.4, 1.5);
+    const double rate = 1.03 * 300.0 * std::sqrt(9.81) * std::pow(0.4 - 1.5 * 0.065, 1.5);
     const double tau = mass / rate;
     ASSERT_LT(tau, 2.6) << "the hopper empties before the end";
     const double expected = grains * (0.5 * tau + (2.6 - tau)) / 3.0;
     char text[128];
     std::snprintf(text, sizeof text,
-                  "sinks: 1; their outlets' Beverloo rate 244.8 kg/m/s from 0.4 s takes %.0f "
+                  "sinks: 1; their outlets' Beverloo rate 161 kg/m/s from 0.4 s takes %.0f "
                   "particles",
                   expected);
     EXPECT_NE(result.output.find(text), std::string::npos) << result.output;

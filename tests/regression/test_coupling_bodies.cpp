@@ -68,6 +68,13 @@ TEST(CouplingBodies, APlateActingOnOneBodyCarriesItAloneAndTheOtherFallsThrough)
               << ".." << passing_high << " m\n";
     EXPECT_NEAR(load, held, kMeanLoadTolerance * held);
     EXPECT_NEAR(result_value(summary, "support_reaction_z"), held, kInstantTolerance * held);
+    // ... and the run says so itself: the case's [[case.reference]] gives the supports the held
+    // block's weight (75.341 N, the printed digits of M_h g), and summary.json carries it with
+    // the relative error, within the same instant's tolerance.
+    const FigureReference supports = figure_reference(summary, "support_reaction_z");
+    EXPECT_NEAR(supports.reference, held, 1e-5 * held);
+    EXPECT_NE(supports.source.find("the held block's weight"), std::string::npos);
+    EXPECT_LT(supports.relative_error, kInstantTolerance);
     EXPECT_GT(held_low, 0.0);
     EXPECT_LT(passing_high, 0.0);
     EXPECT_GT(passing_low, -0.25);

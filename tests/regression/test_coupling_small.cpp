@@ -5,6 +5,7 @@
 #include "support/interrupted_run.hpp"
 
 #include <cstdio>
+#include <vtkCellData.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 
@@ -188,6 +189,23 @@ TEST(CouplingSmall, ARigidInterfaceCarriesTheLayerAndLeavesTheShellAlone) {
     EXPECT_NEAR(-walls, weight, 5e-3 * weight);
     EXPECT_EQ(result_value(summary, "centre_deflection"), 0.0);
     EXPECT_NE(summary.find("\"wall plate\": \"rigid\""), std::string::npos) << summary;
+    // A shell no interface loads reports no stress or deflection as a result: the figures are
+    // absent, the hint says the sand's load is not in it, and the frames carry its own loads'
+    // arrays under a label (no von_mises_* or contact_pressure a picture would show as the
+    // sand's).
+    EXPECT_EQ(summary.find("shell_largest_von_mises"), std::string::npos) << summary;
+    EXPECT_EQ(summary.find("shell_largest_deflection"), std::string::npos) << summary;
+    EXPECT_NE(summary.find("shell (plate): rigid: self-weight only: every interface (plate) is a "
+                           "rigid wall, so the sand's load is not in the shell's stresses"),
+              std::string::npos)
+        << summary;
+    const auto plate =
+        read_named_block(run.out + "/frames/sand_on_plate_small_000005.vtm", "plate");
+    ASSERT_NE(plate, nullptr);
+    EXPECT_EQ(plate->GetCellData()->GetArray("von_mises_top"), nullptr);
+    EXPECT_NE(plate->GetCellData()->GetArray("without_sand_von_mises_top"), nullptr);
+    EXPECT_EQ(plate->GetPointData()->GetArray("displacement"), nullptr);
+    EXPECT_EQ(plate->GetPointData()->GetArray("contact_pressure"), nullptr);
 
     // A very stiff plate (E x 1000, 1 um deflection: 5e-5 of the spacing) gives the rigid
     // wall's contact pressure ([[sph.wall_map]] "plate", 4 x 4 cells, mean over 0.4-0.5 s) cell
@@ -273,6 +291,12 @@ TEST(CouplingSmall, SandDroppedOnAPlateGivesItItsImpulseAndEnergy) {
     EXPECT_NEAR(momentum_change, -mass * kGravity * t - wall_impulse,
                 1e-9 * std::abs(wall_impulse));
     EXPECT_NEAR(shell_impulse, wall_impulse, 5e-3 * std::abs(wall_impulse));
+    // summary.json states that balance itself: shell_impulse_z beside the sand's impulse on the
+    // walls as its reference, with the relative error, within the same 0.5 %.
+    const FigureReference crossed = figure_reference(summary, "shell_impulse_z");
+    EXPECT_EQ(crossed.reference, wall_impulse);
+    EXPECT_LT(crossed.relative_error, 5e-3);
+    EXPECT_NE(crossed.source.find("momentum conservation across the interface"), std::string::npos);
     EXPECT_LT(std::abs(result_value(summary, "coupling_energy_error")), 1e-3);
     const double initial = 0.5 * mass * 4.0;
     const double held =

@@ -64,11 +64,17 @@ TEST(HopperDischargeSmall, MassAuditClosesAndTheRateLiesWithinBeverloosSpread) {
     EXPECT_LT(rate, beverloo_slot(1.0));
     EXPECT_EQ(result_value(summary, "wall_gate_force_y"), 0.0) << "the gate was removed";
     // The sink's declared outlet (outlet_width 0.4 m, bulk_density 300 kg/m^3) gives the rate
-    // Beverloo's figure for k d = 0 as its reference: summary.json writes it to 12 digits.
-    const std::regex reference("\"sink_below_steady_rate\": \\{[^}]*\"reference\": ([-+0-9.eE]+)");
+    // Beverloo's figure with the spheres' grain_size (65 mm, k = 1.5) as its reference, and
+    // says which form it took: summary.json writes it to 12 digits.
+    const std::regex reference("\"sink_below_steady_rate\": \\{[^}]*\"reference\": ([-+0-9.eE]+)"
+                               "[^}]*\"source\": \"([^\"]*)\"");
     std::smatch match;
     ASSERT_TRUE(std::regex_search(summary, match, reference));
-    EXPECT_NEAR(std::stod(match[1]), beverloo_slot(0.0), 1e-9 * beverloo_slot(0.0));
+    EXPECT_NEAR(std::stod(match[1]), beverloo_slot(1.5), 1e-9 * beverloo_slot(1.5));
+    EXPECT_NE(match[2].str().find("(B - k d)^1.5 per metre"), std::string::npos) << match[2];
+    EXPECT_NE(match[2].str().find("k d = 1.5 x 0.065 m (grain_size of material 'spheres')"),
+              std::string::npos)
+        << match[2];
     EXPECT_TRUE(std::filesystem::exists(run.out + "/discharge.csv"));
 }
 

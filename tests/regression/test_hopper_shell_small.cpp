@@ -195,6 +195,20 @@ TEST(HopperShellSmall, TheSheetSagsAndIsStressedAsABeamUnderTheRunsPressure) {
         }
     }
     EXPECT_GT(peak_load, 0.0);
+
+    // The run's own summary states the same comparison: the case's [[case.reference]] gives the
+    // largest sag and face stress over the run the beam's figures at the discharge's peak
+    // frame (17.51 mm, 45.8 MPa, from the pressure of this case's run,
+    // docs/validation/hopper_discharge.md). The run's largest over all windows may exceed the
+    // peak frame's by what a window between frames adds: within the same 5 % (measured -1.6 %
+    // and -1.5 %).
+    for (const char* figure : {"shell_largest_deflection", "shell_largest_von_mises"}) {
+        const FigureReference beam = figure_reference(summary, figure);
+        std::cout << figure << ": " << beam.value << " against the beam's " << beam.reference
+                  << " (relative error " << beam.relative_error << ")\n";
+        EXPECT_NE(beam.source.find("beam theory"), std::string::npos) << figure;
+        EXPECT_LT(beam.relative_error, kBeam) << figure;
+    }
 }
 
 } // namespace

@@ -87,5 +87,31 @@ TEST(SiloJanssenFillSmall, FilledRowByRowTheWallCarriesJanssensShare) {
     }
 }
 
+// The placed column (cases/silo_janssen/silo_janssen_small.toml) against the same Janssen
+// figure, which its summary carries: the case's [[case.reference]] gives the wall's supports
+// Janssen's share of the weight with K = 1 - sin phi and D the sand's 0.225 m (the fill test's
+// bracket above holds it). The column lands and rebounds, so the wall ends up pushing the sand
+// down (docs/validation/coupling.md, section 2): the summary must say so, a relative error
+// above 1 (the supports' force below zero against a positive reference), and the books that
+// hold whatever the state still close: floor + wall supports = weight to 1 %, as above.
+TEST(SiloJanssenSmall, ThePlacedColumnsSummaryStatesJanssensShareAndHowFarItIs) {
+    const CaseRun run =
+        run_case_file("cases/silo_janssen/silo_janssen_small.toml", "silo_janssen_small");
+    ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
+    const std::string summary = read_file(run.out + "/summary.json");
+    const double weight = 16 * 52 * kDensity * std::pow(kSpacing, 3) * kGravity;
+    const double floor = -result_value(summary, "wall_floor_force_y");
+    const FigureReference wall = figure_reference(summary, "support_reaction_y");
+    const double janssen = janssen_wall_share(1.0 - kSinPhi, 0.4, 0.225) * weight;
+    std::printf("placed column: weight %.2f N, floor %.2f N, wall supports %.2f N; Janssen %.2f N "
+                "(summary: %.2f N, relative error %.3f)\n",
+                weight, floor, wall.value, janssen, wall.reference, wall.relative_error);
+    EXPECT_NEAR(wall.reference, janssen, 1e-4 * janssen); // the case's printed digits
+    EXPECT_NE(wall.source.find("Janssen (1895)"), std::string::npos);
+    EXPECT_NEAR(floor + wall.value, weight, 0.01 * weight);
+    EXPECT_LT(wall.value, 0.0);
+    EXPECT_GT(wall.relative_error, 1.0);
+}
+
 } // namespace
 } // namespace grainload::testing

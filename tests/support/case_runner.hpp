@@ -59,6 +59,31 @@ inline double result_value(const std::string& summary, const std::string& name) 
     return match.empty() ? std::nan("") : std::stod(match[1]);
 }
 
+/// What summary.json writes beside a figure that has a reference: the reference, its source and
+/// the relative error |value - reference| / |reference|.
+struct FigureReference {
+    double value = std::nan("");
+    double reference = std::nan("");
+    double relative_error = std::nan("");
+    std::string source;
+};
+
+/// The reference of result `name` in a summary.json text; a figure without one (or without a
+/// relative error: a reference of 0) fails the test and reads as NaN.
+inline FigureReference figure_reference(const std::string& summary, const std::string& name) {
+    const std::regex pattern("\"" + name +
+                             "\": \\{\"value\": ([-+0-9.eE]+), \"unit\": \"[^\"]*\", "
+                             "\"reference\": ([-+0-9.eE]+), \"source\": \"([^\"]*)\", "
+                             "\"relative_error\": ([-+0-9.eE]+)\\}");
+    std::smatch match;
+    EXPECT_TRUE(std::regex_search(summary, match, pattern)) << name << ": no reference";
+    FigureReference figure;
+    if (!match.empty()) {
+        figure = {std::stod(match[1]), std::stod(match[2]), std::stod(match[4]), match[3]};
+    }
+    return figure;
+}
+
 /// The books of a CI discharge run: the mass audit closes to the round-off of sums of at most
 /// `masses` equal particle masses (masses x eps of the total), and the energy books within
 /// 0.3 %, the bound the CI cases keep (docs/user-guide/sph.md).

@@ -221,5 +221,71 @@ TEST(BodyGenerator, ThinBodiesAreWarnedAbout) {
               std::string::npos);
 }
 
+// A cylinder of 40 mm diameter and height at 3 mm, its base centre on a cell corner: the cells
+// whose centres lie inside stack 13 high (the 14th centre, 40.5 mm, is above the top), 39 mm,
+// and reach 7 cells each side of the axis (19.5 mm, sqrt(19.5^2 + 1.5^2) = 19.56 mm < 20 mm),
+// 42 mm across: the lattice rounds every size, and says so. A box whose edges are whole
+// spacings is filled exactly (no entry), one 100 mm long at 30 mm is 3 cells, 90 mm; a shape
+// cut by planes or jittered states no drawn size to compare with, or is compared before the
+// jitter.
+TEST(BodyGenerator, TheLatticeSaysWhereItRoundsTheDrawnSize) {
+    const auto document = io::CaseDocument::from_string(R"(
+[cylinder]
+type = "cylinder"
+base = "0 0 0 mm"
+axis = "0 0 1"
+radius = "20 mm"
+height = "40 mm"
+[jittered]
+type = "cylinder"
+base = "0 0 0 mm"
+axis = "0 0 1"
+radius = "20 mm"
+height = "40 mm"
+lattice = "jittered"
+jitter = 0.4
+[box]
+type = "box"
+min = "0 0 0 mm"
+max = "30 60 90 mm"
+[long]
+type = "box"
+min = "0 0 0 mm"
+max = "100 30 30 mm"
+[cut]
+type = "box"
+min = "0 0 0 mm"
+max = "100 30 30 mm"
+[[cut.cut]]
+point = "0 0 0 m"
+normal = "1 0 0"
+)",
+                                                        "rounding.toml");
+    auto root = document->root();
+    const double s = 3e-3;
+    auto rounded = [&](const char* shape, double spacing) {
+        std::vector<RoundedSize> sizes;
+        generate_body_points(root.table(shape), spacing, 3, 1000.0, &sizes);
+        return sizes;
+    };
+    const auto cylinder = rounded("cylinder", s);
+    ASSERT_EQ(cylinder.size(), 3u);
+    for (int a = 0; a < 3; ++a) {
+        EXPECT_EQ(cylinder[static_cast<std::size_t>(a)].axis, a);
+        EXPECT_NEAR(cylinder[static_cast<std::size_t>(a)].drawn, 0.040, 1e-15);
+        EXPECT_NEAR(cylinder[static_cast<std::size_t>(a)].filled, a < 2 ? 0.042 : 0.039, 1e-15);
+    }
+    const auto jittered = rounded("jittered", s);
+    ASSERT_EQ(jittered.size(), 3u);
+    EXPECT_NEAR(jittered[2].filled, 0.039, 1e-15);
+    EXPECT_TRUE(rounded("box", 0.03).empty());
+    const auto long_box = rounded("long", 0.03);
+    ASSERT_EQ(long_box.size(), 1u);
+    EXPECT_EQ(long_box[0].axis, 0);
+    EXPECT_NEAR(long_box[0].drawn, 0.1, 1e-15);
+    EXPECT_NEAR(long_box[0].filled, 0.09, 1e-15);
+    EXPECT_TRUE(rounded("cut", 0.03).empty());
+}
+
 } // namespace
 } // namespace grainload::sph
