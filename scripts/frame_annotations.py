@@ -11,6 +11,8 @@ and every tick is a round number.
 
 import math
 
+import numpy as np
+
 from vtkmodules.vtkCommonCore import vtkPoints, vtkUnsignedCharArray
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkRenderingCore import vtkActor2D, vtkPolyDataMapper2D, vtkTextActor
@@ -146,7 +148,8 @@ def colour_bar(layout, lookup, low, high, step, caption, above):
     x0 = layout.width - layout.bar_column + m
     x1 = x0 + layout.bar_width
     y_top = layout.height - layout.top_strip - round(1.25 * len(caption) * layout.small) - m
-    y_bottom = layout.bottom_strip + round(0.5 * f)
+    # A bar of at most 60 % of the picture's height, hanging under its caption.
+    y_bottom = max(layout.bottom_strip + round(0.5 * f), y_top - round(0.6 * layout.height))
     swatch = layout.small if above else 0
     y_high = y_top - swatch - (round(0.3 * f) if above else 0)
     segments = 96
@@ -176,6 +179,19 @@ def colour_bar(layout, lookup, low, high, step, caption, above):
     actors.append(text("\n".join(caption), layout.small, x0,
                        layout.height - layout.top_strip - m, valign="top"))
     return actors
+
+
+def peak_marker(scene, point, label, layout):
+    """A ring round the place of the largest value (drawn over the scene, even where the
+    shell hides it) and its value beside it."""
+    x, y = display_point(scene, point)
+    r = 0.55 * layout.font
+    ring = [(x + r * math.cos(a), y + r * math.sin(a))
+            for a in np.linspace(0.0, 2.0 * math.pi, 25)]
+    note = text(label, layout.small, x + 1.2 * r, y + 0.8 * r)
+    note.GetTextProperty().SetBackgroundColor(1.0, 1.0, 1.0)
+    note.GetTextProperty().SetBackgroundOpacity(0.85)
+    return [polygons_2d([ring], None), note]
 
 
 def axis_edge(scene, bounds, axis, up):

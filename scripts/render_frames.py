@@ -2,17 +2,18 @@
 """Render grainload frames to PNG off screen with VTK's Python bindings (python3-vtk9).
 
     scripts/render_frames.py OUT --times 0,2.5,11 [--color velocity|von_mises]
-                             [--mirror x,y] [--walls door] [--view AZIMUTH,ELEVATION]
-                             [--up x|y|z] [--zoom 1.0] [--size 1600x900] [--point 4]
+                             [--mirror x,y] [--walls door|none] [--view AZIMUTH,ELEVATION]
+                             [--up x|y|z] [--zoom 1.3] [--size 1600x900] [--point 4]
                              [--range LO,HI] [--title TEXT] [--no-axes] [--prefix NAME]
 
 OUT is a run's output directory (its .pvd lists the frames and their times); every time picks
 the frame nearest to it. Particle blocks are drawn as spheres coloured by speed |v| (m/s);
 shell blocks as surfaces coloured by the von Mises stress, the largest of the top, middle
-and bottom surfaces (MPa); wall-particle blocks (`wall_*` point sets) are left out, the shell
-they sample is drawn instead. `--color von_mises` greys the particles so the shell stands out.
-`--walls door` draws the named wall blocks too, as grey points (a rigid door that swings
-open). `--mirror x,y` reflects everything in the planes x = 0 and y = 0, so a quarter model is
+and bottom surfaces (MPa); the wall particles of a shell (the `wall_*` point set named after
+a shell block) are left out, the shell is drawn instead, and those of rigid walls are drawn as
+small light grey points, the walls named with `--walls` (a door that swings open) dark grey;
+`--walls none` leaves the rigid walls out. `--color von_mises` greys the particles so the
+shell stands out. `--mirror x,y` reflects everything in the planes x = 0 and y = 0, so a quarter model is
 shown whole. The pictures go to OUT/pictures/PREFIX_tNNN.png (time in centiseconds).
 
 Every picture carries a title (the case's name, or --title), the time stamp, axes in metres
@@ -151,11 +152,12 @@ def shell_actor(dataset, lookup, colour_by_stress):
     return actor
 
 
-def wall_actor(dataset, radius_px):
-    """A rigid wall's particles (a swinging door) as small dark grey points."""
+def wall_actor(dataset, radius_px, highlighted):
+    """A rigid wall's particles as small points: light grey, or dark grey when highlighted (a
+    swinging door)."""
     actor = points_actor(mapper_for(surface(dataset), None), max(1.0, 0.5 * radius_px),
                          spheres=False)
-    actor.GetProperty().SetColor(0.25, 0.25, 0.25)
+    actor.GetProperty().SetColor(*((0.25,) * 3 if highlighted else (0.72,) * 3))
     return actor
 
 
@@ -171,31 +173,53 @@ def lookup_table(low, high):
 
 def largest_value(vtm_path, colour):
     """The largest speed of the particles (m/s) or von Mises stress of the shells (MPa) in
-    the frame; 0 when nothing carries it."""
-    largest = 0.0
+    the frame, and where it is (a point, m; None when nothing carries the quantity)."""
+    largest, where = 0.0, None
     for name, block in blocks(vtm_path):
         if block is None or block.GetNumberOfPoints() == 0 or is_wall_sample(name, block):
             continue
         shell = block.IsA("vtkUnstructuredGrid")
         if colour == "velocity" and not shell:
-            largest = max(largest, float(np.max(speeds(block))))
+            values = speeds(block)
+            k = int(np.argmax(values))
+            if values[k] > largest:
+                largest, where = float(values[k]), block.GetPoint(k)
         elif colour == "von_mises" and shell:
-            stress = stresses_mpa(block)
-            if stress is not None and stress.size:
-                largest = max(largest, float(np.max(stress)))
-    return largest
+            values = stresses_mpa(block)
+            if values is not None and values.size and np.max(values) > largest:
+                k = int(np.argmax(values))
+                bounds = block.GetCell(k).GetBounds()
+                largest = float(values[k])
+                where = tuple((bounds[2 * i] + bounds[2 * i + 1]) / 2 for i in range(3))
+    return largest, where
+
+
+def nearest_image(point, planes, eye):
+    """Of the point and its mirror images (--mirror), the one nearest the camera."""
+    images = [np.array(point, dtype=float)]
+    for axis in planes:
+        k = "xyz".index(axis)
+        for image in list(images):
+            flipped = image.copy()
+            flipped[k] = -flipped[k]
+            images.append(flipped)
+    return min(images, key=lambda p: float(np.linalg.norm(p - np.array(eye))))
 
 
 def scene_actors(vtm_path, args, lookup):
-    """The frame's actors: particles, shells and the wall blocks asked for (mirrored)."""
+    """The frame's actors: particles, shells and rigid walls (mirrored)."""
     actors = []
-    for name, block in blocks(vtm_path):
+    named = blocks(vtm_path)
+    shells = {name for name, block in named
+              if block is not None and block.IsA("vtkUnstructuredGrid")}
+    for name, block in named:
         if block is None or block.GetNumberOfPoints() == 0:
             continue
         if is_wall_sample(name, block):
-            if name[len("wall_"):] in args.walls:
+            wall = name[len("wall_"):]
+            if wall not in shells and "none" not in args.walls:
                 shown = mirrored(block, args.mirror) if args.mirror else block
-                actors.append(wall_actor(shown, args.point))
+                actors.append(wall_actor(shown, args.point, wall in args.walls))
             continue
         is_shell = block.IsA("vtkUnstructuredGrid")  # before mirroring, which makes a grid
         if args.mirror:
@@ -224,7 +248,7 @@ def place_camera(renderer, args):
 def render(vtm_path, time, args, scale, png_path):
     """One frame to png_path. `scale` is (low, high, tick step, the series' largest value)."""
     low, high, step, _ = scale
-    largest = largest_value(vtm_path, args.color)
+    largest, where = largest_value(vtm_path, args.color)
     caption = notes.bar_caption(CAPTIONS[args.color], largest, step)
     layout = notes.Layout(*args.size, caption)
     lookup = lookup_table(low, high)
@@ -250,6 +274,9 @@ def render(vtm_path, time, args, scale, png_path):
                                   above=scale[3] > high * (1.0 + 1e-9)))
     if args.axes:
         overlay += notes.metre_axes(scene, bounds, layout, args.up)
+    if args.color == "von_mises" and where is not None:
+        where = nearest_image(where, args.mirror, scene.GetActiveCamera().GetPosition())
+        overlay += notes.peak_marker(scene, where, f"{largest:.3g} MPa", layout)
     for actor in overlay:
         annotations.AddActor2D(actor)
     window.Render()
@@ -264,22 +291,24 @@ def render(vtm_path, time, args, scale, png_path):
 
 
 def case_facts(out):
-    """The case's name and its vertical axis (against gravity) from the run's summary.json and
-    case file, where they can be read; (None, None) otherwise."""
+    """The case's name, its vertical axis (against gravity) and whether it is plane strain,
+    from the run's summary.json and case file, where they can be read."""
     try:
         with open(os.path.join(out, "summary.json")) as f:
             summary = json.load(f)
     except (OSError, ValueError):
-        return None, None
+        return None, None, False
+    flat = summary.get("model", {}).get("dimension") == "plane strain"
     up = None
     for path in (summary.get("case_file", ""), os.path.join(out, "..", summary.get("case_file", ""))):
         if os.path.isfile(path):
             found = re.search(r'^\s*gravity\s*=\s*"([^"]*)"', open(path).read(), re.MULTILINE)
             if found:
-                g = [float(v) for v in found.group(1).split()[:3]]
+                g = [float(v) for v in re.findall(r"[-+]?[0-9.]+(?:[eE][-+]?[0-9]+)?",
+                                                  found.group(1).split("m/")[0])][:3]
                 up = "xyz"[int(np.argmax(np.abs(g)))] if any(g) else None
             break
-    return summary.get("case"), up
+    return summary.get("case"), up, flat
 
 
 def parse(argv):
@@ -288,22 +317,23 @@ def parse(argv):
     parser.add_argument("--times", required=True, help="comma-separated times [s]")
     parser.add_argument("--color", choices=("velocity", "von_mises"), default="velocity")
     parser.add_argument("--mirror", default="", help="x, y or x,y: reflect in x = 0, y = 0")
-    parser.add_argument("--view", default="-60,25", help="camera azimuth,elevation [deg]")
+    parser.add_argument("--view", help="camera azimuth,elevation [deg] (default -60,25; a plane "
+                        "strain case: 0,0, square on)")
     parser.add_argument("--up", choices=("x", "y", "z"), help="the vertical axis")
-    parser.add_argument("--zoom", type=float, default=1.0)
+    parser.add_argument("--zoom", type=float, default=1.3)
     parser.add_argument("--size", default="1600x900")
     parser.add_argument("--point", type=float, default=4.0, help="sphere size [pixels]")
     parser.add_argument("--range", default=None, help="colour range LO,HI (default: the data's)")
     parser.add_argument("--title", help="the picture's title (default: the case's name)")
     parser.add_argument("--no-axes", dest="axes", action="store_false", help="no axes in m")
     parser.add_argument("--prefix", default=None)
-    parser.add_argument("--walls", default="", help="wall blocks to draw (rigid walls that move)")
+    parser.add_argument("--walls", default="", help="rigid walls to draw dark grey (a door), "
+                        "or none")
     args = parser.parse_args(argv)
     args.times = [float(t) for t in args.times.split(",")]
     args.mirror = [a for a in args.mirror.split(",") if a]
     if any(a not in ("x", "y") for a in args.mirror):
         parser.error("--mirror takes x, y or x,y")
-    args.view = [float(v) for v in args.view.split(",")]
     args.size = [int(v) for v in args.size.lower().split("x")]
     if args.range:
         args.range = [float(v) for v in args.range.split(",")]
@@ -317,12 +347,13 @@ def parse(argv):
 def main(argv):
     args = parse(argv)
     frames = frames_of(args.out)
-    case, up = case_facts(args.out)
+    case, up, flat = case_facts(args.out)
     args.up = args.up or up or "z"
+    args.view = [float(v) for v in (args.view or ("0,0" if flat else "-60,25")).split(",")]
     pvd_name = [n for n in os.listdir(args.out) if n.endswith(".pvd")][0][:-4]
     args.title = args.title or case or pvd_name
     chosen = [min(frames, key=lambda frame: abs(frame[0] - wanted)) for wanted in args.times]
-    largest = max(largest_value(vtm, args.color) for _, vtm in chosen)
+    largest = max(largest_value(vtm, args.color)[0] for _, vtm in chosen)
     if args.range:
         low, high = args.range
         step = None
