@@ -143,8 +143,8 @@ def profiles(axes, grid, curves, xlabel):
 
 def traction_name(column):
     direction = column.split("shear_")[1].replace("_Pa", "")
-    return {"axial": "axial", "circumferential": "circumferential", "u": "along u",
-            "v": "along v"}[direction] + " traction"
+    return {"axial": "axial traction", "circumferential": "circumferential traction",
+            "u": "traction along u", "v": "traction along v"}[direction]
 
 
 def window_picture(folder, name, radius):
@@ -214,8 +214,11 @@ def history_picture(folder, name, point):
                  else f"u = {a[cell]:g} m, v = {b[cell]:g} m")
     figure, axes = plt.subplots(figsize=(7, 4.5), layout="constrained")
     for k, column in enumerate(columns):
+        values = np.array(loads)[:, k] / 1e3
+        if column != "pressure_Pa" and not np.any(values):
+            continue  # a traction that no load has (along v in plane strain)
         label = "pressure" if column == "pressure_Pa" else traction_name(column)
-        axes.plot(times, np.array(loads)[:, k] / 1e3, marker=".", label=label)
+        axes.plot(times, values, marker=".", label=label)
     axes.set_xlabel("time (s)")
     axes.set_ylabel("interval mean (kPa)")
     axes.set_title(f"wall map '{name}': the cell at {where}")
