@@ -106,8 +106,8 @@ def polygons_2d(corners, colours):
 
 
 class Layout:
-    """Pixel strips of a picture W x H: the title on top, the time stamp at the bottom, the
-    colour bar on the right, as wide as its longest text (`bar_text`, its lines); the scene
+    """Pixel strips of a picture W x H: the title and the time stamp on top, the colour bar on
+    the right, as wide as its longest text (`bar_text`, its lines); the scene
     gets the rest (its viewport, in 0..1)."""
 
     def __init__(self, width, height, bar_text):
@@ -116,8 +116,8 @@ class Layout:
         self.font = max(13, min(26, round(0.032 * min(width, height))))
         self.small = round(0.9 * self.font)
         self.margin = round(0.6 * self.font)
-        self.top_strip = round(2.0 * self.font + self.margin)
-        self.bottom_strip = round(1.6 * self.font + self.margin)
+        self.top_strip = round(2.4 * self.font + 2 * self.margin)
+        self.bottom_strip = self.margin
         self.bar_width = max(12, round(1.1 * self.font))
         widest = max(len(line) for line in bar_text)
         self.bar_column = round(max(self.bar_width + 0.45 * self.font + 6 * CHAR * self.small,
@@ -129,10 +129,10 @@ class Layout:
 
 
 def title_actors(layout, title, stamp):
-    """The title at the top left and the time stamp at the bottom left."""
-    return [text(title, layout.font, layout.margin, layout.height - layout.margin, bold=True,
-                 valign="top"),
-            text(stamp, layout.font, layout.margin, layout.margin)]
+    """The title at the top left and the time stamp under it, in the top strip."""
+    top = layout.height - layout.margin
+    return [text(title, layout.font, layout.margin, top, bold=True, valign="top"),
+            text(stamp, layout.font, layout.margin, top - round(1.25 * layout.font), valign="top")]
 
 
 def bar_caption(caption, largest, step):

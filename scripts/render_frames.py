@@ -3,16 +3,17 @@
 
     scripts/render_frames.py OUT --times 0,2.5,11 [--color velocity|von_mises]
                              [--mirror x,y] [--walls door|none] [--view AZIMUTH,ELEVATION]
-                             [--up x|y|z] [--zoom 1.3] [--size 1600x900] [--point 4]
+                             [--up x|y|z] [--zoom 1.0] [--size 1600x900] [--point 4]
                              [--range LO,HI] [--title TEXT] [--no-axes] [--prefix NAME]
 
 OUT is a run's output directory (its .pvd lists the frames and their times); every time picks
 the frame nearest to it. Particle blocks are drawn as spheres coloured by speed |v| (m/s);
 shell blocks as surfaces coloured by the von Mises stress, the largest of the top, middle
-and bottom surfaces (MPa); the wall particles of a shell (the `wall_*` point set named after
-a shell block) are left out, the shell is drawn instead, and those of rigid walls are drawn as
-small light grey points, the walls named with `--walls` (a door that swings open) dark grey;
-`--walls none` leaves the rigid walls out. `--color von_mises` greys the particles so the
+and bottom surfaces (MPa). Wall particles (the `wall_*` point sets) are drawn as small light
+grey points in a scene without shells (the walls of a slot silo); in a scene with shells they
+are left out, as most of them sample a shell, which is drawn instead. `--walls door` draws the
+named walls dark grey in any scene (a door that swings open); `--walls none` leaves them all
+out. `--color von_mises` greys the particles so the
 shell stands out. `--mirror x,y` reflects everything in the planes x = 0 and y = 0, so a quarter model is
 shown whole. The pictures go to OUT/pictures/PREFIX_tNNN.png (time in centiseconds).
 
@@ -210,14 +211,13 @@ def scene_actors(vtm_path, args, lookup):
     """The frame's actors: particles, shells and rigid walls (mirrored)."""
     actors = []
     named = blocks(vtm_path)
-    shells = {name for name, block in named
-              if block is not None and block.IsA("vtkUnstructuredGrid")}
+    shells = any(block is not None and block.IsA("vtkUnstructuredGrid") for _, block in named)
     for name, block in named:
         if block is None or block.GetNumberOfPoints() == 0:
             continue
         if is_wall_sample(name, block):
             wall = name[len("wall_"):]
-            if wall not in shells and "none" not in args.walls:
+            if wall in args.walls or (not shells and "none" not in args.walls):
                 shown = mirrored(block, args.mirror) if args.mirror else block
                 actors.append(wall_actor(shown, args.point, wall in args.walls))
             continue
@@ -242,7 +242,40 @@ def place_camera(renderer, args):
     camera.Elevation(args.view[1])
     camera.OrthogonalizeViewUp()
     renderer.ResetCamera()
-    camera.Zoom(args.zoom)
+
+
+def fit_camera(scene, bounds, layout, zoom):
+    """Pans and zooms the camera so that the scene's bounding box, projected, fills the scene's
+    part of the picture less the room its axes' labels need (about five characters beside it
+    and two and a half lines under it: frame_annotations.metre_axes), then zooms by `zoom`."""
+    f = layout.font
+    left, right = 4.5 * f, layout.width - layout.bar_column - 1.5 * f
+    bottom, top = layout.bottom_strip + 2.5 * f, layout.height - layout.top_strip
+    corners = [(bounds[i], bounds[2 + j], bounds[4 + k]) for i in (0, 1) for j in (0, 1)
+               for k in (0, 1)]
+    camera = scene.GetActiveCamera()
+    for _ in range(12):
+        points = [notes.display_point(scene, c) for c in corners]
+        xs, ys = [p[0] for p in points], [p[1] for p in points]
+        scale = min((right - left) / max(max(xs) - min(xs), 1.0),
+                    (top - bottom) / max(max(ys) - min(ys), 1.0))
+        shift = ((left + right - min(xs) - max(xs)) / 2, (bottom + top - min(ys) - max(ys)) / 2)
+        if abs(scale - 1.0) < 0.01 and max(abs(shift[0]), abs(shift[1])) < 1.0:
+            break
+        # Pan: move the camera and its focal point by the world shift at the focal plane.
+        focal = camera.GetFocalPoint()
+        scene.SetWorldPoint(*focal, 1.0)
+        scene.WorldToDisplay()
+        fx, fy, depth = scene.GetDisplayPoint()
+        scene.SetDisplayPoint(fx - shift[0], fy - shift[1], depth)
+        scene.DisplayToWorld()
+        moved = scene.GetWorldPoint()
+        step = [moved[k] / moved[3] - focal[k] for k in range(3)]
+        camera.SetFocalPoint(*[focal[k] + step[k] for k in range(3)])
+        camera.SetPosition(*[camera.GetPosition()[k] + step[k] for k in range(3)])
+        camera.Zoom(scale)
+    camera.Zoom(zoom)
+    scene.ResetCameraClippingRange()
 
 
 def render(vtm_path, time, args, scale, png_path):
@@ -269,6 +302,7 @@ def render(vtm_path, time, args, scale, png_path):
         scene.AddActor(actor)
     bounds = scene.ComputeVisiblePropBounds()
     place_camera(scene, args)
+    fit_camera(scene, bounds, layout, args.zoom)
     overlay = (notes.title_actors(layout, args.title, f"t = {time:.2f} s")
                + notes.colour_bar(layout, lookup, low, high, step, caption,
                                   above=scale[3] > high * (1.0 + 1e-9)))
@@ -320,7 +354,8 @@ def parse(argv):
     parser.add_argument("--view", help="camera azimuth,elevation [deg] (default -60,25; a plane "
                         "strain case: 0,0, square on)")
     parser.add_argument("--up", choices=("x", "y", "z"), help="the vertical axis")
-    parser.add_argument("--zoom", type=float, default=1.3)
+    parser.add_argument("--zoom", type=float, default=1.0,
+                        help="the scene larger (>1) or smaller than the fit to the picture")
     parser.add_argument("--size", default="1600x900")
     parser.add_argument("--point", type=float, default=4.0, help="sphere size [pixels]")
     parser.add_argument("--range", default=None, help="colour range LO,HI (default: the data's)")
