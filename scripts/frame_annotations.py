@@ -181,14 +181,37 @@ def colour_bar(layout, lookup, low, high, step, caption, above):
     return actors
 
 
-def peak_marker(scene, point, label, layout):
+def text_box(label, size, x, y, align, valign):
+    """The pixel box (x0, y0, x1, y1) a text of that size anchored at (x, y) covers, at most."""
+    lines = label.split("\n")
+    width = max(len(line) for line in lines) * CHAR * size
+    height = len(lines) * 1.2 * size
+    x0 = {"left": x, "right": x - width, "centre": x - width / 2}[align]
+    y0 = {"bottom": y, "top": y - height, "centre": y - height / 2}[valign]
+    return (x0, y0, x0 + width, y0 + height)
+
+
+def overlaps(box, boxes):
+    return any(box[0] < b[2] and b[0] < box[2] and box[1] < b[3] and b[1] < box[3]
+               for b in boxes)
+
+
+def peak_marker(scene, point, label, layout, taken):
     """A ring round the place of the largest value (drawn over the scene, even where the
-    shell hides it) and its value beside it."""
+    shell hides it) and its value beside it, on the first side where it covers no label
+    already placed (`taken`, pixel boxes)."""
     x, y = display_point(scene, point)
     r = 0.55 * layout.font
     ring = [(x + r * math.cos(a), y + r * math.sin(a))
             for a in np.linspace(0.0, 2.0 * math.pi, 25)]
-    note = text(label, layout.small, x + 1.2 * r, y + 0.8 * r)
+    sides = [(1.2 * r, 0.8 * r, "left", "bottom"), (-1.2 * r, 0.8 * r, "right", "bottom"),
+             (1.2 * r, -0.8 * r, "left", "top"), (-1.2 * r, -0.8 * r, "right", "top")]
+    for dx, dy, align, valign in sides:
+        box = text_box(label, layout.small, x + dx, y + dy, align, valign)
+        if not overlaps(box, taken):
+            break
+    taken.append(box)
+    note = text(label, layout.small, x + dx, y + dy, align=align, valign=valign)
     note.GetTextProperty().SetBackgroundColor(1.0, 1.0, 1.0)
     note.GetTextProperty().SetBackgroundOpacity(0.85)
     return [polygons_2d([ring], None), note]
@@ -222,10 +245,12 @@ def display_point(scene, point):
     return x, y
 
 
-def metre_axes(scene, bounds, layout, up):
+def metre_axes(scene, bounds, layout, up, taken):
     """Axes in metres along three edges of the scene's bounding box, drawn over the scene
     (the camera must be placed): the edge, round ticks at least four characters apart, their
-    values and the axis name with its unit, each label set off outwards from the box."""
+    values and the axis name with its unit, each label set off outwards from the box. A label
+    that would cover one already placed (`taken`, pixel boxes, which the labels join) is left
+    out: where two axes meet at a corner, the first one's value stays."""
     f = layout.font
     centre = display_point(scene, [(bounds[2 * k] + bounds[2 * k + 1]) / 2 for k in range(3)])
     actors = []
@@ -248,12 +273,20 @@ def metre_axes(scene, bounds, layout, up):
             s = (value - low) / (high - low)
             x, y = xa + s * (xb - xa), ya + s * (yb - ya)
             actors.append(polygons_2d([[(x, y), (x + 0.35 * f * nx, y + 0.35 * f * ny)]], None))
-            actors.append(text(label, round(0.8 * f), x + 0.55 * f * nx, y + 0.55 * f * ny,
-                               align=align, valign=valign))
-        title = f"{'xyz'[axis]} (m)"
-        actors.append(text(title, round(0.85 * f), (xa + xb) / 2 + 2.2 * f * nx,
-                           (ya + yb) / 2 + 2.2 * f * ny, align=align, valign=valign))
+            actors += placed(label, round(0.8 * f), x + 0.55 * f * nx, y + 0.55 * f * ny,
+                             align, valign, taken)
+        actors += placed(f"{'xyz'[axis]} (m)", round(0.85 * f), (xa + xb) / 2 + 2.2 * f * nx,
+                         (ya + yb) / 2 + 2.2 * f * ny, align, valign, taken)
     return actors
+
+
+def placed(label, size, x, y, align, valign, taken):
+    """The label as a text actor, or nothing where it would cover a label in `taken`."""
+    box = text_box(label, size, x, y, align, valign)
+    if overlaps(box, taken):
+        return []
+    taken.append(box)
+    return [text(label, size, x, y, align=align, valign=valign)]
 
 
 def metre_ticks(low, high, most):

@@ -306,11 +306,12 @@ def render(vtm_path, time, args, scale, png_path):
     overlay = (notes.title_actors(layout, args.title, f"t = {time:.2f} s")
                + notes.colour_bar(layout, lookup, low, high, step, caption,
                                   above=scale[3] > high * (1.0 + 1e-9)))
+    taken = []  # pixel boxes of the labels placed over the scene
     if args.axes:
-        overlay += notes.metre_axes(scene, bounds, layout, args.up)
+        overlay += notes.metre_axes(scene, bounds, layout, args.up, taken)
     if args.color == "von_mises" and where is not None:
         where = nearest_image(where, args.mirror, scene.GetActiveCamera().GetPosition())
-        overlay += notes.peak_marker(scene, where, f"{largest:.3g} MPa", layout)
+        overlay += notes.peak_marker(scene, where, f"{largest:.3g} MPa", layout, taken)
     for actor in overlay:
         annotations.AddActor2D(actor)
     window.Render()
