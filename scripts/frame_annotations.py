@@ -297,7 +297,8 @@ def metre_ticks(low, high, most):
     power = 10.0 ** math.floor(math.log10(span)) / 100.0
     for step in (m * power * 10**k for k in range(5) for m in (1.0, 2.0, 2.5, 5.0)):
         first = math.ceil(low / step - 1e-9) * step
-        values = [first + k * step for k in range(int(math.floor((high - first) / step + 1e-9)) + 1)]
+        count = int(math.floor((high - first) / step + 1e-9)) + 1
+        values = [first + k * step for k in range(count)]
         if len(values) <= most:
             break
     if len(values) < 2:

@@ -53,7 +53,8 @@ def read_rows(path):
 
 def groups_of(points, panel):
     """The panel's points that fall on the same spot (centres within 12 pixels: their markers,
-    8 pixels across, touch or nearly) grouped: (x, y, label, inside budget) each, the labels of a group joined with "; "."""
+    8 pixels across, touch or nearly) grouped: (x, y, label, inside budget) each, the labels
+    of a group joined with "; "."""
     groups = []
     for x, y, label, inside in points:
         px, py = panel.transData.transform((x, y))

@@ -13,9 +13,9 @@ and bottom surfaces (MPa). Wall particles (the `wall_*` point sets) are drawn as
 grey points in a scene without shells (the walls of a slot silo); in a scene with shells they
 are left out, as most of them sample a shell, which is drawn instead. `--walls door` draws the
 named walls dark grey in any scene (a door that swings open); `--walls none` leaves them all
-out. `--color von_mises` greys the particles so the
-shell stands out. `--mirror x,y` reflects everything in the planes x = 0 and y = 0, so a quarter model is
-shown whole. The pictures go to OUT/pictures/PREFIX_tNNN.png (time in centiseconds).
+out. `--color von_mises` greys the particles so the shell stands out. `--mirror x,y` reflects
+everything in the planes x = 0 and y = 0, so a quarter model is shown whole. The pictures go
+to OUT/pictures/PREFIX_tNNN.png (time in centiseconds).
 
 Every picture carries a title (the case's name, or --title), the time stamp, axes in metres
 along the scene's bounds and a colour bar with the quantity, its unit, round ticks and the
@@ -24,7 +24,10 @@ largest value of all the frames asked for (the same scale for the series); `--ra
 fixes it instead, and values above HI are then drawn in the above-range colour, which the bar
 shows. The camera looks at the scene from the horizontal direction of azimuth 0 with the
 vertical up: the axis against gravity in the case file (`--up` sets it), then turns by
-AZIMUTH about the vertical and ELEVATION above the horizontal.
+AZIMUTH about the vertical and ELEVATION above the horizontal (a plane strain case: 0, 0), and
+is panned and zoomed so that the scene's bounding box fills the picture but for the room its
+labels need; `--zoom` scales that fit. A stress picture rings the place of the largest stress
+and writes its value beside it.
 
 Without a display (CI, ssh) run it under xvfb-run (package xvfb): `xvfb-run -a python3 ...`.
 """
@@ -335,7 +338,8 @@ def case_facts(out):
         return None, None, False
     flat = summary.get("model", {}).get("dimension") == "plane strain"
     up = None
-    for path in (summary.get("case_file", ""), os.path.join(out, "..", summary.get("case_file", ""))):
+    case_file = summary.get("case_file", "")
+    for path in (case_file, os.path.join(out, "..", case_file)):
         if os.path.isfile(path):
             found = re.search(r'^\s*gravity\s*=\s*"([^"]*)"', open(path).read(), re.MULTILINE)
             if found:

@@ -46,7 +46,8 @@ struct Reported {
 };
 
 Reported reported(const std::string& output) {
-    const std::regex line(R"(colour range ([-+0-9.eE]+) to ([-+0-9.eE]+) \S+, largest ([-+0-9.eE]+))");
+    const std::regex line(
+        R"(colour range ([-+0-9.eE]+) to ([-+0-9.eE]+) \S+, largest ([-+0-9.eE]+))");
     std::smatch m;
     Reported r;
     if (std::regex_search(output, m, line)) {
@@ -117,7 +118,7 @@ Picture look_at(const std::string& png) {
 }
 
 class RenderFrames : public ::testing::Test {
-protected:
+  protected:
     static void SetUpTestSuite() {
         run_ = new CaseRun(run_case_file("cases/sand_on_plate/sand_on_plate_small.toml",
                                          "render_frames", "--set 'case.end_time=0.1 s'"));
@@ -131,11 +132,11 @@ protected:
         // ctest runs the two tests side by side: each looks for a free display from its own
         // number up, so that two X servers do not race for the same one.
         const std::string display = std::to_string(100 + ::getpid() % 20000);
-        const std::string command =
-            "xvfb-run -a -n " + display + " /usr/bin/python3 '" +
-            source_path("scripts/render_frames.py") + "' '" +
-            run_->out + "' --times 0.1 --color " + colour + " --size " +
-            std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --prefix " + colour;
+        const std::string command = "xvfb-run -a -n " + display + " /usr/bin/python3 '" +
+                                    source_path("scripts/render_frames.py") + "' '" + run_->out +
+                                    "' --times 0.1 --color " + colour + " --size " +
+                                    std::to_string(kWidth) + "x" + std::to_string(kHeight) +
+                                    " --prefix " + colour;
         return run_shell(command, run_->out + "_" + colour + ".log");
     }
     static CaseRun* run_;
