@@ -3,7 +3,8 @@ overrides, or a stored table) and the commands that draw it. Read by scripts/doc
 
 A run is `grainload run CASE --set ...` into RUNS/<id>/, a `grainload trade` sweep into
 RUNS/<id>/, or a case script that makes its own runs there. `minutes` is the wall time measured
-on the shared 2-core development machine (docs/validation pages), for choosing what to rerun.
+on the shared 2-core development machine, on one thread beside other jobs (2026-12-05; the
+runs not made that day: their pages' figures), for choosing what to rerun.
 In the drawing commands {id} stands for a run's folder, {docs} for docs/validation and
 {grainload} for the executable.
 """
@@ -59,17 +60,18 @@ HOPPER_TRADE = ['--vary', 'material[0].stiffness_scale=1,0.5,0.25',
                 '--budget', '5%', '--jobs', '1']
 
 RUNS = {
-    "silo_janssen_fill_small": Run("cases/silo_janssen/silo_janssen_fill_small.toml", minutes=1),
-    "silo_rest_small": Run("cases/silo/silo_rest_small.toml", minutes=1),
-    "silo_rest": Run("cases/silo/silo_rest.toml", minutes=5),
-    "silo_discharge_small": Run("cases/silo/silo_discharge_small.toml", minutes=1),
-    "silo_discharge": Run("cases/silo/silo_discharge.toml", minutes=4),
-    "silo_discharge_trade": Run("cases/silo/silo_discharge_small.toml", minutes=4, kind="trade",
+    "silo_janssen_fill_small": Run("cases/silo_janssen/silo_janssen_fill_small.toml",
+                                   minutes=0.6),
+    "silo_rest_small": Run("cases/silo/silo_rest_small.toml", minutes=0.4),
+    "silo_rest": Run("cases/silo/silo_rest.toml", minutes=7.3),
+    "silo_discharge_small": Run("cases/silo/silo_discharge_small.toml", minutes=0.4),
+    "silo_discharge": Run("cases/silo/silo_discharge.toml", minutes=5.4),
+    "silo_discharge_trade": Run("cases/silo/silo_discharge_small.toml", minutes=1.5, kind="trade",
                                 arguments=SILO_TRADE, done="trade.csv"),
     "hopper_discharge_small": Run("cases/hopper_discharge/hopper_discharge_small.toml",
-                                  minutes=0.2),
-    "hopper_discharge": Run("cases/hopper_discharge/hopper_discharge.toml", minutes=0.5),
-    "hopper_discharge_12mm": Run("cases/hopper_discharge/hopper_discharge.toml", minutes=2,
+                                  minutes=0.15),
+    "hopper_discharge": Run("cases/hopper_discharge/hopper_discharge.toml", minutes=0.6),
+    "hopper_discharge_12mm": Run("cases/hopper_discharge/hopper_discharge.toml", minutes=3.6,
                                  sets=HOPPER_12MM + ['sph.body[0].shape.top_radius=853.17 mm',
                                                      'sph.body[0].shape.height=1167.0 mm',
                                                      'case.end_time=3 s']),
@@ -78,8 +80,8 @@ RUNS = {
         'sph.body[0].shape.base_radius=189.72 mm', 'sph.body[0].shape.top_radius=855.39 mm',
         'sph.body[0].shape.height=1153.0 mm', 'sph.wall[0].spacing=3.125 mm',
         'sph.wall[1].spacing=3.125 mm', 'sph.wall[2].spacing=3.125 mm', 'case.end_time=2.6 s']),
-    "hopper_deposition": Run("cases/hopper_discharge/hopper_deposition.toml", minutes=0.3),
-    "hopper_deposition_12mm": Run("cases/hopper_discharge/hopper_deposition.toml", minutes=2,
+    "hopper_deposition": Run("cases/hopper_discharge/hopper_deposition.toml", minutes=0.7),
+    "hopper_deposition_12mm": Run("cases/hopper_discharge/hopper_deposition.toml", minutes=3.9,
                                   sets=HOPPER_12MM + [
                                       'sph.body[0].shape.top_radius=201.08 mm',
                                       'sph.body[0].shape.height=37.5 mm',
@@ -88,9 +90,9 @@ RUNS = {
                                       'sph.source[0].shape.top_radius=853.17 mm',
                                       'sph.source[0].shape.height=1129.5 mm',
                                       'case.end_time=5.4 s']),
-    "hopper_drop": Run("cases/hopper_discharge/hopper_drop.toml", minutes=1),
+    "hopper_drop": Run("cases/hopper_discharge/hopper_drop.toml", minutes=0.6),
     "hopper_discharge_trade": Run("cases/hopper_discharge/hopper_discharge_small.toml",
-                                  minutes=1, kind="trade", arguments=HOPPER_TRADE,
+                                  minutes=0.6, kind="trade", arguments=HOPPER_TRADE,
                                   done="trade.csv"),
     "column_collapse_2d": Run("cases/column_collapse_2d/column_collapse_2d.toml", minutes=15),
     "column_collapse_2d_aspect_sweep": Run(
@@ -98,9 +100,9 @@ RUNS = {
         arguments=["python", "cases/column_collapse_2d/aspect_sweep.py", "{grainload}",
                    "{self}"], done="aspect_sweep.csv"),
     "collapse_plate_k1000_a0.1_14mm": Run("cases/column_collapse/column_collapse_plate.toml",
-                                          minutes=1, sets=K_1000 + PLATE_14MM + PLATE_UNPINNED),
+                                          minutes=0.3, sets=K_1000 + PLATE_14MM + PLATE_UNPINNED),
     "collapse_plate_k10_a0.1_14mm": Run("cases/column_collapse/column_collapse_plate.toml",
-                                        minutes=7, sets=K_10 + PLATE_14MM + PLATE_UNPINNED),
+                                        minutes=2.7, sets=K_10 + PLATE_14MM + PLATE_UNPINNED),
     "collapse_plate_k1000_a3.162_14mm": Run(
         "cases/column_collapse/column_collapse_plate.toml", minutes=0.5,
         sets=K_1000 + PLATE_14MM + PLATE_UNPINNED + ['sph.artificial_viscosity.alpha=3.162']),
@@ -109,7 +111,7 @@ RUNS = {
     "silo_hopper": Run("cases/silo_hopper/silo_hopper.toml", minutes=22),
     "silo_hopper_fine": Run("cases/silo_hopper/silo_hopper_fine.toml", minutes=21),
     "silo_hopper_12mm": Run("cases/silo_hopper/silo_hopper_12mm.toml", minutes=27),
-    "hopper_wagon": Run("cases/hopper_wagon/hopper_wagon.toml", minutes=19),
+    "hopper_wagon": Run("cases/hopper_wagon/hopper_wagon.toml", minutes=20.4),
     "hopper_wagon_rigid_0.55": Run("cases/hopper_wagon/hopper_wagon.toml", minutes=14,
                                    sets=RIGID_055),
 }
