@@ -94,9 +94,9 @@ RUNS = {
     "hopper_discharge_trade": Run("cases/hopper_discharge/hopper_discharge_small.toml",
                                   minutes=0.6, kind="trade", arguments=HOPPER_TRADE,
                                   done="trade.csv"),
-    "column_collapse_2d": Run("cases/column_collapse_2d/column_collapse_2d.toml", minutes=15),
+    "column_collapse_2d": Run("cases/column_collapse_2d/column_collapse_2d.toml", minutes=13),
     "column_collapse_2d_aspect_sweep": Run(
-        "cases/column_collapse_2d/column_collapse_2d.toml", minutes=15, kind="script",
+        "cases/column_collapse_2d/column_collapse_2d.toml", minutes=23, kind="script",
         arguments=["python", "cases/column_collapse_2d/aspect_sweep.py", "{grainload}",
                    "{self}"], done="aspect_sweep.csv"),
     "collapse_plate_k1000_a0.1_14mm": Run("cases/column_collapse/column_collapse_plate.toml",
