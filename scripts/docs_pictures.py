@@ -17,8 +17,9 @@ drawn: the case files, the run commands, the commit of the binary that ran them 
 git_hash), the date the run ended and its wall time. Rows of pictures not drawn stay as they
 were. --list prints the pictures and their runs without running anything.
 
-The expensive runs (the full wagon, the silos at fine spacings) take from a quarter of an hour to
-half an hour each on a 2-core machine; the small cases seconds to minutes. The build and the
+The expensive runs (the full wagon, the circular silo at its finer spacings, the 2D collapse's
+aspect-ratio sweep) take 20 to 30 minutes each on a 2-core machine; the small cases seconds to
+minutes. The build and the
 packages come from scripts/build.sh, as for scripts/run.sh.
 """
 
@@ -199,6 +200,10 @@ def list_pictures(pictures, args):
             print(f"    from the stored trade table {picture.table}")
         for run_id in picture.runs:
             run = RUNS[run_id]
+            found = find_run(run_id, run, args)
+            if found:
+                print(f"    {run_id}: completed in {found}")
+                continue
             folder = os.path.join(args.runs, run_id)
             print(f"    {run_id}: about {run.minutes:g} min: "
                   f"{shown(run_command(run_id, run, args.grainload, folder, args.threads))}")
