@@ -112,7 +112,7 @@ RUNS = {
     "silo_hopper_fine": Run("cases/silo_hopper/silo_hopper_fine.toml", minutes=21),
     "silo_hopper_12mm": Run("cases/silo_hopper/silo_hopper_12mm.toml", minutes=27),
     "hopper_wagon": Run("cases/hopper_wagon/hopper_wagon.toml", minutes=20.4),
-    "hopper_wagon_rigid_0.55": Run("cases/hopper_wagon/hopper_wagon.toml", minutes=14,
+    "hopper_wagon_rigid_0.55": Run("cases/hopper_wagon/hopper_wagon.toml", minutes=27,
                                    sets=RIGID_055),
 }
 
