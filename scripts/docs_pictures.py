@@ -55,7 +55,9 @@ are in the table's page. Regenerate one picture with
 def run_command(run_id, run, grainload, folder, threads):
     """The command line that makes the run (argv)."""
     if run.kind == "script":
-        return [fill(a, {"grainload": grainload, "self": folder}) for a in run.arguments]
+        return ["/usr/bin/python3" if a == "python" else fill(a, {"grainload": grainload,
+                                                                   "self": folder})
+                for a in run.arguments]
     verb = "trade" if run.kind == "trade" else "run"
     command = [grainload, verb, run.case]
     for item in run.sets:
@@ -115,8 +117,6 @@ def make_run(run_id, run, args):
     os.makedirs(folder, exist_ok=True)
     print(f"docs_pictures: running {run_id} (about {run.minutes:g} min here): {shown(command)}",
           flush=True)
-    if run.kind == "script":
-        command = ["/usr/bin/python3" if a == "python" else a for a in command]
     with open(folder + ".log", "w") as log:
         code = subprocess.call(command, stdout=log, stderr=subprocess.STDOUT, cwd=ROOT)
     if not is_complete(folder, run):
@@ -177,6 +177,7 @@ def write_record(rows):
 
 
 def record_row(picture, name, sources, folders):
+    folders = dict(folders, grainload="grainload")  # the command as a user types it
     drawn = "; ".join(f"`{shown([fill(a, folders) for a in s])}`"
                       for s in picture.draw if s[0] != "copy")
     drawn = drawn.replace("`xvfb ", "`xvfb-run -a python3 ").replace("`python ", "`python3 ")

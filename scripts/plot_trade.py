@@ -23,6 +23,8 @@ try:
 
     matplotlib.use("Agg")
     matplotlib.rcParams["svg.fonttype"] = "none"  # text as text: small, diffable SVG
+    # The same table draws the same file: fixed element ids, and no date (savefig below).
+    matplotlib.rcParams["svg.hashsalt"] = "grainload"
     import matplotlib.pyplot as plt
     from matplotlib.ticker import LogFormatter
     from matplotlib.transforms import Bbox
@@ -211,7 +213,7 @@ def main():
         if legend is not None:
             taken.append(legend.get_window_extent(renderer))
         place_labels(fig, panel, groups, taken)
-    fig.savefig(args.out)
+    fig.savefig(args.out, metadata={"Date": None})
     return 0
 
 

@@ -86,6 +86,7 @@ def write_svg(path, rows):
     named in the legend (matplotlib)."""
     import matplotlib
     matplotlib.use("Agg")
+    matplotlib.rcParams["svg.hashsalt"] = "grainload"  # the same runs draw the same file
     import matplotlib.pyplot as plt
     amax = max(6.0, max(r["a"] for r in rows))
     grid = np.linspace(0.05, amax, 400)
@@ -104,7 +105,7 @@ def write_svg(path, rows):
     axes.set_ylabel("normalised run-out (L∞ − L0) / L0")
     axes.grid(True, alpha=0.3)
     axes.legend(loc="upper left", fontsize="small")
-    figure.savefig(path)
+    figure.savefig(path, metadata={"Date": None})
     plt.close(figure)
 
 
