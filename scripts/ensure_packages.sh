@@ -10,10 +10,13 @@ GRAINLOAD_PACKAGES=(
   # Meshing of .geo geometry scripts (io/gmsh_runner); python3 runs the case scripts that
   # tests call (cases/hopper_wagon/export_k.py).
   gmsh python3
-  # Plots: `grainload trade` draws error against wall time with scripts/plot_trade.py.
-  python3-matplotlib
+  # Plots: `grainload trade` draws error against wall time with scripts/plot_trade.py; the
+  # case scripts, scripts/plot_wall_map.py and scripts/docs_pictures.py draw with matplotlib
+  # on numpy arrays.
+  python3-matplotlib python3-numpy
   # Case scripts read frames with VTK's Python bindings (cases/hopper_wagon/*.py), and
-  # scripts/render_frames.py renders them to PNG off screen, under xvfb-run without a display.
+  # scripts/render_frames.py renders them to PNG off screen, under xvfb-run without a display
+  # (tests/regression/test_render_frames.cpp does so in the test suite).
   python3-vtk9 xvfb xauth
 )
 

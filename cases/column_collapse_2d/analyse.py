@@ -266,32 +266,33 @@ def rest_time(out_dir, body, fraction=1e-4):
 
 
 def write_svg(path, prof, L0, H0, fit, dp):
-    """Tiny dependency-free SVG of the final profile, the initial column and the failure line."""
-    xmax = max(r[0] for r in prof) + 0.02
-    ymax = max(H0, max(r[1] for r in prof)) + 0.02
-    W, H, pad = 800, 320, 40
-    sx = (W - 2 * pad) / xmax
-    sy = sx  # true aspect
-    H = int(ymax * sy + 2 * pad)
-    tx = lambda x: pad + x * sx
-    ty = lambda y: H - pad - y * sy
-    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" font-size="12">',
-           f'<rect x="{tx(0)}" y="{ty(H0)}" width="{L0 * sx}" height="{H0 * sy}" fill="none" '
-           'stroke="grey" stroke-dasharray="4 3"/>']
-    pts = " ".join(f"{tx(x):.1f},{ty(h):.1f}" for x, h, _ in prof)
-    out.append(f'<polyline points="{tx(0)},{ty(0)} {pts} {tx(prof[-1][0])},{ty(0)}" '
-               'fill="#e8c07a" stroke="black"/>')
+    """The final profile drawn to scale (matplotlib, lengths in m): the deposit, the initial
+    column dashed, the failure line and the run-out."""
+    import matplotlib
+    matplotlib.use("Agg")
+    matplotlib.rcParams["svg.hashsalt"] = "grainload"  # the same runs draw the same file
+    import matplotlib.pyplot as plt
+    x = [0.0] + [r[0] for r in prof] + [prof[-1][0]]
+    h = [0.0] + [r[1] for r in prof] + [0.0]
+    figure, axes = plt.subplots(figsize=(9, 3.6), layout="constrained")
+    axes.fill(x, h, color="#e8c07a", edgecolor="black", linewidth=0.8, label="final deposit")
+    axes.plot([0, L0, L0, 0], [0, 0, H0, H0], color="0.4", linestyle="--", linewidth=1,
+              label="initial column")
     if fit:
-        ang, m, b = fit
-        xe = -b / m if m != 0 else L0
-        out.append(f'<line x1="{tx(0)}" y1="{ty(b)}" x2="{tx(xe)}" y2="{ty(0)}" stroke="red"/>')
-        out.append(f'<text x="{tx(xe) + 4}" y="{ty(0) - 4}" fill="red">failure line {ang:.1f} deg</text>')
-    out.append(f'<line x1="{tx(0)}" y1="{ty(0)}" x2="{tx(xmax)}" y2="{ty(0)}" stroke="black"/>')
-    for k in range(0, int(xmax * 10) + 1):
-        out.append(f'<text x="{tx(k / 10) - 8}" y="{ty(0) + 16}">{k / 10:.1f}</text>')
-    out.append(f'<text x="{tx(xmax) - 60}" y="{ty(0) + 30}">x (m)</text></svg>')
-    with open(path, "w") as f:
-        f.write("\n".join(out) + "\n")
+        angle, m, b = fit
+        x_base = -b / m if m != 0 else L0
+        axes.plot([0, x_base], [b, 0], color="C3", linewidth=1.2,
+                  label=f"failure line, {angle:.1f}° from the floor")
+    axes.set_aspect("equal")
+    axes.set_xlim(0, max(x) * 1.03)
+    axes.set_ylim(0, max(H0, max(h)) * 1.15)
+    axes.set_xlabel("distance from the back wall x (m)")
+    axes.set_ylabel("height y (m)")
+    axes.set_title(f"final surface profile, spacing {dp * 1e3:g} mm (bins of 2 spacings)")
+    axes.grid(True, alpha=0.3)
+    axes.legend(loc="upper right", fontsize="small")
+    figure.savefig(path, metadata={"Date": None})
+    plt.close(figure)
 
 
 def main():

@@ -82,33 +82,31 @@ def nguyen_runout(a):
 
 
 def write_svg(path, rows):
-    W, H, pad = 640, 420, 50
+    """Normalised run-out against the aspect ratio: the runs as dots, the laws as lines, each
+    named in the legend (matplotlib)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    matplotlib.rcParams["svg.hashsalt"] = "grainload"  # the same runs draw the same file
+    import matplotlib.pyplot as plt
     amax = max(6.0, max(r["a"] for r in rows))
-    ymax = max(12.0, max(r["runout"] for r in rows) * 1.1)
-    tx = lambda a: pad + a / amax * (W - 2 * pad)
-    ty = lambda y: H - pad - y / ymax * (H - 2 * pad)
-    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" font-size="12">',
-           f'<line x1="{tx(0)}" y1="{ty(0)}" x2="{tx(amax)}" y2="{ty(0)}" stroke="black"/>',
-           f'<line x1="{tx(0)}" y1="{ty(0)}" x2="{tx(0)}" y2="{ty(ymax)}" stroke="black"/>']
-    grid = np.linspace(0.05, amax, 200)
-    for law, colour, label in ((lube_runout, "blue", "Lube et al. 2005"),
-                               (lajeunesse_runout, "green", "Lajeunesse et al. 2005"),
-                               (nguyen_runout, "purple", "Nguyen et al. 2015 (Al rods)")):
-        pts = [f"{tx(a):.1f},{ty(law(a)):.1f}" for a in grid if not math.isnan(law(a))]
-        out.append(f'<polyline points="{" ".join(pts)}" fill="none" stroke="{colour}"/>')
-        y = ty(law(amax)) if law(amax) <= ymax else ty(ymax)
-        out.append(f'<text x="{tx(amax) - 170}" y="{y - 6:.1f}" fill="{colour}">{label}</text>')
-    for r in rows:
-        out.append(f'<circle cx="{tx(r["a"]):.1f}" cy="{ty(r["runout"]):.1f}" r="4" fill="red"/>')
-    out.append(f'<text x="{tx(0.2)}" y="{ty(ymax) + 14}" fill="red">grainload SPH (dots)</text>')
-    for k in range(0, int(amax) + 1):
-        out.append(f'<text x="{tx(k) - 4}" y="{ty(0) + 16}">{k}</text>')
-    for k in range(0, int(ymax) + 1, 2):
-        out.append(f'<text x="{tx(0) - 24}" y="{ty(k) + 4}">{k}</text>')
-    out.append(f'<text x="{W / 2 - 60}" y="{H - 10}">aspect ratio a = H0/L0</text>')
-    out.append(f'<text x="8" y="{pad - 20}">(L_inf - L0)/L0</text></svg>')
-    with open(path, "w") as f:
-        f.write("\n".join(out) + "\n")
+    grid = np.linspace(0.05, amax, 400)
+    figure, axes = plt.subplots(figsize=(7, 4.6), layout="constrained")
+    for law, colour, style, label in ((lube_runout, "C0", "-", "Lube et al. 2005 (quasi-2D)"),
+                                      (lajeunesse_runout, "C2", "--",
+                                       "Lajeunesse et al. 2005 (quasi-2D)"),
+                                      (nguyen_runout, "C4", "-.",
+                                       "Nguyen et al. 2015 (2D aluminium rods)")):
+        axes.plot(grid, [law(a) for a in grid], color=colour, linestyle=style, label=label)
+    axes.plot([r["a"] for r in rows], [r["runout"] for r in rows], "o", color="C3",
+              label="grainload SPH")
+    axes.set_xlim(0, amax)
+    axes.set_ylim(0, None)
+    axes.set_xlabel("aspect ratio a = H0 / L0")
+    axes.set_ylabel("normalised run-out (L∞ − L0) / L0")
+    axes.grid(True, alpha=0.3)
+    axes.legend(loc="upper left", fontsize="small")
+    figure.savefig(path, metadata={"Date": None})
+    plt.close(figure)
 
 
 def main():
