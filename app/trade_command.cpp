@@ -1,6 +1,8 @@
 #include "app/trade_command.hpp"
 
+#include "app/memory_guard.hpp"
 #include "app/process_pool.hpp"
+#include "app/scene.hpp"
 #include "app/trade_table.hpp"
 #include "io/atomic_file.hpp"
 #include "io/case_error.hpp"
@@ -322,6 +324,36 @@ std::vector<TradeRun> ensemble_runs(const TradeOptions& o, io::CaseDocument& doc
                       o.noise);
 }
 
+/// An axis without an accuracy rule needs --reference, unless its key is misspelt: then no
+/// value is more accurate than another, and asking for --reference would send the user the wrong
+/// way. The case is loaded as `grainload check` loads it, with the common overrides and the
+/// grid's first run's values (each named by its flag), so that a key no reader knows is refused
+/// as `grainload run --set` refuses it (exit 2, naming the key). Only a sweep with such an axis
+/// pays for the load.
+void check_unruled_keys(const TradeOptions& o, const std::string& case_path,
+                        const TradeRun& first) {
+    const bool unruled = std::any_of(o.axes.begin(), o.axes.end(), [](const TradeAxis& axis) {
+        return !axis.reference && accuracy_rule(axis.key) == AccuracyRule::none;
+    });
+    if (!unruled) {
+        return;
+    }
+    auto document = io::CaseDocument::from_file(case_path);
+    for (const std::string& assignment : o.overrides) {
+        document->set(assignment);
+    }
+    // first.overrides: each axis' value, then its linked keys' (trade_grid).
+    std::size_t k = 0;
+    for (const TradeAxis& axis : o.axes) {
+        document->set(first.overrides[k++], "--vary");
+        for (std::size_t l = 0; l < axis.linked.size(); ++l) {
+            document->set(first.overrides[k++], "--link");
+        }
+    }
+    Scene::from_document(std::move(document), fs::path(case_path).stem().string(),
+                         available_memory());
+}
+
 /// A sweep whose runs all failed is no trade (every run refusing a misspelt key, say): the
 /// first run's diagnosis from its console.txt, and its exit code (2 bad input, 3 unstable; 1
 /// for anything else) as the sweep's.
@@ -433,6 +465,7 @@ int run_trade(const TradeOptions& o) {
     for (const std::string& assignment : grid.front().overrides) {
         document->set(assignment);
     }
+    check_unruled_keys(o, case_path, grid.front());
     const std::size_t best = find_run(grid, most_accurate(o.axes));
     std::vector<std::size_t> members;
     if (o.noise > 1) {

@@ -107,8 +107,8 @@ void CaseDocument::mark_used(const toml::node* node) {
     impl_->used.insert(node);
 }
 
-void CaseDocument::set(std::string_view assignment) {
-    const std::string origin = "--set " + std::string(assignment);
+void CaseDocument::set(std::string_view assignment, std::string_view option) {
+    const std::string origin = std::string(option) + " " + std::string(assignment);
     const auto equals = assignment.find('=');
     if (equals == std::string_view::npos || equals == 0) {
         throw CaseError(origin + ": expected key=value, e.g. --set case.end_time=\"0.5 s\"");

@@ -131,7 +131,8 @@ class CaseDocument {
 
     /// Apply "--set key=value": key is dotted with optional [i] indices ("sph.body[0].spacing");
     /// value is TOML ("3", "true", "\"5 mm\"") or, when it is not valid TOML, a plain string.
-    void set(std::string_view assignment);
+    /// `option` is the command-line flag that gave it, which messages about it name.
+    void set(std::string_view assignment, std::string_view option = "--set");
 
     CaseTable root();
     const std::string& file() const { return file_; }

@@ -5,6 +5,7 @@
 #include "sph/outlet_reach.hpp"
 #include "sph/scene_limits.hpp"
 #include "sph/sph_case_reader.hpp"
+#include "sph/start_gap.hpp"
 #include "sph/wall_bodies.hpp"
 
 #include <algorithm>
@@ -144,6 +145,11 @@ void SphModel::check_start(const io::CaseTable& sph) const {
         const std::vector<Wall>& walls = solver_->walls();
         check_wall_overlaps(sph, particles(), walls, sources_, body_names_, spacing_, dimension_,
                             solver_->kernel().support_radius());
+        for (std::string& w :
+             check_start_gaps(sph, particles(), walls, sources_, body_names_, solver_->kernel(),
+                              solver_->options().contact, gravity_.norm(), spacing_, dimension_)) {
+            warnings.push_back(std::move(w));
+        }
         for (std::string& w :
              check_sinks_hold_bodies(sph, particles(), sinks_, sources_, body_names_)) {
             warnings.push_back(std::move(w));

@@ -143,9 +143,10 @@ class SphModel final : public io::Stepper {
     void read_removals(std::istream& in);
     void read_outlet_state(std::istream& in);
     /// Once walls, sources and sinks are built: refuses bodies and sources inside walls and a
-    /// scene whose sinks take everything at once (sph/scene_limits.hpp); warns of thin bodies
-    /// no source fills, of sinks that hold a body, and of outlets out of reach
-    /// (sph/outlet_reach.hpp).
+    /// scene whose sinks take everything at once (sph/scene_limits.hpp), and those that start
+    /// so close to a wall that its contact potential throws them off (sph/start_gap.hpp); warns
+    /// of a smaller such push, of thin bodies no source fills, of sinks that hold a body, and
+    /// of outlets out of reach (sph/outlet_reach.hpp).
     void check_start(const io::CaseTable& sph) const;
     /// Sources (sph_model_sources.cpp): read them and refuse what cannot gain particles.
     void build_sources(const io::CaseTable& sph);

@@ -161,13 +161,32 @@ TEST(TradeCli, ASweepWhoseRunsAllFailExitsWithTheFirstRunsError) {
     fs::remove_all(out);
 }
 
+// A misspelt key has no accuracy rule either; asking for --reference would send the user the
+// wrong way. The sweep loads the case with its first values and refuses the key as
+// `grainload run --set` does: exit 2, naming the key and the flag that gave it, before any run.
+TEST(TradeCli, AMisspeltKeyWithoutReferenceIsNamedAsUnknown) {
+    const std::string out = test_folder("trade_misspelt");
+    fs::remove_all(out);
+    const auto result = run_cli("trade " + kCase + " --out '" + out +
+                                    "' --vary 'sph.kernal=cubic_spline,wendland_c2'",
+                                out + ".log");
+    EXPECT_EQ(result.exit_code, 2) << result.output;
+    EXPECT_NE(result.output.find("--vary sph.kernal=cubic_spline:1:"), std::string::npos)
+        << result.output;
+    EXPECT_NE(result.output.find("unknown key 'sph.kernal'"), std::string::npos) << result.output;
+    EXPECT_EQ(result.output.find("--reference"), std::string::npos) << result.output;
+    EXPECT_FALSE(fs::exists(out + "/kernal_cubic_spline")) << "no run is started";
+    fs::remove_all(out);
+}
+
+// A key the case reads but no rule ranks (the body's launch velocity) needs --reference. (The
+// kernel, which this case without interactions does not read, is a key it does not know.)
 TEST(TradeCli, RefusesAnAxisWithoutAccuracyRule) {
     const auto result = run_cli("trade " + kCase + " --out '" + test_folder("trade_norule") +
-                                    "' --vary 'sph.kernel=cubic_spline,"
-                                    "quintic_spline'",
+                                    "' --vary 'sph.body[0].velocity=0.5 0 2 m/s,0 0 2 m/s'",
                                 test_folder("trade_norule.log"));
     EXPECT_EQ(result.exit_code, 2) << result.output;
-    EXPECT_NE(result.output.find("--reference 'sph.kernel=VALUE'"), std::string::npos)
+    EXPECT_NE(result.output.find("--reference 'sph.body[0].velocity=VALUE'"), std::string::npos)
         << result.output;
 }
 
