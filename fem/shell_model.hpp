@@ -91,8 +91,14 @@ class ShellModel final : public io::Stepper {
     double time_step_ = 0.0; ///< dynamic analysis: largest implicit step [s]
     std::unique_ptr<NewmarkIntegrator> newmark_;
     int increments_per_step_ = 1;
-    std::vector<ShellStepLog> log_;        ///< this process's steps (the convergence CSV's rows)
-    ShellStepTotals totals_;               ///< the whole run's, through restarts (summary.json)
+    std::vector<ShellStepLog> log_; ///< this process's steps (the convergence CSV's rows)
+    ShellStepTotals totals_;        ///< the whole run's, through restarts (summary.json)
+    /// Factorisations of the tangent and back-substitutions this process made (summary.json:
+    /// what the steps cost). Not in the checkpoint: a restarted process factorises its tangent
+    /// anew, and a coupling window repeated from its start (an iterated window's next pass)
+    /// restores the state, not the work done.
+    double factorisations_ = 0.0;
+    double back_substitutions_ = 0.0;
     mutable std::size_t logged_steps_ = 0; ///< steps of log_ already in the convergence CSV
     bool restarted_ = false;
     Eigen::VectorXd reactions_;
