@@ -79,6 +79,8 @@ io::RunSummary make_summary(const Scene& scene, const CommandLine& line, const R
     summary.points = scene.point_count();
     summary.material_points = scene.material_point_count();
     summary.material_point_steps = clock.material_point_steps;
+    summary.shell_nodes = scene.shell_node_count();
+    summary.shell_node_steps = clock.shell_node_steps;
     for (const auto& stepper : scene.steppers) {
         stepper->append_results(clock.t, summary.results);
         stepper->describe_model(summary.model);
@@ -214,6 +216,7 @@ int run_case(const CommandLine& line) {
         // A coupled window holds many SPH steps: count those, not the window.
         const long long inner = scene->inner_steps() - inner_before;
         clock.material_point_steps += points * static_cast<double>(inner > 0 ? inner : 1);
+        clock.shell_node_steps += static_cast<double>(scene->shell_node_count());
         clock.t += dt;
         ++clock.step;
         for (const auto& stepper : scene->steppers) {

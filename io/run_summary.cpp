@@ -86,6 +86,13 @@ void write_run_summary(const RunSummary& summary, const std::string& path) {
             << "  \"material_points\": " << summary.material_points << ",\n"
             << "  \"particle_steps_per_second\": " << json_number(summary.point_steps_per_second())
             << ",\n";
+        if (summary.shell_nodes > 0) {
+            out << "  \"shell_nodes\": " << summary.shell_nodes << ",\n"
+                << "  \"shell_node_steps_per_second\": "
+                << json_number(
+                       summary.wall_time > 0.0 ? summary.shell_node_steps / summary.wall_time : 0.0)
+                << ",\n";
+        }
         if (summary.estimated_steps && summary.estimated_wall_time) {
             const double steps = *summary.estimated_steps;
             const double wall = *summary.estimated_wall_time;

@@ -20,9 +20,11 @@ struct RunSummary {
     double simulated_time = 0.0;
     Index steps = 0;
     Index points = 0; ///< particles + shell nodes
-    /// Points of the material: body particles and shell nodes, without the wall particles
-    /// (boundary, not material). particle_steps_per_second counts these.
+    /// Points of the material: the SPH body particles, without the wall particles (boundary,
+    /// not material) and the shell nodes (which have their own rate below).
+    /// particle_steps_per_second counts these.
     Index material_points = 0;
+    Index shell_nodes = 0;
     std::string status = "completed"; ///< "completed" or "unstable"
     std::string diagnosis;
     std::vector<ResultFigure> results;
@@ -40,6 +42,9 @@ struct RunSummary {
     std::optional<double> material_point_steps;
     /// material_point_steps / wall_time, or material_points * steps / wall_time.
     double point_steps_per_second() const;
+    /// Shell nodes summed over the steps this process ran (a coupling window is one step of
+    /// the shell), for shell_node_steps_per_second.
+    double shell_node_steps = 0.0;
 };
 
 /// Write `summary` as JSON to `path` atomically. Each result becomes
