@@ -56,6 +56,8 @@ class ShellModel final : public io::Stepper {
     /// case's loads stay constant, since the forces change.
     void advance_with_forces(double t, double dt, const Eigen::VectorXd& forces);
     bool dynamic() const { return dynamic_; }
+    /// [fem].increments_per_step: load increments of a static step.
+    int increments_per_step() const { return increments_per_step_; }
     /// [fem].load_time: when the loads without a time function reach their full value [s].
     double load_time() const { return load_time_; }
     /// Whether the case puts loads on the shell that follow the ramp to load_time (gravity,

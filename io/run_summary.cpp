@@ -79,8 +79,11 @@ void write_run_summary(const RunSummary& summary, const std::string& path) {
             out << "  \"diagnosis\": " << json_quoted(summary.diagnosis) << ",\n";
         }
         out << "  \"threads\": " << summary.threads << ",\n"
-            << "  \"wall_time_s\": " << json_number(summary.wall_time) << ",\n"
-            << "  \"simulated_time_s\": " << json_number(summary.simulated_time) << ",\n"
+            << "  \"wall_time_s\": " << json_number(summary.wall_time) << ",\n";
+        if (summary.cpu_time) {
+            out << "  \"cpu_time_s\": " << json_number(*summary.cpu_time) << ",\n";
+        }
+        out << "  \"simulated_time_s\": " << json_number(summary.simulated_time) << ",\n"
             << "  \"steps\": " << summary.steps << ",\n"
             << "  \"particles\": " << summary.points << ",\n"
             << "  \"material_points\": " << summary.material_points << ",\n"
@@ -99,7 +102,19 @@ void write_run_summary(const RunSummary& summary, const std::string& path) {
             out << "  \"estimate\": {\"steps\": " << json_number(steps)
                 << ", \"wall_time_s\": " << json_number(wall)
                 << ", \"steps_ratio\": " << json_number(static_cast<double>(summary.steps) / steps)
-                << ", \"wall_time_ratio\": " << json_number(summary.wall_time / wall) << "},\n";
+                << ", \"wall_time_ratio\": " << json_number(summary.wall_time / wall);
+            if (summary.cpu_time) {
+                out << ", \"cpu_time_ratio\": " << json_number(*summary.cpu_time / wall);
+            }
+            if (summary.estimated_factorisations) {
+                out << ", \"fem_factorisations\": "
+                    << json_number(*summary.estimated_factorisations);
+            }
+            if (summary.estimated_back_substitutions) {
+                out << ", \"fem_back_substitutions\": "
+                    << json_number(*summary.estimated_back_substitutions);
+            }
+            out << ", \"calibration\": " << json_quoted(summary.estimate_calibration) << "},\n";
         }
         out << "  \"model\": {";
         for (std::size_t i = 0; i < summary.model.size(); ++i) {

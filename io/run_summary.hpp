@@ -17,6 +17,9 @@ struct RunSummary {
     std::vector<std::string> overrides;
     int threads = 1;
     double wall_time = 0.0; ///< s
+    /// CPU time of the process over the same span, all threads [s]: what a loaded machine does
+    /// not stretch, for the estimate's ratios (absent where not measured).
+    std::optional<double> cpu_time;
     double simulated_time = 0.0;
     Index steps = 0;
     Index points = 0; ///< particles + shell nodes
@@ -35,6 +38,11 @@ struct RunSummary {
     /// the ratios actual / estimated when set.
     std::optional<double> estimated_steps;
     std::optional<double> estimated_wall_time; ///< s
+    /// The shell's factorisations and back-substitutions the estimate foresaw (with a shell)
+    /// and the calibration it used (app/calibration.hpp, describe_calibration).
+    std::optional<double> estimated_factorisations;
+    std::optional<double> estimated_back_substitutions;
+    std::string estimate_calibration;
 
     /// Material points summed over the steps this process ran (empty: not counted); when
     /// counted, the rate is this over wall_time, which a discharge (points leaving) needs, and

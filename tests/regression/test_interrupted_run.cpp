@@ -80,6 +80,7 @@ std::string reproducible_summary(const std::string& path) {
         const std::size_t end = text.find('\n', start);
         const std::string line = text.substr(start, end - start);
         if (line.find("wall_time") == std::string::npos &&
+            line.find("cpu_time") == std::string::npos &&
             line.find("per_second") == std::string::npos &&
             line.find("\"threads\"") == std::string::npos &&
             line.find("case_file") == std::string::npos) {
