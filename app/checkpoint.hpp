@@ -19,6 +19,8 @@ struct RunClock {
     /// Material points summed over this process's steps (particles leaving through a sink stop
     /// counting), for the particle-steps per second of its wall time; not checkpointed.
     double material_point_steps = 0.0;
+    /// Shell nodes summed over this process's steps, likewise.
+    double shell_node_steps = 0.0;
 };
 
 /// Write the clock and every module's state to `path` (framing and checksum:

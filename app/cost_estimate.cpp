@@ -1,6 +1,9 @@
 #include "app/cost_estimate.hpp"
 
+#include "app/discharge_estimate.hpp"
 #include "app/scene.hpp"
+#include "app/shell_cost.hpp"
+#include "app/step_plan.hpp"
 #include "app/trade_table.hpp"
 #include "coupling/coupled_model.hpp"
 #include "fem/shell_model.hpp"
@@ -23,48 +26,6 @@ namespace grainload::app {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string calibration_path() {
-    if (const char* path = std::getenv("GRAINLOAD_CALIBRATION")) {
-        return path;
-    }
-    std::error_code error;
-    const fs::path exe = fs::read_symlink("/proc/self/exe", error);
-    return error ? std::string() : (exe.parent_path().parent_path() / "calibration.json").string();
-}
-
-/// Driver steps and SPH steps from t = 0 to the end at a constant step `dt` (SPH at
-/// `sph_dt` inside each), landing on every output instant as the driver's loop does. Counted in
-/// doubles: a step of 1e-300 s gives more steps than a long long holds (a cast of such a double
-/// is undefined behaviour), so `steps` stops at kMostSteps.
-struct StepCount {
-    long long steps = 0;
-    double sph_steps = 0.0;
-};
-
-constexpr double kMostSteps = 1e18;
-
-StepCount count_steps(double end, double interval, double dt, double sph_dt) {
-    StepCount count;
-    const double tolerance = 1e-12 * end;
-    // io/scene_settings.cpp holds end / interval to io::kMostOutputIntervals.
-    const auto intervals = static_cast<long long>(std::ceil(end / interval - 1e-9));
-    double steps = 0.0;
-    for (long long k = 0; k < intervals; ++k) {
-        const double start = static_cast<double>(k) * interval;
-        const double stop = std::min(static_cast<double>(k + 1) * interval, end);
-        const double length = stop - start;
-        if (length <= tolerance) {
-            continue;
-        }
-        const double n = std::ceil(length / dt * (1.0 - 1e-12));
-        steps += n;
-        const double window = length / n;
-        count.sph_steps += n * std::ceil(window / sph_dt * (1.0 - 1e-12));
-    }
-    count.steps = static_cast<long long>(std::min(steps, kMostSteps));
-    return count;
-}
 
 /// Neighbour-list entries at t = 0 between bodies, and between a body and a wall particle.
 std::pair<Index, Index> count_entries(const sph::SphModel& sph) {
@@ -89,7 +50,9 @@ std::pair<Index, Index> count_entries(const sph::SphModel& sph) {
 
 std::string duration(double s) {
     char text[48];
-    if (s < 120.0) {
+    if (s < 10.0) {
+        std::snprintf(text, sizeof text, "%.2g s", s);
+    } else if (s < 120.0) {
         std::snprintf(text, sizeof text, "%.0f s", s);
     } else if (s < 7200.0) {
         std::snprintf(text, sizeof text, "%.0f min", s / 60.0);
@@ -101,121 +64,7 @@ std::string duration(double s) {
 
 } // namespace
 
-Calibration load_calibration() {
-    Calibration c;
-    const std::string path = calibration_path();
-    if (path.empty() || !fs::exists(path)) {
-        return c;
-    }
-    try {
-        const io::JsonValue file = io::read_json_file(path);
-        const auto get = [&](const char* key, double fallback) {
-            return file.number_at(key).value_or(fallback);
-        };
-        c.seconds_per_entry_2d = get("seconds_per_entry_2d", c.seconds_per_entry_2d);
-        c.seconds_per_body_2d = get("seconds_per_body_2d", c.seconds_per_body_2d);
-        c.seconds_per_wall_2d = get("seconds_per_wall_2d", c.seconds_per_wall_2d);
-        c.seconds_per_contact_entry_2d =
-            get("seconds_per_contact_entry_2d", c.seconds_per_contact_entry_2d);
-        c.seconds_per_entry_3d = get("seconds_per_entry_3d", c.seconds_per_entry_3d);
-        c.seconds_per_body_3d = get("seconds_per_body_3d", c.seconds_per_body_3d);
-        c.seconds_per_wall_3d = get("seconds_per_wall_3d", c.seconds_per_wall_3d);
-        c.seconds_per_contact_entry_3d =
-            get("seconds_per_contact_entry_3d", c.seconds_per_contact_entry_3d);
-        c.threads_measured = static_cast<int>(get("threads_measured", 1.0));
-        c.speedup = get("speedup", 1.0);
-        c.source = path + " (" + file.string_at("date").value_or("undated") + ")";
-    } catch (const io::JsonError& e) {
-        c.source = std::string("built-in constants (") + e.what() + ")";
-    }
-    return c;
-}
-
 namespace {
-
-/// The particles source `s` creates by `end`: what its rate owes, but no more than its sites
-/// hold (a full box owes on); 0 for one that has not started by then.
-double created_by(const sph::SourceSet::Source& s, double end) {
-    const double stop = std::min(s.end, end);
-    if (!(stop > s.start) || !(s.particle_mass > 0.0)) {
-        return 0.0;
-    }
-    return std::min(s.mass_rate * (stop - s.start) / s.particle_mass,
-                    static_cast<double>(s.sites.size()));
-}
-
-/// The particles the sources create, averaged over the run [0, end]: one created at t is there
-/// for end - t. (What the sinks take is average_discharged's.)
-double average_created(const sph::SphModel& sph, double end) {
-    double average = 0.0;
-    if (!(end > 0.0)) {
-        return average;
-    }
-    for (const sph::SourceSet::Source& s : sph.sources().sources()) {
-        const double stop = std::min(s.end, end);
-        average += created_by(s, end) * (end - 0.5 * (s.start + stop)) / end;
-    }
-    return average;
-}
-
-/// The particles the sinks with a declared outlet ([[sph.sink]] outlet_width) take, averaged
-/// over the run [0, end]: at Beverloo's rate from the opening (the first wall removed at a
-/// stated time; t = 0 when no wall is due to go) until the material there and to come is
-/// gone. A wall due to go on settling or at a phase has no time yet: then `known` is false and
-/// nothing is taken (the estimate stays an upper bound).
-struct Discharge {
-    double average = 0.0; ///< particles taken, averaged over the run
-    double rate = 0.0;    ///< the outlets' Beverloo rate, kg/s (kg/m/s in plane strain)
-    double opening = 0.0;
-    bool declared = false; ///< a sink with an outlet
-    bool known = true;     ///< the opening time is known before the run
-};
-
-Discharge average_discharged(const sph::SphModel& sph, double end) {
-    Discharge d;
-    for (std::size_t s = 0; s < sph.sinks().sinks().size(); ++s) {
-        if (const auto rate = sph.sinks().outlet_rate(s)) {
-            d.rate += *rate;
-            d.declared = true;
-        }
-    }
-    if (!d.declared || !sph.solver() || !(end > 0.0)) {
-        return d;
-    }
-    double opening = std::numeric_limits<double>::infinity();
-    bool pending = false;
-    for (const sph::Wall& wall : sph.solver()->walls()) {
-        opening = std::min(opening, wall.removal_time);
-        pending = pending || wall.removal_on_settle || wall.removal_phase >= 0;
-    }
-    if (!std::isfinite(opening) && pending) {
-        d.known = false;
-        return d;
-    }
-    d.opening = std::isfinite(opening) ? opening : 0.0;
-    const sph::ParticleSet& p = sph.particles();
-    double mass = 0.0;
-    double count = 0.0;
-    for (Index i = 0; i < p.size(); ++i) {
-        mass += p.is_wall(i) ? 0.0 : p.mass[i];
-        count += p.is_wall(i) ? 0.0 : 1.0;
-    }
-    for (const sph::SourceSet::Source& source : sph.sources().sources()) {
-        const double made = created_by(source, end);
-        mass += made * source.particle_mass;
-        count += made;
-    }
-    const double span = end - d.opening;
-    if (!(span > 0.0) || !(mass > 0.0) || !(d.rate > 0.0)) {
-        return d;
-    }
-    // Mass taken by t: min(M, W (t - t_open)); its integral over the run, per particle.
-    const double emptied = mass / d.rate;
-    const double integral = span <= emptied ? 0.5 * d.rate * span * span
-                                            : 0.5 * mass * emptied + mass * (span - emptied);
-    d.average = integral / end * (count / mass);
-    return d;
-}
 
 /// Neighbour-list entries of a particle inside a body: the sites of its lattice (the bodies'
 /// spacing) within the kernel's support radius, itself excluded.
@@ -277,56 +126,121 @@ void add_window_limit(const coupling::CoupledModel& coupled, CostEstimate& e) {
 
 } // namespace
 
+namespace {
+
+/// The scene's SPH model, coupled or alone; nullptr without one.
+const sph::SphModel* sph_of(const io::Stepper& stepper) {
+    if (const auto* coupled = dynamic_cast<const coupling::CoupledModel*>(&stepper)) {
+        return &coupled->sph();
+    }
+    return dynamic_cast<const sph::SphModel*>(&stepper);
+}
+
+/// The time loop's stable step over the run: the smallest of the modules' at t = 0, and an SPH
+/// model's flow step where it steps the loop itself (not sub-cycled in coupling windows).
+StepProfile driver_profile(const Scene& scene, const FlowStep& flow) {
+    double rest = std::numeric_limits<double>::infinity();
+    double others = std::numeric_limits<double>::infinity();
+    for (const auto& stepper : scene.steppers) {
+        rest = std::min(rest, stepper->stable_time_step());
+        if (dynamic_cast<const sph::SphModel*>(stepper.get()) == nullptr) {
+            others = std::min(others, stepper->stable_time_step());
+        }
+    }
+    StepProfile driver;
+    driver.rest = std::isfinite(rest) ? rest : scene.settings.output_interval;
+    if (flow.profile.flow > 0.0 && flow.profile.flow < others) {
+        driver.flow = std::min(flow.profile.flow, driver.rest);
+        driver.from = flow.profile.from;
+        driver.to = flow.profile.to;
+    }
+    return driver;
+}
+
+/// The SPH model's particles, sources, sinks and their cost per step into `e`; returns one
+/// thread's seconds per step.
+double add_sph_counts(const sph::SphModel& sph, const Discharge& discharge, double end,
+                      const Calibration& calibration, CostEstimate& e) {
+    const double sources = sph.solver() ? average_created(sph, end) : 0.0;
+    e.average_created += sources;
+    e.sinks += static_cast<int>(sph.sinks().sinks().size());
+    e.average_discharged += discharge.average;
+    e.outlet_rate += discharge.rate;
+    e.outlet_opening = discharge.opening;
+    e.outlet_declared = e.outlet_declared || discharge.declared;
+    e.outlet_known = e.outlet_known && discharge.known;
+    e.outlet_earliest = discharge.earliest;
+    return sph_seconds_per_step(sph, sources - discharge.average, calibration, e);
+}
+
+/// Every output instant writes a frame, the checkpoint and the logs (t = 0 included).
+void add_output(const StepPlan& plan, const Calibration& calibration, CostEstimate& e) {
+    e.frames = static_cast<double>(plan.segments.size()) + 1.0;
+    const double points = static_cast<double>(e.sph_particles + e.shell_nodes) + e.average_created -
+                          e.average_discharged;
+    e.output_seconds =
+        e.frames * (calibration.seconds_per_frame + calibration.seconds_per_frame_point * points);
+}
+
+} // namespace
+
 CostEstimate estimate_cost(const Scene& scene, int threads, const Calibration& calibration) {
     CostEstimate e;
     e.threads = std::max(1, threads);
-    double dt = std::numeric_limits<double>::infinity();
-    for (const auto& stepper : scene.steppers) {
-        dt = std::min(dt, stepper->stable_time_step());
-    }
+    e.calibration = describe_calibration(calibration);
     const double end = scene.settings.end_time;
-    const double interval = scene.settings.output_interval;
-    e.time_step = std::isfinite(dt) ? dt : interval;
-    e.steps = count_steps(end, interval, e.time_step, e.time_step).steps;
-    const double speedup = speedup_of(e.threads, calibration);
-    double seconds = 0.0;
+    const sph::SphModel* sph = nullptr;
+    for (const auto& stepper : scene.steppers) {
+        sph = sph != nullptr ? sph : sph_of(*stepper);
+    }
+    const Discharge discharge = sph ? average_discharged(*sph, end) : Discharge{};
+    const FlowStep flow =
+        sph ? flow_step(*sph, discharge, scene.settings.gravity, end) : FlowStep{};
+    const StepProfile driver = driver_profile(scene, flow);
+    e.time_step = driver.rest;
+    e.flow_speed = flow.profile.flow > 0.0 ? flow.speed : 0.0;
+    e.flow_start = flow.profile.from;
+    e.flow_end = flow.profile.to;
+    e.flow_step = flow.profile.flow;
+    const bool coupled = std::any_of(scene.steppers.begin(), scene.steppers.end(), [](auto& s) {
+        return dynamic_cast<const coupling::CoupledModel*>(s.get()) != nullptr;
+    });
+    const StepPlan plan =
+        plan_steps(end, scene.settings.output_interval, driver, flow.profile, coupled);
+    e.steps = plan.steps;
     double bytes = calibration.baseline_bytes;
-    auto add_sph = [&](const sph::SphModel& sph, double sph_dt) {
-        const double sph_steps = count_steps(end, interval, e.time_step, sph_dt).sph_steps;
-        e.sph_steps += sph_steps;
-        const Discharge discharge = average_discharged(sph, end);
-        const double sources = sph.solver() ? average_created(sph, end) : 0.0;
-        e.average_created += sources;
-        const double created = sources - discharge.average;
-        seconds += sph_seconds_per_step(sph, created, calibration, e) * sph_steps / speedup;
-        e.particle_steps += (static_cast<double>(sph.point_count()) + created) * sph_steps;
-        e.sinks += static_cast<int>(sph.sinks().sinks().size());
-        e.average_discharged += discharge.average;
-        e.outlet_rate += discharge.rate;
-        e.outlet_opening = discharge.opening;
-        e.outlet_declared = e.outlet_declared || discharge.declared;
-        e.outlet_known = e.outlet_known && discharge.known;
-        bytes += sph.solver() ? static_cast<double>(sph.solver()->bytes()) : 0.0;
-    };
-    auto add_shell = [&](const fem::ShellModel& fem) {
-        const auto dofs = static_cast<double>(fem.analysis().free_dof_count());
+    if (sph != nullptr) {
+        const double per_step = add_sph_counts(*sph, discharge, end, calibration, e);
+        e.sph_steps = plan.sph_steps;
+        e.particle_steps = (static_cast<double>(sph->point_count() - e.wall_particles) +
+                            e.average_created - e.average_discharged) *
+                           e.sph_steps;
+        e.sph_seconds = per_step * e.sph_steps / speedup_of(e.threads, calibration);
+        bytes += sph->solver() ? static_cast<double>(sph->solver()->bytes()) : 0.0;
+    }
+    auto add_shell = [&](const fem::ShellModel& fem, bool in_coupling, bool loaded) {
+        const ShellCost cost =
+            estimate_shell_cost(fem, plan.segments, in_coupling, loaded, calibration);
         e.shell_nodes += fem.point_count();
         e.shell_dofs += fem.analysis().free_dof_count();
-        seconds += dofs * static_cast<double>(e.steps) * calibration.shell_seconds_per_dof_step;
-        bytes += dofs * calibration.shell_bytes_per_dof;
+        e.shell_steps += cost.steps;
+        e.shell_solved_steps += cost.solved_steps;
+        e.shell_factorisations += cost.factorisations;
+        e.shell_back_substitutions += cost.back_substitutions;
+        e.shell_seconds += cost.seconds;
+        bytes +=
+            static_cast<double>(fem.analysis().free_dof_count()) * calibration.shell_bytes_per_dof;
     };
     for (const auto& stepper : scene.steppers) {
-        if (const auto* coupled = dynamic_cast<const coupling::CoupledModel*>(stepper.get())) {
-            add_sph(coupled->sph(), coupled->sph().stable_time_step());
-            add_shell(coupled->fem());
-            add_window_limit(*coupled, e);
-        } else if (const auto* sph = dynamic_cast<const sph::SphModel*>(stepper.get())) {
-            add_sph(*sph, e.time_step);
+        if (const auto* model = dynamic_cast<const coupling::CoupledModel*>(stepper.get())) {
+            add_shell(model->fem(), true, model->loads_shell());
+            add_window_limit(*model, e);
         } else if (const auto* fem = dynamic_cast<const fem::ShellModel*>(stepper.get())) {
-            add_shell(*fem);
+            add_shell(*fem, false, false);
         }
     }
-    e.wall_time_s = seconds;
+    add_output(plan, calibration, e);
+    e.wall_time_s = e.sph_seconds + e.shell_seconds + e.output_seconds;
     e.memory_bytes = bytes;
     return e;
 }
@@ -342,12 +256,9 @@ template <class... Values> void add_line(std::ostream& out, const char* format, 
 
 } // namespace
 
-std::string describe_cost(const CostEstimate& e, const Calibration& calibration) {
-    std::ostringstream out;
-    add_line(out,
-             "cost: %lld SPH particles (%lld of them walls), %lld shell nodes (%lld free DOFs)\n",
-             static_cast<long long>(e.sph_particles), static_cast<long long>(e.wall_particles),
-             static_cast<long long>(e.shell_nodes), static_cast<long long>(e.shell_dofs));
+namespace {
+
+void describe_sources_and_sinks(std::ostream& out, const CostEstimate& e) {
     if (e.average_created > 0.0) {
         add_line(out,
                  "      sources: %.0f particles more on average over the run, each with a full "
@@ -356,10 +267,10 @@ std::string describe_cost(const CostEstimate& e, const Calibration& calibration)
     }
     if (e.sinks > 0 && e.outlet_declared && e.outlet_known) {
         add_line(out,
-                 "      sinks: %d; their outlets' Beverloo rate %.4g %s from %.3g s takes %.0f "
+                 "      sinks: %d; their outlets' Beverloo rate %.4g %s from %.3g s%s takes %.0f "
                  "particles on average over the run\n",
                  e.sinks, e.outlet_rate, e.plane_strain ? "kg/m/s" : "kg/s", e.outlet_opening,
-                 e.average_discharged);
+                 e.outlet_earliest ? " (its phase's earliest start)" : "", e.average_discharged);
     } else if (e.sinks > 0) {
         // When the sinks take the material is the flow's outcome (the quarter wagon's load
         // leaves between 2.5 and 7.5 s of 11: its runs took 0.16-0.36 of the estimate).
@@ -367,39 +278,70 @@ std::string describe_cost(const CostEstimate& e, const Calibration& calibration)
                  "      sinks: %d; the particles they take are counted to the end time (%s), so a "
                  "discharge takes less than estimated\n",
                  e.sinks,
-                 e.outlet_declared ? "the outlet opens on settling or at a phase, not known before "
-                                     "the run"
+                 e.outlet_declared ? "the outlet opens on settling, not known before the run"
                                    : "no outlet_width declared");
     }
+    if (e.flow_speed > 0.0) {
+        add_line(out,
+                 "      flow: from %.3g to %.3g s the fastest grain leaves the outlet and falls to "
+                 "the sink at about %.3g m/s: SPH step %.3g s then\n",
+                 e.flow_start, e.flow_end, e.flow_speed, e.flow_step);
+    }
+}
+
+void describe_coupling(std::ostream& out, const CostEstimate& e) {
+    // A static shell with a rigid coupled part or the added mass has no shortest window.
+    char limit[128];
+    if (e.coupling_static && !(e.coupling_window_limit > 0.0)) {
+        std::snprintf(limit, sizeof limit,
+                      "has no shortest stable window (estimate, coupling_window_limit = 0)");
+    } else {
+        std::snprintf(
+            limit, sizeof limit, "is stable %s about %.3g s (estimate, coupling_window_limit)",
+            e.coupling_static ? "from windows of" : "up to windows of", e.coupling_window_limit);
+    }
+    add_line(out, "      coupling: window %.3g s; the staggered exchange %s\n", e.coupling_window,
+             limit);
+    if (e.coupling_added_mass_lag > 0.0) {
+        add_line(out,
+                 "      added mass: the shell follows a change of the load within about %.3g "
+                 "s (coupling_added_mass_lag)\n",
+                 e.coupling_added_mass_lag);
+    }
+}
+
+} // namespace
+
+std::string describe_cost(const CostEstimate& e) {
+    std::ostringstream out;
+    add_line(out,
+             "cost: %lld SPH particles (%lld of them walls), %lld shell nodes (%lld free DOFs)\n",
+             static_cast<long long>(e.sph_particles), static_cast<long long>(e.wall_particles),
+             static_cast<long long>(e.shell_nodes), static_cast<long long>(e.shell_dofs));
+    describe_sources_and_sinks(out, e);
     add_line(out,
              "      step %.3g s at t = 0: %lld steps to the end time (%.3g SPH steps, %.3g "
              "particle-steps, %lld + %lld contact neighbour entries)\n",
              e.time_step, e.steps, e.sph_steps, e.particle_steps, static_cast<long long>(e.entries),
              static_cast<long long>(e.contact_entries));
-    add_line(out, "      estimated wall time %s on %d threads, memory %.0f MiB\n",
-             duration(e.wall_time_s).c_str(), e.threads, e.memory_bytes / (1024.0 * 1024.0));
-    if (e.coupling_window > 0.0) {
-        // A static shell with a rigid coupled part or the added mass has no shortest window.
-        char limit[128];
-        if (e.coupling_static && !(e.coupling_window_limit > 0.0)) {
-            std::snprintf(limit, sizeof limit,
-                          "has no shortest stable window (estimate, coupling_window_limit = 0)");
-        } else {
-            std::snprintf(limit, sizeof limit,
-                          "is stable %s about %.3g s (estimate, coupling_window_limit)",
-                          e.coupling_static ? "from windows of" : "up to windows of",
-                          e.coupling_window_limit);
-        }
-        add_line(out, "      coupling: window %.3g s; the staggered exchange %s\n",
-                 e.coupling_window, limit);
-        if (e.coupling_added_mass_lag > 0.0) {
-            add_line(out,
-                     "      added mass: the shell follows a change of the load within about %.3g "
-                     "s (coupling_added_mass_lag)\n",
-                     e.coupling_added_mass_lag);
-        }
+    if (e.shell_steps > 0.0) {
+        add_line(out,
+                 "      shell: %.0f steps, %.0f with loads that change: %.0f factorisations of "
+                 "its tangent, %.0f back-substitutions (fem_factorisations, "
+                 "fem_back_substitutions)\n",
+                 e.shell_steps, e.shell_solved_steps, e.shell_factorisations,
+                 e.shell_back_substitutions);
     }
-    out << "      throughput: " << calibration.source << '\n';
+    add_line(out,
+             "      estimated wall time %s on %d threads (SPH %s, shell %s, %.0f frames %s), "
+             "memory %.0f MiB\n",
+             duration(e.wall_time_s).c_str(), e.threads, duration(e.sph_seconds).c_str(),
+             duration(e.shell_seconds).c_str(), e.frames, duration(e.output_seconds).c_str(),
+             e.memory_bytes / (1024.0 * 1024.0));
+    if (e.coupling_window > 0.0) {
+        describe_coupling(out, e);
+    }
+    out << "      throughput: " << e.calibration << '\n';
     return out.str();
 }
 

@@ -1,6 +1,6 @@
 #include "app/memory_guard.hpp"
 
-#include "app/cost_estimate.hpp"
+#include "app/calibration.hpp"
 #include "sph/particle_estimate.hpp"
 
 #include <algorithm>

@@ -20,10 +20,19 @@
 #include <limits>
 #include <omp.h>
 #include <sstream>
+#include <sys/resource.h>
 
 namespace grainload::app {
 
 namespace {
+
+/// This process's CPU time, all threads [s].
+double process_cpu_seconds() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+           1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
 
 io::Frame collect_frame(const Scene& scene, double t) {
     io::Frame frame;
@@ -80,6 +89,8 @@ io::RunSummary make_summary(const Scene& scene, const CommandLine& line, const R
     summary.points = scene.point_count();
     summary.material_points = scene.material_point_count();
     summary.material_point_steps = clock.material_point_steps;
+    summary.shell_nodes = scene.shell_node_count();
+    summary.shell_node_steps = clock.shell_node_steps;
     for (const auto& stepper : scene.steppers) {
         stepper->append_results(clock.t, summary.results);
         stepper->describe_model(summary.model);
@@ -94,6 +105,11 @@ void attach(io::RunSummary& summary, const std::optional<CostEstimate>& estimate
     if (estimate) {
         summary.estimated_steps = static_cast<double>(estimate->steps);
         summary.estimated_wall_time = estimate->wall_time_s;
+        if (estimate->shell_steps > 0.0) {
+            summary.estimated_factorisations = estimate->shell_factorisations;
+            summary.estimated_back_substitutions = estimate->shell_back_substitutions;
+        }
+        summary.estimate_calibration = estimate->calibration;
     }
 }
 
@@ -164,7 +180,7 @@ int check_case(const CommandLine& line) {
     const int threads =
         line.auto_threads ? auto_threads() : line.threads.value_or(omp_get_max_threads());
     const CostEstimate cost = estimate_cost(*scene, threads, calibration);
-    std::cout << describe_cost(cost, calibration);
+    std::cout << describe_cost(cost);
     // An hour is where a cheaper setting starts to matter (issue 18): say what the trade table
     // measured, or how to make one.
     constexpr double kLongRun = 3600.0;
@@ -204,6 +220,7 @@ int run_case(const CommandLine& line) {
         stepper->set_output(streams);
     }
     ProgressReporter progress(streams.open("log.txt"), scene->settings.end_time);
+    const double cpu_start = process_cpu_seconds();
     progress.message("grainload " + std::string(kVersion) + " (" + kGitHash + "): case " +
                      scene->settings.name + ", " + std::to_string(scene->point_count()) +
                      " points, " + std::to_string(omp_get_max_threads()) + " threads" +
@@ -258,6 +275,7 @@ int run_case(const CommandLine& line) {
         // A coupled window holds many SPH steps: count those, not the window.
         const long long inner = scene->inner_steps() - inner_before;
         clock.material_point_steps += points * static_cast<double>(inner > 0 ? inner : 1);
+        clock.shell_node_steps += static_cast<double>(scene->shell_node_count());
         clock.t += dt;
         ++clock.step;
         for (const auto& stepper : scene->steppers) {
@@ -277,6 +295,7 @@ int run_case(const CommandLine& line) {
     }
     progress.update(clock.t, clock.step, dt, clock.material_point_steps, true);
     auto summary = make_summary(*scene, line, clock, progress.elapsed_seconds());
+    summary.cpu_time = process_cpu_seconds() - cpu_start;
     attach(summary, estimate);
     io::write_run_summary(summary, out + "/summary.json");
     for (const std::string& hint : summary.hints) {

@@ -35,8 +35,11 @@ struct Scene {
                                                 const std::string& name,
                                                 std::optional<double> memory);
     Index point_count() const;
-    /// point_count() less the wall particles: what particle-steps per second count.
+    /// The SPH body particles (point_count() less the wall particles and the shell nodes):
+    /// what particle-steps per second count.
     Index material_point_count() const;
+    /// The shells' nodes, coupled or alone: what shell node-steps per second count.
+    Index shell_node_count() const;
     /// The steppers' inner steps so far (io::Stepper::inner_steps).
     long long inner_steps() const;
 };

@@ -88,6 +88,8 @@ class CoupledModel final : public io::Stepper {
     const sph::SphModel& sph() const { return *sph_; }
     const fem::ShellModel& fem() const { return *fem_; }
     const CouplingMonitor& monitor() const { return monitor_; }
+    /// True when some coupled part sends the sand's load to the shell (not every part rigid).
+    bool loads_shell() const { return !parts_.empty(); }
     /// The estimated stable windows of the staggered exchange, reported in summary.json.
     void set_window_limits(const WindowLimits& limits);
     /// How long the static shell with the added mass takes to follow a load change

@@ -135,6 +135,7 @@ bool NewtonSolver::iterate(NewtonOperator& op, const NewtonSettings& settings,
         if (!holds_factorization(op)) {
             kept_ = false;
             op.factorize(k, solver_);
+            ++report.factorisations;
             // UMFPACK's solve reads the factorised matrix again (iterative refinement): it
             // lives on in factorized_, at the same addresses (swap moves no entries).
             factorized_.swap(k);
@@ -143,6 +144,7 @@ bool NewtonSolver::iterate(NewtonOperator& op, const NewtonSettings& settings,
         }
         report.solver = SparseSolver::name(solver_.method());
         step = solver_.solve(residual);
+        ++report.back_substitutions;
         if (i == 0) {
             energy0 = std::abs(step.dot(residual0));
         }

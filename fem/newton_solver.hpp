@@ -34,6 +34,8 @@ struct StepReport {
     int increments = 0;
     int cutbacks = 0;
     std::string solver;               ///< which factorisation ran last
+    int factorisations = 0;           ///< of the tangent, in this solve (0: a kept one solved)
+    int back_substitutions = 0;       ///< solves with a factorisation, one per iteration
     std::vector<NewtonIteration> log; ///< iterations of every accepted increment, in order
     std::vector<int> iterations;      ///< iterations per accepted increment
     /// Where the last increment that did not converge was furthest out of balance: the global

@@ -114,6 +114,14 @@ void ShellAnalysis::number_equations() {
     numbered_ = true;
 }
 
+Index ShellAnalysis::free_dof_count() const {
+    if (numbered_) {
+        return free_count_;
+    }
+    return static_cast<Index>(std::count_if(prescribed_.begin(), prescribed_.end(),
+                                            [](double v) { return std::isnan(v); }));
+}
+
 const std::vector<Index>& ShellAnalysis::equation_numbers() {
     if (!numbered_) {
         number_equations();

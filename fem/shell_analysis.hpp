@@ -58,6 +58,11 @@ class ShellAnalysis {
     }
     /// True when some history changes between the two load factors.
     bool loads_change(double from, double to) const;
+    int history_count() const { return static_cast<int>(histories_.size()); }
+    /// True when history `index` scales something: a load, a prescribed value, a rigid
+    /// rotation or a follower pressure that is not zero (a history can change while scaling
+    /// nothing, and a step then finds the shell in balance).
+    bool history_acts(int index) const;
 
     /// Constrain DOF `dof` (0..5) of `node` to f(lambda) * value.
     void prescribe(Index node, int dof, double value = 0.0);
@@ -120,7 +125,9 @@ class ShellAnalysis {
     std::function<Eigen::VectorXd(const Eigen::VectorXd&)> tangent_inverse();
     /// Internal minus applied force at every DOF (the reactions at constrained DOFs).
     Eigen::VectorXd reactions();
-    Index free_dof_count() const { return free_count_; }
+    /// The DOFs neither fixed nor prescribed (counted before the equations are numbered too:
+    /// `grainload check` sizes a shell alone before any solve).
+    Index free_dof_count() const;
     /// The elements with their stresses at the committed state (evaluated here first when a
     /// stored stiffness left them behind).
     const std::vector<Mitc4Shell>& elements() const;

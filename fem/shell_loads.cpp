@@ -33,6 +33,24 @@ bool ShellAnalysis::loads_change(double from, double to) const {
     return false;
 }
 
+bool ShellAnalysis::history_acts(int index) const {
+    if (!histories_.at(at(index)).load.isZero(0.0)) {
+        return true;
+    }
+    for (std::size_t d = 0; d < prescribed_.size(); ++d) {
+        if (prescribed_history_[d] == index && !std::isnan(prescribed_[d]) &&
+            prescribed_[d] != 0.0) {
+            return true;
+        }
+    }
+    return std::any_of(
+               rigid_rotations_.begin(), rigid_rotations_.end(),
+               [&](const RigidRotation& r) { return r.history == index && r.angle != 0.0; }) ||
+           std::any_of(
+               follower_pressures_.begin(), follower_pressures_.end(),
+               [&](const FollowerPressure& f) { return f.history == index && f.pressure != 0.0; });
+}
+
 Eigen::VectorXd ShellAnalysis::applied_forces(double lambda) const {
     Eigen::VectorXd f = additional_forces_;
     for (const LoadHistory& h : histories_) {

@@ -181,6 +181,8 @@ void ShellModel::solve_step(double t, double dt) {
         failure_ = why.str();
     }
     totals_.add(entry.load_factor, entry.report);
+    factorisations_ += entry.report.factorisations;
+    back_substitutions_ += entry.report.back_substitutions;
     log_.push_back(std::move(entry));
     reactions_ = analysis_->reactions();
 }
@@ -356,6 +358,12 @@ void ShellModel::append_results(double, std::vector<io::ResultFigure>& results) 
             results.push_back({"fem_steps_solved_by_" + solver_identifier(solver),
                                static_cast<double>(steps), "", std::nullopt, solver});
         }
+        // What the steps cost: a factorisation of the tangent (a linear shell makes one and
+        // keeps it) and a back-substitution per Newton iteration, in this process.
+        results.push_back({"fem_factorisations", factorisations_, "", std::nullopt,
+                           "factorisations of the tangent this process made"});
+        results.push_back({"fem_back_substitutions", back_substitutions_, "", std::nullopt,
+                           "solves with a factorisation this process made"});
     }
     // Every support's force on the structure, each node once: the parts' reactions on node sets
     // count a seam node shared by two parts in both.

@@ -61,6 +61,8 @@ class ShellModel final : public io::Stepper {
     /// case's loads stay constant, since the forces change.
     void advance_with_forces(double t, double dt, const Eigen::VectorXd& forces);
     bool dynamic() const { return dynamic_; }
+    /// [fem].increments_per_step: load increments of a static step.
+    int increments_per_step() const { return increments_per_step_; }
     /// [fem].load_time: when the loads without a time function reach their full value [s].
     double load_time() const { return load_time_; }
     /// Whether the case puts loads on the shell that follow the ramp to load_time (gravity,
@@ -98,8 +100,14 @@ class ShellModel final : public io::Stepper {
     double time_step_ = 0.0; ///< dynamic analysis: largest implicit step [s]
     std::unique_ptr<NewmarkIntegrator> newmark_;
     int increments_per_step_ = 1;
-    std::vector<ShellStepLog> log_;        ///< this process's steps (the convergence CSV's rows)
-    ShellStepTotals totals_;               ///< the whole run's, through restarts (summary.json)
+    std::vector<ShellStepLog> log_; ///< this process's steps (the convergence CSV's rows)
+    ShellStepTotals totals_;        ///< the whole run's, through restarts (summary.json)
+    /// Factorisations of the tangent and back-substitutions this process made (summary.json:
+    /// what the steps cost). Not in the checkpoint: a restarted process factorises its tangent
+    /// anew, and a coupling window repeated from its start (an iterated window's next pass)
+    /// restores the state, not the work done.
+    double factorisations_ = 0.0;
+    double back_substitutions_ = 0.0;
     mutable std::size_t logged_steps_ = 0; ///< steps of log_ already in the convergence CSV
     io::OutputStreams* output_ = nullptr;  ///< the run's, for the convergence CSV
     Eigen::VectorXd reactions_;

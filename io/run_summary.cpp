@@ -79,20 +79,42 @@ void write_run_summary(const RunSummary& summary, const std::string& path) {
             out << "  \"diagnosis\": " << json_quoted(summary.diagnosis) << ",\n";
         }
         out << "  \"threads\": " << summary.threads << ",\n"
-            << "  \"wall_time_s\": " << json_number(summary.wall_time) << ",\n"
-            << "  \"simulated_time_s\": " << json_number(summary.simulated_time) << ",\n"
+            << "  \"wall_time_s\": " << json_number(summary.wall_time) << ",\n";
+        if (summary.cpu_time) {
+            out << "  \"cpu_time_s\": " << json_number(*summary.cpu_time) << ",\n";
+        }
+        out << "  \"simulated_time_s\": " << json_number(summary.simulated_time) << ",\n"
             << "  \"steps\": " << summary.steps << ",\n"
             << "  \"particles\": " << summary.points << ",\n"
             << "  \"material_points\": " << summary.material_points << ",\n"
             << "  \"particle_steps_per_second\": " << json_number(summary.point_steps_per_second())
             << ",\n";
+        if (summary.shell_nodes > 0) {
+            out << "  \"shell_nodes\": " << summary.shell_nodes << ",\n"
+                << "  \"shell_node_steps_per_second\": "
+                << json_number(
+                       summary.wall_time > 0.0 ? summary.shell_node_steps / summary.wall_time : 0.0)
+                << ",\n";
+        }
         if (summary.estimated_steps && summary.estimated_wall_time) {
             const double steps = *summary.estimated_steps;
             const double wall = *summary.estimated_wall_time;
             out << "  \"estimate\": {\"steps\": " << json_number(steps)
                 << ", \"wall_time_s\": " << json_number(wall)
                 << ", \"steps_ratio\": " << json_number(static_cast<double>(summary.steps) / steps)
-                << ", \"wall_time_ratio\": " << json_number(summary.wall_time / wall) << "},\n";
+                << ", \"wall_time_ratio\": " << json_number(summary.wall_time / wall);
+            if (summary.cpu_time) {
+                out << ", \"cpu_time_ratio\": " << json_number(*summary.cpu_time / wall);
+            }
+            if (summary.estimated_factorisations) {
+                out << ", \"fem_factorisations\": "
+                    << json_number(*summary.estimated_factorisations);
+            }
+            if (summary.estimated_back_substitutions) {
+                out << ", \"fem_back_substitutions\": "
+                    << json_number(*summary.estimated_back_substitutions);
+            }
+            out << ", \"calibration\": " << json_quoted(summary.estimate_calibration) << "},\n";
         }
         out << "  \"model\": {";
         for (std::size_t i = 0; i < summary.model.size(); ++i) {

@@ -17,12 +17,17 @@ struct RunSummary {
     std::vector<std::string> overrides;
     int threads = 1;
     double wall_time = 0.0; ///< s
+    /// CPU time of the process over the same span, all threads [s]: what a loaded machine does
+    /// not stretch, for the estimate's ratios (absent where not measured).
+    std::optional<double> cpu_time;
     double simulated_time = 0.0;
     Index steps = 0;
     Index points = 0; ///< particles + shell nodes
-    /// Points of the material: body particles and shell nodes, without the wall particles
-    /// (boundary, not material). particle_steps_per_second counts these.
+    /// Points of the material: the SPH body particles, without the wall particles (boundary,
+    /// not material) and the shell nodes (which have their own rate below).
+    /// particle_steps_per_second counts these.
     Index material_points = 0;
+    Index shell_nodes = 0;
     std::string status = "completed"; ///< "completed" or "unstable"
     std::string diagnosis;
     std::vector<ResultFigure> results;
@@ -33,6 +38,11 @@ struct RunSummary {
     /// the ratios actual / estimated when set.
     std::optional<double> estimated_steps;
     std::optional<double> estimated_wall_time; ///< s
+    /// The shell's factorisations and back-substitutions the estimate foresaw (with a shell)
+    /// and the calibration it used (app/calibration.hpp, describe_calibration).
+    std::optional<double> estimated_factorisations;
+    std::optional<double> estimated_back_substitutions;
+    std::string estimate_calibration;
 
     /// Material points summed over the steps this process ran (empty: not counted); when
     /// counted, the rate is this over wall_time, which a discharge (points leaving) needs, and
@@ -40,6 +50,9 @@ struct RunSummary {
     std::optional<double> material_point_steps;
     /// material_point_steps / wall_time, or material_points * steps / wall_time.
     double point_steps_per_second() const;
+    /// Shell nodes summed over the steps this process ran (a coupling window is one step of
+    /// the shell), for shell_node_steps_per_second.
+    double shell_node_steps = 0.0;
 };
 
 /// Write `summary` as JSON to `path` atomically. Each result becomes

@@ -12,7 +12,8 @@ if [[ ! -f "$build/CMakeCache.txt" ]]; then
 fi
 cmake --build "$build" -j "${GRAINLOAD_JOBS:-$(nproc)}" "$@"
 # The throughput `grainload check` estimates run times with (bench/sph_throughput --calibrate,
-# about half a minute; docs/user-guide/trade.md): measured again whenever sph_throughput was
+# about a minute; docs/user-guide/trade.md): measured again whenever sph_throughput was
 # relinked (bench/CMakeLists.txt), so that a faster or slower SPH step does not leave the
-# estimates at the old code's speed; a no-op otherwise.
+# estimates at the old code's speed; a no-op otherwise. It waits up to a minute for the machine
+# to be quiet (the build just finished, others may still run) and records how busy it was.
 cmake --build "$build" -j "${GRAINLOAD_JOBS:-$(nproc)}" --target calibration

@@ -79,6 +79,8 @@ class SphModel final : public io::Stepper {
 
     std::string_view name() const override { return "sph"; }
     double stable_time_step() const override;
+    /// True when the case fixes the step ([sph] time_step); false: the CFL condition sets it.
+    bool fixed_time_step() const { return time_step_ > 0.0; }
     void advance(double t, double dt) override;
     Index point_count() const override { return particles().size(); }
     std::optional<std::string> diagnose() const override;
@@ -92,6 +94,7 @@ class SphModel final : public io::Stepper {
     std::vector<std::string> take_events() override;
     /// The [[phase]] table's phases: when each began and ended, and why (sph_model_phases.cpp).
     void append_phases(std::vector<io::PhaseRecord>& records) const override;
+    const PhaseSequence& phases() const { return phases_; }
     void write_checkpoint(std::ostream& out) const override;
     void read_checkpoint(std::istream& in) override;
 

@@ -54,7 +54,7 @@ void read_case(std::string_view text) {
     }
     const auto scene = app::Scene::from_document(std::move(document), "fuzz", kSceneBudgetBytes);
     const app::Calibration calibration;
-    (void)app::describe_cost(app::estimate_cost(*scene, 1, calibration), calibration);
+    (void)app::describe_cost(app::estimate_cost(*scene, 1, calibration));
 }
 
 } // namespace

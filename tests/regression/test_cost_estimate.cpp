@@ -13,15 +13,20 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <gtest/gtest.h>
 
 namespace {
 
 using namespace grainload::testing;
 
-grainload::io::JsonValue run_and_read(const std::string& arguments, const std::string& name) {
+grainload::io::JsonValue run_and_read(const std::string& arguments, const std::string& name,
+                                      std::string* out_folder = nullptr) {
     const std::string out = test_folder(name);
     std::filesystem::remove_all(out);
+    if (out_folder != nullptr) {
+        *out_folder = out;
+    }
     const auto result =
         run_cli("run " + arguments + " --threads 1 --out '" + out + "'", out + ".log");
     EXPECT_EQ(result.exit_code, 0) << result.output;
@@ -120,6 +125,108 @@ TEST(CostEstimate, ADeclaredOutletTakesItsParticlesAtBeverloosRate) {
                   "particles",
                   expected);
     EXPECT_NE(result.output.find(text), std::string::npos) << result.output;
+}
+
+double result(const grainload::io::JsonValue& summary, const char* name) {
+    const auto* results = summary.find("results");
+    const auto* figure = results != nullptr ? results->find(name) : nullptr;
+    EXPECT_NE(figure, nullptr) << name;
+    return figure != nullptr ? figure->number_at("value").value_or(-1.0) : -1.0;
+}
+
+// The slice of the hopper wagon (hopper_wagon_small.toml) couples its body rigidly: the sand's
+// load does not reach the shell, which carries its own weight only, reached within the first
+// 20 ms window (load_time). A linear shell's stiffness is stored and its factorisation kept
+// (fem/newton_solver.hpp), so the whole run factorises once, in the first window; every later
+// window finds the shell in balance. The estimate must count the run's factorisations
+// (summary.json: fem_factorisations) exactly: a count, not a time. It charged a factorisation
+// per window before (280 s of the slice's 302 s). It counts a back-substitution per increment
+// whose loads change; the run may take a second there: the drilling spring is in the tangent
+// but not in the internal force K u, so one solve leaves its share of the change (1e-4 of it in
+// this window, fem_convergence.csv) above the force tolerance 1e-6, and a second leaves 1e-8.
+// 0.1 s: five windows, the fill under way.
+TEST(CostEstimate, ARigidlyCoupledLinearShellIsFactorisedOnceAsTheRunDoes) {
+    const std::string dir = test_folder("cost_wagon_slice");
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    for (const char* file : {"hopper_wagon_small.toml", "hopper_wagon.geo"}) {
+        std::filesystem::copy_file(source_path(std::string("cases/hopper_wagon/") + file),
+                                   dir + "/" + file);
+    }
+    const auto summary =
+        run_and_read("'" + dir + "/hopper_wagon_small.toml' --set 'case.end_time=0.1 s'",
+                     "cost_wagon_slice_out");
+    const auto* estimate = summary.find("estimate");
+    ASSERT_NE(estimate, nullptr);
+    EXPECT_EQ(summary.number_at("steps"), 5.0);
+    EXPECT_EQ(estimate->number_at("steps"), 5.0);
+    EXPECT_EQ(result(summary, "fem_factorisations"), 1.0);
+    EXPECT_EQ(estimate->number_at("fem_factorisations"), 1.0);
+    const double back_substitutions = result(summary, "fem_back_substitutions");
+    EXPECT_EQ(estimate->number_at("fem_back_substitutions"), 1.0);
+    EXPECT_GE(back_substitutions, 1.0);
+    EXPECT_LE(back_substitutions, 2.0);
+    // The estimate names the calibration it used.
+    EXPECT_NE(estimate->string_at("calibration").value_or(""), "");
+}
+
+// The sand layer at rest on the plate (sand_on_plate_small.toml, 20 x 20 x 5 = 2000 particles on
+// an 8 x 8 plate of 81 nodes) loads its static linear plate every window: one factorisation for
+// the run, kept, and a back-substitution per window but the first, whose load (the sand's,
+// lagged one window) is still zero and finds the plate, without loads of its own, in balance.
+// The estimate counts a back-substitution per window: one more, exactly.
+// particle_steps_per_second counts the sand's particles at every SPH sub-step, and the plate's
+// nodes not at all (in a coupled run they were counted at every sub-step too: 94 % of the wagon
+// slice's rate were its body's nodes): times the wall time it is 2000 x the SPH steps, to the
+// printed digits (12). The plate has its own rate: 81 nodes x the windows over the wall time.
+TEST(CostEstimate, ALoadedCoupledShellAndTheParticleRateCountWhatTheRunDid) {
+    const auto summary =
+        run_and_read("'" + source_path("cases/sand_on_plate/sand_on_plate_small.toml") +
+                         "' --set 'case.end_time=0.1 s'",
+                     "cost_sand_on_plate");
+    const auto* estimate = summary.find("estimate");
+    ASSERT_NE(estimate, nullptr);
+    const double windows = *summary.number_at("steps");
+    EXPECT_EQ(windows, 10.0);
+    EXPECT_EQ(result(summary, "fem_factorisations"), 1.0);
+    EXPECT_EQ(estimate->number_at("fem_factorisations"), 1.0);
+    EXPECT_EQ(result(summary, "fem_back_substitutions"), windows - 1.0);
+    EXPECT_EQ(estimate->number_at("fem_back_substitutions"), windows);
+
+    const double wall = *summary.number_at("wall_time_s");
+    EXPECT_EQ(summary.number_at("material_points"), 2000.0);
+    const double sph_steps = result(summary, "coupling_sph_steps");
+    const double particle_steps = *summary.number_at("particle_steps_per_second") * wall;
+    EXPECT_NEAR(particle_steps, 2000.0 * sph_steps, 1e-9 * 2000.0 * sph_steps);
+    EXPECT_EQ(summary.number_at("shell_nodes"), 81.0);
+    const double node_steps = *summary.number_at("shell_node_steps_per_second") * wall;
+    EXPECT_NEAR(node_steps, 81.0 * windows, 1e-9 * 81.0 * windows);
+}
+
+// The sand drop (sand_drop_small.toml) couples a dynamic linear plate in 0.2 ms windows,
+// each iterated to convergence (max_iterations 20), over 2 ms output intervals. A dynamic shell's
+// effective tangent holds its step, so it is factorised again whenever the step length changes:
+// ten windows of 0.2 ms do not add up to 2 ms in floating point, and the driver's last window
+// before each output instant is a round-off shorter, then the next full again. The estimate
+// follows the driver's arithmetic and must count the run's factorisations exactly. The run counts
+// every pass of an iterated window (each restarts the window's state, not its work): its
+// back-substitutions are its Newton iterations, one row each in fem_convergence.csv.
+TEST(CostEstimate, ADynamicShellIsFactorisedAgainAtEveryChangeOfItsStep) {
+    std::string out;
+    const auto summary = run_and_read(
+        "'" + source_path("cases/sand_drop/sand_drop_small.toml") + "'", "cost_sand_drop", &out);
+    const auto* estimate = summary.find("estimate");
+    ASSERT_NE(estimate, nullptr);
+    const double factorisations = result(summary, "fem_factorisations");
+    EXPECT_GT(factorisations, 1.0);
+    EXPECT_EQ(estimate->number_at("fem_factorisations"), factorisations);
+    std::ifstream csv(out + "/fem_convergence.csv");
+    std::string line;
+    double rows = -1.0; // the header
+    while (std::getline(csv, line)) {
+        rows += 1.0;
+    }
+    EXPECT_EQ(result(summary, "fem_back_substitutions"), rows);
 }
 
 } // namespace
