@@ -133,7 +133,14 @@ struct Block {
     enum class Floor { none, far, touching };
     Floor floor = Floor::none;
     double smoothing_ratio = 1.3; ///< h / dp
+    /// Rows of particles in the vertical direction; 0: as many as across (a square or cube).
+    /// A layer of kThinRows makes the floor's particles and contact entries a large share of
+    /// the step, so that their cost stands out of the timing's scatter.
+    int rows = 0;
 };
+
+/// Rows of a thin layer: every particle of it within 2h = 2.6 dp of a touching floor.
+constexpr int kThinRows = 3;
 
 /// The floor of Block::floor under a block of `side` particles of `spacing` per direction.
 std::vector<Vec3> floor_points(double side, double spacing, int dimension, bool touching) {
@@ -168,6 +175,9 @@ Measurement measure(Index target, int threads, const Mode& mode, const materials
     sph::ParticleSet particles;
     sph::LatticeBody block;
     block.upper = Vec3::Constant(side * spacing);
+    if (shape.rows > 0) {
+        block.upper(shape.dimension == 3 ? 2 : 1) = shape.rows * spacing;
+    }
     block.spacing = spacing;
     block.density = law.density();
     block.state_size = law.state_size();
@@ -310,10 +320,12 @@ materials::GeneralizedCap calibration_sand() {
 }
 
 /// CPU seconds of one thread (the wall time of an idle machine). A block at h = 1.3 dp and at
-/// 2.0 dp (more entries, as many particles) separates the cost of
-/// an entry from that of a particle; the block above a far floor gives the cost of idle wall
-/// particles, on a touching floor that of the contact entries it adds. A difference that load
-/// on the machine makes negative is clamped at 0.
+/// 2.0 dp (more entries, as many particles) separates the cost of an entry from that of a
+/// particle. The walls' costs come from a thin layer (kThinRows rows) over the same floor far
+/// from it and touching it: idle wall particles, then the contact entries they add. Under a
+/// cube these were a few per cent of the step, below the timings' scatter (a 2D floor of 2400
+/// particles measured faster than none, its 800 contact entries free); under the layer they
+/// are most of it. A difference that load on the machine makes negative is clamped at 0.
 bench::SphCosts costs(Index target, int dimension, const materials::Material& law) {
     using Floor = Block::Floor;
     const Mode verlet{"Verlet 0.1h", 0.1, sph::Formulation::updated_lagrangian};
@@ -321,20 +333,22 @@ bench::SphCosts costs(Index target, int dimension, const materials::Material& la
     // the least CPU time of three: other processes on the machine only add to it (shared
     // caches, memory bandwidth), and the differences below are small against a busy
     // machine's swings.
-    const auto best = [&](Floor floor, double ratio) {
+    const auto best = [&](Floor floor, double ratio, int rows) {
         Measurement least;
         for (int round = 0; round < 3; ++round) {
-            const Measurement m = measure(target, 1, verlet, law, {dimension, false, floor, ratio});
+            const Measurement m =
+                measure(target, 1, verlet, law, {dimension, false, floor, ratio, rows});
             if (round == 0 || m.cpu_seconds_per_step < least.cpu_seconds_per_step) {
                 least = m;
             }
         }
         return least;
     };
-    const Measurement narrow = best(Floor::none, 1.3);
-    const Measurement wide = best(Floor::none, 2.0);
-    const Measurement far = best(Floor::far, 1.3);
-    const Measurement touch = best(Floor::touching, 1.3);
+    const Measurement narrow = best(Floor::none, 1.3, 0);
+    const Measurement wide = best(Floor::none, 2.0, 0);
+    const Measurement layer = best(Floor::none, 1.3, kThinRows);
+    const Measurement far = best(Floor::far, 1.3, kThinRows);
+    const Measurement touch = best(Floor::touching, 1.3, kThinRows);
     const auto bodies =
         static_cast<double>(narrow.particle_steps_per_second * narrow.seconds_per_step);
     auto rate = [](double seconds, Index count) {
@@ -346,18 +360,20 @@ bench::SphCosts costs(Index target, int dimension, const materials::Material& la
     c.body = std::max(
         0.0,
         (narrow.cpu_seconds_per_step - c.entry * static_cast<double>(narrow.entries)) / bodies);
-    c.wall = rate(far.cpu_seconds_per_step - narrow.cpu_seconds_per_step, far.walls);
+    c.wall = rate(far.cpu_seconds_per_step - layer.cpu_seconds_per_step, far.walls);
     c.contact_entry =
         rate(touch.cpu_seconds_per_step - far.cpu_seconds_per_step, touch.entries - far.entries);
     std::printf("%dD: %.0f bodies, %lld / %lld entries (h = 1.3 / 2.0 dp): %.3e / %.3e s/step; "
-                "%lld floor particles far / touching (%lld more entries): %.3e / %.3e s/step -> "
+                "a %d-row layer over no floor / a far / a touching floor of %lld particles (%lld "
+                "more entries): %.3e / %.3e / %.3e s/step -> "
                 "%.3e s per entry, %.3e per contact entry, %.3e per body, %.3e per wall "
                 "particle\n",
                 dimension, bodies, static_cast<long long>(narrow.entries),
                 static_cast<long long>(wide.entries), narrow.cpu_seconds_per_step,
-                wide.cpu_seconds_per_step, static_cast<long long>(far.walls),
-                static_cast<long long>(touch.entries - far.entries), far.cpu_seconds_per_step,
-                touch.cpu_seconds_per_step, c.entry, c.contact_entry, c.body, c.wall);
+                wide.cpu_seconds_per_step, kThinRows, static_cast<long long>(far.walls),
+                static_cast<long long>(touch.entries - far.entries), layer.cpu_seconds_per_step,
+                far.cpu_seconds_per_step, touch.cpu_seconds_per_step, c.entry, c.contact_entry,
+                c.body, c.wall);
     return c;
 }
 
