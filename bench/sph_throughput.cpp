@@ -129,7 +129,9 @@ struct Block {
     bool gradient_correction = true; ///< the case-file default
     /// A floor of wall particles under the block, as the cases build them: spacing dp/2,
     /// ceil(2h / (dp/2)) = 6 layers, twice the block's width, with the contact potential on;
-    /// its top 2h below the block's first centres (touching) or far from it (idle walls).
+    /// its top 2h below the block's first centres (touching) or 4h below them (idle walls: out
+    /// of reach with the Verlet skin, yet near enough that the cell grid grows by a cell or
+    /// two; a floor ten supports away measured slower than a touching one, its cells empty).
     enum class Floor { none, far, touching };
     Floor floor = Floor::none;
     double smoothing_ratio = 1.3; ///< h / dp
@@ -147,7 +149,7 @@ std::vector<Vec3> floor_points(double side, double spacing, int dimension, bool 
     const double step = 0.5 * spacing;
     const int layers = 6;
     const double support = 2.0 * 1.3 * spacing;
-    const double top = 0.5 * spacing - (touching ? support : 10.0 * support);
+    const double top = 0.5 * spacing - (touching ? support : 2.0 * support);
     const auto across = static_cast<int>(std::llround(2.0 * side * spacing / step));
     const int second = dimension == 3 ? across : 1;
     const int up = dimension == 3 ? 2 : 1;
