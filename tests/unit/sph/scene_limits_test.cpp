@@ -4,6 +4,7 @@
 #include "io/case_table.hpp"
 #include "sph/rigid_wall.hpp"
 #include "sph/scene_limits.hpp"
+#include "support/case_refusal.hpp"
 
 #include <gtest/gtest.h>
 
@@ -27,15 +28,7 @@ TEST(SceneLimits, ImpactFasterThanTheContactCanStopIsWarned) {
     EXPECT_EQ(impact_warning(p, names, 0.0), ""); // no contact potential, nothing to pass
 }
 
-/// The CaseError's message of `action`, "" when it throws none.
-template <class Action> std::string refusal(Action&& action) {
-    try {
-        action();
-    } catch (const io::CaseError& e) {
-        return e.what();
-    }
-    return "";
-}
+using grainload::testing::refusal;
 
 // A 2D floor of three layers at 10 mm (y = -5, -15, -25 mm, x = 0 .. 100 mm) under a body of
 // 10 mm particles. The body's rows at y = 5 mm (flush with the floor's face: its particles 10 mm

@@ -3,6 +3,7 @@
 #include "io/case_table.hpp"
 #include "sph/rigid_wall.hpp"
 #include "sph/start_gap.hpp"
+#include "support/case_refusal.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -54,15 +55,7 @@ TEST(StartGap, ContactEnergyAndGapMatchTheHandComputedPair) {
     EXPECT_EQ(index.contact(point, 1e-4, 0, kernel, potential, 0.01).energy, 0.0);
 }
 
-/// The CaseError's message of `action`, "" when it throws none.
-template <class Action> std::string refusal(Action&& action) {
-    try {
-        action();
-    } catch (const io::CaseError& e) {
-        return e.what();
-    }
-    return "";
-}
+using grainload::testing::refusal;
 
 // A 2D floor of three layers at 10 mm (y = -5, -15, -25 mm, x = 0 .. 100 mm) under a block of
 // 11 x 4 particles of sand (1500 kg/m^3) at 10 mm, columns over the wall particles, K = 5 MPa,
