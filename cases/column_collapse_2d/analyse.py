@@ -256,7 +256,7 @@ def kinetic_history(out_dir, body):
 
 def rest_time(out_dir, body, fraction=1e-4):
     """First output time after the kinetic-energy peak at which the body's kinetic energy is
-    below `fraction` of that peak (issue 4's "time to rest"); None if never."""
+    below `fraction` of that peak (the "time to rest" of the collapse cases); None if never."""
     times, energies = kinetic_history(out_dir, body)
     peak = int(np.argmax(energies))
     for k in range(peak, len(energies)):

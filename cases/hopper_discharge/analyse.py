@@ -13,10 +13,10 @@ For each run reads OUT_DIR/discharge.csv (one sink) and OUT_DIR/summary.json and
   * the steady rate the run fitted (least squares over 20-80 % of the discharged mass) and the
     time to empty at that rate;
   * Beverloo's slot law per metre of slot length, W/L = C' rho_b sqrt(g) (B - k d)^(3/2),
-    C' = 1.03, rho_b = 300 kg/m^3, B = 0.4 m, d = 0.065 m (silo_hopper_references.md, section
-    2), for k = 0, 1, 1.5 and 3, and the run's rate against each.
+    C' = 1.03, rho_b = 300 kg/m^3, B = 0.4 m, d = 0.065 m (Myers & Sellers; Nedderman
+    1992), for k = 0, 1, 1.5 and 3, and the run's rate against each.
 With --svg, plots the discharged mass fraction against the time after opening for every run,
-with the paper's "empty at about 1.8 s" (Markauskas, seed 003, Fig. 13, spheres) and the
+with the paper's "empty at about 1.8 s" (Markauskas, Fig. 13, spheres) and the
 Beverloo lines (fraction = W t / M0 from the first run's initial mass, starting at the first
 arrival at the sink) for k = 1.5 and k = 0.
 """

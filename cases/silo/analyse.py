@@ -22,7 +22,7 @@ BANDS = [(f"left{k}", 0.2 * k, 0.2 * (k + 1)) for k in range(6)]
 
 def janssen_band_mean(gamma, d, k, z_top, z_bottom):
     """Mean of p_h = gamma D/(2 mu) (1 - exp(-z/z0)) over depths [z_top, z_bottom] (z >= 0),
-    z0 = D / (2 K mu): the plane-strain slot, A/U = D/2 (silo_hopper_references.md). gamma D
+    z0 = D / (2 K mu): the plane-strain slot, A/U = D/2 (Janssen 1895; EN 1991-4 Eq. 5.5). gamma D
     is the weight per metre of height and per metre of depth, M g / H, whatever the packing."""
     z0 = d / (2.0 * k * MU)
     a, b = max(z_top, 0.0), max(z_bottom, 0.0)

@@ -10,7 +10,7 @@ OUT/summary.json, and prints:
   * per 0.2 m bin: p_h at rest, the discharge's mean and maximum (of 0.1 s interval means),
     their ratios to the rest value, and EN 1991-4's discharge factor for slender silos, 1.15;
   * the steady discharge rate against Beverloo's slot law per metre, W = C' rho_b sqrt(g)
-    (B - k d)^(3/2), C' = 1.03, rho_b = 1500 kg/m^3 (silo_hopper_references.md, section 2),
+    (B - k d)^(3/2), C' = 1.03, rho_b = 1500 kg/m^3 (Myers & Sellers; Nedderman 1992),
     with B the effective outlet (--outlet, m) and k d = 0 (a continuum has no grain size).
 Writes OUT/silo_discharge.png (or --png): the pressure profiles and the discharged mass.
 """

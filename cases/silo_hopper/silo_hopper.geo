@@ -1,4 +1,4 @@
-// Quarter of a circular steel silo with a conical hopper (issue 16): vertical axis z through
+// Quarter of a circular steel silo with a conical hopper: vertical axis z through
 // the origin, the outlet's plane at z = 0; the planes x = 0 and y = 0 are symmetry planes.
 // Lengths in m. The surfaces' normals point into the silo (towards the axis), where the sand
 // is. Dimensions: cases/silo_hopper/README.md.
