@@ -6,15 +6,15 @@
 namespace grainload::app {
 
 /// GOMP_SPINCOUNT of the product default: a thread that reaches the end of a parallel loop
-/// first spins this many times and then sleeps. 1000 is about 0.1 ms on the AMD EPYC VMs this
-/// was first measured on (a PAUSE takes 92 ns there). libgomp's own default, 300 000 spins,
-/// made two threads 10-14x slower when other processes held a core: the thread with the work
+/// first spins this many times and then sleeps. 1000 is about 0.1 ms on the 2-core AMD EPYC
+/// machines this was first measured on (a PAUSE takes 92 ns there). libgomp's own default, 300 000
+/// spins, made two threads 10-14x slower when other processes held a core: the thread with the work
 /// waited for the core while its partner spun. Sleeping at once (OMP_WAIT_POLICY=passive)
 /// costs a futex wake-up at each of the dozen parallel loops of a step on a quiet machine
 /// (docs/performance.md).
 inline constexpr std::string_view kSharedSpinCount = "1000";
 /// GOMP_SPINCOUNT when `--threads auto` found at least two cores free as the program started:
-/// on a quiet Intel Xeon VM the 2D collapse's steps took 1.33-1.36 s at 1000 spins, 1.00-1.07 s
+/// on a quiet 2-core Intel Xeon the 2D collapse's steps took 1.33-1.36 s at 1000 spins, 1.00-1.07 s
 /// at 30 000, where the wake-ups after sleeping cost what the spinning saves
 /// (docs/performance.md, "Waiting threads").
 inline constexpr std::string_view kQuietSpinCount = "30000";

@@ -181,7 +181,7 @@ int check_case(const CommandLine& line) {
         line.auto_threads ? auto_threads() : line.threads.value_or(omp_get_max_threads());
     const CostEstimate cost = estimate_cost(*scene, threads, calibration);
     std::cout << describe_cost(cost);
-    // An hour is where a cheaper setting starts to matter (issue 18): say what the trade table
+    // An hour is where a cheaper setting starts to matter: say what the trade table
     // measured, or how to make one.
     constexpr double kLongRun = 3600.0;
     if (cost.wall_time_s > kLongRun) {

@@ -1,10 +1,11 @@
-// 2D granular column collapse in the configuration of the peer comparison (../shared/peers.md;
+// 2D granular column collapse in the configuration of the peer comparison (SPHinXsys
+// `test_2d_column_collapse`, the configuration most papers share;
 // cases/column_collapse_2d/column_collapse_2d.toml: a 0.2 x 0.1 m column of 5000 grains at
 // 2 mm against a back wall, 0.8 s). Runs the case as `grainload run` does (frames, checkpoints
 // and summary included) and prints the wall time, the steps, the particle-steps per second of
 // the grains and the deposit measured as cases/column_collapse_2d/analyse.py measures it,
 // beside the peer figures: SPHinXsys 258 s on two threads, grainload before the speed work
-// (c66a431) 253 s, and the experiment. The target of issue 20 is 5x the peer: 51.6 s.
+// (the build of 2026-12-01) 253 s, and the experiment. The target is 5x the peer: 51.6 s.
 //
 // usage: column_collapse_2d [--threads N] [--set key=value ...] [CASE.toml]
 //        column_collapse_2d --analyse OUT   (the deposit of an existing run's last frame)
@@ -39,10 +40,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// Peer figures of ../shared/peers.md (this machine type, two threads).
+/// Peer figures measured side by side on a 2-core Intel Xeon (2026-12-01, two threads).
 constexpr double kPeerSeconds = 258.0;   ///< SPHinXsys, mean of 3 runs
-constexpr double kBeforeSeconds = 253.0; ///< grainload c66a431, mean of 3 runs
-constexpr double kTargetSpeedUp = 5.0;   ///< issue 20
+constexpr double kBeforeSeconds = 253.0; ///< grainload of 2026-12-01, mean of 3 runs
+constexpr double kTargetSpeedUp = 5.0;   ///< the speed target: 5x the peer
 constexpr double kPeerEndTime = 0.8;     ///< s, the compared run
 constexpr double kLink = 1.5;            ///< analyse.py LINK: bulk contact, spacings
 constexpr double kThickFraction = 0.05;  ///< analyse.py THICK_FRACTION of H0 (L5%)

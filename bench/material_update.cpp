@@ -118,7 +118,7 @@ void report(const char* name, const Material& material, int points, int steps, d
 int main(int argc, char** argv) {
     const int points = argc > 1 ? std::atoi(argv[1]) : 20000;
     const int steps = argc > 2 ? std::atoi(argv[2]) : 50;
-    // Thesis section 7.2 (BRIEF.md), stresses in MPa there: SI here.
+    // Thesis section 7.2, stresses in MPa there: SI here.
     cap::Parameters thesis;
     thesis.k = 0.03858e6;
     thesis.theta = 0.03;

@@ -1,5 +1,5 @@
 // Time each pass of an SPH step on a case's particles (by default the 2D column collapse of
-// the peer comparison, issue 20): velocity gradient, force inputs, forces, stress update and
+// the peer comparison): velocity gradient, force inputs, forces, stress update and
 // neighbour-list rebuild, in microseconds per material particle, the best of --reps calls each
 // (a shared machine slows single calls at random; the best is the code's own speed). A run's
 // checkpoint gives a flowing state: `grainload run CASE --set 'case.end_time=0.2 s'` writes

@@ -5,14 +5,14 @@
 //    (stress sums over stored reference pairs; the Verlet list still serves the viscosity);
 //  - a granular block (Drucker-Prager, and the generalized cap) slumping under gravity on a
 //    frictional floor of wall particles (contact, dashpot, Coulomb friction): the production
-//    configuration of issue 20, built from a case file as `grainload run` builds it.
+//    configuration of the speed target, built from a case file as `grainload run` builds it.
 // Each row also prints the kinetic energy after the timed steps, so that a change meant to keep
 // the physics can be checked against the figure of an earlier build (docs/performance.md).
-// The granular rows on two threads end in a line each saying whether issue 20's target (2.5e6
+// The granular rows on two threads end in a line each saying whether the speed target (2.5e6
 // particle-steps/s, 1 KB per particle) is met at the speed the machine ran them.
 //
 // usage: sph_throughput [--granular] [particles ...]   (default 1e4 1e5 1e6; --granular: the
-//                                                      granular rows, issue 20's targets, only)
+//                                                      granular rows, the speed targets, only)
 //        sph_throughput --calibrate FILE  (the throughput `grainload check` estimates run times
 //                                          with: 2D and 3D blocks of the generalized cap sand,
 //                                          1 thread and all cores, and a shell plate's steps;
@@ -281,7 +281,7 @@ Measurement measure_granular(Index target, int threads, const char* material) {
     });
 }
 
-/// Issue 20's target for a granular row on two threads: at least 2.5e6 particle-steps/s of the
+/// The speed target for a granular row on two threads: at least 2.5e6 particle-steps/s of the
 /// material and at most 1 KB per material particle, with the figures it is judged on (a line
 /// for the reader; the bench asserts nothing).
 std::string verdict(Index n, const char* label, const Measurement& m) {

@@ -259,7 +259,7 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
         wall.bodies = sph::read_wall_bodies(table, sph->body_names());
         wall.spacing = layout.spacing;
         // A rigid part keeps its wall where the shell was built (no driver) and sends no load
-        // back: the same scene with a rigid wall, one key away (issue 18, section 3).
+        // back: the same scene with a rigid wall, one key away.
         const bool rigid =
             table.boolean_or("rigid", io::default_value(kInterfaceKeys, "rigid") != 0.0);
         wall.driver = rigid ? nullptr : part.wall;
@@ -308,7 +308,7 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
     }
     // Time is physical in a coupled run: the ramp that orders a stand-alone static analysis's
     // load steps would put the structure's own weight on over the run (the wagon's body carried
-    // 23 % of it when its load was heaviest, until session 30; docs/validation/hopper_wagon.md).
+    // 23 % of it when its load was heaviest with such a ramp; docs/validation/hopper_wagon.md).
     // A ramp over a few windows (the tipping cone's plate: two) is a start-up, not that.
     if (fem->has_ramped_loads() &&
         fem->load_time() > std::max(settings.window, 0.1 * scene.end_time) * (1.0 + 1e-9)) {

@@ -26,7 +26,7 @@ struct WindowRecord {
     double map_seconds = 0.0; ///< wall time of interpolation and force mapping (every pass)
 };
 
-/// The coupling's books (issue: interface energy error, momentum balance, sub-cycles, FEM solve
+/// The coupling's books (interface energy error, momentum balance, sub-cycles, FEM solve
 /// time per window). The interface energy error is the work the sand did on the wall particles
 /// minus the work the shell received from the mapped loads, summed over the windows: zero for
 /// an exact transfer. The staggered scheme's lag makes it, for a static shell of compliance C

@@ -8,7 +8,7 @@
 namespace grainload::coupling {
 
 /// The extremes of the coupled shell parts over a run, which say whether the shell was worth
-/// modelling (issue 18, section 3): a wall whose largest deflection is far below the particle
+/// modelling: a wall whose largest deflection is far below the particle
 /// spacing gives the sand the same boundary as a rigid wall, and one that never comes near its
 /// yield stress needs no plasticity.
 struct ShellExtremes {

@@ -45,7 +45,7 @@ struct ResultFigure {
     std::string source; ///< paper or formula of the reference
 };
 
-/// One modelling choice of a scene, for summary.json's "model" (issue 18, section 3): what was
+/// One modelling choice of a scene, for summary.json's "model": what was
 /// modelled ("material sand", "wall floor") and how ("generalized_cap", "rigid").
 struct ModelChoice {
     std::string item;

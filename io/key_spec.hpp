@@ -8,7 +8,8 @@ namespace grainload::io {
 /// One case-file key as declared by the module that reads it (MOOSE's validParams): name,
 /// type as the user guide states it, default as the user would write it (empty: required),
 /// and a one-line meaning. The reader takes its default from here, so a default lives in one
-/// place, and tests/unit/io/test_key_specs.cpp checks the user guide's tables against it.
+/// place, and the key tests (tests/support/guide_table.hpp) check the user guide's tables against
+/// it.
 struct KeySpec {
     std::string_view name;
     std::string_view type;

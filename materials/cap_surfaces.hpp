@@ -15,7 +15,7 @@ enum class Semantics {
     /// LS-DYNA MAT_025: X0 is the initial cap intercept, kappa0 solves X(kappa0) = X0 (it may be
     /// negative), the cap centre is L = max(kappa, 0) and eps_v^p starts at 0.
     mat025,
-    /// grainload before issue 19: the centre never goes below the lowest admissible I1, so an
+    /// grainload's first cap semantics: the centre never goes below the lowest admissible I1, so an
     /// X0 below X(I1_min) is lifted to it and eps_v^p starts at the law's value there.
     lifted_x0,
 };

@@ -1,4 +1,4 @@
-// What an SPH scene modelled and what it could have left out (issue 18, section 3): the
+// What an SPH scene modelled and what it could have left out: the
 // SphModel members behind io::Stepper::describe_model and append_hints.
 #include "materials/generalized_cap.hpp"
 #include "sph/rigid_wall.hpp"

@@ -16,7 +16,7 @@ namespace grainload::sph {
 /// of 1e5 particles (cubic spline, h = 1.3 spacing, about 37 neighbours): 903 bytes per
 /// particle with the updated-Lagrangian formulation (cell list and Verlet list alike), 1843
 /// with the total-Lagrangian one, which also stores its reference pairs; the process peaked at
-/// 90 MiB resident, 943 bytes per particle (docs/validation/robustness.md). Frames and the OS
+/// 90 MiB resident, 943 bytes per particle (docs/validation/stability.md). Frames and the OS
 /// add to it, so a scene refused on these figures would not have fitted.
 inline constexpr double kSolverBytesPerParticle = 903.0;
 inline constexpr double kTotalLagrangianBytesPerParticle = 1843.0;

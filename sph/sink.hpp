@@ -39,7 +39,7 @@ inline constexpr std::array<io::KeySpec, 10> kSinkKeys{{
 }};
 
 /// Beverloo's discharge rate of a flat-bottomed outlet (Beverloo, Leniger & van de Velde 1961,
-/// Chem. Eng. Sci. 15; shared/silo_hopper_references.md, section 2): a slot of width B and
+/// Chem. Eng. Sci. 15; Nedderman 1992): a slot of width B and
 /// length L, W = C' rho sqrt(g) (L - k d) (B - k d)^(3/2) with C' = 1.03 (per metre of depth in
 /// plane strain: (B - k d)^(3/2)); a circle of diameter D, W = C rho sqrt(g) (D - k d)^(5/2)
 /// with C = 0.58. d is the grain size of the material where it declares one (`grain_size`),
@@ -57,7 +57,7 @@ struct Outlet {
 inline constexpr double kBeverlooSlot = 1.03;
 inline constexpr double kBeverlooCircle = 0.58;
 /// Beverloo's k for spheres, 1.4-1.5 (Beverloo et al. 1961; Nedderman 1992 gives 1.5), "usually
-/// between 1 and 3" for other grains (shared/silo_hopper_references.md, section 2).
+/// between 1 and 3" for other grains (Darias, Madrid & Pugnaloni, Powders & Grains 2017).
 inline constexpr double kBeverlooGrain = 1.5;
 
 /// The keys of [[sph.wall]] that open an outlet or time a gate (docs/user-guide/sph.md,

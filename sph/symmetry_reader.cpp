@@ -1,4 +1,4 @@
-// [[sph.symmetry]]: the mirror planes of half and quarter models (issues 16 and 18).
+// [[sph.symmetry]]: the mirror planes of half and quarter models.
 #include "io/case_table.hpp"
 #include "sph/sph_case_reader.hpp"
 

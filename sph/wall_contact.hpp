@@ -13,7 +13,7 @@ namespace grainload::sph {
 
 /// What a body particle feels of a wall beyond the contact potential's repulsion: a normal
 /// dashpot and Coulomb friction (thesis section 5.4, made a stick/slip law on the sliding
-/// velocity as BRIEF.md requires).
+/// velocity, so that a block on an incline starts to slide at tan theta = mu_s).
 ///
 /// For a body particle i touching wall w (wall particles j within the support):
 ///   contact normal n: the kernel average of the wall's own surface normals n_j where the wall

@@ -43,7 +43,7 @@ inline constexpr std::array<io::KeySpec, 14> kWallMapKeys{{
      "the interval whose mean and maximum maps go into wall_maps/NAME_window.csv"},
 }};
 
-/// Wall loads the way engineers read them (issue 16): the normal pressure and the wall-friction
+/// Wall loads the way engineers read them: the normal pressure and the wall-friction
 /// traction of chosen walls, binned on a grid, as the mean over each output interval and as the
 /// mean and maximum over a time window. A cylinder is unrolled (axial position x angle). The
 /// force of the bodies on a wall particle (mass x acceleration after the force pass,

@@ -52,7 +52,7 @@ Consequences for the two symmetry lines:
     y x z = x: theta_y = 0 says "top and bottom do not move apart in x".  theta_z is
     a drilling rotation there (z x n = 0) and is left alone: DOF 1, 5.
 Rigid diaphragm y = 0: u_x = u_z = 0 (no motion in its own plane), u_y and all
-rotations free.  These choices reproduce the figures of /work/shared/BRIEF.md
+rotations free.  These choices reproduce the figures of earlier CalculiX 2.20 runs
 (16 x 16 S4: 0.3005, 64 x 64: 0.3015, 8 x 8 S8R: 0.3020).
 For the plate, w = 0 on the mid-surface nodes lets the edge section rotate about the
 edge, as a simple support must.  Kirchhoff's support also implies dw/ds = 0 along the

@@ -100,7 +100,7 @@ TEST(ColumnCollapse3dSmall, InTheContainerNoParticleLeavesIt) {
 }
 
 // The same container scene with the material switched to Drucker-Prager from the command line
-// (the case's [material.drucker_prager] sub-table, issue 18 section 3): summary.json names the
+// (the case's [material.drucker_prager] sub-table): summary.json names the
 // model that ran, and every particle is accounted for. (The physics of the switch is in
 // docs/validation/column_collapse.md: the cone holds the column far higher than the cap.)
 TEST(ColumnCollapse3dSmall, TheMaterialModelSwitchesFromTheCommandLine) {

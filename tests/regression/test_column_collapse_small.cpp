@@ -48,8 +48,9 @@ ColumnState read_column(const std::string& vtm) {
 // missing when the contact's stored energy is left out). The run's own books
 // ("gravity_work", sum m g . v dt over the drifts) must match the potential drop read from
 // the first and last frames. The heap must also come
-// to rest (issue 4's criterion: kinetic energy below 1e-4 of its peak): on a frictionless floor
-// the back wall's thrust keeps the heap sliding for ever (docs/validation/column_collapse_2d.md).
+// to rest (the collapse cases' criterion: kinetic energy below 1e-4 of its peak): on a frictionless
+// floor the back wall's thrust keeps the heap sliding for ever
+// (docs/validation/column_collapse_2d.md).
 TEST(ColumnCollapseSmall, LosesPotentialEnergyToHeatAndComesToRest) {
     const CaseRun run = run_case_file("cases/column_collapse_2d/column_collapse_2d_small.toml",
                                       "column_collapse_small");

@@ -20,7 +20,7 @@ constexpr double kGravity = 9.81;
 //  - The plate carries the weight: the interface load (its impulse over the last 0.15 s, after
 //    the layer has settled at about 0.15 s, divided by the time: the mean load, free of the
 //    soft layer's slow sloshing of about 0.4 %) with the side walls' vertical forces equals
-//    M g to 0.1 %, the bound. The side walls are frictionless, but a lattice of wall
+//    M g to 0.1 %, the acceptance bound. The side walls are frictionless, but a lattice of wall
 //    particles is corrugated: its repulsion has a small component along the wall, here
 //    0.75 N (0.3 % of the weight) pushing the layer down onto the plate.
 //  - It sags like a plate under q = M g / a^2: w = 0.00406 q a^4 / D (Timoshenko &
@@ -75,7 +75,7 @@ TEST(CouplingSmall, SandLayerOnAPlateWeighsOnItAndBendsItLikeAUniformLoad) {
 // (20 x 5 x 5 particles, 6.4 kg), simply supported at its ends, its long edges symmetry lines,
 // the sand between frictionless walls: every cross-section bends alike (cylindrical bending).
 //  - The strip carries the weight: mean interface load over 0.35-0.5 s less the side walls'
-//    push (lattice corrugation, 0.14 N) equals M g to 0.1 %, the bound (measured
+//    push (lattice corrugation, 0.14 N) equals M g to 0.1 %, the acceptance bound (measured
 //    -0.03 %).
 //  - The deflection is the same across the strip (the plane-strain condition), to 1e-6 of it:
 //    the scene is symmetric about y = 0.05 m and the symmetry lines stop any twist (measured
@@ -269,7 +269,7 @@ TEST(CouplingSmall, APlateCoupledOnBothFacesCarriesSandOnEither) {
 // clamped 2 mm steel plate, dynamic (Newmark), each window iterated to convergence.
 //  - Impulse: the plate receives what the sand lost: sand momentum change = weight impulse +
 //    the walls' impulse on the sand, and the impulse the plate's nodes received equals the
-//    sand's impulse on the wall particles (0.5 %, the bound; the leapfrog's momentum
+//    sand's impulse on the wall particles (0.5 %, the acceptance bound; the leapfrog's momentum
 //    update is trapezoidal like the wall impulse, so the SPH side closes to round-off and the
 //    shell side differs by the last window's load only).
 //  - Energy: the interface energy error (sand's work on the walls minus the plate's) below
@@ -316,9 +316,9 @@ TEST(CouplingSmall, SandDroppedOnAPlateGivesItItsImpulseAndEnergy) {
     EXPECT_GT(lowest, 0.001); // the plate's upper face (t/2), which it deflects below
 }
 
-// The same block at 100 m/s (the extreme), windows of 0.05 ms: the plate, linear
-// elastic, bulges 76 mm under it, and no sand particle ends on its far side. Each particle's
-// centre is compared with the deformed plate at the nearest node in plan, plus half the
+// The same block at 100 m/s (the fastest impact the coupling is specified for), windows of 0.05 ms:
+// the plate, linear elastic, bulges 76 mm under it, and no sand particle ends on its far side. Each
+// particle's centre is compared with the deformed plate at the nearest node in plan, plus half the
 // thickness (the upper face): a particle through the sheet would be below it by up to a
 // spacing. Measured: the smallest clearance over the frames is 1.5 mm from the mid-surface.
 TEST(CouplingSmall, ABlockAt100MetresPerSecondDoesNotPassThroughThePlate) {

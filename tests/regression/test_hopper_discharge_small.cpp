@@ -15,7 +15,7 @@
 namespace grainload::testing {
 namespace {
 
-// The plane-wedge hopper (Markauskas, seed 003) in plane strain at 50 mm, rigid walls:
+// The plane-wedge hopper (Markauskas' DEM study) in plane strain at 50 mm, rigid walls:
 // cases/hopper_discharge/hopper_discharge_small.toml, figures in
 // docs/validation/hopper_discharge.md.
 constexpr double kGravity = 9.81;
@@ -23,7 +23,7 @@ constexpr double kBulkDensity = 300.0; // kg/m^3: 500 kg/m^3 spheres at solid fr
 constexpr double kOrifice = 0.4;       // m, across the slot
 constexpr double kGrain = 0.065;       // m, the paper's mean sphere diameter
 
-/// Beverloo's law for a slot (docs/shared silo_hopper_references.md, section 2), per metre of
+/// Beverloo's law for a slot (Beverloo, Leniger & van de Velde 1961), per metre of
 /// slot length: W / L = C' rho_b sqrt(g) (B - k d)^(3/2) with C' = 1.03 (Myers & Sellers,
 /// Nedderman). Plane strain has no slot ends, so the (L - k d) factor of the 3D slot is L.
 double beverloo_slot(double k) {
@@ -40,8 +40,8 @@ double beverloo_slot(double k) {
 //    departing particles' kinetic energy (3.5 kJ/m, nearly all of gravity's work) would be a
 //    deficit of about 95 % if it were not booked as removed.
 //  - Rate: between Beverloo with k = 3 and with k = 1, the range of k "usually between 1 and 3"
-//    (silo_hopper_references.md section 2, [V]); C' kept at its typical 1.03. A continuum has
-//    no grain size, so which k it mimics is not known in advance: measured 143 kg/m/s, between
+//    (Darias, Madrid & Pugnaloni, Powders & Grains 2017); C' kept at its typical 1.03. A continuum
+//    has no grain size, so which k it mimics is not known in advance: measured 143 kg/m/s, between
 //    k = 1.5 (161 kg/m/s) and k = 3 (90 kg/m/s).
 //  - By 3 s (2.6 s after the gate opened) more than 85 % is out (measured 91.6 %; the paper's
 //    hopper is empty 1.8 s after opening; what stays here is the material the wall friction

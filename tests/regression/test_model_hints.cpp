@@ -1,4 +1,4 @@
-// What a run says it modelled and what it could have left out (issue 18, section 3), end to end
+// What a run says it modelled and what it could have left out, end to end
 // on the small 3D column collapse of the thesis sand (generalized cap, X0 = 0).
 
 #include "support/case_runner.hpp"

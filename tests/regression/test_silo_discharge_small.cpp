@@ -11,7 +11,7 @@ namespace {
 // from 2 s through a central outlet; docs/validation/silo.md.
 constexpr double kBulkDensity = 1500.0; // kg/m^3, the continuum's
 constexpr double kGravity = 9.81;
-constexpr double kSlotConstant = 1.03; // C' of Beverloo's slot law (silo_hopper_references.md)
+constexpr double kSlotConstant = 1.03; // C' of Beverloo's slot law (Nedderman 1992)
 // The contact potential of a rigid edge reaches 2h = 2 x 1.3 x 25 mm into an opening.
 constexpr double kReach = 0.065;
 constexpr double kGapOfTheCase = 0.33; // m, modelled: 0.2 m in effect
@@ -30,7 +30,7 @@ double beverloo(double outlet) {
 // (0.33 / 0.2)^(3/2) = 2.12. The ratio is free of Beverloo's constant: 15 % covers the narrow
 // outlet's fitted rate, 1-2 particles a 0.1 s interval. Each rate against Beverloo with its
 // effective width: C' "may vary up to a factor of 2 depending on grains"
-// (silo_hopper_references.md), so 0.7-1.5 of the law with C' = 1.03 (measured 1.15 and 1.17).
+// (Darias, Madrid & Pugnaloni 2017), so 0.7-1.5 of the law with C' = 1.03 (measured 1.15 and 1.17).
 TEST(SiloDischargeSmall, OutletsNarrowedByTheContactReachFollowBeverloo) {
     const CaseRun wide = run_case_file("cases/silo/silo_discharge_small.toml", "silo_discharge");
     ASSERT_EQ(wide.cli.exit_code, 0) << wide.cli.output;

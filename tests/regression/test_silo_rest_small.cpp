@@ -30,8 +30,8 @@ std::map<std::string, std::pair<double, double>> final_forces(const std::string&
     return forces;
 }
 
-/// Janssen's p_h (silo_hopper_references.md; plane-strain slot, A/U = D/2) averaged over the
-/// depths [a, b] below the surface: gamma D/(2 mu) (1 - exp(-z/z0)), z0 = D/(2 K mu), with
+/// Janssen's p_h (Janssen 1895, EN 1991-4 Eq. 5.1-5.6; plane-strain slot, A/U = D/2) averaged over
+/// the depths [a, b] below the surface: gamma D/(2 mu) (1 - exp(-z/z0)), z0 = D/(2 K mu), with
 /// gamma D = the weight per metre of height.
 double janssen_band(double weight_per_height, double width, double k, double a, double b) {
     const double z0 = width / (2.0 * k * kMu);

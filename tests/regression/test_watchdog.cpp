@@ -1,4 +1,4 @@
-// The watchdog (issue 18, section 5): every way a run can fail ends with exit code 3, a
+// The watchdog: every way a run can fail ends with exit code 3, a
 // one-line diagnosis naming where and what, summary.json with "status": "unstable" and that
 // diagnosis, and the last good frame with its checkpoint, from which a restart meets the same
 // failure at the same step.
@@ -104,8 +104,8 @@ TEST(Watchdog, EnergySurplusNamesTheEnergiesAndTheRemedy) {
 // it. The diagnosis names the structure, the time and the node and DOF furthest out of
 // balance: a node of the loaded tip, x1, nodes 64 and 65 of the 33 x 2 nodes (32 elements
 // long). The two are mirror images under the strip's symmetry and equally out of balance but
-// for round-off, which decides between them differently on different machines (65 on the CI
-// machine of stop 25, 64 on this session's).
+// for round-off, which decides between them differently on different machines (65 on one
+// 2-core machine, 64 on another).
 TEST(Watchdog, NewtonNonConvergenceNamesTheNodeOutOfBalance) {
     const std::string kase = "cases/shell_benchmarks/cantilever_roll_up.toml";
     const std::string options = "--set fem.max_iterations=2 --set fem.max_cutbacks=1 --threads 1";

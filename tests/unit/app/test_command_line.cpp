@@ -1,4 +1,4 @@
-// The CLI's help, and input it must refuse before doing anything (issue 18, sections 2 and 6).
+// The CLI's help, and input it must refuse before doing anything.
 
 #include "support/cli_runner.hpp"
 #include "support/test_folder.hpp"
@@ -94,7 +94,7 @@ TEST(CommandLine, ADirectoryAsTheCaseIsRefusedByName) {
         << missing.output;
 }
 
-// The new user's mistake of issue 18: a spacing of 1e-7 m in the 0.1 x 0.1 x 0.2 m free-fall
+// A new user's mistake: a spacing of 1e-7 m in the 0.1 x 0.1 x 0.2 m free-fall
 // block is (1e6)^2 x 2e6 = 2e18 particles, which no machine holds. It must be refused at once
 // (before the lattice is made: the test would otherwise end in std::bad_alloc or run out of
 // time) with exit code 2, naming the key, the estimate and a spacing that fits.

@@ -120,8 +120,8 @@ inline double b_of(const cap::Parameters& p, double kappa) {
                      : p.k + p.theta * kappa - p.gamma * std::exp(-p.beta * kappa);
 }
 
-/// Failure envelope written from the brief, not from the library: sqrt(J2) = k + theta I1 -
-/// gamma exp(-B1 I1), compression positive.
+/// Failure envelope written from the model's definition, not from the library: sqrt(J2) = k + theta
+/// I1 - gamma exp(-B1 I1), compression positive.
 inline double envelope_of(const cap::Parameters& p, double i1) {
     return p.k + p.theta * i1 - p.gamma * std::exp(-p.beta * i1);
 }

@@ -82,7 +82,7 @@ TEST(PlasticFromCase, DruckerPragerRefusesMixedFormsAndCutoffBeyondApex) {
 }
 
 // One material, two models' keys in [material.MODEL] sub-tables: `model` picks one, and
-// --set switches it (issue 18, section 3). The other sub-table is checked too, a key given
+// --set switches it. The other sub-table is checked too, a key given
 // both in a sub-table and above it is an error, and nothing is left unread.
 constexpr const char* kSwitchable = R"([[material]]
 model = "generalized_cap"

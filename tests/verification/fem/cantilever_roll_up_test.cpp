@@ -45,7 +45,7 @@ TEST(CantileverRollUp, EndMomentRollsIntoFullCircle) {
         const Vec3 tip = mesh.node(n) + analysis.displacement(n);
         std::printf("tip node %lld at (%.5f, %.5f, %.5f)\n", static_cast<long long>(n), tip.x(),
                     tip.y(), tip.z());
-        // Acceptance criterion of the issue: back at the root within 1 % of L.
+        // Acceptance criterion: back at the root within 1 % of L.
         EXPECT_LT(std::hypot(tip.x(), tip.z()), 0.01 * length);
     }
     // Quadratic convergence: the last contraction of each increment before round-off

@@ -48,7 +48,7 @@ TEST(PlasticStrip, BendingMomentReachesLimitMoment) {
     std::printf("root moment %.6g N m, analytic %.6g, limit moment %.6g (%.3f %% of Mp)\n",
                 std::abs(moment), expected, limit, 100.0 * std::abs(moment) / limit);
     // 15-point Gauss integration of the elastic-plastic stress profile: error < 1 %; the
-    // acceptance tolerance of the issue is 5 %.
+    // acceptance tolerance is 5 %.
     EXPECT_NEAR(std::abs(moment), expected, 0.01 * limit);
     // Every increment converges, and the plastic problem in few iterations thanks to the
     // consistent tangent of the return map condensed to plane stress.

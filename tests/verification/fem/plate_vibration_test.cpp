@@ -103,7 +103,7 @@ TEST(PlateVibration, FirstFrequencyAndEnergyConservation) {
                 "energy drift %.2e\n",
                 measured, 1.0 / measured, period, 1.0 / period, 100.0 * (measured / period - 1.0),
                 drift);
-    // Acceptance of the issue: 2 %. Trapezoidal period elongation (omega dt)^2 / 12 = 0.13 %.
+    // Acceptance bound: 2 %. Trapezoidal period elongation (omega dt)^2 / 12 = 0.13 %.
     EXPECT_NEAR(measured, period, 0.02 * period);
     // The trapezoidal rule conserves the energy of a linear system (Bathe FEP section 9.4.4);
     // what remains is the round-off of the Newton tolerance.
@@ -179,7 +179,7 @@ TEST(PlateVibration, HhtDampsHighFrequencyAtAnalyticSpectralRadius) {
 }
 
 // Second-order accuracy is kept on the resolved mode: alpha = -0.1 at dt = T/50 gives the
-// first frequency within the 2 % of the issue and loses little amplitude per period.
+// first frequency within the acceptance bound of 2 % and loses little amplitude per period.
 TEST(PlateVibration, HhtKeepsFirstFrequency) {
     auto analysis = plate_in_first_mode();
     NewmarkIntegrator hht = NewmarkIntegrator::hht(*analysis, -0.1);

@@ -16,7 +16,7 @@ double solve(ShellBenchmark& b) {
     return value;
 }
 
-// Acceptance tolerances are those of the issue: MITC4 converges from below on all three, and
+// Acceptance tolerances: MITC4 converges from below on all three, and
 // the published MITC4 results at these meshes lie within them (Bathe & Dvorkin 1986).
 TEST(ShellBenchmarks, ScordelisLoRoofWithin2PercentAt16x16) {
     ShellBenchmark b = scordelis_lo_roof(16);

@@ -48,7 +48,7 @@ TEST(ShellModel, ScordelisLoCaseReachesReference) {
     ASSERT_FALSE(results.empty());
     EXPECT_EQ(results[0].unit, "m");
     ASSERT_TRUE(results[0].reference.has_value());
-    // 2 % at 16 x 16 on the quarter model: the acceptance tolerance of the issue.
+    // 2 % at 16 x 16 on the quarter model: the acceptance tolerance.
     EXPECT_NEAR(results[0].value, *results[0].reference, 0.02 * *results[0].reference);
     EXPECT_NEAR(results[0].value, 0.2991, 5e-4); // the same model as shell_benchmarks_test
 
@@ -155,8 +155,8 @@ TEST(ShellModel, DynamicAnalysisAdvances) {
 }
 
 // Every case of cases/shell_benchmarks runs as the app's driver would (one advance per output
-// interval) and lands within 2 % of each reference it declares: the acceptance tolerance of
-// the issue for the coarse meshes used there (measured: Scordelis-Lo -1.07 %, hemisphere
+// interval) and lands within 2 % of each reference it declares: the acceptance tolerance
+// for the coarse meshes used there (measured: Scordelis-Lo -1.07 %, hemisphere
 // -0.95 %, roll-up -0.74 %, box under pressure +0.03 %).
 TEST(ShellModel, EveryBenchmarkCaseMeetsItsReference) {
     for (const char* name : {"scordelis_lo", "pinched_hemisphere", "cantilever_roll_up",

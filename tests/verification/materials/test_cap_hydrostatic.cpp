@@ -101,7 +101,7 @@ TEST(CapHydrostatic, UnloadingIsElasticAndReloadingResumesTheLaw) {
 /// MAT_025 against the old lifted_x0 semantics on the wagon set (F(0) = k > 0, X0 = 0): the
 /// old one is elastic up to I1 = X(0) = R k and starts the law there with eps_v^p = W [1 -
 /// exp(-D R k)], so at equal strain its I1 is larger. The closed forms of both are restated
-/// here; the difference is what the issue reported (tens of per cent).
+/// here; the difference is tens of per cent.
 TEST(CapHydrostatic, LiftedX0DiffersFromMat025WhereTheEnvelopeMissesTheOrigin) {
     CapSet set = cap_sets()[1];
     const cap::Parameters& p = set.p;

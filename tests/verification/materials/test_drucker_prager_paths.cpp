@@ -141,7 +141,7 @@ TEST(DruckerPragerHydrostatic, CompressionIsElasticAndExtensionStopsAtTheApex) {
         EXPECT_NEAR(voigt::trace(compressed.stress), 3.0 * bulk * -0.006, 1e-10 * bulk * 0.018);
         const auto& last = run.records.back();
         // Extension ends at the apex I1 = k / theta with eps_v^p = eps_v - I1 / (3K), the same
-        // for 1, 10 and 1000 steps to 1e-8 relative (the step-independence figure).
+        // for 1, 10 and 1000 steps to 1e-8 relative (the required step independence).
         const double apex = kK / kTheta;
         EXPECT_NEAR(voigt::trace(last.stress), apex, 1e-8 * apex) << steps;
         EXPECT_NEAR(last.state[1], 0.018 - apex / (3.0 * bulk), 1e-8 * 0.018) << steps;

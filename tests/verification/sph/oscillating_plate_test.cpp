@@ -38,7 +38,7 @@ using namespace testing;
 // Total Lagrangian (sph/total_lagrangian.hpp): the same two first-order deficits, but no tensile
 // instability, so the spacing can be refined without artificial stress and the period
 // converges: +9.65 / +5.08 / +3.37 % at 8 / 12 / 16 particles across H (measured). Asserted: the
-// 16-particle period within [0, +5 %] of thin-plate theory, the criterion (the period of
+// 16-particle period within [0, +5 %] of thin-plate theory, the acceptance criterion (the period of
 // the thick plate, H/L = 0.1, lies 0.7 % above thin-plate theory, so 0 is a hard lower bound),
 // 16 particles closer than 12, no pairing (closest pair above 0.95 spacings: an instability
 // would pair particles, as it does in the updated-Lagrangian plate at 12), a root that never

@@ -138,7 +138,7 @@ TEST(WallFriction, SlidingAccelerationIsGTimesSinMinusMuKineticCos) {
     const double exact = kGravity * (std::sin(theta) - kMuKinetic * std::cos(theta));
     std::cout << "sliding acceleration " << a << " m/s^2, g (sin - mu_k cos) = " << exact
               << ", relative error " << (a - exact) / exact << "\n";
-    // The tolerance (5 %); the base particles' normal load fluctuates with the contact
+    // The acceptance tolerance (5 %); the base particles' normal load fluctuates with the contact
     // layer's oscillation, which averages out over the 0.1 s window.
     EXPECT_NEAR(a, exact, 0.05 * exact);
 }
