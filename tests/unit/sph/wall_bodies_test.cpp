@@ -75,8 +75,9 @@ TEST(WallBodies, DroppedPairsAreExactlyTheWallsPairsWithTheOtherBody) {
 }
 
 // Body "sunk" starts half inside a floor that acts on body "resting" only, and "resting" starts
-// pressed onto the floor (its lowest particles 18.5 mm from the first wall layer, within the
-// support 2h = 26 mm), apart from "sunk" by more than the support. A floor
+// pressed onto the floor (its lowest particles 22.5 mm from the first wall layer, within the
+// support 2h = 26 mm, yet far enough that the start-gap check passes it with a warning),
+// apart from "sunk" by more than the support. A floor
 // that met "sunk" would blow it out of the wall particles at once; one that does not leaves it
 // in free fall: an unstressed elastic body moving uniformly has no internal force, so each of
 // its particles' velocities is g t to round-off (1e-12 m/s after 200 steps of 20 us). The same
@@ -111,8 +112,8 @@ material = "sand"
 spacing = "10 mm"
 [sph.body.shape]
 type = "box"
-min = "100 8.5 mm"
-max = "150 38.5 mm"
+min = "100 12.5 mm"
+max = "150 42.5 mm"
 [[sph.wall]]
 name = "floor"
 type = "plane"
