@@ -1,11 +1,10 @@
 #!/usr/bin/python3
 """Checks that the repository speaks of the product, not of how it was made.
 
-    scripts/check_history.py [--root DIR] [--summary] [--all]
+    scripts/check_history.py [--root DIR] [--summary]
 
 Scans every file git tracks (`git ls-files`) as text and prints `file:line: kind: what` for
-each finding; exits 1 if there is any, 0 otherwise. --summary adds the count per kind; --all
-also scans what TEMPORARY_EXCLUSIONS (below the imports) leaves out for now.
+each finding; exits 1 if there is any, 0 otherwise. --summary adds the count per kind.
 
 Skipped: binary files (a NUL byte or not UTF-8), pictures (.png, .jpg, .svg), and data that
 programs write (.csv trade tables, .msh and .stl meshes, .k keyword decks, .pyc, the fuzzers'
@@ -63,21 +62,6 @@ import subprocess
 import sys
 from collections import Counter
 
-# Files and one section others are rewriting at present; the check skips them until that work
-# is merged. Remove an entry once its file passes.
-TEMPORARY_EXCLUSIONS = {
-    "files": ["README.md", "cases/README.md", "docs/glossary.md", "docs/validation.md"],
-    # (file, heading): the section under that Markdown heading, up to the next heading of the
-    # same or a higher level.
-    "sections": [("docs/performance.md", "## Estimate against the run")],
-    # (file, text): a string literal of compiled code that only a code change can rewrite (the
-    # bench's printed table header and target line); the line holding that text is skipped.
-    "code_strings": [
-        ("bench/column_collapse_2d.cpp", '"c66a431", "(peers.md)"'),
-        ("bench/column_collapse_2d.cpp", '"target (issue 20): %.1f s for the full'),
-        ("bench/column_collapse_2d.cpp", '"target (issue 20): %.1f s = SPHinXsys'),
-    ],
-}
 
 SKIPPED_SUFFIXES = (".png", ".jpg", ".jpeg", ".gif", ".svg", ".pdf", ".csv", ".msh", ".stl",
                     ".k", ".pyc", ".vtu", ".vtm", ".bin")
@@ -324,33 +308,11 @@ def dedupe(found):
     return out
 
 
-def excluded_lines(path, lines):
-    """Line numbers (1-based) of the temporarily excluded sections and code strings."""
-    skip = set()
-    for file, heading in TEMPORARY_EXCLUSIONS["sections"]:
-        if file != path:
-            continue
-        level = len(heading) - len(heading.lstrip("#"))
-        inside = False
-        for number, line in enumerate(lines, 1):
-            if line.rstrip() == heading:
-                inside = True
-            elif inside and re.match(r"#{1,%d} " % level, line):
-                inside = False
-            if inside:
-                skip.add(number)
-    for file, text in TEMPORARY_EXCLUSIONS["code_strings"]:
-        if file == path:
-            skip |= {n for n, line in enumerate(lines, 1) if text in line}
-    return skip
-
-
 def scan_text(path, text, tree):
     """(line, kind, text) of every finding in one file's text."""
     markdown = path.endswith(".md")
     calculix_file = bool(CALCULIX_FILE.search(text))
     lines = text.split("\n")
-    skip = excluded_lines(path, lines)
     fenced = False
     open_span = False
     findings = []
@@ -362,8 +324,6 @@ def scan_text(path, text, tree):
         if markdown and not fenced:
             open_span = open_span and bool(line.strip())  # a blank line ends a paragraph
             spans, open_span = code_spans(line, open_span)
-        if number in skip:
-            continue
         for kind, what in scan_line(path, line, tree, markdown, fenced, calculix_file, spans):
             findings.append((number, kind, what))
     return findings
@@ -381,7 +341,7 @@ def read_text(full_path):
 
 
 def scanned(path):
-    if path in TEMPORARY_EXCLUSIONS["files"] or path in SKIPPED_FILES:
+    if path in SKIPPED_FILES:
         return False
     return not (path.lower().endswith(SKIPPED_SUFFIXES) or path.startswith(SKIPPED_FOLDERS))
 
@@ -391,12 +351,7 @@ def main(argv=None):
     parser.add_argument("--root", default=os.path.dirname(os.path.dirname(
         os.path.abspath(__file__))), help="the repository (default: this script's)")
     parser.add_argument("--summary", action="store_true", help="print the count per kind")
-    parser.add_argument("--all", action="store_true",
-                        help="scan the temporarily excluded files and section too")
     args = parser.parse_args(argv)
-    if args.all:
-        for key in TEMPORARY_EXCLUSIONS:
-            TEMPORARY_EXCLUSIONS[key] = []
     files = git_files(args.root)
     tree = Tree(args.root, files)
     counts = Counter()

@@ -108,10 +108,12 @@ class CheckHistoryTest(unittest.TestCase):
         self.assertEqual(self.kinds("// scratch files in /tmp\n#include \"io/gen.hpp\"",
                                     path="app/x.cpp"), [])
 
-    def test_the_excluded_section_is_skipped_up_to_the_next_heading(self):
+    def test_every_section_of_every_page_is_scanned(self):
+        # No file, section or line of the tree is left out: a finding under any heading of
+        # docs/performance.md is reported with its own line number.
         page = "# P\n\n## Estimate against the run\n\nsession 3\n\n## Next\n\nsession 4\n"
         findings = check_history.scan_text("docs/performance.md", page, self.tree)
-        self.assertEqual([(n, k) for n, k, _ in findings], [(9, "work-period")])
+        self.assertEqual([(n, k) for n, k, _ in findings], [(5, "work-period"), (9, "work-period")])
 
     def test_the_script_exits_1_on_a_finding_and_0_on_a_clean_tree(self):
         script = str(SCRIPTS / "check_history.py")
