@@ -48,9 +48,9 @@ inline SlotFill measure_slot_fill(vtkDataSet* sand, double spacing, double parti
     return fill;
 }
 
-/// Janssen's p_h for a slot (silo_hopper_references.md; plane strain, A/U = D/2) averaged over
-/// the depths [a, b] below the surface: gamma D/(2 mu) (1 - exp(-z/z0)), z0 = D/(2 K mu), with
-/// gamma D = the weight per metre of height.
+/// Janssen's p_h for a slot (Janssen 1895, EN 1991-4 Eq. 5.1-5.6; plane strain, A/U = D/2)
+/// averaged over the depths [a, b] below the surface: gamma D/(2 mu) (1 - exp(-z/z0)),
+/// z0 = D/(2 K mu), with gamma D = the weight per metre of height.
 inline double janssen_band(const SlotFill& fill, double k, double mu, double a, double b) {
     const double z0 = fill.width / (2.0 * k * mu);
     const double integral = (b - a) - z0 * (std::exp(-a / z0) - std::exp(-b / z0));
