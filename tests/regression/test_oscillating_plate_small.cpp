@@ -1,5 +1,5 @@
 #include "support/case_runner.hpp"
-#include "support/frame_reader.hpp"
+#include "support/plate_tip.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -7,8 +7,6 @@
 #include <gtest/gtest.h>
 #include <numbers>
 #include <vector>
-#include <vtkDataArray.h>
-#include <vtkPointData.h>
 
 namespace {
 
@@ -18,46 +16,6 @@ constexpr double kLength = 0.2;
 constexpr double kThickness = 0.02;
 constexpr double kSpacing = 0.0025;
 constexpr double kInterval = 0.002; // output_interval of the case
-
-struct TipFrame {
-    double tip = 0.0;         ///< mean y-displacement of the last particle column, m
-    double root_motion = 0.0; ///< largest displacement of a clamped (x < 0) particle, m
-};
-
-TipFrame read_frame(const std::string& vtm) {
-    const auto plate = read_particle_block(vtm, 0);
-    vtkDataArray* displacement = plate->GetPointData()->GetArray("displacement");
-    TipFrame frame;
-    int tip_count = 0;
-    for (vtkIdType k = 0; k < plate->GetNumberOfPoints(); ++k) {
-        double x[3];
-        double u[3];
-        plate->GetPoint(k, x);
-        displacement->GetTuple(k, u);
-        const double start_x = x[0] - u[0];
-        if (start_x > kLength - kSpacing) {
-            frame.tip += u[1];
-            ++tip_count;
-        }
-        if (start_x < 0.0) {
-            frame.root_motion = std::max(frame.root_motion, std::hypot(u[0], u[1]));
-        }
-    }
-    frame.tip /= tip_count;
-    return frame;
-}
-
-/// Times at which `series` (one value per frame) crosses `level` going down.
-std::vector<double> crossings_down(const std::vector<double>& series, double level) {
-    std::vector<double> found;
-    for (std::size_t k = 1; k < series.size(); ++k) {
-        if (series[k - 1] > level && series[k] <= level) {
-            const double s = (series[k - 1] - level) / (series[k - 1] - series[k]);
-            found.push_back((static_cast<double>(k - 1) + s) * kInterval);
-        }
-    }
-    return found;
-}
 
 // The CI version of oscillating_plate: Gray, Monaghan & Swift's cantilever plate in the
 // total-Lagrangian formulation, 8 particles across H, released under sudden gravity g = 1 m/s^2
@@ -84,14 +42,14 @@ TEST(OscillatingPlateSmall, TotalLagrangianPlateSwingsAtThinPlateFrequencyFromTh
         if (!std::filesystem::exists(out + name)) {
             break;
         }
-        const TipFrame frame = read_frame(out + name);
+        const TipFrame frame = read_tip_frame(out + name, kLength, kSpacing);
         tip.push_back(frame.tip);
         root_motion = std::max(root_motion, frame.root_motion);
     }
     ASSERT_EQ(tip.size(), 281u); // 0.56 s at 2 ms
     const auto [low, high] = std::minmax_element(tip.begin(), tip.end());
     const double level = 0.5 * (*low + *high);
-    const auto down = crossings_down(tip, level);
+    const auto down = crossings_down(tip, level, kInterval);
     ASSERT_GE(down.size(), 2u);
     const double period = down[1] - down[0];
     const double k = 1.8751040687 / kLength;

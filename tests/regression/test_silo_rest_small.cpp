@@ -1,6 +1,7 @@
 #include "support/case_runner.hpp"
 #include "support/csv_rows.hpp"
 #include "support/frame_reader.hpp"
+#include "support/silo_janssen.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -21,24 +22,6 @@ constexpr double kSpacing = 0.025;       // m
 constexpr double kParticleMass = 0.9375; // kg/m
 constexpr double kBand = 0.2;            // m, the left wall's bands left0 .. left5
 
-/// The last row of wall_forces.csv per wall: (F_x, F_y).
-std::map<std::string, std::pair<double, double>> final_forces(const std::string& out) {
-    std::map<std::string, std::pair<double, double>> forces;
-    for (const WallForceRow& row : wall_force_rows(out)) {
-        forces[row.wall] = {row.force[0], row.force[1]};
-    }
-    return forces;
-}
-
-/// Janssen's p_h (Janssen 1895, EN 1991-4 Eq. 5.1-5.6; plane-strain slot, A/U = D/2) averaged over
-/// the depths [a, b] below the surface: gamma D/(2 mu) (1 - exp(-z/z0)), z0 = D/(2 K mu), with
-/// gamma D = the weight per metre of height.
-double janssen_band(double weight_per_height, double width, double k, double a, double b) {
-    const double z0 = width / (2.0 * k * kMu);
-    const double integral = (b - a) - z0 * (std::exp(-a / z0) - std::exp(-b / z0));
-    return weight_per_height / (2.0 * kMu) * integral / (b - a);
-}
-
 // - Vertical equilibrium at rest: the floor and the walls' friction carry the weight of what
 //   is in the silo (kinetic energy 1e-13 J at 3 s): to 0.1 % (measured 1e-5; the contact
 //   dashpot and the last ringing are below that).
@@ -57,19 +40,9 @@ TEST(SiloRestSmall, WallPressureAtRestAgainstJanssen) {
     EXPECT_LT(result_value(summary, "settle_time"), 3.0);
     const auto sand = read_named_block(run.out + "/frames/silo_rest_small_000030.vtm", "sand");
     ASSERT_TRUE(sand);
-    double x_min = 1e9, x_max = -1e9, y_min = 1e9, y_max = -1e9;
-    for (vtkIdType i = 0; i < sand->GetNumberOfPoints(); ++i) {
-        const double* x = sand->GetPoint(i);
-        x_min = std::min(x_min, x[0]);
-        x_max = std::max(x_max, x[0]);
-        y_min = std::min(y_min, x[1]);
-        y_max = std::max(y_max, x[1]);
-    }
-    const double mass = kParticleMass * static_cast<double>(sand->GetNumberOfPoints());
-    const double width = x_max - x_min + kSpacing;
-    const double surface = y_max + 0.5 * kSpacing;
-    const double weight_per_height = mass * kGravity / (surface - (y_min - 0.5 * kSpacing));
-    const auto forces = final_forces(run.out);
+    const SlotFill fill = measure_slot_fill(sand, kSpacing, kParticleMass, kGravity);
+    const double mass = fill.mass;
+    const auto forces = final_wall_forces(run.out);
     double carried = -forces.at("floor").second - forces.at("right").second;
     for (const auto& [wall, force] : forces) {
         carried -= wall.rfind("left", 0) == 0 ? force.second : 0.0;
@@ -83,10 +56,10 @@ TEST(SiloRestSmall, WallPressureAtRestAgainstJanssen) {
     for (int band = 1; band <= 4; ++band) {
         const auto [fx, fy] = forces.at("left" + std::to_string(band));
         const double p_h = -fx / kBand;
-        const double a = surface - kBand * (band + 1);
-        const double b = surface - kBand * band;
-        const double low = janssen_band(weight_per_height, width, k_low, a, b);
-        const double high = janssen_band(weight_per_height, width, k_high, a, b);
+        const double a = fill.surface - kBand * (band + 1);
+        const double b = fill.surface - kBand * band;
+        const double low = janssen_band(fill, k_low, kMu, a, b);
+        const double high = janssen_band(fill, k_high, kMu, a, b);
         std::cout << "band " << band << ": p_h " << p_h << " Pa, Janssen K=0.5 " << low
                   << " Pa, K=0.55 " << high << " Pa, friction/(mu p_h) "
                   << -fy / (kMu * p_h * kBand) << '\n';
