@@ -10,7 +10,8 @@
 namespace grainload::testing {
 namespace {
 
-// The plane-wedge hopper (Markauskas, seed 003) in plane strain at 25 mm, rigid walls, the
+// The plane-wedge hopper of D. Markauskas, "Discrete element modelling of complex
+// axisymmetrical particle flow", in plane strain at 25 mm, rigid walls, the
 // gate removed at once at 0.4 s: cases/hopper_discharge/hopper_discharge.toml, figures in
 // docs/validation/hopper_discharge.md ("Results"). About 20 s on 2 threads.
 constexpr double kGravity = 9.81;
