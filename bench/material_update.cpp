@@ -42,6 +42,9 @@ enum class Calls { single, tangent, blocks };
 
 /// Points a block of the SPH stress update holds (sph/stress_update.cpp).
 constexpr int kBlock = 64;
+/// The time step the increments are taken over: the order of the 2D collapse's SPH step. Only a
+/// rate-dependent model (mu(I)) reads it.
+constexpr double kTimeStep = 1e-5;
 
 Figures run(const Material& material, int points, int steps, double stress_step, double shear,
             Calls calls) {
@@ -76,9 +79,10 @@ Figures run(const Material& material, int points, int steps, double stress_step,
             const auto u = static_cast<std::size_t>(i);
             if (calls == Calls::blocks) {
                 const auto count = static_cast<std::size_t>(std::min(kBlock, points - i));
-                material.update_points(
-                    step_increments.subspan(u, count), std::span(stress).subspan(u, count),
-                    std::span(states).subspan(u, count), std::span(regions).subspan(u, count));
+                material.update_points(step_increments.subspan(u, count), kTimeStep,
+                                       std::span(stress).subspan(u, count),
+                                       std::span(states).subspan(u, count),
+                                       std::span(regions).subspan(u, count));
                 continue;
             }
             regions[u] = material.update(step_increments[u], stress[u],
