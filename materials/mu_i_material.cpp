@@ -101,12 +101,17 @@ PlasticRegion MuIMaterial::update_over(const Voigt6& strain_increment, double ti
                                        Voigt6& stress, std::span<double> state,
                                        Matrix6* tangent) const {
     const DruckerPragerTrial trial = drucker_prager_trial(elastic_, stress, strain_increment);
-    // The step's shear rate and its trial pressure: the cone return keeps I1 (alpha_flow = 0),
-    // so p is also the pressure the step ends at.
-    const double inertial =
-        law_.inertial_number(shear_rate(strain_increment, time_step), -trial.i1 / 3.0);
-    return drucker_prager_return(elastic_, cone(law_.friction(inertial)), trial, stress, state,
-                                 tangent);
+    DruckerPragerCone step_cone = cone(law_.mu_s);
+    // Inside the static cone (there I1 <= 0) the step is elastic whatever the rate, as mu(I) >=
+    // mu_s only widens the cone: the rate is needed only outside it, where most steps are not.
+    if (trial.sqrt_j2 + step_cone.alpha * trial.i1 > 0.0) {
+        // The step's shear rate and its trial pressure: the cone return keeps I1
+        // (alpha_flow = 0), so p is also the pressure the step ends at.
+        const double inertial =
+            law_.inertial_number(shear_rate(strain_increment, time_step), -trial.i1 / 3.0);
+        step_cone = cone(law_.friction(inertial));
+    }
+    return drucker_prager_return(elastic_, step_cone, trial, stress, state, tangent);
 }
 
 } // namespace grainload::materials
