@@ -2,20 +2,22 @@
 // consistent tangent, and through Material::update_points in blocks of 64 points as the SPH
 // stress update calls it (no tangent); and where the returns end (elastic, failure surface, cap,
 // corner, apex).
-// The sand is the thesis's generalized cap (section 7.2, X0 = 0: every compressed point sits on
-// the cap, as in the 3D column collapse) at the full stiffness and at K/1000, and the
-// Drucker-Prager sand of the 2D collapse. Each point follows its own random strain path: a
-// compressive volumetric drift plus random strain, scaled so that one increment changes the
-// stress by about `stress_step` (a few per cent of the kPa stresses of a lab-scale column).
-// "Compacting" paths have random parts as large as the drift; "shearing" paths ten times
-// larger, which drives trials far above the envelope beyond the cap centre, the states of a
-// flowing column (there the cap Newton from the trial heads out of its box).
+// The sand is the thesis's generalized cap (section 7.2, X0 = 0: every compressed point sits on the
+// cap, as in the 3D column collapse) at the full stiffness and at K/1000, and the Drucker-Prager
+// sand of the 2D collapse and the same sand with mu(I) (whose one-by-one calls are update(), its
+// rest state; the blocks take each increment over kTimeStep, so they read the rate). Each point
+// follows its own random strain path: a compressive volumetric drift plus random strain, scaled so
+// that one increment changes the stress by about `stress_step` (a few per cent of the kPa stresses
+// of a lab-scale column). "Compacting" paths have random parts as large as the drift; "shearing"
+// paths ten times larger, which drives trials far above the envelope beyond the cap centre, the
+// states of a flowing column (there the cap Newton from the trial heads out of its box).
 //
 // usage: material_update [points] [steps]   (default 20000 points, 50 steps)
 
 #include "materials/cone_fit.hpp"
 #include "materials/drucker_prager.hpp"
 #include "materials/generalized_cap.hpp"
+#include "materials/mu_i_material.hpp"
 
 #include <algorithm>
 #include <array>
@@ -42,6 +44,9 @@ enum class Calls { single, tangent, blocks };
 
 /// Points a block of the SPH stress update holds (sph/stress_update.cpp).
 constexpr int kBlock = 64;
+/// The time step the increments are taken over: the order of the 2D collapse's SPH step. Only a
+/// rate-dependent model (mu(I)) reads it.
+constexpr double kTimeStep = 1e-5;
 
 Figures run(const Material& material, int points, int steps, double stress_step, double shear,
             Calls calls) {
@@ -76,9 +81,10 @@ Figures run(const Material& material, int points, int steps, double stress_step,
             const auto u = static_cast<std::size_t>(i);
             if (calls == Calls::blocks) {
                 const auto count = static_cast<std::size_t>(std::min(kBlock, points - i));
-                material.update_points(
-                    step_increments.subspan(u, count), std::span(stress).subspan(u, count),
-                    std::span(states).subspan(u, count), std::span(regions).subspan(u, count));
+                material.update_points(step_increments.subspan(u, count), kTimeStep,
+                                       std::span(stress).subspan(u, count),
+                                       std::span(states).subspan(u, count),
+                                       std::span(regions).subspan(u, count));
                 continue;
             }
             regions[u] = material.update(step_increments[u], stress[u],
@@ -134,6 +140,10 @@ int main(int argc, char** argv) {
         fit_cone(ConeFit::plane_strain, 21.9 * std::numbers::pi / 180.0, 0.0, 0.0);
     const DruckerPrager sand(ElasticConstants::from_young(2040.0, 5.84e6, 0.3),
                              {cone.alpha, cone.k, cone.alpha_flow});
+    // The same bars with mu(I) (cases/column_collapse_2d/column_collapse_2d_mu_i_small.toml):
+    // mu_s = sin 21.9 deg is the cone above.
+    const MuIMaterial bars(ElasticConstants::from_young(2040.0, 5.84e6, 0.3),
+                           {3.0 * cone.alpha, 3.0 * cone.alpha + 0.2616, 0.279, 1.25e-3, 2700.0});
     std::printf("%d points x %d steps, one thread, stress change per increment ~100 Pa\n", points,
                 steps);
     std::printf("%-34s %-8s %10s   %% elastic/failure/cap/corner/apex\n", "model", "tangent",
@@ -143,5 +153,6 @@ int main(int argc, char** argv) {
     report("cap, K/1000, compacting", scaled, points, steps, 100.0, 1.0);
     report("cap, K/1000, shearing", scaled, points, steps, 100.0, 10.0);
     report("Drucker-Prager, 2D collapse sand", sand, points, steps, 100.0, 1.0);
+    report("mu(I), 2D collapse sand", bars, points, steps, 100.0, 1.0);
     return 0;
 }

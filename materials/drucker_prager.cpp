@@ -12,7 +12,6 @@ namespace grainload::materials {
 
 namespace {
 constexpr int kPlasticStrain = 0;
-constexpr int kPlasticVolumetric = 1;
 
 DruckerPrager::Parameters parameters_from_angles(const io::CaseTable& table) {
     namespace dim = io::dimension;
@@ -49,13 +48,6 @@ DruckerPrager::Parameters parameters_from_thesis(const io::CaseTable& table) {
     return {theta, k, theta_flow};
 }
 } // namespace
-
-/// Trial (elastic predictor) state and its invariants.
-struct DruckerPrager::Trial {
-    Voigt6 deviator;
-    double i1 = 0.0;
-    double sqrt_j2 = 0.0;
-};
 
 DruckerPrager::DruckerPrager(ElasticConstants elastic, Parameters parameters)
     : Material(elastic), parameters_(parameters) {
@@ -103,87 +95,9 @@ double DruckerPrager::yield_function(const Voigt6& stress) const {
 
 PlasticRegion DruckerPrager::update(const Voigt6& strain_increment, Voigt6& stress,
                                     std::span<double> state, Matrix6* tangent) const {
-    const Parameters& p = parameters_;
-    const double bulk = elastic_.bulk_modulus;
-    const double shear = elastic_.shear_modulus;
-    const Voigt6 trial_stress = stress + elastic_.stress_from_strain(strain_increment);
-    Trial trial;
-    trial.deviator = voigt::deviator(trial_stress);
-    trial.i1 = voigt::trace(trial_stress);
-    trial.sqrt_j2 = voigt::norm(trial.deviator) / std::sqrt(2.0);
-    const double f_cone = trial.sqrt_j2 + p.alpha * trial.i1 - p.k;
-    if (f_cone <= 0.0 && trial.i1 <= p.tension_cutoff) {
-        stress = trial_stress;
-        if (tangent != nullptr) {
-            *tangent = elastic_.stiffness();
-        }
-        return PlasticRegion::elastic;
-    }
-    PlasticRegion region = PlasticRegion::apex;
-    // Cone return first: valid when it lands on the cone below the cutoff (I1 <= T).
-    const double multiplier = f_cone / (shear + 9.0 * bulk * p.alpha * p.alpha_flow);
-    if (f_cone > 0.0 && trial.i1 - 9.0 * bulk * p.alpha_flow * multiplier <= p.tension_cutoff) {
-        return_to_cone(trial, multiplier, stress, tangent);
-        region = PlasticRegion::failure_surface;
-    } else if (trial.sqrt_j2 <= p.k - p.alpha * p.tension_cutoff) {
-        return_to_cutoff(trial, stress, tangent);
-    } else {
-        return_to_corner(trial, stress, tangent);
-    }
-    // Plastic strains from the stress correction: d(eps_v^p) = dI1 / 3K, de^p = ds / 2G.
-    state[kPlasticVolumetric] += (trial.i1 - voigt::trace(stress)) / (3.0 * bulk);
-    state[kPlasticStrain] += std::sqrt(2.0 / 3.0) *
-                             voigt::norm(trial.deviator - voigt::deviator(stress)) / (2.0 * shear);
-    return region;
-}
-
-// Cone: sigma = sigma_tr - dg D_e dg/dsigma with dg/dsigma = n / sqrt2 + alpha_flow 1, so sqrt(J2)
-// drops by G dg and I1 by 9 K alpha_flow dg; f = 0 gives dg = f_tr / (G + 9 K alpha alpha_flow).
-// Tangent (de Souza Neto eq. 8.74 without hardening):
-// D = D_e - a (x) b / (G + 9K alpha alpha_flow) - (G dg / sqrt(J2_tr)) (2G I_dev - 2G n (x) n),
-// a = sqrt2 G n + 3K alpha_flow 1 (flow), b = sqrt2 G n + 3K alpha 1 (yield normal).
-void DruckerPrager::return_to_cone(const Trial& trial, double multiplier, Voigt6& stress,
-                                   Matrix6* tangent) const {
-    const Parameters& p = parameters_;
-    const double bulk = elastic_.bulk_modulus;
-    const double shear = elastic_.shear_modulus;
-    const double sqrt_j2 = trial.sqrt_j2 - shear * multiplier;
-    const double i1 = trial.i1 - 9.0 * bulk * p.alpha_flow * multiplier;
-    stress = (sqrt_j2 / trial.sqrt_j2) * trial.deviator + (i1 / 3.0) * voigt::identity();
-    if (tangent == nullptr) {
-        return;
-    }
-    const Voigt6 n = trial.deviator / (std::sqrt(2.0) * trial.sqrt_j2);
-    const Voigt6 flow = std::sqrt(2.0) * shear * n + 3.0 * bulk * p.alpha_flow * voigt::identity();
-    const Voigt6 normal = std::sqrt(2.0) * shear * n + 3.0 * bulk * p.alpha * voigt::identity();
-    const double ratio = shear * multiplier / trial.sqrt_j2;
-    *tangent = elastic_.stiffness() -
-               voigt::outer(flow, normal) / (shear + 9.0 * bulk * p.alpha * p.alpha_flow) -
-               ratio * (voigt::deviatoric_stiffness(shear) - 2.0 * shear * voigt::outer(n, n));
-}
-
-// Cutoff plane I1 = T with associated flow (direction 1): the deviator is untouched, so
-// D = 2G I_dev.
-void DruckerPrager::return_to_cutoff(const Trial& trial, Voigt6& stress, Matrix6* tangent) const {
-    stress = trial.deviator + (parameters_.tension_cutoff / 3.0) * voigt::identity();
-    if (tangent != nullptr) {
-        *tangent = voigt::deviatoric_stiffness(elastic_.shear_modulus);
-    }
-}
-
-// Corner circle I1 = T, sqrt(J2) = k - alpha T (the apex point when T = k / alpha): both
-// multipliers active; the stress keeps the trial Lode direction n, so
-// s = sqrt2 (k - alpha T) n and D = ((k - alpha T) / sqrt(J2_tr)) (2G I_dev - 2G n (x) n).
-void DruckerPrager::return_to_corner(const Trial& trial, Voigt6& stress, Matrix6* tangent) const {
-    const Parameters& p = parameters_;
-    const double shear = elastic_.shear_modulus;
-    const double ratio = (p.k - p.alpha * p.tension_cutoff) / trial.sqrt_j2;
-    stress = ratio * trial.deviator + (p.tension_cutoff / 3.0) * voigt::identity();
-    if (tangent == nullptr) {
-        return;
-    }
-    const Voigt6 n = trial.deviator / (std::sqrt(2.0) * trial.sqrt_j2);
-    *tangent = ratio * (voigt::deviatoric_stiffness(shear) - 2.0 * shear * voigt::outer(n, n));
+    return drucker_prager_return(elastic_, parameters_,
+                                 drucker_prager_trial(elastic_, stress, strain_increment), stress,
+                                 state, tangent);
 }
 
 } // namespace grainload::materials

@@ -1,8 +1,8 @@
 #pragma once
 
+#include "materials/drucker_prager_return.hpp"
 #include "materials/material.hpp"
 
-#include <limits>
 #include <memory>
 
 namespace grainload::materials {
@@ -17,18 +17,13 @@ namespace grainload::materials {
 /// The invariant is sqrt(J2) = ||s|| / sqrt(2); constants fitted against ||s|| differ by sqrt 2.
 /// The return map is closed form (the model is perfectly plastic, so each region's equation is
 /// linear) with three regions: the cone, the cutoff plane, and their intersection circle, which
-/// is the apex itself when T is at the apex (the default). Derivation and consistent tangents in
-/// docs/theory/materials.md.
+/// is the apex itself when T is at the apex (the default); materials/drucker_prager_return.hpp
+/// holds it. Derivation and consistent tangents in docs/theory/materials.md.
 ///
 /// State per point: equivalent plastic strain sqrt(2/3)||e_p||, plastic volumetric strain.
 class DruckerPrager final : public Material {
   public:
-    struct Parameters {
-        double alpha = 0.0;      ///< friction coefficient on I1
-        double k = 0.0;          ///< cohesion term, Pa
-        double alpha_flow = 0.0; ///< dilatancy coefficient on I1 in the potential
-        double tension_cutoff = std::numeric_limits<double>::infinity(); ///< T on I1, Pa
-    };
+    using Parameters = DruckerPragerCone;
 
     /// A cutoff above the apex k/alpha is clamped to it; infinity with alpha > 0 means the apex.
     DruckerPrager(ElasticConstants elastic, Parameters parameters);
@@ -51,12 +46,6 @@ class DruckerPrager final : public Material {
     double yield_function(const Voigt6& stress) const;
 
   private:
-    struct Trial;
-    void return_to_cone(const Trial& trial, double multiplier, Voigt6& stress,
-                        Matrix6* tangent) const;
-    void return_to_cutoff(const Trial& trial, Voigt6& stress, Matrix6* tangent) const;
-    void return_to_corner(const Trial& trial, Voigt6& stress, Matrix6* tangent) const;
-
     Parameters parameters_;
 };
 

@@ -268,7 +268,7 @@ PlasticRegion GeneralizedCap::update(const Voigt6& strain_increment, Voigt6& str
     return r.region;
 }
 
-void GeneralizedCap::update_points(std::span<const Voigt6> strain_increments,
+void GeneralizedCap::update_points(std::span<const Voigt6> strain_increments, double,
                                    std::span<Voigt6> stresses, std::span<double* const> states,
                                    std::span<PlasticRegion> regions) const {
     const std::size_t n = stresses.size();

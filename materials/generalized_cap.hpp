@@ -48,9 +48,10 @@ class GeneralizedCap final : public Material {
     void initialise_state(std::span<double> state) const override;
     PlasticRegion update(const Voigt6& strain_increment, Voigt6& stress, std::span<double> state,
                          Matrix6* tangent) const override;
-    /// The points' returns through cap::return_map_many: bit for bit as update().
-    void update_points(std::span<const Voigt6> strain_increments, std::span<Voigt6> stresses,
-                       std::span<double* const> states,
+    /// The points' returns through cap::return_map_many: bit for bit as update(). The model is
+    /// rate-independent: the time step is not used.
+    void update_points(std::span<const Voigt6> strain_increments, double time_step,
+                       std::span<Voigt6> stresses, std::span<double* const> states,
                        std::span<PlasticRegion> regions) const override;
     double equivalent_plastic_strain(std::span<const double> state) const override;
 

@@ -8,12 +8,18 @@ void Material::initialise_state(std::span<double> state) const {
     std::fill(state.begin(), state.end(), 0.0);
 }
 
-void Material::update_points(std::span<const Voigt6> strain_increments, std::span<Voigt6> stresses,
-                             std::span<double* const> states,
+PlasticRegion Material::update_over(const Voigt6& strain_increment, double, Voigt6& stress,
+                                    std::span<double> state, Matrix6* tangent) const {
+    return update(strain_increment, stress, state, tangent);
+}
+
+void Material::update_points(std::span<const Voigt6> strain_increments, double time_step,
+                             std::span<Voigt6> stresses, std::span<double* const> states,
                              std::span<PlasticRegion> regions) const {
     const auto size = static_cast<std::size_t>(state_size());
     for (std::size_t k = 0; k < stresses.size(); ++k) {
-        regions[k] = update(strain_increments[k], stresses[k], {states[k], size}, nullptr);
+        regions[k] =
+            update_over(strain_increments[k], time_step, stresses[k], {states[k], size}, nullptr);
     }
 }
 

@@ -41,10 +41,19 @@ class Material {
     virtual PlasticRegion update(const Voigt6& strain_increment, Voigt6& stress,
                                  std::span<double> state, Matrix6* tangent) const = 0;
 
-    /// update() without tangents for several points (states[k] holds point k's state_size()
-    /// doubles), each exactly as update() gives it. The default takes them one after another;
-    /// a model whose return iterates may interleave the points' iterations.
-    virtual void update_points(std::span<const Voigt6> strain_increments,
+    /// update() over a step of `time_step` seconds. A rate-dependent model reads its strain rate
+    /// as strain_increment / time_step (materials/mu_i_material.hpp), and its update() is the
+    /// quasi-static limit (zero rate); a rate-independent model ignores the time: the default
+    /// is update().
+    virtual PlasticRegion update_over(const Voigt6& strain_increment, double time_step,
+                                      Voigt6& stress, std::span<double> state,
+                                      Matrix6* tangent) const;
+
+    /// update_over() without tangents for several points of one time step (states[k] holds
+    /// point k's state_size() doubles), each exactly as update_over() gives it. The default
+    /// takes them one after another; a model whose return iterates may interleave the points'
+    /// iterations.
+    virtual void update_points(std::span<const Voigt6> strain_increments, double time_step,
                                std::span<Voigt6> stresses, std::span<double* const> states,
                                std::span<PlasticRegion> regions) const;
 

@@ -16,9 +16,12 @@ MaterialLibrary MaterialLibrary::from_case(const io::CaseTable& root) {
         }
         library.materials_.push_back(make_material(table));
         library.names_.push_back(std::move(name));
+        // Read through the model's sub-table, where mu_i may hold its grain size too: one d for
+        // the rheology and for Beverloo's k d.
+        const io::CaseTable keys = table.with_sub_table(library.materials_.back()->model());
         library.grain_sizes_.push_back(
-            table.has("grain_size")
-                ? std::optional(table.positive_quantity("grain_size", io::dimension::kLength))
+            keys.has("grain_size")
+                ? std::optional(keys.positive_quantity("grain_size", io::dimension::kLength))
                 : std::nullopt);
     }
     return library;

@@ -43,7 +43,7 @@ void queue(ParticleSet& p, Index i, double dt, PointBatch& b) {
 /// The queued points' returns and what the particles keep of them.
 void flush(ParticleSet& p, const materials::Material& material, double dt, PointBatch& b) {
     b.regions.resize(b.particles.size());
-    material.update_points(b.increments, b.stresses, b.states, b.regions);
+    material.update_points(b.increments, dt, b.stresses, b.states, b.regions);
     const auto size = static_cast<std::size_t>(material.state_size());
     for (std::size_t k = 0; k < b.particles.size(); ++k) {
         const Index i = b.particles[k];

@@ -27,8 +27,9 @@ inline Mat3 jaumann_rotation(const Vec3& spin, double dt) {
 }
 
 /// Per material particle: rotate the stress by jaumann_rotation(), then call the particle's
-/// material with strain increment strain_rate * dt (engineering shear), a block of up to 64
-/// consecutive particles of one material at a time (Material::update_points). The specific internal
+/// material with strain increment strain_rate * dt (engineering shear) over the step dt (from
+/// which a rate-dependent material takes its strain rate), a block of up to 64 consecutive
+/// particles of one material at a time (Material::update_points). The specific internal
 /// energy advances by the stress power at the mid-step stress, thesis eq. (4.5.5.9) in the
 /// form de/dt = sigma : D / rho. Plastic strain and plastic region are stored for output.
 /// Only the first `count` particles (< 0: all): mirror images after them (sph/symmetry.hpp)

@@ -18,6 +18,8 @@ namespace {
 constexpr int kPoints = 150; // two full blocks of 64 and a partial one
 constexpr int kBlock = 64;
 constexpr int kSteps = 40;
+/// The step the increments are taken over; the models here are rate-independent.
+constexpr double kTimeStep = 1e-5;
 
 bool same_bits(const Voigt6& a, const Voigt6& b) {
     return std::memcmp(a.data(), b.data(), sizeof(double) * 6) == 0;
@@ -59,7 +61,7 @@ std::set<PlasticRegion> compare(const Material& m, double scale, const std::stri
         for (int i = 0; i < kPoints; i += kBlock) {
             const auto first = static_cast<std::size_t>(i);
             const auto count = static_cast<std::size_t>(std::min(kBlock, kPoints - i));
-            m.update_points(std::span(increments).subspan(first, count),
+            m.update_points(std::span(increments).subspan(first, count), kTimeStep,
                             std::span(blocked).subspan(first, count),
                             std::span(states).subspan(first, count),
                             std::span(regions).subspan(first, count));

@@ -1,0 +1,71 @@
+#pragma once
+
+#include "io/key_spec.hpp"
+#include "materials/drucker_prager_return.hpp"
+#include "materials/material.hpp"
+#include "materials/mu_i_law.hpp"
+
+#include <array>
+#include <memory>
+
+namespace grainload::io {
+class CaseTable;
+}
+
+namespace grainload::materials {
+
+/// The keys of a [[material]] with model = "mu_i" besides density and the elastic pair
+/// (docs/user-guide.md, "`mu_i`").
+inline constexpr std::array<io::KeySpec, 7> kMuIKeys{{
+    {"mu_s", "number", "required unless `angle_s`",
+     "static friction mu_s = sqrt(J2)/p at rest (I = 0), > 0"},
+    {"angle_s", "angle", "required unless `mu_s`", "the static friction as an angle: mu_s = tan"},
+    {"mu_2", "number", "required unless `angle_2`",
+     "limit friction mu_2 >= mu_s, reached as I grows without bound; below sqrt(3)"},
+    {"angle_2", "angle", "required unless `mu_2`", "the limit friction as an angle: mu_2 = tan"},
+    {"i0", "number", "", "I0 > 0: the inertial number at which mu is half-way from mu_s to mu_2"},
+    {"grain_size", "length", "", "the grain diameter d of the inertial number (> 0)"},
+    {"grain_density", "density", "",
+     "rho_s, the density of the grains' solid (not the bulk density, which it must exceed)"},
+}};
+
+/// Elasto-viscoplastic mu(I) material (Jop, Forterre & Pouliquen 2006): the Drucker-Prager
+/// return of drucker_prager_return.hpp on the cone sqrt(J2) = mu p, whose friction
+/// mu = mu(I) is evaluated with the step's strain rate and trial pressure:
+///
+///     alpha = mu(I) / 3,  k = 0,  alpha_flow = 0 (isochoric flow),  cutoff at the apex I1 = 0,
+///
+/// the cone of Jop et al.'s |tau| = mu(I) P, which in plane strain is the plane_strain cone
+/// fit of a cohesionless, non-dilatant Mohr-Coulomb material with sin(phi) = mu. At rest (zero
+/// shear rate) I = 0 and mu = mu_s exactly, so the update is, bit for bit, that of the
+/// DruckerPrager material {mu_s / 3, 0, 0}: same elastic predictor, same return, no creep. The
+/// tangent is the cone's at the step's mu (it leaves out d mu / d eps). Equations, the cone in
+/// 3D and in plane strain, and the known limits of the law in docs/theory/mu_i.md.
+///
+/// State per point as DruckerPrager: equivalent plastic strain, plastic volumetric strain.
+class MuIMaterial final : public Material {
+  public:
+    MuIMaterial(ElasticConstants elastic, MuILaw law);
+    /// kMuIKeys plus the elastic keys.
+    static std::unique_ptr<MuIMaterial> from_case(const io::CaseTable& table);
+
+    /// The cone of a friction coefficient mu: {mu / 3, 0, 0, 0}.
+    static DruckerPragerCone cone(double mu);
+
+    std::string_view model() const override { return "mu_i"; }
+    int state_size() const override { return 2; }
+    std::vector<std::string> state_names() const override;
+    /// The quasi-static limit: update_over() with an infinite time step, I = 0, mu = mu_s.
+    PlasticRegion update(const Voigt6& strain_increment, Voigt6& stress, std::span<double> state,
+                         Matrix6* tangent) const override;
+    PlasticRegion update_over(const Voigt6& strain_increment, double time_step, Voigt6& stress,
+                              std::span<double> state, Matrix6* tangent) const override;
+    double equivalent_plastic_strain(std::span<const double> state) const override;
+
+    const MuILaw& law() const { return law_; }
+
+  private:
+    MuILaw law_;
+};
+
+} // namespace grainload::materials
