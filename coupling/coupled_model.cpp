@@ -488,6 +488,10 @@ void CoupledModel::read_checkpoint(std::istream& in) {
         throw std::runtime_error("checkpoint: the interface load does not match the shell mesh");
     }
     start_load_ = Eigen::Map<const Eigen::VectorXd>(load.data(), load_.size());
+    // The last window's end load is the next one's start: the shell's forces since then, which
+    // its support reactions (summary.json) balance even when no window follows the restart.
+    end_load_ = start_load_;
+    fem_->restore_forces(start_load_);
     std::vector<double> state;
     io::read_array(in, state);
     monitor_.set_state(state);

@@ -142,6 +142,11 @@ void ShellModel::advance_with_forces(double t, double dt, const Eigen::VectorXd&
     solve_step(t, dt);
 }
 
+void ShellModel::restore_forces(const Eigen::VectorXd& forces) {
+    analysis_->set_additional_forces(forces);
+    reactions_ = analysis_->reactions();
+}
+
 double ShellModel::kinetic_energy() const {
     return dynamic_ ? newmark_->kinetic_energy() : 0.0;
 }

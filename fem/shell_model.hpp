@@ -60,6 +60,9 @@ class ShellModel final : public io::Stepper {
     /// e.g. the sand's load on the walls) besides the case's own loads; solves even when the
     /// case's loads stay constant, since the forces change.
     void advance_with_forces(double t, double dt, const Eigen::VectorXd& forces);
+    /// After read_checkpoint: the forces of the last advance_with_forces before the checkpoint
+    /// (the coupling stores them), so that the reactions and the next solve see them again.
+    void restore_forces(const Eigen::VectorXd& forces);
     bool dynamic() const { return dynamic_; }
     /// [fem].increments_per_step: load increments of a static step.
     int increments_per_step() const { return increments_per_step_; }

@@ -238,6 +238,16 @@ inline void expect_restarts_reproduce_the_run(const std::vector<std::string>& ar
         ASSERT_EQ(restarted.exit_code, 0) << what.str() << "\n" << restarted.output;
         expect_same_outputs(whole, killed, what.str());
     }
+    // A kill that lands after the run ended leaves its last checkpoint: a restart from it takes
+    // no step, and must still report what the run did (a coupled shell's support reactions
+    // once came back as zero, its sand loads not restored).
+    const std::string finished = fresh_directory(name + "_finished");
+    std::filesystem::copy(whole, finished, std::filesystem::copy_options::recursive);
+    const auto again = run_cli(quoted(arguments) + " --out '" + finished + "' --restart '" +
+                                   finished + "/checkpoint.bin'",
+                               finished + ".restart.log");
+    ASSERT_EQ(again.exit_code, 0) << name << ", restarted after its end\n" << again.output;
+    expect_same_outputs(whole, finished, name + ", restarted from its last checkpoint");
 }
 
 } // namespace grainload::testing
