@@ -35,6 +35,12 @@ void read_costs(const io::JsonValue& file, Calibration& c) {
     get("seconds_per_body_3d", c.seconds_per_body_3d);
     get("seconds_per_wall_3d", c.seconds_per_wall_3d);
     get("seconds_per_contact_entry_3d", c.seconds_per_contact_entry_3d);
+    get("corrected_factor_2d", c.corrected_factor_2d);
+    get("corrected_factor_3d", c.corrected_factor_3d);
+    get("total_lagrangian_factor_2d", c.total_lagrangian_factor_2d);
+    get("total_lagrangian_factor_3d", c.total_lagrangian_factor_3d);
+    get("seconds_per_step_2d", c.seconds_per_step_2d);
+    get("seconds_per_step_3d", c.seconds_per_step_3d);
     get("shell_factorisation_seconds", c.shell_factorisation_seconds);
     get("shell_factorisation_dofs", c.shell_factorisation_dofs);
     get("shell_seconds_per_dof_solved_step", c.shell_seconds_per_dof_solved_step);

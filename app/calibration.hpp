@@ -30,6 +30,23 @@ struct Calibration {
     double seconds_per_body_3d = 5.9e-7;
     double seconds_per_wall_3d = 2.6e-8;
     double seconds_per_contact_entry_3d = 6.1e-8;
+    /// A body's step with the kernel-gradient correction on (sph.kernel_gradient_correction,
+    /// the default: a pass more over the entries, a 3 x 3 inverse per particle), and in the total
+    /// Lagrangian formulation (sph.formulation; a linear elastic block, correction on, its
+    /// reference list built once), over the same block's step without: factors on the entries'
+    /// and body particles' costs. Built-in: bench/sph_throughput --calibrate on the 2-core
+    /// development machine, quiet (2026-12-06).
+    double corrected_factor_2d = 1.27;
+    double corrected_factor_3d = 2.03;
+    double total_lagrangian_factor_2d = 0.72;
+    double total_lagrangian_factor_3d = 2.13;
+    /// A step's fixed cost, whatever its particles (the parallel loops' entries and exits, the
+    /// energy books, the watches): `grainload run` of 4 and 8 free particles, 10 000 steps
+    /// against 2000. Built-in: bench/sph_throughput --calibrate on the 2-core development
+    /// machine, quiet (2026-12-06); each of the two dozen parallel loops of a step costs about
+    /// 2 us there even on one thread (libgomp wakes its team's futex).
+    double seconds_per_step_2d = 3.7e-5;
+    double seconds_per_step_3d = 3.8e-5;
     /// Speed-up of `threads_measured` threads over one on the SPH step, measured the same way
     /// (best of alternated runs). One below 1 contradicts itself (more threads cannot be slower
     /// on an idle machine: the measurement met a busy one) and is discarded on reading:

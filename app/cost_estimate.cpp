@@ -67,9 +67,13 @@ std::string duration(double s) {
 namespace {
 
 /// Neighbour-list entries of a particle inside a body: the sites of its lattice (the bodies'
-/// spacing) within the kernel's support radius, itself excluded.
+/// spacing) within the list's radius (support + Verlet skin), itself excluded, halved: the list
+/// holds a pair of one body once (sph/pair_parts.hpp).
 double bulk_entries(const sph::SphModel& sph) {
-    const double reach = sph.solver()->kernel().support_radius() / sph.spacing();
+    const sph::SphOptions& options = sph.solver()->options();
+    const double radius = sph.solver()->kernel().support_radius() +
+                          options.verlet_skin_factor * options.smoothing_length;
+    const double reach = radius / sph.spacing();
     const int n = static_cast<int>(std::floor(reach));
     const bool two_d = sph.dimension() == 2;
     double sites = 0.0;
@@ -80,7 +84,20 @@ double bulk_entries(const sph::SphModel& sph) {
             }
         }
     }
-    return sites - 1.0;
+    return 0.5 * (sites - 1.0);
+}
+
+/// The calibrated factor on the entries' and body particles' costs for the solver's
+/// formulation and kernel-gradient correction (1 for the calibration's own block).
+double formulation_factor(const sph::SphOptions& options, const Calibration& c) {
+    const bool two_d = options.dimension == 2;
+    if (options.formulation == sph::Formulation::total_lagrangian) {
+        return two_d ? c.total_lagrangian_factor_2d : c.total_lagrangian_factor_3d;
+    }
+    if (options.kernel_gradient_correction) {
+        return two_d ? c.corrected_factor_2d : c.corrected_factor_3d;
+    }
+    return 1.0;
 }
 
 /// Seconds of one thread per SPH step of a model at the calibrated costs, averaged over a run
@@ -98,13 +115,20 @@ double sph_seconds_per_step(const sph::SphModel& sph, double created, const Cali
     e.wall_particles += walls;
     e.entries += entries;
     e.contact_entries += contacts;
+    if (sph.solver() == nullptr) {
+        // Free flight (interactions = false): a position update per particle, nanoseconds,
+        // negligible beside the frames.
+        return 0.0;
+    }
     const bool two_d = sph.dimension() == 2;
+    const double factor = formulation_factor(sph.solver()->options(), c);
+    const double per_entry = factor * (two_d ? c.seconds_per_entry_2d : c.seconds_per_entry_3d);
+    const double per_body = factor * (two_d ? c.seconds_per_body_2d : c.seconds_per_body_3d);
     return (static_cast<double>(entries) + created * (created != 0.0 ? bulk_entries(sph) : 0.0)) *
-               (two_d ? c.seconds_per_entry_2d : c.seconds_per_entry_3d) +
+               per_entry +
            static_cast<double>(contacts) *
                (two_d ? c.seconds_per_contact_entry_2d : c.seconds_per_contact_entry_3d) +
-           (static_cast<double>(n - walls) + created) *
-               (two_d ? c.seconds_per_body_2d : c.seconds_per_body_3d) +
+           (static_cast<double>(n - walls) + created) * per_body +
            static_cast<double>(walls) * (two_d ? c.seconds_per_wall_2d : c.seconds_per_wall_3d);
 }
 
@@ -215,7 +239,11 @@ CostEstimate estimate_cost(const Scene& scene, int threads, const Calibration& c
         e.particle_steps = (static_cast<double>(sph->point_count() - e.wall_particles) +
                             e.average_created - e.average_discharged) *
                            e.sph_steps;
-        e.sph_seconds = per_step * e.sph_steps / speedup_of(e.threads, calibration);
+        // The step's fixed cost is paid whole on every thread count.
+        const double fixed = sph->solver() == nullptr ? 0.0
+                             : sph->dimension() == 2  ? calibration.seconds_per_step_2d
+                                                      : calibration.seconds_per_step_3d;
+        e.sph_seconds = (per_step / speedup_of(e.threads, calibration) + fixed) * e.sph_steps;
         bytes += sph->solver() ? static_cast<double>(sph->solver()->bytes()) : 0.0;
     }
     auto add_shell = [&](const fem::ShellModel& fem, bool in_coupling, bool loaded) {

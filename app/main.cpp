@@ -1,4 +1,5 @@
 #include "app/command_line.hpp"
+#include "app/heap_trim.hpp"
 #include "app/openmp_wait.hpp"
 #include "app/run_driver.hpp"
 #include "app/trade_command.hpp"
@@ -13,6 +14,7 @@
 int main(int argc, char** argv) {
     using namespace grainload;
     app::default_openmp_wait(argv);
+    app::keep_freed_heap();
     try {
         const app::CommandLine line = app::parse_command_line(argc, argv);
         switch (line.command) {

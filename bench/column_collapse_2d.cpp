@@ -12,6 +12,7 @@
 //   --set is passed to the run (e.g. --set 'case.end_time=0.1 s' for a short check).
 
 #include "app/command_line.hpp"
+#include "app/heap_trim.hpp"
 #include "app/openmp_wait.hpp"
 #include "app/run_driver.hpp"
 
@@ -202,6 +203,7 @@ Deposit measure(const std::vector<Particle>& p) {
 
 int main(int argc, char** argv) {
     grainload::app::default_openmp_wait(argv); // the product default, as grainload run
+    grainload::app::keep_freed_heap();
     using grainload::app::CommandLine;
     CommandLine line;
     line.command = CommandLine::Command::run;

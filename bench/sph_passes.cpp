@@ -13,6 +13,7 @@
 // usage: sph_passes [--threads N] [--reps R] [--restart CHECKPOINT] [--set KEY=VALUE]...
 //                   [CASE.toml]
 
+#include "app/heap_trim.hpp"
 #include "app/openmp_wait.hpp"
 #include "app/scene.hpp"
 #include "io/binary_stream.hpp"
@@ -63,6 +64,7 @@ void read_state(app::Scene& scene, const std::string& path) {
 
 int main(int argc, char** argv) {
     app::default_openmp_wait(argv);
+    app::keep_freed_heap();
     std::string kase =
         std::string(GRAINLOAD_SOURCE_DIR) + "/cases/column_collapse_2d/column_collapse_2d.toml";
     std::string checkpoint;

@@ -24,10 +24,16 @@ void write_calibration(const std::string& path, const CalibrationFile& c) {
         put("seconds_per_body_2d", c.two_d.body);
         put("seconds_per_wall_2d", c.two_d.wall);
         put("seconds_per_contact_entry_2d", c.two_d.contact_entry);
+        put("corrected_factor_2d", c.two_d.corrected_factor);
+        put("total_lagrangian_factor_2d", c.two_d.total_lagrangian_factor);
+        put("seconds_per_step_2d", c.steps.per_step_2d);
         put("seconds_per_entry_3d", c.three_d.entry);
         put("seconds_per_body_3d", c.three_d.body);
         put("seconds_per_wall_3d", c.three_d.wall);
         put("seconds_per_contact_entry_3d", c.three_d.contact_entry);
+        put("corrected_factor_3d", c.three_d.corrected_factor);
+        put("total_lagrangian_factor_3d", c.three_d.total_lagrangian_factor);
+        put("seconds_per_step_3d", c.steps.per_step_3d);
         put("shell_factorisation_seconds", c.shell.factorisation_seconds);
         put("shell_factorisation_dofs", c.shell.factorisation_dofs);
         put("shell_seconds_per_dof_solved_step", c.shell.per_dof_solved_step);

@@ -15,6 +15,10 @@ struct SphCosts {
     double contact_entry = 0.0;
     double body = 0.0;
     double wall = 0.0;
+    /// A block's step with the kernel-gradient correction on, and in the total Lagrangian
+    /// formulation (linear elastic, correction on), over the same block's step without
+    double corrected_factor = 1.0;
+    double total_lagrangian_factor = 1.0;
 };
 
 /// Everything `bench/sph_throughput --calibrate` measured, and how busy the machine was.
@@ -23,6 +27,7 @@ struct CalibrationFile {
     SphCosts three_d;
     ShellCosts shell;
     FrameCosts output;
+    StepCosts steps;
     int threads = 1;
     double speedup = 1.0;
     double load_before = 0.0; ///< other processes' use of the machine before it measured [cores]

@@ -8,7 +8,8 @@ namespace grainload::bench {
 
 /// How busy the machine is apart from this process: the busy share of each CPU's ticks in
 /// /proc/stat (app/thread_count.hpp), summed, less this process's own CPU time (all its
-/// threads) over the wall time between start() and others_cores(), in cores. A calibration reads it
+/// threads, and the children it waited for) over the wall time between start() and
+/// others_cores(), in cores. A calibration reads it
 /// to know whether its wall-time ratios (the speed-up of several threads) met a quiet machine.
 class LoadMeter {
   public:
@@ -19,7 +20,7 @@ class LoadMeter {
 
   private:
     std::vector<app::CpuTicks> ticks_; ///< at start()
-    double own_seconds_ = 0.0;         ///< this process's CPU time at start()
+    double own_seconds_ = 0.0;         ///< this process's and its children's CPU time at start()
     double wall_seconds_ = 0.0;
 };
 

@@ -21,4 +21,18 @@ struct FrameCosts {
 /// executable cannot be run.
 FrameCosts frame_costs(const std::string& small, const std::string& large, double end);
 
+/// A model step's fixed cost, whatever its particles: the parallel loops' entries and exits, the
+/// energy books, the watches, the time loop's checks [CPU s of one thread] (app/calibration.hpp,
+/// seconds_per_step_2d and _3d).
+struct StepCosts {
+    double per_step_2d = 0.0;
+    double per_step_3d = 0.0;
+};
+
+/// Measured as `grainload run` pays them: each case text (a handful of particles, whose own
+/// work is negligible; its step `time_step` stable) run on one thread with 2 output instants
+/// for 2000 and for 10 000 steps; the difference of their CPU times over 8000 steps. Zeros when
+/// the executable cannot be run.
+StepCosts step_costs(const std::string& tiny_2d, const std::string& tiny_3d, double time_step);
+
 } // namespace grainload::bench
