@@ -34,17 +34,20 @@ struct Calibration {
     /// the default: a pass more over the entries, a 3 x 3 inverse per particle), and in the total
     /// Lagrangian formulation (sph.formulation; a linear elastic block, correction on, its
     /// reference list built once), over the same block's step without: factors on the entries'
-    /// and body particles' costs. Built-in: bench/sph_throughput --calibrate on the 2-core
-    /// development machine, quiet (2026-12-06).
-    double corrected_factor_2d = 1.27;
-    double corrected_factor_3d = 2.03;
-    double total_lagrangian_factor_2d = 0.72;
-    double total_lagrangian_factor_3d = 2.13;
+    /// and body particles' costs. Built-in: the median of four calibrations (bench/sph_throughput
+    /// --calibrate, the block and its two variants alternated) on the 2-core development machine,
+    /// quiet, 2026-12-06: 1.25-1.44 and 1.90-2.29 with the correction, 0.70-0.79 and 1.59-1.79
+    /// total Lagrangian.
+    double corrected_factor_2d = 1.3;
+    double corrected_factor_3d = 2.0;
+    double total_lagrangian_factor_2d = 0.75;
+    double total_lagrangian_factor_3d = 1.7;
     /// A step's fixed cost, whatever its particles (the parallel loops' entries and exits, the
     /// energy books, the watches): `grainload run` of 4 and 8 free particles, 10 000 steps
-    /// against 2000. Built-in: bench/sph_throughput --calibrate on the 2-core development
-    /// machine, quiet (2026-12-06); each of the two dozen parallel loops of a step costs about
-    /// 2 us there even on one thread (libgomp wakes its team's futex).
+    /// against 2000. Built-in: the median of five calibrations on the 2-core development
+    /// machine, quiet (2026-12-06: 3.3-4.0e-5 s in 2D, 3.7-4.2e-5 s in 3D); each of the two
+    /// dozen parallel loops of a step costs about 2 us there even on one thread (libgomp wakes
+    /// its team's futex).
     double seconds_per_step_2d = 3.7e-5;
     double seconds_per_step_3d = 3.8e-5;
     /// Speed-up of `threads_measured` threads over one on the SPH step, measured the same way

@@ -51,7 +51,8 @@ vtkNew<vtkPoints> to_vtk_points(const std::vector<Vec3>& points) {
 
 /// VTK composes the file in memory and it goes out in one write, atomically: written to a file,
 /// VTK's XML writer issued some 700 small writes and seeks per frame, which cost a few
-/// milliseconds of system calls on the 2-vCPU machine of docs/performance.md ("Frames").
+/// milliseconds of system calls on the 2-vCPU machine of docs/performance.md ("Frames and
+/// the heap").
 template <class Writer> void configure_and_write(Writer& writer, const std::string& path) {
     writer->WriteToOutputStringOn();
     writer->SetDataModeToAppended();
