@@ -1,4 +1,5 @@
 #pragma once
+// The machine's throughput figures for the cost estimate: a calibration file or built-ins.
 
 #include <string>
 

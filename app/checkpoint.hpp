@@ -1,4 +1,5 @@
 #pragma once
+// Checkpoints of a run: the run clock and every module's state, written and restored.
 
 #include "app/scene.hpp"
 #include "io/output_streams.hpp"

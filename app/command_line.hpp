@@ -1,4 +1,5 @@
 #pragma once
+// The grainload command line: its commands, their options and their usage texts.
 
 #include <optional>
 #include <string>

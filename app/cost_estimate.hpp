@@ -1,4 +1,5 @@
 #pragma once
+// What a run of a loaded scene will cost, estimated before it runs (grainload check).
 
 #include "app/calibration.hpp"
 #include "io/types.hpp"

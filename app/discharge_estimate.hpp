@@ -1,4 +1,5 @@
 #pragma once
+// The particles sources create and sinks take over a run, and the step while sand flows.
 
 #include "app/step_plan.hpp"
 #include "io/types.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// The glibc trim threshold raised so that freed heap memory stays with the process.
 
 namespace grainload::app {
 

@@ -1,4 +1,5 @@
 #pragma once
+// The refusal of a scene too large for the machine's memory, before any particle is made.
 
 #include "io/case_table.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// How long OpenMP threads spin before they sleep, and the thread count of --threads auto.
 
 #include <optional>
 #include <string_view>

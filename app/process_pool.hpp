@@ -1,4 +1,5 @@
 #pragma once
+// Child processes run at most a given number at a time (posix_spawn), output to files.
 
 #include <cstddef>
 #include <functional>

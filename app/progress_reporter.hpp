@@ -1,4 +1,5 @@
 #pragma once
+// The run's progress line: simulated time, step, dt, ETA and particle-steps per second.
 
 #include "io/output_streams.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// The run and check commands: a scene loaded, its time loop, frames, checkpoints, summary.
 
 #include "app/command_line.hpp"
 

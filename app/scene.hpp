@@ -1,4 +1,5 @@
 #pragma once
+// A case file turned into models: the [case] settings, the materials, one stepper per module.
 
 #include "io/case_table.hpp"
 #include "io/figure_reference.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// What a shell's steps will cost in factorisations and back-substitutions, before the run.
 
 #include "app/calibration.hpp"
 #include "app/step_plan.hpp"

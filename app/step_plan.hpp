@@ -1,4 +1,5 @@
 #pragma once
+// The time loop's steps to the end time, landing on every output instant, for the estimate.
 
 #include <vector>
 

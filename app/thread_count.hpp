@@ -1,4 +1,5 @@
 #pragma once
+// The thread count of --threads auto: the cores other processes leave free, from /proc/stat.
 
 #include <istream>
 #include <vector>

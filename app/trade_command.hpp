@@ -1,4 +1,5 @@
 #pragma once
+// The grainload trade command: a sweep of case-key values run as subprocesses.
 
 #include "app/trade_grid.hpp"
 

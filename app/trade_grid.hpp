@@ -1,4 +1,5 @@
 #pragma once
+// The grid of a grainload trade sweep: axes of case-key values and the runs they make.
 
 #include <array>
 #include <cstddef>

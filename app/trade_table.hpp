@@ -1,4 +1,5 @@
 #pragma once
+// The table of a grainload trade sweep: each run's figures against the most accurate run's.
 
 #include "app/trade_grid.hpp"
 

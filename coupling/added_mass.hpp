@@ -1,4 +1,5 @@
 #pragma once
+// The sand's inertia put on a static shell's coupled nodes as springs (the added mass).
 
 #include "coupling/coupled_model.hpp"
 #include "fem/shell_analysis.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// The SPH-shell coupling as the time loop sees it: the shell master, SPH its slave, per window.
 
 #include "coupling/coupling_monitor.hpp"
 #include "coupling/interface_accelerator.hpp"

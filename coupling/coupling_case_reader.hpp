@@ -1,4 +1,5 @@
 #pragma once
+// The reader of a coupled scene: [sph], [fem] and [coupling] joined in one CoupledModel.
 
 #include "coupling/coupled_model.hpp"
 #include "io/key_spec.hpp"

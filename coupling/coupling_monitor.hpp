@@ -1,4 +1,5 @@
 #pragma once
+// The coupling's books: interface energy error, momentum balance, sub-cycles, solve time.
 
 #include "io/output_streams.hpp"
 #include "io/types.hpp"

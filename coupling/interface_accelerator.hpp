@@ -1,4 +1,5 @@
 #pragma once
+// The update of an iterated coupling window's interface load: Aitken or IQN-ILS.
 
 #include <Eigen/Core>
 #include <vector>

@@ -1,4 +1,5 @@
 #pragma once
+// Whether the coupled shell was worth modelling: its extreme deflection and stress in a run.
 
 #include "fem/shell_model.hpp"
 

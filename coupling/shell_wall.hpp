@@ -1,4 +1,5 @@
 #pragma once
+// A coupled shell part as SPH sees it: wall particles moved by the shell, forces sent back.
 
 #include "fem/shell_analysis.hpp"
 #include "sph/wall.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// The coupling windows the staggered exchange can take without oscillating.
 
 #include "coupling/coupled_model.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// The degrees of freedom of a shell node (three translations, three rotations) and indexing.
 
 #include "io/types.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// Shell meshes read from Gmsh files: shell elements, named sets, thickness per group.
 
 #include "fem/shell_mesh.hpp"
 

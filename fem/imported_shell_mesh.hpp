@@ -1,4 +1,5 @@
 #pragma once
+// The mesh of a [[fem.shell]] imported from a Gmsh mesh or an LS-DYNA keyword deck.
 
 #include "fem/shell_mesh.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// The shell mesh of chosen parts of an LS-DYNA deck, its parts and sets as named sets.
 
 #include "fem/shell_mesh.hpp"
 #include "io/keyword_mesh.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// The MITC4 shell element of Dvorkin & Bathe (1984) and its stress resultants.
 
 #include "fem/plane_stress_point.hpp"
 

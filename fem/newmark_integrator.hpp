@@ -1,4 +1,5 @@
 #pragma once
+// Implicit Newmark and HHT-alpha time integration of a shell, with lumped or consistent mass.
 
 #include "fem/shell_analysis.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// Newton-Raphson equilibrium iterations on a NewtonOperator, with their tolerances and log.
 
 #include "fem/sparse_solver.hpp"
 #include "io/types.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// The through-thickness integration points of a shell: any 3D material under plane stress.
 
 #include "materials/material.hpp"
 

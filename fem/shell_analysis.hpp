@@ -1,4 +1,5 @@
 #pragma once
+// A shell structure: MITC4 elements on a ShellMesh, 6 DOF per node, supports and loads.
 
 #include "fem/mitc4_shell.hpp"
 #include "fem/newton_solver.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// Standard shell benchmarks (MacNeal & Harder 1985) with their published displacements.
 
 #include "fem/shell_analysis.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// The readers of a case's [[fem.shell]] tables: mesh, parts, supports, loads, monitors.
 
 #include "fem/shell_analysis.hpp"
 #include "materials/material_library.hpp"

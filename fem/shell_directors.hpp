@@ -1,4 +1,5 @@
 #pragma once
+// The initial directors of the shell elements' corners, split at the mesh's fold lines.
 
 #include "fem/shell_mesh.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// The shell mid-surface mesh: nodes, quadrilaterals, thickness per element, named sets.
 
 #include "io/types.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// Structured shell meshes with named edge sets: plate, cylinder, sphere zone, cone, box.
 
 #include "fem/shell_mesh.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// The shell FEM side of a scene as the time loop sees it: static or implicit dynamic steps.
 
 #include "fem/newmark_integrator.hpp"
 #include "fem/shell_case_reader.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// The totals of the shell's load steps that summary.json reports, kept across restarts.
 
 #include "fem/newton_solver.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// The direct solver of the shell's stiffness system: CHOLMOD Cholesky, else UMFPACK LU.
 
 #include <Eigen/SparseCore>
 #include <memory>

@@ -1,4 +1,5 @@
 #pragma once
+// A static load increment of a shell structure as the operator of its Newton solve.
 
 #include "fem/newton_solver.hpp"
 #include "fem/shell_analysis.hpp"

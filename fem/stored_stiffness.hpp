@@ -1,4 +1,5 @@
 #pragma once
+// The stiffness of a linear shell, assembled once, whose internal force is exactly K u.
 
 #include "fem/sparse_solver.hpp"
 #include "io/types.hpp"

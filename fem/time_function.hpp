@@ -1,4 +1,5 @@
 #pragma once
+// Piecewise-linear time functions that scale the shell's loads and prescribed values.
 
 #include <map>
 #include <string>

@@ -1,4 +1,5 @@
 #pragma once
+// Files written whole or not at all: written under a temporary name, then renamed.
 
 #include <functional>
 #include <iosfwd>

@@ -1,4 +1,5 @@
 #pragma once
+// Raw dumps of arrays and checked counts for checkpoints that restore a run bit for bit.
 
 #include <cmath>
 #include <cstdint>

@@ -1,4 +1,5 @@
 #pragma once
+// Bad input: the error whose message names file, line, column and key (exit code 2).
 
 #include <stdexcept>
 #include <string>

@@ -1,4 +1,5 @@
 #pragma once
+// A case file and read access to its TOML tables: quantities with units, keys marked used.
 
 #include "io/case_error.hpp"
 #include "io/dimension.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// The checkpoint file's framing: magic, payload, and a trailer of length and FNV-1a hash.
 
 #include <cstdint>
 #include <functional>

@@ -1,4 +1,5 @@
 #pragma once
+// What the readers of a case took from its LS-DYNA decks: one unit system, keywords left unread.
 
 #include "io/keyword_units.hpp"
 

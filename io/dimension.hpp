@@ -1,4 +1,5 @@
 #pragma once
+// Physical dimensions as integer exponents of mass, length, time and plane angle.
 
 #include <string>
 

@@ -1,4 +1,5 @@
 #pragma once
+// The [[case.reference]] tables: independent references a case states for its figures.
 
 #include "io/case_table.hpp"
 #include "io/frame.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// What a run writes at one output instant: blocks of fields, figures, model choices, phases.
 
 #include "io/types.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// The content of a Gmsh ASCII mesh, format 4.1: nodes, first-order elements, physical groups.
 
 #include "io/types.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// Meshing a Gmsh geometry script with gmsh when its mesh is missing or outdated.
 
 #include <string>
 #include <utility>

@@ -1,4 +1,5 @@
 #pragma once
+// The surface of a Gmsh mesh file as a SurfaceMesh, for rigid walls and bodies.
 
 #include "io/surface_mesh.hpp"
 

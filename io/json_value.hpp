@@ -1,4 +1,5 @@
 #pragma once
+// A parsed JSON value, for the files grainload writes and reads back (summary.json and others).
 
 #include <optional>
 #include <stdexcept>

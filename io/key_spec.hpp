@@ -1,4 +1,5 @@
 #pragma once
+// Case-file keys as the modules that read them declare them: name, type, default, meaning.
 
 #include <span>
 #include <string_view>

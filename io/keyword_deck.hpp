@@ -1,4 +1,5 @@
 #pragma once
+// An LS-DYNA keyword deck read into its keywords and their data cards, includes followed.
 
 #include <istream>
 #include <stdexcept>

@@ -1,4 +1,5 @@
 #pragma once
+// The fields of one LS-DYNA card, fixed or free format, laid out by the keyword's card table.
 
 #include "io/keyword_deck.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// The mesh cards of an LS-DYNA deck (nodes, shells, sections, parts, sets, SPH particles) in SI.
 
 #include "io/deck_ledger.hpp"
 #include "io/keyword_deck.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// The consistent unit system of an LS-DYNA deck, stated as "LENGTH-MASS-TIME".
 
 #include "io/dimension.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// The run's output directory and the tables and logs it appends to, cut back on restart.
 
 #include <cstdint>
 #include <functional>

@@ -1,4 +1,5 @@
 #pragma once
+// Regions of space that particles can be in or out of: a half-space or a box.
 
 #include "io/types.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// What summary.json holds at the end of a run, and its atomic write.
 
 #include "io/frame.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// The scene-wide [case] keys (gravity, end time, output interval), read once for every module.
 
 #include "io/key_spec.hpp"
 #include "io/types.hpp"

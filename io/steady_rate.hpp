@@ -1,4 +1,5 @@
 #pragma once
+// The steady discharge rate: the slope of a line through the 20-80 % part of a discharge curve.
 
 #include <optional>
 #include <span>

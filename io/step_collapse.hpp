@@ -1,4 +1,5 @@
 #pragma once
+// The watch on an explicit solver's stable time step that diagnoses its collapse (exit 3).
 
 #include <optional>
 #include <sstream>

@@ -1,4 +1,5 @@
 #pragma once
+// One physics module as the driver's time loop sees it: stable step, advance, health, output.
 
 #include "io/frame.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// The triangles of an STL file, ASCII or binary, as a SurfaceMesh.
 
 #include "io/surface_mesh.hpp"
 

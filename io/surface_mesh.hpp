@@ -1,4 +1,5 @@
 #pragma once
+// A surface mesh as read from a file: shared vertices and the faces that index them.
 
 #include "io/types.hpp"
 

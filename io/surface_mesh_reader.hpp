@@ -1,4 +1,5 @@
 #pragma once
+// The surface mesh of a case-file table: a .stl or .msh file, in its unit, scaled and offset.
 
 #include "io/surface_mesh.hpp"
 

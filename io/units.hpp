@@ -1,4 +1,5 @@
 #pragma once
+// Quantities with units ("72 mm", "30.62 GPa") parsed and converted to SI.
 
 #include "io/dimension.hpp"
 

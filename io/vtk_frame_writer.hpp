@@ -1,4 +1,5 @@
 #pragma once
+// The run's ParaView time series: a .vtm multiblock per frame and the .pvd that lists them.
 
 #include "io/frame.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// Drucker-Prager cones fitted to the Mohr-Coulomb hexagon of friction angle and cohesion.
 
 #include <string_view>
 

@@ -1,4 +1,5 @@
 #pragma once
+// The perfectly plastic Drucker-Prager material: non-associated flow and a tension cutoff.
 
 #include "materials/drucker_prager_return.hpp"
 #include "materials/material.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// The closed-form return map of a perfectly plastic Drucker-Prager cone, with its tangent.
 
 #include "materials/elastic_constants.hpp"
 #include "materials/material.hpp"

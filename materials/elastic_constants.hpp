@@ -1,4 +1,5 @@
 #pragma once
+// Isotropic elastic constants and density of a material, with its stiffness scale.
 
 #include "io/types.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// The generalized cap model (Sandler-DiMaggio-Baladi), integrated fully implicitly.
 
 #include "materials/cap_return.hpp"
 #include "materials/material.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// Isotropic linear elasticity in rate form.
 
 #include "materials/material.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// A *MAT_GEOLOGIC_CAP_MODEL (MAT_025) material read from an LS-DYNA deck, converted to SI.
 
 #include "io/keyword_deck.hpp"
 #include "io/keyword_units.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// The constitutive model shared by SPH and FEM: a strain-driven update with consistent tangent.
 
 #include "materials/elastic_constants.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// The material of one [[material]] table, built by its model or from an LS-DYNA deck.
 
 #include "materials/material.hpp"
 

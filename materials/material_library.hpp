@@ -1,4 +1,5 @@
 #pragma once
+// The [[material]] tables of a case, each built once and referred to by name.
 
 #include "materials/material.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// One material point driven along a path of strain- and stress-controlled segments.
 
 #include "materials/material.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// The mu(I) local rheology of dense granular flow (Jop, Forterre & Pouliquen 2006).
 
 #include "io/types.hpp"
 

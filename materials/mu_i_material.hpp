@@ -1,4 +1,5 @@
 #pragma once
+// The elasto-viscoplastic mu(I) material: a Drucker-Prager return on the cone of mu(I).
 
 #include "io/key_spec.hpp"
 #include "materials/drucker_prager_return.hpp"

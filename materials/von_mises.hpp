@@ -1,4 +1,5 @@
 #pragma once
+// Von Mises elasto-plasticity with mixed linear isotropic/kinematic hardening.
 
 #include "materials/material.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// Particle centres filling the shapes of an SPH body: box, cylinder, cone, mesh or LS-DYNA deck.
 
 #include "io/types.hpp"
 

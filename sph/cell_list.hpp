@@ -1,4 +1,5 @@
 #pragma once
+// The uniform grid of cells in which the neighbours of SPH particles are searched.
 
 #include "io/types.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// The lattice cells inside a closed surface mesh, found by ray parity, for bodies of type "mesh".
 
 #include "io/surface_mesh.hpp"
 

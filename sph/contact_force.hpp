@@ -1,4 +1,5 @@
 #pragma once
+// The contact potential between particles of different bodies and walls: force, energy, stiffness.
 
 #include "sph/kernels.hpp"
 #include "sph/sph_options.hpp"

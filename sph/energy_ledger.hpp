@@ -1,4 +1,5 @@
 #pragma once
+// The material particles' energy account (held, put in, taken out) that reveals an instability.
 
 #include <optional>
 #include <string>

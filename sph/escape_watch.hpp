@@ -1,4 +1,5 @@
 #pragma once
+// The watch for material particles that leave the scene faster than any sound run lets them.
 
 #include "sph/particle_set.hpp"
 

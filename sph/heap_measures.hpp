@@ -1,4 +1,5 @@
 #pragma once
+// The measures of a granular heap: height, run-out, surface slope, largest cluster.
 
 #include "io/types.hpp"
 

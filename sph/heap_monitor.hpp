@@ -1,4 +1,5 @@
 #pragma once
+// The [sph.heap] table at work: one body's kinetic energy followed, its final heap measured.
 
 #include "io/frame.hpp"
 #include "sph/heap_measures.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// The geostatic (at-rest) initial stress of a body under gravity, with lateral ratio K0.
 
 #include "sph/particle_set.hpp"
 

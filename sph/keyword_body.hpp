@@ -1,4 +1,5 @@
 #pragma once
+// The particles of an SPH body read from the *ELEMENT_SPH cards of an LS-DYNA deck.
 
 #include "io/types.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// A body of particles on a regular lattice filling a box.
 
 #include "sph/particle_set.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// The neighbour list of SPH particles: pairs within support + Verlet skin, rebuilt when stale.
 
 #include "sph/cell_list.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// Where a scene's material can get to, found before the run, and the outlets it cannot reach.
 
 #include "io/region.hpp"
 #include "sph/particle_set.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// The same-body pair passes split into one part per thread, summed in order to repeat bit for bit.
 
 #include "sph/neighbour_list.hpp"
 #include "sph/particle_set.hpp"

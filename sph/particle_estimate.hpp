@@ -1,4 +1,5 @@
 #pragma once
+// The particle counts and heap bytes of an SPH scene, estimated before any particle is made.
 
 #include "io/types.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// The removal of particles from a ParticleSet: every field and wall range compacted in order.
 
 #include "sph/particle_set.hpp"
 #include "sph/wall.hpp"

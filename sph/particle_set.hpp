@@ -1,4 +1,5 @@
 #pragma once
+// All SPH particles of a scene, one contiguous array per field (structure of arrays).
 
 #include "io/types.hpp"
 

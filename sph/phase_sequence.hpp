@@ -1,4 +1,5 @@
 #pragma once
+// The run's phases ([[phase]]), each ending at a stated time or on a condition.
 
 #include "io/frame.hpp"
 #include "io/key_spec.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// The axis-aligned box of a set of points, reduced over the threads.
 
 #include "io/types.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// The kinematic and force passes of SPH: velocity gradient and rates, then accelerations.
 
 #include "sph/kernels.hpp"
 #include "sph/neighbour_list.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// The prescribed rigid motion of a wall: translation and rotation, constant or from histories.
 
 #include "sph/particle_set.hpp"
 #include "sph/wall.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// Checks of an SPH scene before the run: gravity strain, fast impacts, bodies in walls or sinks.
 
 #include "materials/material_library.hpp"
 #include "sph/particle_set.hpp"

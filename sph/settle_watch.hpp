@@ -1,4 +1,5 @@
 #pragma once
+// The [sph.settle] watch: the step whose kinetic energy falls below a fraction of its largest.
 
 #include "io/key_spec.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// Sinks: particles leaving through regions, the books of what left, Beverloo's outlet rate.
 
 #include "io/frame.hpp"
 #include "io/key_spec.hpp"

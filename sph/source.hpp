@@ -1,4 +1,5 @@
 #pragma once
+// Sources: particles entering the scene through box regions at a mass rate.
 
 #include "io/key_spec.hpp"
 #include "io/region.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// The readers of a case's [sph] tables: solver options, walls, clamps, friction, symmetry.
 
 #include "sph/particle_set.hpp"
 #include "sph/phase_sequence.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// The SPH side of a scene: its bodies and walls advanced by SphSolver, as one Stepper.
 
 #include "io/scene_settings.hpp"
 #include "io/stepper.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// Everything the SPH integrator needs besides particles and materials, with the case defaults.
 
 #include "io/types.hpp"
 #include "sph/kernels.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// Explicit SPH for solids in plane strain and 3D, integrated by kick-drift-kick leapfrog.
 
 #include "materials/material.hpp"
 #include "sph/energy_ledger.hpp"

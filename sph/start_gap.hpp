@@ -1,4 +1,5 @@
 #pragma once
+// Bodies and sources that start within the contact potential's reach of a wall: refused or warned.
 
 #include "sph/cell_list.hpp"
 #include "sph/kernels.hpp"

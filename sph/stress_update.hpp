@@ -1,4 +1,5 @@
 #pragma once
+// The stress update of SPH particles: the Jaumann rotation, then each particle's material.
 
 #include "materials/material.hpp"
 #include "sph/particle_set.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// The particles of a rigid wall laid in layers on a surface mesh.
 
 #include "io/surface_mesh.hpp"
 #include "sph/wall.hpp"

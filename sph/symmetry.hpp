@@ -1,4 +1,5 @@
 #pragma once
+// Planes of mirror symmetry, whose ghost particles stand for the material beyond them.
 
 #include "io/key_spec.hpp"
 #include "sph/particle_set.hpp"

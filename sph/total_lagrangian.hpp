@@ -1,4 +1,5 @@
 #pragma once
+// Total-Lagrangian SPH for solid bodies: kernel sums over the reference configuration.
 
 #include "sph/kernels.hpp"
 #include "sph/particle_set.hpp"

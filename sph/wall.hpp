@@ -1,4 +1,5 @@
 #pragma once
+// A wall of the SPH scene: its particles, the driver that moves them, the load bodies put on it.
 
 #include "sph/particle_set.hpp"
 

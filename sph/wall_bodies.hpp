@@ -1,4 +1,5 @@
 #pragma once
+// Which bodies each wall acts on (a wall's bodies key), as a filter over particle pairs.
 
 #include "sph/wall.hpp"
 

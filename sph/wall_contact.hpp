@@ -1,4 +1,5 @@
 #pragma once
+// What a body particle feels of a wall beyond the repulsion: a normal dashpot and friction.
 
 #include "sph/kernels.hpp"
 #include "sph/neighbour_list.hpp"

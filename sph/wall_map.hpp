@@ -1,4 +1,5 @@
 #pragma once
+// Wall-load maps: the normal pressure and friction traction of chosen walls, binned on a grid.
 
 #include "io/frame.hpp"
 #include "io/key_spec.hpp"
