@@ -60,10 +60,10 @@ std::vector<CpuTicks> read_cpu_ticks() {
     return parse_cpu_ticks(stat);
 }
 
-/// CPU seconds this process has used, all its threads.
-double own_cpu_seconds() {
+/// User and system CPU seconds of getrusage(who).
+double rusage_seconds(int who) {
     rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
+    getrusage(who, &usage);
     const auto seconds = [](const timeval& t) {
         return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec);
     };
@@ -71,6 +71,14 @@ double own_cpu_seconds() {
 }
 
 } // namespace
+
+double own_cpu_seconds() {
+    return rusage_seconds(RUSAGE_SELF);
+}
+
+double children_cpu_seconds() {
+    return rusage_seconds(RUSAGE_CHILDREN);
+}
 
 int auto_thread_count(double seconds) {
     // This process's own threads are not other work: libopenblas (pthreads build, linked for

@@ -28,6 +28,11 @@ std::vector<CpuTicks> parse_cpu_ticks(std::istream& stat);
 int free_cores(const std::vector<CpuTicks>& before, const std::vector<CpuTicks>& after,
                double own_cores = 0.0);
 
+/// CPU seconds, user and system, this process has used (all its threads), and those of the
+/// children it waited for (getrusage).
+double own_cpu_seconds();
+double children_cpu_seconds();
+
 /// `--threads auto`: samples /proc/stat over `seconds` while the calling thread sleeps,
 /// subtracts what this process's other threads used meanwhile (getrusage), and returns
 /// free_cores; the CPU count of OpenMP where /proc/stat cannot be read. docs/performance.md

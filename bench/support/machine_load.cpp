@@ -6,7 +6,6 @@
 #include <chrono>
 #include <ctime>
 #include <fstream>
-#include <sys/resource.h>
 #include <thread>
 
 namespace grainload::bench {
@@ -23,17 +22,6 @@ double wall_seconds() {
         .count();
 }
 
-/// CPU seconds of the children this process waited for: the `grainload run`s that measure
-/// frames and steps, which are the bench's own work, not another process's.
-double children_cpu_seconds() {
-    rusage usage{};
-    getrusage(RUSAGE_CHILDREN, &usage);
-    const auto seconds = [](const timeval& t) {
-        return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec);
-    };
-    return seconds(usage.ru_utime) + seconds(usage.ru_stime);
-}
-
 } // namespace
 
 double process_cpu_seconds() {
@@ -44,7 +32,7 @@ double process_cpu_seconds() {
 
 void LoadMeter::start() {
     ticks_ = cpu_ticks();
-    own_seconds_ = process_cpu_seconds() + children_cpu_seconds();
+    own_seconds_ = process_cpu_seconds() + app::children_cpu_seconds();
     wall_seconds_ = wall_seconds();
 }
 
@@ -60,7 +48,7 @@ double LoadMeter::others_cores() const {
         const auto total = static_cast<double>(now[c].total - ticks_[c].total);
         busy += total > 0.0 ? static_cast<double>(now[c].busy - ticks_[c].busy) / total : 0.0;
     }
-    const double own = (process_cpu_seconds() + children_cpu_seconds() - own_seconds_) / wall;
+    const double own = (process_cpu_seconds() + app::children_cpu_seconds() - own_seconds_) / wall;
     return std::max(0.0, busy - own);
 }
 
