@@ -36,8 +36,11 @@ constexpr const char* kVersionUsage =
     "usage: grainload --version\n"
     "  Prints the release and the git commit it was built from.\n";
 
-constexpr const char* kHelpUsage = "usage: grainload help [COMMAND]   (or --help, -h)\n"
-                                   "  Prints the usage overview, or that of one command.\n";
+constexpr const char* kHelpUsage =
+    "usage: grainload help [COMMAND]   (or --help, -h)\n"
+    "       grainload help keys [TABLE]\n"
+    "  Prints the usage overview, or that of one command; `keys`: the tables of a case file,\n"
+    "  or one table's keys with their types, defaults and meanings (e.g. help keys sph.body).\n";
 
 CommandLine::Command command_of(std::string_view word) {
     if (word == "run") {
@@ -90,6 +93,13 @@ CommandLine help_line(int argc, const char* const* argv, CommandLine::Command co
     line.command = CommandLine::Command::help;
     if (command != CommandLine::Command::help) {
         line.help_topic = command_name(command);
+    } else if (argc > 2 && std::string_view(argv[2]) == "keys") {
+        line.help_topic = "keys";
+        if (argc > 4) {
+            throw io::CaseError(std::string("command line: help keys takes at most one table\n") +
+                                usage());
+        }
+        line.help_table = argc > 3 ? argv[3] : "";
     } else if (argc > 2) {
         line.help_topic = asks_for_help(argv[2]) ? "help" : argv[2];
         usage(line.help_topic); // an unknown topic is a bad command line
@@ -110,6 +120,7 @@ const char* usage() {
            "                  [--reference KEY=V] [--set key=value ...]\n"
            "  grainload --version\n"
            "  grainload help [COMMAND]   (or --help, -h)\n"
+           "  grainload help keys [TABLE]\n"
            "\n"
            "  --out DIR        output directory (default out/<case name>)\n"
            "  --threads N      OpenMP threads (default: all cores); 'auto': the cores other work\n"

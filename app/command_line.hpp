@@ -20,6 +20,8 @@ struct CommandLine {
     std::optional<std::string> restart; ///< --restart CHECKPOINT
     /// For help: the command whose usage to print ("run"); empty for the overview.
     std::string help_topic;
+    /// For `help keys TABLE`: the table whose keys to print; empty: every table's name.
+    std::string help_table;
 };
 
 /// Parse argv; throws io::CaseError (exit code 2) on a malformed command line. `--help` or

@@ -1,3 +1,4 @@
+#include "app/case_schema.hpp"
 #include "app/command_line.hpp"
 #include "app/heap_trim.hpp"
 #include "app/openmp_wait.hpp"
@@ -33,8 +34,9 @@ int main(int argc, char** argv) {
             std::cout << "grainload " << kVersion << " (" << kGitHash << ")\n";
             return app::kExitOk;
         case app::CommandLine::Command::help:
-            std::cout << (line.help_topic.empty() ? std::string(app::usage())
-                                                  : app::usage(line.help_topic));
+            std::cout << (line.help_topic.empty()     ? std::string(app::usage())
+                          : line.help_topic == "keys" ? app::key_help(line.help_table)
+                                                      : app::usage(line.help_topic));
             return app::kExitOk;
         }
     } catch (const io::CaseError& error) {

@@ -187,10 +187,35 @@ void reject_unused(const toml::table& table, const std::string& path,
     }
 }
 
+void collect_used(const toml::table& table, const std::string& path,
+                  const std::unordered_set<const toml::node*>& used,
+                  std::vector<std::string>& keys) {
+    for (const auto& [key, node] : table) {
+        const std::string full =
+            path.empty() ? std::string(key.str()) : path + "." + std::string(key.str());
+        if (const auto* child = node.as_table()) {
+            collect_used(*child, full, used, keys);
+        } else if (const auto* array = node.as_array(); array && array->is_array_of_tables()) {
+            for (std::size_t i = 0; i < array->size(); ++i) {
+                collect_used(*array->get(i)->as_table(), full + "[" + std::to_string(i) + "]", used,
+                             keys);
+            }
+        } else if (used.contains(&node)) {
+            keys.push_back(full);
+        }
+    }
+}
+
 } // namespace
 
 void CaseDocument::reject_unknown_keys() const {
     reject_unused(impl_->root, "", impl_->used, file_);
+}
+
+std::vector<std::string> CaseDocument::used_keys() const {
+    std::vector<std::string> keys;
+    collect_used(impl_->root, "", impl_->used, keys);
+    return keys;
 }
 
 } // namespace grainload::io

@@ -145,6 +145,9 @@ class CaseDocument {
     DeckLedger& deck_ledger();
     /// Throw CaseError for the first key that no reader asked for.
     void reject_unknown_keys() const;
+    /// The full paths ("sph.body[0].spacing") of the values the readers took, in file order:
+    /// what the declared schema must cover (tests/unit/app/test_case_schema.cpp).
+    std::vector<std::string> used_keys() const;
 
     int spatial_dimension = 3;
 

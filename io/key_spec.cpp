@@ -1,5 +1,6 @@
 #include "io/key_spec.hpp"
 
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -20,6 +21,46 @@ double default_value(std::span<const KeySpec> specs, std::string_view name) {
         throw std::logic_error("no declared key '" + std::string(name) + "'");
     }
     return spec->value;
+}
+
+std::vector<const KeyTable*> key_table_parts(std::span<const KeyTable> tables,
+                                             std::string_view name) {
+    std::vector<const KeyTable*> parts;
+    for (const KeyTable& table : tables) {
+        if (table.name == name) {
+            parts.push_back(&table);
+        }
+    }
+    return parts;
+}
+
+std::string table_of_key(std::string_view key_path) {
+    std::string table;
+    bool in_index = false;
+    for (char c : key_path) {
+        if (c == '[' || c == ']') {
+            in_index = c == '[';
+        } else if (!in_index) {
+            table.push_back(c);
+        }
+    }
+    const std::size_t dot = table.rfind('.');
+    return dot == std::string::npos ? std::string() : table.substr(0, dot);
+}
+
+std::string describe_key_table(const KeyTable& table) {
+    std::ostringstream out;
+    out << (table.array ? "[[" : "[") << table.name << (table.array ? "]]" : "]") << "  "
+        << table.doc << "\n  (" << table.guide_page << ")\n";
+    if (table.user_keys) {
+        out << "  its keys are names of your own choice\n";
+    }
+    for (const KeySpec& key : table.keys) {
+        out << "\n  " << key.name << "  (" << key.type
+            << "; default: " << (key.default_text.empty() ? "required" : key.default_text)
+            << ")\n    " << key.doc << '\n';
+    }
+    return out.str();
 }
 
 } // namespace grainload::io

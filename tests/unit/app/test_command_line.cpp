@@ -72,6 +72,24 @@ TEST(CommandLine, ThreadsAutoRunsOnTheFreeCoresAndOtherWordsAreRefused) {
     std::filesystem::remove_all(out);
 }
 
+// `help keys` lists the tables; `help keys TABLE` (with or without its brackets) prints the
+// declared keys of that table with their defaults; a table nobody declares is a bad line.
+TEST(CommandLine, HelpKeysPrintsTheDeclaredTablesAndTheirKeys) {
+    const auto tables = run_cli("help keys", log_file());
+    EXPECT_EQ(tables.exit_code, 0) << tables.output;
+    EXPECT_NE(tables.output.find("[[sph.source]]"), std::string::npos) << tables.output;
+    EXPECT_NE(tables.output.find("[case]"), std::string::npos) << tables.output;
+    const auto source = run_cli("help keys '[[sph.source]]'", log_file());
+    EXPECT_EQ(source.exit_code, 0) << source.output;
+    EXPECT_NE(source.output.find("mass_rate  (mass rate; default: required)"), std::string::npos)
+        << source.output;
+    EXPECT_NE(source.output.find("velocity  (velocity vector; default: 0 m/s)"), std::string::npos)
+        << source.output;
+    const auto unknown = run_cli("help keys sph.sauce", log_file());
+    EXPECT_EQ(unknown.exit_code, 2) << unknown.output;
+    EXPECT_NE(unknown.output.find("no table 'sph.sauce'"), std::string::npos) << unknown.output;
+}
+
 TEST(CommandLine, HelpOnAnUnknownCommandIsABadCommandLine) {
     const auto result = run_cli("help simulate", log_file());
     EXPECT_EQ(result.exit_code, 2) << result.output;

@@ -1,7 +1,6 @@
 #include "io/case_error.hpp"
 #include "io/case_table.hpp"
 #include "io/figure_reference.hpp"
-#include "support/guide_table.hpp"
 
 #include <gtest/gtest.h>
 
@@ -85,11 +84,6 @@ TEST(FigureReference, BadReferencesAreRefusedWithTheKey) {
     EXPECT_NE(
         error_of("[[case.reference]]\nfigure = \"door_force\"\nsource = \"\"\n").find("source"),
         std::string::npos);
-}
-
-TEST(FigureReference, UserGuideStatesEveryKeyWithItsDefault) {
-    testing::expect_guide_states(kFigureReferenceKeys, "docs/user-guide.md",
-                                 "## `[[case.reference]]`");
 }
 
 } // namespace

@@ -1,6 +1,5 @@
 #include "io/case_table.hpp"
 #include "io/scene_settings.hpp"
-#include "support/guide_table.hpp"
 
 #include <filesystem>
 #include <gtest/gtest.h>
@@ -45,12 +44,6 @@ TEST(SceneSettings, MoreThanAMillionOutputIntervalsAreRefused) {
     }
     EXPECT_THROW(read("[case]\nend_time = \"1.000001 s\"\noutput_interval = \"1 us\"\n"),
                  CaseError);
-}
-
-// The user guide's [case] table lists exactly the declared keys with their declared defaults,
-// so the guide cannot drift from the code (MOOSE-style validParams).
-TEST(SceneSettings, UserGuideStatesEveryCaseKeyWithItsDefault) {
-    testing::expect_guide_states(kCaseKeys, "docs/user-guide.md", "## `[case]`");
 }
 
 } // namespace

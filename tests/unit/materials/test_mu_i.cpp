@@ -12,7 +12,6 @@
 #include "materials/material_library.hpp"
 #include "materials/mu_i_material.hpp"
 #include "materials/voigt_algebra.hpp"
-#include "support/guide_table.hpp"
 
 #include <cmath>
 #include <cstring>
@@ -328,10 +327,6 @@ TEST(MuIMaterial, GrainSizeInItsSubTableIsTheLibrarysGrainSize) {
     ASSERT_TRUE(library.grain_size(0).has_value());
     EXPECT_DOUBLE_EQ(*library.grain_size(0), 2e-3);
     EXPECT_DOUBLE_EQ(dynamic_cast<const MuIMaterial&>(library[0]).law().grain_diameter, 2e-3);
-}
-
-TEST(MuIMaterial, UserGuideTableStatesTheDeclaredKeys) {
-    grainload::testing::expect_guide_states(kMuIKeys, "docs/user-guide.md", "### `mu_i`");
 }
 
 } // namespace

@@ -1,17 +1,11 @@
 #include "io/case_table.hpp"
 #include "sph/phase_sequence.hpp"
-#include "support/guide_table.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
 
 namespace grainload::sph {
 namespace {
-
-// The user guide's [[phase]] table lists exactly the declared keys with their defaults.
-TEST(PhaseKeys, UserGuideStatesEveryKeyWithItsDefault) {
-    testing::expect_guide_states(kPhaseKeys, "docs/user-guide/sph.md", "## Phases: `[[phase]]`");
-}
 
 PhaseSequence read(const std::string& phases) {
     auto document = io::CaseDocument::from_string("[case]\ndimension = 3\n" + phases, "p.toml");

@@ -1,18 +1,10 @@
 #include "sph/settle_watch.hpp"
 #include "sph/source.hpp"
-#include "support/guide_table.hpp"
 
 #include <gtest/gtest.h>
 
 namespace grainload::sph {
 namespace {
-
-// The user guide's [[sph.source]] table lists exactly the declared keys with their defaults.
-TEST(SourceKeys, UserGuideStatesEveryKeyWithItsDefault) {
-    testing::expect_guide_states(kSourceKeys, "docs/user-guide/sph.md", "## `[[sph.source]]`");
-    testing::expect_guide_states(kSettleKeys, "docs/user-guide/sph.md",
-                                 "## Settling: `[sph.settle]`");
-}
 
 // Peak 10 J at t = 1; fraction 0.1: 0.5 J at t = 2 is before `after` (2.5 s) and does not
 // settle, 0.9 J at t = 3 does (below 1 J), once; the state restores peak and time.

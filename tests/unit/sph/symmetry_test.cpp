@@ -1,6 +1,5 @@
 #include "sph/rates.hpp"
 #include "sph/symmetry.hpp"
-#include "support/guide_table.hpp"
 
 #include <array>
 #include <gtest/gtest.h>
@@ -144,11 +143,6 @@ TEST(Symmetry, ImagesCopyScalarsAndMirrorFieldsAndAreDroppedAgain) {
     drop_images(p, 1);
     EXPECT_EQ(p.size(), 1);
     EXPECT_EQ(p.stress.size(), 1U);
-}
-
-TEST(Symmetry, UserGuideStatesEveryKeyWithItsDefault) {
-    testing::expect_guide_states(kSymmetryKeys, "docs/user-guide/sph.md",
-                                 "## Symmetry planes: `[[sph.symmetry]]`");
 }
 
 } // namespace

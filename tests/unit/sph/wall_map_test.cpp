@@ -1,6 +1,5 @@
 #include "sph/wall_map.hpp"
 #include "support/csv_rows.hpp"
-#include "support/guide_table.hpp"
 #include "support/test_folder.hpp"
 
 #include <cmath>
@@ -199,10 +198,6 @@ TEST(WallMap, ParticlesOnBordersAreSharedAndEdgesKeepTheirLoad) {
     ASSERT_EQ(rows.size(), 2u);
     EXPECT_NEAR(rows[0][4], 5.5 * 2.0 / 0.5, kRoundOff * 100);
     EXPECT_NEAR(rows[1][4], 5.5 * 2.0 / 0.5, kRoundOff * 100);
-}
-
-TEST(WallMapKeys, UserGuideStatesEveryKeyWithItsDefault) {
-    testing::expect_guide_states(kWallMapKeys, "docs/user-guide/sph.md", "## `[[sph.wall_map]]`");
 }
 
 } // namespace
