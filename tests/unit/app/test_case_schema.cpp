@@ -1,11 +1,20 @@
 // The case file's declared schema: every table documented as declared, each key declared once.
 
 #include "app/case_schema.hpp"
+#include "app/scene.hpp"
+#include "io/case_error.hpp"
+#include "support/cli_runner.hpp"
 #include "support/guide_table.hpp"
+#include "support/test_folder.hpp"
 
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
 #include <gtest/gtest.h>
+#include <map>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace grainload::app {
 namespace {
@@ -44,6 +53,78 @@ TEST(CaseSchema, AKeysPathNamesItsTable) {
     EXPECT_EQ(io::table_of_key("case.end_time"), "case");
     EXPECT_EQ(io::table_of_key("material[3].mu_i.i0"), "material.mu_i");
     EXPECT_EQ(io::table_of_key("title"), "");
+}
+
+/// Whether the schema declares `key` (a full path, "sph.body[0].spacing"). A model's keys may
+/// stand in [[material]] itself or in its [material.MODEL] table: a key of "material" is
+/// declared when [[material]] or any model's table declares it.
+bool declared(const std::string& key) {
+    const std::string table = io::table_of_key(key);
+    const std::string name = key.substr(key.rfind('.') + 1);
+    for (const io::KeyTable& part : case_schema()) {
+        const bool same_table =
+            part.name == table || (table == "material" && part.name.starts_with("material."));
+        if (same_table && (part.user_keys || io::find_key_spec(part.keys, name) != nullptr)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+/// Every case file of `folder` and below, but the material-point drivers (another format).
+std::vector<std::string> case_files(const std::string& folder) {
+    std::vector<std::string> files;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(folder)) {
+        if (entry.path().extension() == ".toml" &&
+            entry.path().parent_path().filename() != "matpoint") {
+            files.push_back(entry.path().string());
+        }
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+// Every key a reader takes from a shipped case or a scene the tests load is declared in the
+// schema, so that `help keys` and the user guide know every key a case can hold. The cases are
+// loaded from a copy (the Gmsh cases mesh next to their case file), the wagon's deck made first
+// by its own export script as the wagon's tests make it.
+TEST(CaseSchema, EveryKeyTheShippedCasesReadIsDeclared) {
+    const std::string copy = grainload::testing::test_folder("case_schema");
+    std::filesystem::remove_all(copy);
+    std::filesystem::create_directories(copy);
+    for (const char* folder : {"cases", "tests/data/scene_warnings", "tests/data/watchdog"}) {
+        std::filesystem::copy(grainload::testing::source_path(folder),
+                              copy + "/" + std::filesystem::path(folder).filename().string(),
+                              std::filesystem::copy_options::recursive);
+    }
+    const std::string wagon = copy + "/cases/hopper_wagon";
+    const std::string export_deck = "python3 '" + wagon + "/export_k.py' --case '" + wagon +
+                                    "/wagon_gravity.toml' > '" + wagon + "/export.log' 2>&1";
+    ASSERT_EQ(std::system(export_deck.c_str()), 0);
+    std::map<std::string, std::set<std::string>> undeclared; // key -> the cases that read it
+    std::size_t loaded = 0;
+    for (const std::string& file : case_files(copy)) {
+        std::unique_ptr<Scene> scene;
+        try {
+            scene = Scene::load(file, {});
+        } catch (const io::CaseError& error) {
+            ADD_FAILURE() << file << " does not load: " << error.what();
+            continue;
+        }
+        ++loaded;
+        for (const std::string& key : scene->document->used_keys()) {
+            if (!declared(key)) {
+                undeclared[io::table_of_key(key) + "." + key.substr(key.rfind('.') + 1)].insert(
+                    std::filesystem::path(file).filename().string());
+            }
+        }
+    }
+    EXPECT_GT(loaded, 60u);
+    for (const auto& [key, files] : undeclared) {
+        ADD_FAILURE() << key << " is read but not declared (" << *files.begin() << ", "
+                      << files.size() << " case files)";
+    }
+    std::filesystem::remove_all(copy);
 }
 
 } // namespace
