@@ -6,6 +6,14 @@
 
 namespace grainload::io {
 
+std::string default_text(std::span<const KeySpec> specs, std::string_view name) {
+    const KeySpec* spec = find_key_spec(specs, name);
+    if (spec == nullptr) {
+        throw std::logic_error("no declared key '" + std::string(name) + "'");
+    }
+    return std::string(spec->default_text);
+}
+
 const KeySpec* find_key_spec(std::span<const KeySpec> specs, std::string_view name) {
     for (const KeySpec& spec : specs) {
         if (spec.name == name) {

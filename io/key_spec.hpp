@@ -42,6 +42,9 @@ struct KeyTable {
 const KeySpec* find_key_spec(std::span<const KeySpec> specs, std::string_view name);
 /// The numeric default of `name` (KeySpec::value); throws std::logic_error for an undeclared key.
 double default_value(std::span<const KeySpec> specs, std::string_view name);
+/// The default of `name` as the user writes it (KeySpec::default_text), for a key whose value
+/// is a word ("m", "regular"); throws std::logic_error for an undeclared key.
+std::string default_text(std::span<const KeySpec> specs, std::string_view name);
 
 /// The parts of `tables` named `name`: a table whose keys the user guide documents under more
 /// than one heading ([[sph.wall]]: its geometry, its outlet keys) is declared in as many parts.

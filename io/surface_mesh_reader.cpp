@@ -25,7 +25,7 @@ std::string lower_extension(const std::string& path) {
 }
 
 double length_unit(const CaseTable& table) {
-    const std::string text = table.string_or("unit", "m");
+    const std::string text = table.string_or("unit", default_text(kSurfaceMeshKeys, "unit"));
     std::string error;
     const auto unit = parse_unit(text, &error);
     if (!unit || unit->dimension != dimension::kLength) {
@@ -109,7 +109,8 @@ SurfaceMesh read_surface_mesh(const CaseTable& table) {
     } catch (const std::invalid_argument& error) {
         table.fail("file", error.what());
     }
-    const double factor = length_unit(table) * table.number_or("scale", 1.0);
+    const double factor =
+        length_unit(table) * table.number_or("scale", default_value(kSurfaceMeshKeys, "scale"));
     if (!(factor > 0.0)) {
         table.fail("scale", "expected a positive scale factor");
     }

@@ -127,7 +127,8 @@ void cut_points(const io::CaseTable& shape, std::vector<Vec3>& points, int dimen
             cut.fail("normal", "expected a non-zero normal (towards the particles kept)");
         }
         normal.normalize();
-        const double offset = cut.quantity_or("offset", dim::kLength, 0.0);
+        const double offset =
+            cut.quantity_or("offset", dim::kLength, io::default_value(kCutKeys, "offset"));
         std::erase_if(points, [&](const Vec3& x) { return (x - point).dot(normal) < offset; });
         if (points.empty()) {
             cut.fail("normal", "the cut removes every particle of the shape: expected the "
@@ -174,7 +175,8 @@ std::vector<Vec3> generate_body_points(const io::CaseTable& shape, double spacin
             base_radius = top_radius = shape.positive_quantity("radius", dim::kLength);
         } else {
             base_radius = shape.positive_quantity("base_radius", dim::kLength);
-            top_radius = shape.quantity_or("top_radius", dim::kLength, 0.0);
+            top_radius = shape.quantity_or("top_radius", dim::kLength,
+                                           io::default_value(kShapeKeys, "top_radius"));
             if (top_radius < 0.0) {
                 shape.fail("top_radius", "expected a radius >= 0 (0: a full cone)");
             }
@@ -191,12 +193,14 @@ std::vector<Vec3> generate_body_points(const io::CaseTable& shape, double spacin
             *rounded = lattice_rounding(*drawn, points, spacing, dimension);
         }
     }
-    if (shape.choice_or("lattice", {"regular", "jittered"}, "regular") == "jittered") {
-        const double fraction = shape.number_or("jitter", 0.1);
+    if (shape.choice_or("lattice", {"regular", "jittered"},
+                        io::default_text(kShapeKeys, "lattice")) == "jittered") {
+        const double fraction = shape.number_or("jitter", io::default_value(kShapeKeys, "jitter"));
         if (!(fraction >= 0.0 && fraction < 0.5)) {
             shape.fail("jitter", "expected a fraction of the spacing in [0, 0.5)");
         }
-        const auto seed = shape.integer_or("seed", 1);
+        const auto seed = shape.integer_or(
+            "seed", static_cast<std::int64_t>(io::default_value(kShapeKeys, "seed")));
         jitter_points(points, spacing, fraction, static_cast<std::uint64_t>(seed), dimension);
     }
     return points;
@@ -227,8 +231,10 @@ std::optional<std::pair<Vec3, Vec3>> drawn_bounds(const io::CaseTable& shape, in
     const Vec3 top = base + shape.quantity("height", dim::kLength) * axis;
     const double base_radius = type == "cylinder" ? shape.quantity("radius", dim::kLength)
                                                   : shape.quantity("base_radius", dim::kLength);
-    const double top_radius =
-        type == "cylinder" ? base_radius : shape.quantity_or("top_radius", dim::kLength, 0.0);
+    const double top_radius = type == "cylinder"
+                                  ? base_radius
+                                  : shape.quantity_or("top_radius", dim::kLength,
+                                                      io::default_value(kShapeKeys, "top_radius"));
     Vec3 across;
     for (int i = 0; i < 3; ++i) {
         across[i] = std::sqrt(std::max(0.0, 1.0 - axis[i] * axis[i]));

@@ -1,8 +1,10 @@
 #pragma once
 // Particle centres filling the shapes of an SPH body: box, cylinder, cone, mesh or LS-DYNA deck.
 
+#include "io/key_spec.hpp"
 #include "io/types.hpp"
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -14,6 +16,34 @@ class CaseTable;
 }
 
 namespace grainload::sph {
+
+/// The keys of [sph.body.shape] (and of a source's [sph.source.shape]) but a mesh's
+/// (io::kSurfaceMeshKeys) and a deck's (kKeywordBodyKeys).
+inline constexpr std::array<io::KeySpec, 13> kShapeKeys{{
+    {"type", "`box`, `cylinder`, `cone`, `mesh` or `lsdyna`", "", "the shape its lattice fills"},
+    {"min", "length vector", "required for a box", "the box's lower corner"},
+    {"max", "length vector", "required for a box", "the box's upper corner"},
+    {"centre", "length vector", "required for a disc", "a 2D cylinder's centre"},
+    {"base", "length vector", "required for a 3D cylinder or a cone",
+     "the centre of the base face"},
+    {"axis", "vector", "required for a 3D cylinder or a cone", "the direction base to top"},
+    {"radius", "length", "required for a cylinder", "its radius"},
+    {"height", "length", "required for a 3D cylinder or a cone", "along the axis"},
+    {"base_radius", "length", "required for a cone", "the radius at the base"},
+    {"top_radius", "length", "0 m", "the radius at the top: > 0 makes a frustum", 0.0},
+    {"lattice", "`regular` or `jittered`", "regular",
+     "jittered: each particle offset at random within its cell"},
+    {"jitter", "number in [0, 0.5)", "0.1", "jittered: the largest offset per axis in spacings",
+     0.1},
+    {"seed", "integer", "1", "jittered: the same seed, the same particles", 1.0},
+}};
+
+/// The keys of each [[sph.body.shape.cut]]: the shape keeps the particles in front of a plane.
+inline constexpr std::array<io::KeySpec, 3> kCutKeys{{
+    {"point", "length vector", "", "a point of the plane"},
+    {"normal", "vector", "", "towards the particles kept (any length)"},
+    {"offset", "length", "0 m", "the particles kept are at least this far in front", 0.0},
+}};
 
 /// A size of a shape that its lattice changed: along axis `axis` (0 x, 1 y, 2 z) the shape is
 /// drawn `drawn` m long and its particles' cells (cubes of the spacing about the centres)

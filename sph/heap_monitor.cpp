@@ -15,7 +15,8 @@ namespace dim = io::dimension;
 namespace {
 
 double rest_fraction(const io::CaseTable& heap) {
-    const double fraction = heap.number_or("rest_fraction", 1e-4);
+    const double fraction =
+        heap.number_or("rest_fraction", io::default_value(kHeapKeys, "rest_fraction"));
     if (!(fraction > 0.0 && fraction < 1.0)) {
         heap.fail("rest_fraction", "expected a fraction of the peak kinetic energy in (0, 1)");
     }

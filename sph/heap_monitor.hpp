@@ -2,9 +2,11 @@
 // The [sph.heap] table at work: one body's kinetic energy followed, its final heap measured.
 
 #include "io/frame.hpp"
+#include "io/key_spec.hpp"
 #include "sph/heap_measures.hpp"
 #include "sph/particle_set.hpp"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +16,15 @@ class CaseTable;
 }
 
 namespace grainload::sph {
+
+/// The keys of [sph.heap]: the heap figures of one body in summary.json.
+inline constexpr std::array<io::KeySpec, 3> kHeapKeys{{
+    {"body", "string", "", "a [[sph.body]] name"},
+    {"origin", "length vector", "",
+     "3D: a point on the heap's vertical axis; 2D: a point on its back face"},
+    {"rest_fraction", "number in (0, 1)", "1e-4",
+     "at rest: the body's kinetic energy below this fraction of its peak", 1e-4},
+}};
 
 /// The case's [sph.heap] table at work: follows one body's kinetic energy step by step and, at
 /// the end, measures the heap it formed (sph/heap_measures.hpp) for summary.json.

@@ -34,7 +34,8 @@ io::KeywordMesh read_deck(const io::CaseTable& shape) {
 /// Refuses particles whose deck mass (or volume) is off density * spacing^d (spacing^d).
 void check_masses(const io::CaseTable& shape, const std::vector<const io::KeywordParticle*>& list,
                   double spacing, int dimension, double density) {
-    const double tolerance = shape.number_or("mass_tolerance", kDefaultMassTolerance);
+    const double tolerance =
+        shape.number_or("mass_tolerance", io::default_value(kKeywordBodyKeys, "mass_tolerance"));
     if (!(tolerance > 0.0)) {
         shape.fail("mass_tolerance", "expected a relative tolerance > 0");
     }

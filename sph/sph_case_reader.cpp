@@ -20,26 +20,30 @@ SphOptions read_sph_options(const io::CaseTable& sph, int dimension, double spac
     options.particle_spacing = spacing;
     const std::string kernel =
         sph.choice_or("kernel", {"cubic_spline", "quintic_spline", "wendland_c2"},
-                      std::string(kernel_name(options.kernel)));
+                      io::default_text(kSphKeys, "kernel"));
     options.kernel = kernel_type_from_name(kernel);
-    const double ratio = sph.number_or("smoothing_length_ratio", options.smoothing_length_ratio);
+    const double ratio = sph.number_or("smoothing_length_ratio",
+                                       io::default_value(kSphKeys, "smoothing_length_ratio"));
     if (!(ratio >= 0.8 && ratio <= 3.0)) {
         sph.fail("smoothing_length_ratio", "expected h / spacing in [0.8, 3]");
     }
     options.smoothing_length_ratio = ratio;
     options.smoothing_length = ratio * spacing;
-    options.cfl_safety = sph.number_or("cfl_safety", options.cfl_safety);
+    options.cfl_safety = sph.number_or("cfl_safety", io::default_value(kSphKeys, "cfl_safety"));
     if (!(options.cfl_safety > 0.0 && options.cfl_safety <= 1.0)) {
         sph.fail("cfl_safety", "expected a safety factor in (0, 1]");
     }
-    options.verlet_skin_factor = sph.number_or("verlet_skin", options.verlet_skin_factor);
+    options.verlet_skin_factor =
+        sph.number_or("verlet_skin", io::default_value(kSphKeys, "verlet_skin"));
     if (!(options.verlet_skin_factor >= 0.0 && options.verlet_skin_factor <= 1.0)) {
         sph.fail("verlet_skin", "expected the Verlet skin as a fraction of h in [0, 1]");
     }
     options.kernel_gradient_correction =
-        sph.boolean_or("kernel_gradient_correction", options.kernel_gradient_correction);
-    const std::string formulation = sph.choice_or(
-        "formulation", {"updated_lagrangian", "total_lagrangian"}, "updated_lagrangian");
+        sph.boolean_or("kernel_gradient_correction",
+                       io::default_value(kSphKeys, "kernel_gradient_correction") != 0.0);
+    const std::string formulation =
+        sph.choice_or("formulation", {"updated_lagrangian", "total_lagrangian"},
+                      io::default_text(kSphKeys, "formulation"));
     if (formulation == "total_lagrangian") {
         options.formulation = Formulation::total_lagrangian;
         // F = I + grad0 u must be exact for rigid rotations, which needs the corrected gradient.
@@ -50,8 +54,10 @@ SphOptions read_sph_options(const io::CaseTable& sph, int dimension, double spac
         }
     }
     if (const auto viscosity = sph.optional_table("artificial_viscosity")) {
-        options.viscosity.alpha = viscosity->number_or("alpha", 0.0);
-        options.viscosity.beta = viscosity->number_or("beta", 0.0);
+        options.viscosity.alpha =
+            viscosity->number_or("alpha", io::default_value(kArtificialViscosityKeys, "alpha"));
+        options.viscosity.beta =
+            viscosity->number_or("beta", io::default_value(kArtificialViscosityKeys, "beta"));
         if (options.viscosity.alpha < 0.0 || options.viscosity.beta < 0.0) {
             viscosity->fail("", "expected alpha >= 0 and beta >= 0");
         }
@@ -66,20 +72,23 @@ SphOptions read_sph_options(const io::CaseTable& sph, int dimension, double spac
                              "updated-Lagrangian kernel, which total_lagrangian does not have: "
                              "expected no [sph.artificial_stress] table");
         }
-        options.artificial_stress.epsilon = stress->number_or("epsilon", 0.0);
+        options.artificial_stress.epsilon =
+            stress->number_or("epsilon", io::default_value(kArtificialStressKeys, "epsilon"));
         options.artificial_stress.exponent =
-            stress->number_or("exponent", options.artificial_stress.exponent);
+            stress->number_or("exponent", io::default_value(kArtificialStressKeys, "exponent"));
         if (options.artificial_stress.epsilon < 0.0 || options.artificial_stress.exponent <= 0.0) {
             stress->fail("", "expected epsilon >= 0 and exponent > 0");
         }
     }
     if (const auto contact = sph.optional_table("contact")) {
         options.contact.stiffness = contact->positive_quantity("stiffness", dim::kPressure);
-        options.contact.exponent = contact->number_or("exponent", options.contact.exponent);
+        options.contact.exponent =
+            contact->number_or("exponent", io::default_value(kContactKeys, "exponent"));
         if (!(options.contact.exponent >= 1.0)) {
             contact->fail("exponent", "expected n >= 1");
         }
-        options.contact.damping_ratio = contact->number_or("damping_ratio", 0.0);
+        options.contact.damping_ratio =
+            contact->number_or("damping_ratio", io::default_value(kContactKeys, "damping_ratio"));
         if (!(options.contact.damping_ratio >= 0.0 && options.contact.damping_ratio <= 10.0)) {
             contact->fail("damping_ratio",
                           "expected a fraction of critical damping zeta in [0, 10]");
@@ -108,8 +117,9 @@ WallSurface wall_surface(const io::CaseTable& wall, int dimension, double spacin
     if (type == "box") {
         const Vec3 lower = wall.vector("min", dim::kLength);
         const Vec3 upper = wall.vector("max", dim::kLength);
-        auto points = box_wall_points(lower, upper, spacing, layers, dimension,
-                                      wall.boolean_or("open_top", true));
+        auto points = box_wall_points(
+            lower, upper, spacing, layers, dimension,
+            wall.boolean_or("open_top", io::default_value(kWallKeys, "open_top") != 0.0));
         auto normals = box_wall_normals(points, lower, upper, dimension);
         return {std::move(points), std::move(normals), {}};
     }

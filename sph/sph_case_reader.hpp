@@ -1,11 +1,13 @@
 #pragma once
 // The readers of a case's [sph] tables: solver options, walls, clamps, friction, symmetry.
 
+#include "io/key_spec.hpp"
 #include "sph/particle_set.hpp"
 #include "sph/phase_sequence.hpp"
 #include "sph/rigid_wall.hpp"
 #include "sph/sph_options.hpp"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -14,6 +16,96 @@ class CaseTable;
 }
 
 namespace grainload::sph {
+
+/// The keys of [sph] (docs/user-guide/sph.md, "Key tables"); the defaults are SphOptions' own,
+/// which tests/unit/sph/sph_keys_test.cpp holds equal to these.
+inline constexpr std::array<io::KeySpec, 8> kSphKeys{{
+    {"interactions", "boolean", "true",
+     "false: particles fly freely under gravity (needs time_step), a pipeline check", 1.0},
+    {"time_step", "time", "the CFL limit",
+     "a fixed step; refused, naming the limit, when above the CFL limit"},
+    {"kernel", "`cubic_spline`, `quintic_spline` or `wendland_c2`", "cubic_spline",
+     "the smoothing kernel"},
+    {"smoothing_length_ratio", "number in [0.8, 3]", "1.3",
+     "h / spacing (the Wendland C2 kernel wants about 2)", 1.3},
+    {"cfl_safety", "number in (0, 1]", "0.3", "the step is cfl_safety h / (c + abs(v))", 0.3},
+    {"verlet_skin", "number in [0, 1]", "0.1",
+     "the neighbour list's skin as a fraction of h; 0: a cell list every step", 0.1},
+    {"kernel_gradient_correction", "boolean", "true",
+     "exact linear gradients, angular momentum conserved (always on in total_lagrangian)", 1.0},
+    {"formulation", "`updated_lagrangian` or `total_lagrangian`", "updated_lagrangian",
+     "sums over current neighbours, or over each body's initial configuration (solids only)"},
+}};
+
+/// The keys of [sph.artificial_viscosity] (Monaghan's Pi_ij); without the table: none.
+inline constexpr std::array<io::KeySpec, 3> kArtificialViscosityKeys{{
+    {"alpha", "number >= 0", "0", "the linear term alpha c mu", 0.0},
+    {"beta", "number >= 0", "0", "the quadratic term beta mu^2", 0.0},
+    {"sound_speed", "velocity >= 0", "the materials' own",
+     "the c of alpha c mu; default: the materials' wave speed before their stiffness_scale"},
+}};
+
+/// The keys of [sph.artificial_stress] (Gray, Monaghan & Swift 2001); without the table: none.
+inline constexpr std::array<io::KeySpec, 2> kArtificialStressKeys{{
+    {"epsilon", "number >= 0", "0", "the fraction of the tensile principal stresses", 0.0},
+    {"exponent", "number > 0", "4", "the exponent of the kernel ratio", 4.0},
+}};
+
+/// The keys of [sph.contact], the potential between bodies and with walls; without it: none.
+inline constexpr std::array<io::KeySpec, 3> kContactKeys{{
+    {"stiffness", "pressure > 0", "", "K; about 100 E for impacts"},
+    {"exponent", "number >= 1", "1", "n of the potential", 1.0},
+    {"damping_ratio", "number in [0, 10]", "0",
+     "zeta: the normal dashpot as a fraction of critical damping", 0.0},
+}};
+
+/// The keys of each [[sph.friction]] table: Coulomb friction of one body on one wall.
+inline constexpr std::array<io::KeySpec, 4> kFrictionKeys{{
+    {"body", "string", "", "a [[sph.body]] name"},
+    {"wall", "string", "", "a [[sph.wall]] name"},
+    {"mu_static", "number >= 0", "", "stick while the tangential force needed <= mu_static N"},
+    {"mu_kinetic", "number in [0, mu_static]", "mu_static", "slide with mu_kinetic N"},
+}};
+
+/// The keys of [sph.body.initial_stress]; without the table the body starts stress-free.
+inline constexpr std::array<io::KeySpec, 2> kInitialStressKeys{{
+    {"type", "`geostatic`", "",
+     "sigma_v = -rho abs(g) depth below the body's top, K0 sigma_v horizontally"},
+    {"lateral_ratio", "number in [0, 2]", "", "K0 = sigma_h / sigma_v (Jaky: 1 - sin phi)"},
+}};
+
+/// The keys of each [[sph.body.clamp]] box: the body's particles inside it are held.
+inline constexpr std::array<io::KeySpec, 2> kClampKeys{{
+    {"min", "length vector", "", "the box's lower corner (faces included)"},
+    {"max", "length vector", "", "the box's upper corner, above min in every direction"},
+}};
+
+/// The keys of each [[sph.wall]] but its outlet keys (kWallOutletKeys) and a mesh wall's file
+/// (io::kSurfaceMeshKeys).
+inline constexpr std::array<io::KeySpec, 18> kWallKeys{{
+    {"name", "string", "", "names the wall in wall_forces.csv, frames and summary.json"},
+    {"type", "`plane`, `box` or `mesh`", "", "the wall's geometry"},
+    {"origin", "length vector", "required for a plane", "a corner of the plane"},
+    {"edge_u", "length vector", "required for a plane", "the plane is origin + s edge_u"},
+    {"edge_v", "length vector", "required for a plane in 3D", "+ t edge_v, s and t in [0, 1]"},
+    {"normal", "vector", "required for a plane", "points into the material"},
+    {"min", "length vector", "required for a box", "the box's inner lower corner"},
+    {"max", "length vector", "required for a box", "the box's inner upper corner"},
+    {"open_top", "boolean", "true", "a box without its top face", 1.0},
+    {"flip_normals", "boolean", "false", "a mesh wall: the material is behind every face", 0.0},
+    {"spacing", "length", "the bodies' spacing",
+     "wall particle spacing, 0.2 to 1 times the bodies'"},
+    {"layers", "integer in [1, 20]", "ceil(2h / spacing)", "layers of wall particles"},
+    {"velocity", "velocity vector", "0 m/s", "the prescribed rigid motion of the centre"},
+    {"angular_velocity", "angular velocity vector", "0 rad/s", "the rotation about the centre"},
+    {"velocity_history", "list of [time, velocity vector]", "none",
+     "instead of velocity: piecewise linear in time, held outside its points"},
+    {"angular_velocity_history", "list of [time, angular velocity vector]", "none",
+     "instead of angular_velocity, likewise"},
+    {"centre", "length vector", "the wall particles' centroid", "the centre of the rotation"},
+    {"bodies", "string or list of strings", "every body",
+     "the [[sph.body]] names it acts on; the others pass through it"},
+}};
 
 /// Solver settings of an [sph] table with particle interactions (see docs/user-guide/sph.md):
 /// kernel, smoothing_length_ratio, cfl_safety, verlet_skin, kernel_gradient_correction and

@@ -46,7 +46,8 @@ std::unique_ptr<SphModel> SphModel::read_bodies(const io::CaseTable& root,
     model->gravity_ = scene.gravity;
     model->dimension_ = scene.dimension;
     model->time_step_ = sph.positive_quantity_or("time_step", dim::kTime, 0.0);
-    model->interactions_ = sph.boolean_or("interactions", true);
+    model->interactions_ =
+        sph.boolean_or("interactions", io::default_value(kSphKeys, "interactions") != 0.0);
     if (!model->interactions_ && model->time_step_ == 0.0) {
         sph.fail("time_step", "free flight (interactions = false) has no CFL limit: expected a "
                               "fixed time_step, e.g. \"1 ms\"");

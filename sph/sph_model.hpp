@@ -1,6 +1,7 @@
 #pragma once
 // The SPH side of a scene: its bodies and walls advanced by SphSolver, as one Stepper.
 
+#include "io/key_spec.hpp"
 #include "io/scene_settings.hpp"
 #include "io/stepper.hpp"
 #include "materials/material_library.hpp"
@@ -16,6 +17,7 @@
 #include "sph/sph_solver.hpp"
 #include "sph/wall_map.hpp"
 
+#include <array>
 #include <fstream>
 #include <memory>
 #include <span>
@@ -27,6 +29,21 @@ class CaseTable;
 }
 
 namespace grainload::sph {
+
+/// The keys of each [[sph.body]] besides its [sph.body.shape], [sph.body.initial_stress] and
+/// [[sph.body.clamp]] tables. All bodies share one spacing.
+inline constexpr std::array<io::KeySpec, 4> kBodyKeys{{
+    {"name", "string", "", "names the body's block in the frames and its figures"},
+    {"material", "string", "", "a [[material]] name"},
+    {"spacing", "length", "", "the lattice spacing; particle mass = density x spacing^dimension"},
+    {"velocity", "velocity vector", "0 m/s", "the initial velocity"},
+}};
+
+/// The keys of each [[sph.probe]]: the particle nearest a point, followed in probes.csv.
+inline constexpr std::array<io::KeySpec, 2> kProbeKeys{{
+    {"name", "string", "", "names the probe's columns in probes.csv"},
+    {"position", "length vector", "", "the probe follows the particle nearest this point at t = 0"},
+}};
 
 /// The SPH side of a scene: particles of every [[sph.body]] and [[sph.wall]], advanced
 /// explicitly by SphSolver (or, with interactions = false, in free flight under gravity).

@@ -2,6 +2,7 @@
 
 #include "io/case_table.hpp"
 #include "io/surface_mesh_reader.hpp"
+#include "sph/sph_case_reader.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -225,8 +226,9 @@ MeshWallSamples read_mesh_wall_points(const io::CaseTable& wall, int dimension, 
         wall.fail("file", "a 3D mesh wall needs triangles or quadrangles; this mesh has " +
                               std::to_string(mesh.segments.size()) + " lines and no faces");
     }
-    return mesh_wall_points(mesh, spacing, layers, dimension,
-                            wall.boolean_or("flip_normals", false));
+    return mesh_wall_points(
+        mesh, spacing, layers, dimension,
+        wall.boolean_or("flip_normals", io::default_value(kWallKeys, "flip_normals") != 0.0));
 }
 
 } // namespace grainload::sph

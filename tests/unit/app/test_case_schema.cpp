@@ -92,7 +92,8 @@ TEST(CaseSchema, EveryKeyTheShippedCasesReadIsDeclared) {
     const std::string copy = grainload::testing::test_folder("case_schema");
     std::filesystem::remove_all(copy);
     std::filesystem::create_directories(copy);
-    for (const char* folder : {"cases", "tests/data/scene_warnings", "tests/data/watchdog"}) {
+    for (const char* folder :
+         {"cases", "tests/data/scene_warnings", "tests/data/watchdog", "tests/data/keyword"}) {
         std::filesystem::copy(grainload::testing::source_path(folder),
                               copy + "/" + std::filesystem::path(folder).filename().string(),
                               std::filesystem::copy_options::recursive);
