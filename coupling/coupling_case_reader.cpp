@@ -9,12 +9,32 @@
 #include <cmath>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 
 namespace grainload::coupling {
 
 namespace dim = io::dimension;
 
 namespace {
+
+/// The declared default of a [coupling] key, at compile time.
+constexpr double declared(std::string_view key) {
+    for (const io::KeySpec& spec : kCouplingKeys) {
+        if (spec.name == key) {
+            return spec.value;
+        }
+    }
+    throw std::logic_error("undeclared [coupling] key");
+}
+
+// A default-constructed CouplingSettings holds the declared defaults: one default per key.
+constexpr CouplingSettings kDefaults{};
+static_assert(kDefaults.max_subcycles == declared("max_subcycles"));
+static_assert(kDefaults.max_iterations == declared("max_iterations"));
+static_assert(kDefaults.relaxation == declared("relaxation"));
+static_assert(kDefaults.iteration_tolerance == declared("iteration_tolerance"));
+static_assert(kDefaults.energy_error_limit == declared("energy_error_limit"));
+static_assert(kDefaults.added_mass == declared("added_mass"));
 
 CouplingSettings read_settings(const io::CaseTable& table, const fem::ShellModel& fem) {
     CouplingSettings settings;

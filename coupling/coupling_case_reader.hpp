@@ -73,6 +73,16 @@ inline constexpr std::array<io::KeySpec, 8> kInterfaceKeys{{
      "there (no contact, friction, damping or load)"},
 }};
 
+/// The keys of each [[coupling.friction]] table: Coulomb friction between a body and an
+/// interface's wall.
+inline constexpr std::array<io::KeySpec, 4> kFrictionKeys{{
+    {"body", "string", "", "an [[sph.body]] name"},
+    {"part", "string", "",
+     "an interface's name (its part's name unless the interface has its own `name`)"},
+    {"mu_static", "number >= 0", "", "μ_s, the static friction coefficient"},
+    {"mu_kinetic", "number", "`mu_static`", "μ_k, the sliding friction coefficient, 0 ≤ μ_k ≤ μ_s"},
+}};
+
 /// A scene with [sph], [fem] and [coupling]: the bodies, the shell parts, one wall per
 /// [[coupling.interface]] on the shell (named after its part or its `name`), friction from
 /// [[coupling.friction]] (body, interface name as `part`, mu_static, mu_kinetic), joined in one

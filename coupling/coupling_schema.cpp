@@ -10,11 +10,13 @@ namespace {
 
 constexpr std::string_view kGuide = "docs/user-guide/coupling.md";
 
-const std::array<io::KeyTable, 2> kTables{{
+const std::array<io::KeyTable, 3> kTables{{
     {"coupling", false, "how the sand and the shells exchange loads: window, iterations",
      kCouplingKeys, kGuide, "## `[coupling]`"},
     {"coupling.interface", true, "a shell part's face that the sand meets as a wall",
      kInterfaceKeys, kGuide, "## `[[coupling.interface]]`"},
+    {"coupling.friction", true, "Coulomb friction between a body and a coupled part", kFrictionKeys,
+     kGuide, "## `[[coupling.friction]]`"},
 }};
 
 } // namespace

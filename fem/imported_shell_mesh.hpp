@@ -2,7 +2,9 @@
 // The mesh of a [[fem.shell]] imported from a Gmsh mesh or an LS-DYNA keyword deck.
 
 #include "fem/shell_mesh.hpp"
+#include "io/key_spec.hpp"
 
+#include <array>
 #include <string>
 
 namespace grainload::io {
@@ -10,6 +12,27 @@ class CaseTable;
 }
 
 namespace grainload::fem {
+
+/// The keys of a [[fem.shell]] with generator = "gmsh" besides `file` and `thickness`.
+inline constexpr std::array<io::KeySpec, 2> kGmshKeys{{
+    {"geo", "string", "none",
+     "a Gmsh geometry script that makes `file` (`gmsh GEO -2`) when it is missing or older"},
+    {"geo_numbers", "table of numbers", "none",
+     "values of the script's `DefineConstant`s (`gmsh -setnumber NAME VALUE`)"},
+}};
+
+/// The keys of a [[fem.shell]] with generator = "lsdyna" besides `file`.
+inline constexpr std::array<io::KeySpec, 2> kKeywordShellKeys{{
+    {"units", "string", "", "the deck's consistent unit system, `\"LENGTH-MASS-TIME\"`"},
+    {"parts", "string, integer or a list of them", "every part with shell elements",
+     "the *PARTs that make the shell: titles or ids"},
+}};
+
+/// The keys of each [[fem.shell.group]] table: a physical surface of a Gmsh mesh.
+inline constexpr std::array<io::KeySpec, 2> kShellGroupKeys{{
+    {"name", "string", "", "a physical surface of the mesh"},
+    {"thickness", "length", "", "the thickness of its elements"},
+}};
 
 /// Mesh of a [[fem.shell]] whose generator is "gmsh" (a Gmsh .msh, made first from its `geo`
 /// script when that is newer, with per-group thicknesses from [[fem.shell.group]]) or "lsdyna"

@@ -2,6 +2,7 @@
 
 #include "fem/imported_shell_mesh.hpp"
 #include "fem/shell_mesh_generators.hpp"
+#include "fem/shell_model.hpp"
 #include "io/case_table.hpp"
 
 #include <algorithm>
@@ -135,7 +136,7 @@ ShellMesh read_shell_mesh(const io::CaseTable& shell) {
     }
     // Fold lines (box edges, kinks of an imported mesh): see fem/shell_directors.hpp.
     const double fold_angle =
-        shell.quantity_or("fold_angle", dim::kAngle, ShellMesh::kDefaultFoldAngle);
+        shell.quantity_or("fold_angle", dim::kAngle, io::default_value(kShellKeys, "fold_angle"));
     if (!(fold_angle > 0.0 && fold_angle <= std::numbers::pi * (1.0 + 1e-12))) {
         shell.fail("fold_angle", "expected an angle in (0 deg, 180 deg]");
     }
@@ -172,7 +173,8 @@ read_shell_parts(const io::CaseTable& fem, const std::vector<io::CaseTable>& she
         size = std::max(size, mesh_size(meshes.back()));
         parts.push_back(std::move(part));
     }
-    const double tolerance = fem.positive_quantity_or("seam_tolerance", dim::kLength, 1e-6 * size);
+    const double tolerance = fem.positive_quantity_or(
+        "seam_tolerance", dim::kLength, io::default_value(kFemKeys, "seam_tolerance") * size);
     ShellMesh structure;
     structure.set_fold_angle(meshes.front().fold_angle());
     for (std::size_t k = 0; k < meshes.size(); ++k) {
@@ -229,8 +231,10 @@ void read_shell_boundaries(const io::CaseTable& shell, const HistoryNames& histo
         }
         // Prescribed values follow the table's history (the load factor by default); zero by
         // default.
-        const double displacement = bc.quantity_or("displacement", dim::kLength, 0.0);
-        const double rotation = bc.quantity_or("rotation", dim::kAngle, 0.0);
+        const double displacement = bc.quantity_or(
+            "displacement", dim::kLength, io::default_value(kBoundaryKeys, "displacement"));
+        const double rotation =
+            bc.quantity_or("rotation", dim::kAngle, io::default_value(kBoundaryKeys, "rotation"));
         const std::string dofs = bc.string("dofs");
         std::vector<int> selected;
         std::size_t start = 0;
@@ -268,7 +272,7 @@ void read_shell_loads(const io::CaseTable& shell, const Vec3& case_gravity,
             analysis.add_area_load(load.vector("value", dim::kPressure));
         } else if (type == "pressure") {
             const double pressure = load.quantity("value", dim::kPressure);
-            if (load.boolean_or("follower", false)) {
+            if (load.boolean_or("follower", io::default_value(kLoadKeys, "follower") != 0.0)) {
                 analysis.add_follower_pressure(pressure);
             } else {
                 analysis.add_pressure(pressure);
@@ -311,7 +315,8 @@ std::vector<ShellMonitor> read_shell_monitors(const io::CaseTable& shell, const 
         m.name = table.string("name");
         m.node = mesh.nearest_node(table.vector("point", dim::kLength));
         m.dof = read_dof(table, "dof", table.string("dof"));
-        m.magnitude = table.boolean_or("magnitude", false);
+        m.magnitude =
+            table.boolean_or("magnitude", io::default_value(kMonitorKeys, "magnitude") != 0.0);
         if (table.has("reference")) {
             m.reference = table.quantity("reference", m.dof < 3 ? dim::kLength : dim::kAngle);
         }

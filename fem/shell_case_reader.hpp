@@ -2,8 +2,10 @@
 // The readers of a case's [[fem.shell]] tables: mesh, parts, supports, loads, monitors.
 
 #include "fem/shell_analysis.hpp"
+#include "io/key_spec.hpp"
 #include "materials/material_library.hpp"
 
+#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -15,6 +17,103 @@ class CaseTable;
 }
 
 namespace grainload::fem {
+
+/// The keys of every [[fem.shell]] part, whatever its mesh source (docs/user-guide/fem.md).
+inline constexpr std::array<io::KeySpec, 8> kShellKeys{{
+    {"name", "string", "`\"shell\"` (one part only)",
+     "the part's name: its block in the output frames, how [[coupling.interface]] names it; "
+     "unique"},
+    {"offset", "length vector", "none",
+     "moves the part's mesh after it is generated or read (a hopper placed below its silo)"},
+    {"material", "string", "", "a [[material]] name (any model; plane stress is derived)"},
+    {"thickness", "length", "required, but for `lsdyna` and `gmsh` with groups",
+     "the shell's thickness (`gmsh`: of the elements in no [[fem.shell.group]])"},
+    {"thickness_points", "integer", "2 linear elastic, 5 otherwise",
+     "Gauss points through the thickness, 2 to 15"},
+    {"generator", "string", "",
+     "the mesh source: `plate`, `cylinder`, `sphere_zone`, `cone`, `box`, `gmsh` or `lsdyna`"},
+    {"fold_angle", "angle", "`\"20 deg\"`",
+     "a node where an element normal deviates from the mean normal by more than this is on a "
+     "fold line, where each element keeps its own director; in (0, 180] deg",
+     ShellMesh::kDefaultFoldAngle},
+    {"file", "string", "required for `gmsh` and `lsdyna`",
+     "the Gmsh `.msh` or the LS-DYNA deck, relative to the case file"},
+}};
+
+/// The keys of the generated meshes (plate, cylinder, sphere_zone, cone, box), each read by the
+/// generators the user guide names with it.
+inline constexpr std::array<io::KeySpec, 19> kShellGeneratorKeys{{
+    {"length_x", "length", "", "`plate`, `box`: the extent along x"},
+    {"length_y", "length", "", "`plate`, `box`: the extent along y"},
+    {"height", "length", "", "`cone`, `box`: the extent along z"},
+    {"elements_x", "integer", "", "`plate`, `box`: elements along x"},
+    {"elements_y", "integer", "", "`plate`, `box`: elements along y"},
+    {"elements_z", "integer", "", "`box`: elements along z"},
+    {"top", "`open` or `closed`", "`\"open\"`", "`box`: whether it has its top face"},
+    {"radius", "length", "", "`cylinder`, `sphere_zone`: the radius"},
+    {"length", "length", "", "`cylinder`: the length along its axis y"},
+    {"angle_start", "angle", "", "`cylinder`: the first generator line's angle φ"},
+    {"angle_end", "angle", "", "`cylinder`: the last generator line's angle φ"},
+    {"elements_around", "integer", "", "`cylinder`, `sphere_zone`, `cone`: elements around"},
+    {"elements_along", "integer", "", "`cylinder`, `cone`: elements along the axis"},
+    {"polar_start", "angle", "", "`sphere_zone`: the polar angle where the zone starts"},
+    {"polar_end", "angle", "", "`sphere_zone`: the polar angle where the zone ends"},
+    {"azimuth_end", "angle", "", "`sphere_zone`, `cone`: the azimuth the part spans from 0"},
+    {"elements_polar", "integer", "", "`sphere_zone`: elements along the meridian"},
+    {"radius_bottom", "length", "", "`cone`: the radius at z = 0"},
+    {"radius_top", "length", "", "`cone`: the radius at z = height (0: a full cone)"},
+}};
+
+/// The keys of each [[fem.shell.boundary]] table.
+inline constexpr std::array<io::KeySpec, 10> kBoundaryKeys{{
+    {"node_set", "string", "required unless `point`",
+     "the constrained node set (the part's first)"},
+    {"point", "length vector", "none", "instead of `node_set`: the node nearest to it"},
+    {"symmetry", "`x`, `y` or `z`", "none",
+     "a symmetry plane of that normal: fixes the normal translation and the two rotations in the "
+     "plane"},
+    {"dofs", "string", "required unless `symmetry` or `angle`",
+     "the prescribed DOFs, any of `ux uy uz rx ry rz`, or `all`"},
+    {"displacement", "length", "`\"0 m\"`", "the value of the prescribed translations", 0.0},
+    {"rotation", "angle", "`\"0 deg\"`",
+     "the value of the prescribed rotations (global rotation-vector components)", 0.0},
+    {"axis", "vector", "required with `angle`", "the direction of a rigid rotation's axis"},
+    {"axis_point", "length vector", "`\"0 0 0 m\"`", "a point on a rigid rotation's axis"},
+    {"angle", "angle", "none", "a rigid rotation of the nodes about `axis` by this angle"},
+    {"time_function", "string", "the load ramp", "a [[fem.time_function]] scaling the values"},
+}};
+
+/// The keys of each [[fem.shell.load]] table.
+inline constexpr std::array<io::KeySpec, 7> kLoadKeys{{
+    {"type", "string", "", "`area_force`, `pressure`, `gravity`, `nodal_force` or `nodal_moment`"},
+    {"value", "pressure, pressure vector, force or moment vector", "required but for `gravity`",
+     "the load: per unit area (`area_force`, `pressure`) or per node"},
+    {"follower", "boolean", "false",
+     "`pressure`: acts normal to the deformed surface on its deformed area", 0.0},
+    {"acceleration", "acceleration vector", "`[case].gravity`",
+     "`gravity`: the acceleration of the shell's mass"},
+    {"node_set", "string", "required for nodal loads unless `point`",
+     "the loaded nodes (the part's set first)"},
+    {"point", "length vector", "none", "nodal loads: the node nearest to it instead of `node_set`"},
+    {"time_function", "string", "the load ramp", "a [[fem.time_function]] scaling the load"},
+}};
+
+/// The keys of each [[fem.shell.monitor]] table.
+inline constexpr std::array<io::KeySpec, 6> kMonitorKeys{{
+    {"name", "string", "", "the figure's name in summary.json"},
+    {"point", "length vector", "", "the node nearest to it is reported"},
+    {"dof", "string", "", "one of `ux uy uz rx ry rz`"},
+    {"magnitude", "boolean", "false", "report the absolute value", 0.0},
+    {"reference", "length or angle", "none", "a reference value reported beside it"},
+    {"source", "string", "none", "where the reference comes from"},
+}};
+
+/// The keys of each [[fem.shell.reaction]] table.
+inline constexpr std::array<io::KeySpec, 2> kReactionKeys{{
+    {"name", "string", "", "the figures' name: `<name>_x`, `<name>_y`, `<name>_z` in summary.json"},
+    {"node_set", "string", "",
+     "a node set of the part (constrained nodes; elsewhere the reaction is zero)"},
+}};
 
 /// A displacement or rotation the case asks to report, with its optional reference.
 struct ShellMonitor {

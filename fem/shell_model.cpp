@@ -10,6 +10,7 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 
 namespace grainload::fem {
 
@@ -17,13 +18,43 @@ namespace dim = io::dimension;
 
 namespace {
 
+/// The declared default of a [fem] key, at compile time.
+constexpr double declared(std::string_view key) {
+    for (const io::KeySpec& spec : kFemKeys) {
+        if (spec.name == key) {
+            return spec.value;
+        }
+    }
+    throw std::logic_error("undeclared [fem] key");
+}
+
+// NewtonSettings' own defaults (for analyses built without a case) are the declared ones.
+constexpr NewtonSettings kNewtonDefaults{};
+static_assert(kNewtonDefaults.displacement_tolerance == declared("displacement_tolerance"));
+static_assert(kNewtonDefaults.force_tolerance == declared("force_tolerance"));
+static_assert(kNewtonDefaults.energy_tolerance == declared("energy_tolerance"));
+static_assert(kNewtonDefaults.max_iterations == declared("max_iterations"));
+static_assert(kNewtonDefaults.max_cutbacks == declared("max_cutbacks"));
+
+/// The declared default of a [fem] key.
+double fallback(std::string_view key) {
+    return io::default_value(kFemKeys, key);
+}
+
+std::int64_t integer_fallback(std::string_view key) {
+    return static_cast<std::int64_t>(fallback(key));
+}
+
 NewtonSettings read_settings(const io::CaseTable& fem) {
     NewtonSettings s;
-    s.displacement_tolerance = fem.number_or("displacement_tolerance", s.displacement_tolerance);
-    s.force_tolerance = fem.number_or("force_tolerance", s.force_tolerance);
-    s.energy_tolerance = fem.number_or("energy_tolerance", s.energy_tolerance);
-    s.max_iterations = static_cast<int>(fem.integer_or("max_iterations", s.max_iterations));
-    s.max_cutbacks = static_cast<int>(fem.integer_or("max_cutbacks", s.max_cutbacks));
+    s.displacement_tolerance =
+        fem.number_or("displacement_tolerance", fallback("displacement_tolerance"));
+    s.force_tolerance = fem.number_or("force_tolerance", fallback("force_tolerance"));
+    s.energy_tolerance = fem.number_or("energy_tolerance", fallback("energy_tolerance"));
+    s.max_iterations =
+        static_cast<int>(fem.integer_or("max_iterations", integer_fallback("max_iterations")));
+    s.max_cutbacks =
+        static_cast<int>(fem.integer_or("max_cutbacks", integer_fallback("max_cutbacks")));
     return s;
 }
 
@@ -52,7 +83,8 @@ std::unique_ptr<ShellModel> ShellModel::from_case(const io::CaseTable& root,
         fem.choice_or("kinematics", {"linear", "total_lagrangian"}, "linear");
     model->settings_ = read_settings(fem);
     model->load_time_ = fem.positive_quantity_or("load_time", dim::kTime, scene.end_time);
-    model->increments_per_step_ = static_cast<int>(fem.integer_or("increments_per_step", 1));
+    model->increments_per_step_ = static_cast<int>(
+        fem.integer_or("increments_per_step", integer_fallback("increments_per_step")));
     const std::vector<io::CaseTable> shells = fem.array_of_tables("shell");
     if (shells.empty()) {
         fem.fail("shell", "expected at least one [[fem.shell]] table");
@@ -94,13 +126,13 @@ std::unique_ptr<ShellModel> ShellModel::from_case(const io::CaseTable& root,
         double alpha = 0.0;
         double gamma = 0.5;
         if (hht) {
-            alpha = fem.number_or("hht_alpha", -0.05);
+            alpha = fem.number_or("hht_alpha", fallback("hht_alpha"));
             if (alpha < -1.0 / 3.0 || alpha > 0.0) {
                 fem.fail("hht_alpha", "expected -1/3 <= alpha <= 0");
             }
             gamma = 0.5 - alpha; // Hilber, Hughes & Taylor 1977: second order
         } else {
-            gamma = fem.number_or("newmark_gamma", 0.5);
+            gamma = fem.number_or("newmark_gamma", fallback("newmark_gamma"));
             if (gamma < 0.5) {
                 fem.fail("newmark_gamma", "expected gamma >= 0.5 (unconditional stability)");
             }

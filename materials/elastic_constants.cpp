@@ -1,6 +1,7 @@
 #include "materials/elastic_constants.hpp"
 
 #include "io/case_table.hpp"
+#include "materials/material_factory.hpp"
 
 #include <cmath>
 
@@ -15,7 +16,8 @@ ElasticConstants ElasticConstants::from_bulk_shear(double density, double bulk, 
 }
 
 double ElasticConstants::read_stiffness_scale(const io::CaseTable& table) {
-    const double s = table.number_or("stiffness_scale", 1.0);
+    const double s =
+        table.number_or("stiffness_scale", io::default_value(kMaterialKeys, "stiffness_scale"));
     if (!(s > 0.0) || !std::isfinite(s)) {
         table.fail("stiffness_scale", "expected a factor > 0 on the bulk and shear moduli");
     }

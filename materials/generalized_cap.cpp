@@ -145,7 +145,9 @@ std::string one_of(const io::CaseTable& table, const char* ours, const char* the
 double tension_cutoff(const io::CaseTable& table) {
     const std::string key = one_of(table, "tension_cutoff", "cap_toff");
     if (key == "tension_cutoff") {
-        return table.positive_quantity_or(key, io::dimension::kPressure, 0.0, true);
+        return table.positive_quantity_or(key, io::dimension::kPressure,
+                                          io::default_value(kGeneralizedCapKeys, "tension_cutoff"),
+                                          true);
     }
     const double toff = table.quantity(key, io::dimension::kPressure);
     if (!(toff <= 0.0)) {

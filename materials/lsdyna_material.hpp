@@ -1,12 +1,14 @@
 #pragma once
 // A *MAT_GEOLOGIC_CAP_MODEL (MAT_025) material read from an LS-DYNA deck, converted to SI.
 
+#include "io/key_spec.hpp"
 #include "io/keyword_deck.hpp"
 #include "io/keyword_units.hpp"
 #include "materials/cap_surfaces.hpp"
 #include "materials/elastic_constants.hpp"
 #include "materials/material.hpp"
 
+#include <array>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -16,6 +18,15 @@ class CaseTable;
 }
 
 namespace grainload::materials {
+
+/// The keys of a [[material]]'s `from_lsdyna` table.
+inline constexpr std::array<io::KeySpec, 3> kFromLsDynaKeys{{
+    {"file", "string", "", "the deck, relative to the case file; `*INCLUDE`s are followed"},
+    {"mid", "integer or string", "", "the material's MID (an integer id or a label)"},
+    {"units", "string", "",
+     "the deck's consistent unit system, `\"LENGTH-MASS-TIME\"` (`\"mm-t-s\"`, `\"m-kg-s\"`, "
+     "...)"},
+}};
 
 /// One *MAT_GEOLOGIC_CAP_MODEL (alias *MAT_025, both with an optional _TITLE) material of an
 /// LS-DYNA keyword deck, converted to SI with the deck's unit system. Card layout (LS-DYNA

@@ -1,6 +1,11 @@
 #include "materials/material_schema.hpp"
 
+#include "materials/drucker_prager.hpp"
+#include "materials/generalized_cap.hpp"
+#include "materials/lsdyna_material.hpp"
+#include "materials/material_factory.hpp"
 #include "materials/mu_i_material.hpp"
+#include "materials/von_mises.hpp"
 
 #include <array>
 
@@ -8,9 +13,21 @@ namespace grainload::materials {
 
 namespace {
 
-const std::array<io::KeyTable, 1> kTables{{
+constexpr std::string_view kGuide = "docs/user-guide.md";
+
+const std::array<io::KeyTable, 6> kTables{{
+    {"material", true, "a material: its model, density and elastic constants", kMaterialKeys,
+     kGuide, "## `[[material]]`"},
+    {"material.von_mises", false, "von Mises plasticity with mixed linear hardening", kVonMisesKeys,
+     kGuide, "### `von_mises`"},
+    {"material.drucker_prager", false, "the Drucker-Prager cone with a tension cutoff",
+     kDruckerPragerKeys, kGuide, "### `drucker_prager`"},
+    {"material.generalized_cap", false, "the generalized cap model (LS-DYNA's MAT_025)",
+     kGeneralizedCapKeys, kGuide, "### `generalized_cap`"},
+    {"material.from_lsdyna", false, "a material read from an LS-DYNA deck's MAT_025 card",
+     kFromLsDynaKeys, kGuide, "#### A material from an LS-DYNA deck (`from_lsdyna`)"},
     {"material.mu_i", false, "the rate-dependent friction mu(I) of dense granular flow", kMuIKeys,
-     "docs/user-guide.md", "### `mu_i`"},
+     kGuide, "### `mu_i`"},
 }};
 
 } // namespace

@@ -30,11 +30,14 @@ std::unique_ptr<VonMises> VonMises::from_case(const io::CaseTable& table) {
     namespace dim = io::dimension;
     const ElasticConstants elastic = ElasticConstants::from_case(table);
     const double yield = table.positive_quantity("yield_stress", dim::kPressure);
-    const double tangent = table.positive_quantity_or("tangent_modulus", dim::kPressure, 0.0, true);
+    const double tangent =
+        table.positive_quantity_or("tangent_modulus", dim::kPressure,
+                                   io::default_value(kVonMisesKeys, "tangent_modulus"), true);
     if (tangent >= elastic.young()) {
         table.fail("tangent_modulus", "expected a tangent modulus below Young's modulus");
     }
-    const double beta = table.number_or("hardening_beta", 1.0);
+    const double beta =
+        table.number_or("hardening_beta", io::default_value(kVonMisesKeys, "hardening_beta"));
     if (!(beta >= 0.0 && beta <= 1.0)) {
         table.fail("hardening_beta", "expected a number in [0, 1] (1 isotropic, 0 kinematic)");
     }
