@@ -218,7 +218,7 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
     auto sph = sph::SphModel::read_bodies(root, scene, materials);
     auto fem = fem::ShellModel::from_case(root, scene, materials);
     const CouplingSettings settings = read_settings(coupling, *fem);
-    const double support = sph->support_radius(root);
+    const double support = sph->support_radius();
     const auto& names = fem->part_names();
     std::vector<CoupledPart> parts;
     std::vector<std::string> rigid_interfaces;

@@ -59,6 +59,10 @@ std::unique_ptr<SphModel> SphModel::read_bodies(const io::CaseTable& root,
     for (const auto& body : bodies) {
         model->add_body(body, scene.dimension);
     }
+    if (model->interactions_) {
+        model->options_ =
+            read_sph_options(sph, model->dimension_, model->spacing_, model->gravity_);
+    }
     return model;
 }
 
@@ -69,9 +73,8 @@ void SphModel::add_wall(WallDefinition wall) {
     added_walls_.push_back(std::move(wall));
 }
 
-double SphModel::support_radius(const io::CaseTable& root) const {
-    const SphOptions options = read_sph_options(root.table("sph"), dimension_, spacing_, gravity_);
-    return SmoothingKernel(options.kernel, options.smoothing_length, dimension_).support_radius();
+double SphModel::support_radius() const {
+    return SmoothingKernel(options_.kernel, options_.smoothing_length, dimension_).support_radius();
 }
 
 int SphModel::body_id(const std::string& name) const {
@@ -178,7 +181,7 @@ std::vector<FrictionPair> SphModel::added_wall_friction(const std::vector<Wall>&
 }
 
 void SphModel::build_solver(const io::CaseTable& sph) {
-    SphOptions options = read_sph_options(sph, dimension_, spacing_, gravity_);
+    SphOptions options = options_;
     SmoothingKernel kernel(options.kernel, options.smoothing_length, dimension_);
     auto walls = read_rigid_walls(sph, particles_, dimension_, spacing_, kernel.support_radius(),
                                   static_cast<int>(body_names_.size()), &phases_);

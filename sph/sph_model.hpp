@@ -88,7 +88,7 @@ class SphModel final : public io::Stepper {
     /// The bodies' particle spacing and the kernel's support radius 2h (3h quintic), which the
     /// layers of an added wall must fill. Valid after read_bodies().
     double spacing() const { return spacing_; }
-    double support_radius(const io::CaseTable& root) const;
+    double support_radius() const;
     /// Index of a body by name, -1 when there is none.
     int body_id(const std::string& name) const;
     /// The [[sph.body]] names, indexed by body id.
@@ -199,6 +199,8 @@ class SphModel final : public io::Stepper {
     double time_step_ = 0.0; ///< fixed by the case; 0 means "from the CFL condition"
     bool interactions_ = true;
     double spacing_ = 0.0;
+    /// [sph]'s solver settings, read once by read_bodies() (they need the bodies' spacing).
+    SphOptions options_;
     int dimension_ = 3;
     std::vector<WallDefinition> added_walls_;
     std::unique_ptr<SphSolver> solver_;
