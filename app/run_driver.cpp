@@ -176,6 +176,16 @@ int check_case(const CommandLine& line) {
               << scene->settings.dimension << "D, " << scene->materials.size() << " materials, "
               << scene->point_count() << " particles and nodes, end time "
               << scene->settings.end_time << " s)\n";
+    // What will be modelled, as summary.json's "model" block will say it.
+    std::vector<io::ModelChoice> model;
+    for (const auto& stepper : scene->steppers) {
+        stepper->describe_model(model);
+    }
+    std::cout << "model:";
+    for (std::size_t k = 0; k < model.size(); ++k) {
+        std::cout << (k == 0 ? " " : "; ") << model[k].item << ": " << model[k].choice;
+    }
+    std::cout << '\n';
     const Calibration calibration = load_calibration();
     const int threads =
         line.auto_threads ? auto_threads() : line.threads.value_or(omp_get_max_threads());

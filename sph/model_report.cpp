@@ -19,6 +19,29 @@ std::string percent(double share) {
 
 } // namespace
 
+std::string SphModel::viscosity_statement() const {
+    const ArtificialViscosity& viscosity = solver_->options().viscosity;
+    if (viscosity.alpha == 0.0 && viscosity.beta == 0.0) {
+        return "";
+    }
+    // The c of alpha c mu sets how much the linear term dissipates, and with it run-outs and
+    // discharge rates (docs/user-guide/sph.md, "Stiffness and run time"): say which it is.
+    char text[160];
+    std::snprintf(text, sizeof text, "alpha %g, beta %g, c = ", viscosity.alpha, viscosity.beta);
+    std::string statement = text;
+    if (viscosity.sound_speed > 0.0) {
+        std::snprintf(text, sizeof text, "%.3g m/s (sound_speed)", viscosity.sound_speed);
+        return statement + text;
+    }
+    statement += "each material's P-wave speed before its stiffness_scale:";
+    for (const int m : built_materials_) {
+        std::snprintf(text, sizeof text, " %s %.3g m/s", materials_->name(m).c_str(),
+                      (*materials_)[m].elastic().unscaled_p_wave_speed());
+        statement += text;
+    }
+    return statement;
+}
+
 void SphModel::describe_model(std::vector<io::ModelChoice>& choices) const {
     choices.push_back({"dimension", dimension_ == 2 ? "plane strain" : "3D"});
     if (!solver_) {
@@ -32,6 +55,9 @@ void SphModel::describe_model(std::vector<io::ModelChoice>& choices) const {
     for (const int m : built_materials_) {
         choices.push_back(
             {"material " + materials_->name(m), std::string((*materials_)[m].model())});
+    }
+    if (const std::string viscosity = viscosity_statement(); !viscosity.empty()) {
+        choices.push_back({"artificial viscosity", viscosity});
     }
     for (const Wall& wall : solver_->walls()) {
         // A wall without a driver stays where it was built; the coupling's walls follow a shell.

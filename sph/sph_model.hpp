@@ -89,6 +89,10 @@ class SphModel final : public io::Stepper {
     /// layers of an added wall must fill. Valid after read_bodies().
     double spacing() const { return spacing_; }
     double support_radius() const;
+    /// The artificial viscosity's alpha, beta and the sound speed of its linear term (pinned, or
+    /// each material's own), as summary.json's model block and `grainload check` state it;
+    /// empty without viscosity. Valid after build() with interactions.
+    std::string viscosity_statement() const;
     /// Index of a body by name, -1 when there is none.
     int body_id(const std::string& name) const;
     /// The [[sph.body]] names, indexed by body id.

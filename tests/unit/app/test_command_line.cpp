@@ -4,6 +4,7 @@
 #include "support/test_folder.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
@@ -88,6 +89,34 @@ TEST(CommandLine, HelpKeysPrintsTheDeclaredTablesAndTheirKeys) {
     const auto unknown = run_cli("help keys sph.sauce", log_file());
     EXPECT_EQ(unknown.exit_code, 2) << unknown.output;
     EXPECT_NE(unknown.output.find("no table 'sph.sauce'"), std::string::npos) << unknown.output;
+}
+
+// `check` states what it will model, and with it the sound speed of the artificial viscosity's
+// linear term, which sets how much it dissipates: the 2D collapse's material (E = 5.84 MPa,
+// nu = 0.3, rho = 2040 kg/m^3) has the P-wave speed sqrt(E (1 - nu) / ((1 + nu)(1 - 2 nu)) / rho)
+// = 62.1 m/s; a pinned sound_speed is stated as given.
+TEST(CommandLine, CheckStatesTheModelAndTheViscositysSoundSpeed) {
+    const std::string collapse =
+        "'" + source_path("cases/column_collapse_2d/column_collapse_2d_small.toml") + "'";
+    const auto own = run_cli("check " + collapse, log_file());
+    ASSERT_EQ(own.exit_code, 0) << own.output;
+    const double e = 5.84e6, nu = 0.3, rho = 2040.0;
+    const double c = std::sqrt(e * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu)) / rho);
+    char expected[64];
+    std::snprintf(expected, sizeof expected, "aluminium_bars %.3g m/s", c);
+    EXPECT_NE(own.output.find("model: dimension: plane strain;"), std::string::npos) << own.output;
+    EXPECT_NE(own.output.find("artificial viscosity: alpha 0.1, beta 0.1, c = each material's "
+                              "P-wave speed before its stiffness_scale: " +
+                              std::string(expected)),
+              std::string::npos)
+        << own.output;
+    const auto pinned =
+        run_cli("check " + collapse + " --set 'sph.artificial_viscosity.sound_speed=\"50 m/s\"'",
+                log_file());
+    ASSERT_EQ(pinned.exit_code, 0) << pinned.output;
+    EXPECT_NE(pinned.output.find("alpha 0.1, beta 0.1, c = 50 m/s (sound_speed)"),
+              std::string::npos)
+        << pinned.output;
 }
 
 TEST(CommandLine, HelpOnAnUnknownCommandIsABadCommandLine) {
