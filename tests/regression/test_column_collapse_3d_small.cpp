@@ -88,7 +88,7 @@ TEST(ColumnCollapse3dSmall, OnAPlateTheColumnSlumpsIntoAConeAtRest) {
 TEST(ColumnCollapse3dSmall, InTheContainerNoParticleLeavesIt) {
     const std::string out = run_case("column_collapse_small");
     expect_heap_at_rest(out, "container", 0.4);
-    const auto column = read_particle_block(out + "/frames/column_collapse_small_000008.vtm");
+    const auto column = read_particle_block(frame_path(out, "column_collapse_small", 8));
     ASSERT_TRUE(column);
     ASSERT_EQ(column->GetNumberOfPoints(), kParticles);
     for (vtkIdType i = 0; i < column->GetNumberOfPoints(); ++i) {

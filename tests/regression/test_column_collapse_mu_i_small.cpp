@@ -31,9 +31,8 @@ constexpr const char* kShort = " --set 'case.end_time=0.3 s'";
 
 /// Positions of the column's particles in the run's frame `frame`.
 std::vector<double> positions(const std::string& out, int frame) {
-    char name[80];
-    std::snprintf(name, sizeof name, "/frames/column_collapse_2d_mu_i_small_%06d.vtm", frame);
-    const auto column = read_particle_block(out + name);
+    const auto column =
+        read_particle_block(frame_path(out, "column_collapse_2d_mu_i_small", frame));
     std::vector<double> xy;
     for (vtkIdType i = 0; i < column->GetNumberOfPoints(); ++i) {
         double x[3];

@@ -58,9 +58,7 @@ TEST(ColumnCollapseSmall, LosesPotentialEnergyToHeatAndComesToRest) {
     const std::string& out = run.out;
     std::vector<ColumnState> frames;
     for (int frame = 0; frame <= 12; ++frame) {
-        char name[64];
-        std::snprintf(name, sizeof name, "/frames/column_collapse_2d_small_%06d.vtm", frame);
-        frames.push_back(read_column(out + name));
+        frames.push_back(read_column(frame_path(out, "column_collapse_2d_small", frame)));
     }
     const ColumnState& start = frames.front();
     const ColumnState& end = frames.back();

@@ -199,8 +199,7 @@ TEST(CouplingSmall, ARigidInterfaceCarriesTheLayerAndLeavesTheShellAlone) {
                            "rigid wall, so the sand's load is not in the shell's stresses"),
               std::string::npos)
         << summary;
-    const auto plate =
-        read_named_block(run.out + "/frames/sand_on_plate_small_000005.vtm", "plate");
+    const auto plate = read_named_block(frame_path(run.out, "sand_on_plate_small", 5), "plate");
     ASSERT_NE(plate, nullptr);
     EXPECT_EQ(plate->GetCellData()->GetArray("von_mises_top"), nullptr);
     EXPECT_NE(plate->GetCellData()->GetArray("without_sand_von_mises_top"), nullptr);
@@ -307,7 +306,7 @@ TEST(CouplingSmall, SandDroppedOnAPlateGivesItItsImpulseAndEnergy) {
     std::cout << "sand drop: impulse on walls " << wall_impulse << " N s, on the plate "
               << shell_impulse << " N s; energy held " << held << " J, put in " << put_in << " J\n";
     EXPECT_NEAR(held, put_in, 0.01 * initial);
-    const auto sand = read_particle_block(run.out + "/frames/sand_drop_small_000006.vtm");
+    const auto sand = read_particle_block(frame_path(run.out, "sand_drop_small", 6));
     ASSERT_NE(sand, nullptr);
     double lowest = 1.0;
     for (vtkIdType i = 0; i < sand->GetNumberOfPoints(); ++i) {
@@ -329,10 +328,9 @@ TEST(CouplingSmall, ABlockAt100MetresPerSecondDoesNotPassThroughThePlate) {
     ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
     double deepest_plate = 0.0;
     for (int frame = 1; frame <= 10; ++frame) {
-        char name[64];
-        std::snprintf(name, sizeof name, "/frames/sand_drop_small_%06d.vtm", frame);
-        const auto sand = read_named_block(run.out + name, "sand");
-        const auto plate = read_named_block(run.out + name, "plate");
+        const std::string name = frame_path(run.out, "sand_drop_small", frame);
+        const auto sand = read_named_block(name, "sand");
+        const auto plate = read_named_block(name, "plate");
         ASSERT_NE(sand, nullptr);
         ASSERT_NE(plate, nullptr);
         for (vtkIdType i = 0; i < sand->GetNumberOfPoints(); ++i) {

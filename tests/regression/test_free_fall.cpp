@@ -46,8 +46,8 @@ TEST(FreeFall, ParticlesFollowTheBallisticPathToRoundOff) {
     const std::string out = out_dir("free_fall");
     const auto result = run_cli("run " + kCase + " --out '" + out + "'", out + ".log");
     ASSERT_EQ(result.exit_code, 0) << result.output;
-    const Cloud start = read_frame(out + "/frames/free_fall_small_000000.vtm");
-    const Cloud end = read_frame(out + "/frames/free_fall_small_000020.vtm");
+    const Cloud start = read_frame(frame_path(out, "free_fall_small", 0));
+    const Cloud end = read_frame(frame_path(out, "free_fall_small", 20));
     ASSERT_EQ(start.position.size(), 4u * 4u * 8u);
     const double t = 0.2;
     const Vec3 g(0.0, 0.0, -9.81);
@@ -75,8 +75,8 @@ TEST(FreeFall, RestartFromCheckpointReproducesTheUninterruptedRun) {
         run_cli("run " + kCase + " --out '" + split + "' --restart '" + split + "/checkpoint.bin'",
                 split + ".log");
     ASSERT_EQ(second.exit_code, 0) << second.output;
-    const Cloud a = read_frame(whole + "/frames/free_fall_small_000020.vtm");
-    const Cloud b = read_frame(split + "/frames/free_fall_small_000020.vtm");
+    const Cloud a = read_frame(frame_path(whole, "free_fall_small", 20));
+    const Cloud b = read_frame(frame_path(split, "free_fall_small", 20));
     ASSERT_EQ(a.position.size(), b.position.size());
     for (std::size_t i = 0; i < a.position.size(); ++i) {
         EXPECT_EQ(a.position[i], b.position[i]) << "particle " << i;

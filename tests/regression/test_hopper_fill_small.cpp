@@ -35,7 +35,7 @@ TEST(HopperFillSmall, SandStaysInsideTheMeshHopperAndItsImpulseBalances) {
         run_case_file("cases/hopper_fill/hopper_fill_small.toml", "hopper_fill_small");
     ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
     const std::string& out = run.out;
-    const auto sand = read_particle_block(out + "/frames/hopper_fill_small_000030.vtm");
+    const auto sand = read_particle_block(frame_path(out, "hopper_fill_small", 30));
     ASSERT_EQ(sand->GetNumberOfPoints(), 96);
     const double dx = 0.02, mass = 1600.0 * dx * dx * dx, g = 9.81, end = 0.3;
 

@@ -127,9 +127,7 @@ std::pair<double, double> beam(const Profile& profile, double stiffness) {
 }
 
 std::string frame_at(const std::string& out, int index) {
-    char name[96];
-    std::snprintf(name, sizeof name, "/frames/hopper_shell_small_%06d.vtm", index);
-    return out + name;
+    return frame_path(out, "hopper_shell_small", index);
 }
 
 // The fill deposited at rest, settled (the gate goes when it has), discharged:

@@ -46,7 +46,7 @@ TEST(SiloClosureSmall, ASlideGateShutsTheOutletAndTheArrestLoadsTheWall) {
     }
     ASSERT_GT(at_3_3, 0.0);
     EXPECT_EQ(at_end, at_3_3);
-    const auto sand = read_named_block(run.out + "/frames/silo_closure_small_000180.vtm", "sand");
+    const auto sand = read_named_block(frame_path(run.out, "silo_closure_small", 180), "sand");
     ASSERT_TRUE(sand);
     double lowest = 1e9;
     for (vtkIdType i = 0; i < sand->GetNumberOfPoints(); ++i) {

@@ -33,7 +33,7 @@ TEST(SymmetryHalf, RunsFromTheCliCarriesItsWeightAndClosesItsBooks) {
         << summary;
     // The frames hold the 200 particles of the half, no ghost.
     const auto column =
-        read_named_block(run.out + "/frames/column_collapse_2d_half_000012.vtm", "column");
+        read_named_block(frame_path(run.out, "column_collapse_2d_half", 12), "column");
     ASSERT_TRUE(column);
     EXPECT_EQ(column->GetNumberOfPoints(), 200);
 }

@@ -134,8 +134,8 @@ TEST(TiltingPlateSmall, CohesionlessHeapAvalanchesAtTheFrictionAngleThenSlides) 
     expect_energy_closes(out);
     const double phi = 35.0, spacing = 0.004, interval = 0.02, threshold = 1e-3;
     const double slide_limit = std::atan(0.5) * 180.0 / std::numbers::pi;
-    const double angle_zero = plate_angle(frame_file(out, name, 0));
-    const BodyFrame first = read_body(frame_file(out, name, 0), angle_zero);
+    const double angle_zero = plate_angle(frame_path(out, name, 0));
+    const BodyFrame first = read_body(frame_path(out, name, 0), angle_zero);
     const double bottom = *std::min_element(first.n.begin(), first.n.end());
     const std::vector<std::size_t> flank = flank_surface(first, bottom, spacing);
     std::vector<std::size_t> base;
@@ -152,8 +152,8 @@ TEST(TiltingPlateSmall, CohesionlessHeapAvalanchesAtTheFrictionAngleThenSlides) 
     int flowing_frames = 0;
     double steepest = -90.0, steepest_at = std::nan("");
     BodyFrame previous = first;
-    for (int k = 1; std::filesystem::exists(frame_file(out, name, k)); ++k) {
-        const BodyFrame f = read_body(frame_file(out, name, k), angle_zero);
+    for (int k = 1; std::filesystem::exists(frame_path(out, name, k)); ++k) {
+        const BodyFrame f = read_body(frame_path(out, name, k), angle_zero);
         const double degrees = f.angle * 180.0 / std::numbers::pi;
         const double to_horizontal = slope_to_plate(f, flank_surface(f, bottom, spacing)) + degrees;
         double flank_speed = 0.0;
@@ -210,7 +210,7 @@ TEST(TiltingPlateSmall, ContactTooStiffForTheStepStopsTheRunAsUnstable) {
     EXPECT_EQ(run.cli.exit_code, 3) << run.cli.output;
     EXPECT_NE(run.cli.output.find("energy is being created"), std::string::npos) << run.cli.output;
     EXPECT_NE(read_file(out + "/summary.json").find("\"status\": \"unstable\""), std::string::npos);
-    const auto block = read_particle_block(frame_file(out, "tilting_plate_small", 0), 0);
+    const auto block = read_particle_block(frame_path(out, "tilting_plate_small", 0), 0);
     ASSERT_GT(block->GetNumberOfPoints(), 0);
     for (vtkIdType i = 0; i < block->GetNumberOfPoints(); ++i) {
         double x[3];
