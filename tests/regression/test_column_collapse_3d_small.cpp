@@ -1,5 +1,6 @@
 #include "support/case_runner.hpp"
 #include "support/frame_reader.hpp"
+#include "support/gold_summary.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -80,6 +81,7 @@ TEST(ColumnCollapse3dSmall, OnAPlateTheColumnSlumpsIntoAConeAtRest) {
     const double angle = result_value(summary, "heap_angle");
     EXPECT_GT(angle, 0.0);
     EXPECT_LT(angle, envelope_friction_angle() + 10.0);
+    expect_matches_gold(out, "cases/column_collapse/column_collapse_plate_small.toml");
 }
 
 // In the container (inner faces at +-108 mm, floor z = 0) the contact keeps every particle
@@ -97,6 +99,7 @@ TEST(ColumnCollapse3dSmall, InTheContainerNoParticleLeavesIt) {
         EXPECT_LT(std::max(std::abs(x[0]), std::abs(x[1])), 0.108) << "particle " << i;
         EXPECT_GT(x[2], 0.0) << "particle " << i;
     }
+    expect_matches_gold(out, "cases/column_collapse/column_collapse_small.toml");
 }
 
 // The same container scene with the material switched to Drucker-Prager from the command line

@@ -12,6 +12,7 @@
 
 #include "support/case_runner.hpp"
 #include "support/frame_reader.hpp"
+#include "support/gold_summary.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -86,6 +87,7 @@ TEST(ColumnCollapseMuISmall, KeepsItsEnergyBooksAndComesToRest) {
     EXPECT_NEAR(gained / drop, 1.0, 0.01);
     EXPECT_LT(std::abs(result_value(summary, "energy_balance_error")), 0.01);
     EXPECT_LT(result_value(summary, "heap_final_kinetic_energy_ratio"), 1e-4);
+    expect_matches_gold(run.out, "cases/column_collapse_2d/column_collapse_2d_mu_i_small.toml");
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 #include "support/case_runner.hpp"
 #include "support/frame_reader.hpp"
+#include "support/gold_summary.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -85,6 +86,7 @@ TEST(ColumnCollapseSmall, LosesPotentialEnergyToHeatAndComesToRest) {
         peak = std::max(peak, frame.speed_squared_sum);
     }
     EXPECT_LT(end.speed_squared_sum, 1e-4 * peak);
+    expect_matches_gold(out, "cases/column_collapse_2d/column_collapse_2d_small.toml");
 }
 
 // A deforming run (plasticity, wall friction and dashpot, Verlet list, gradient correction)

@@ -1,6 +1,7 @@
 #include "support/case_runner.hpp"
 #include "support/coupling_figures.hpp"
 #include "support/frame_reader.hpp"
+#include "support/gold_summary.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -78,6 +79,7 @@ TEST(CouplingBodies, APlateActingOnOneBodyCarriesItAloneAndTheOtherFallsThrough)
     EXPECT_GT(held_low, 0.0);
     EXPECT_LT(passing_high, 0.0);
     EXPECT_GT(passing_low, -0.25);
+    expect_matches_gold(run.out, "cases/sand_on_plate/two_bodies_one_plate_small.toml");
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 #include "support/coupling_figures.hpp"
 #include "support/csv_rows.hpp"
 #include "support/frame_reader.hpp"
+#include "support/gold_summary.hpp"
 #include "support/interrupted_run.hpp"
 
 #include <cstdio>
@@ -69,6 +70,7 @@ TEST(CouplingSmall, SandLayerOnAPlateWeighsOnItAndBendsItLikeAUniformLoad) {
     const double expected =
         summary_number(summary, "material_points") * result_value(summary, "coupling_sph_steps");
     EXPECT_NEAR(point_steps, expected, 1e-9 * expected);
+    expect_matches_gold(run.out, "cases/sand_on_plate/sand_on_plate_small.toml");
 }
 
 // Verification 1 in plane strain: the same layer on a strip 0.4 m long and 0.1 m wide
@@ -113,6 +115,8 @@ TEST(CouplingSmall, SandLayerOnAStripInPlaneStrainBendsItLikeABeam) {
               << " m, shell alone under q " << shell << " m, beam " << beam << " m\n";
     EXPECT_NEAR(shell, beam, 0.01 * std::abs(beam));
     EXPECT_NEAR(w, shell, 0.025 * std::abs(shell));
+    expect_matches_gold(run.out, "cases/sand_on_plate/sand_on_strip_small.toml");
+    expect_matches_gold(alone.out, "cases/sand_on_plate/strip_under_load.toml");
 }
 
 // The added mass (coupling.added_mass, coupling/added_mass.hpp) on the same strip with the plain
@@ -313,6 +317,7 @@ TEST(CouplingSmall, SandDroppedOnAPlateGivesItItsImpulseAndEnergy) {
         lowest = std::min(lowest, sand->GetPoints()->GetPoint(i)[2]);
     }
     EXPECT_GT(lowest, 0.001); // the plate's upper face (t/2), which it deflects below
+    expect_matches_gold(run.out, "cases/sand_drop/sand_drop_small.toml");
 }
 
 // The same block at 100 m/s (the fastest impact the coupling is specified for), windows of 0.05 ms:

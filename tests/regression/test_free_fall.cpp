@@ -1,5 +1,6 @@
 #include "support/cli_runner.hpp"
 #include "support/frame_reader.hpp"
+#include "support/gold_summary.hpp"
 #include "support/test_folder.hpp"
 
 #include <Eigen/Core>
@@ -61,6 +62,7 @@ TEST(FreeFall, ParticlesFollowTheBallisticPathToRoundOff) {
     EXPECT_NE(summary.find("\"centre_height\": {\"value\""), std::string::npos) << summary;
     EXPECT_NE(read_file(out + "/free_fall_small.pvd").find("timestep=\"0.2\""), std::string::npos);
     EXPECT_NE(read_file(out + "/log.txt").find("particle-steps/s"), std::string::npos);
+    expect_matches_gold(out, "cases/free_fall/free_fall_small.toml");
 }
 
 // A run continued from its checkpoint must end bit for bit where the uninterrupted run ends.

@@ -1,6 +1,7 @@
 #include "support/case_runner.hpp"
 #include "support/csv_rows.hpp"
 #include "support/frame_reader.hpp"
+#include "support/gold_summary.hpp"
 #include "support/hopper_beverloo.hpp"
 
 #include <cmath>
@@ -62,6 +63,7 @@ TEST(HopperDischargeSmall, MassAuditClosesAndTheRateLiesWithinBeverloosSpread) {
               std::string::npos)
         << match[2];
     EXPECT_TRUE(std::filesystem::exists(run.out + "/discharge.csv"));
+    expect_matches_gold(run.out, "cases/hopper_discharge/hopper_discharge_small.toml");
 }
 
 /// Mean density of the particles of block 0 of a frame.
@@ -132,6 +134,8 @@ TEST(HopperDepositionSmall, TheFillDepositedAtRestSettlesByItselfAndDischargesLi
     EXPECT_NEAR(rate, placed_rate, kRateScatter * placed_rate);
     EXPECT_GT(rate, beverloo_slot(3.0));
     EXPECT_LT(rate, beverloo_slot(1.0));
+    expect_matches_gold(run.out, "cases/hopper_discharge/hopper_deposition_small.toml");
+    expect_matches_gold(placed.out, "cases/hopper_discharge/hopper_discharge_small.toml");
 }
 
 // A run stopped at 0.85 s (the gate gone at 0.4 s, 15 % of the fill out through the sink) and
@@ -285,6 +289,7 @@ TEST(HopperDischargeSmall, ASlideGateClosingSuddenlyStopsTheFlowWithoutPushingAn
         lowest = std::min(lowest, fill->GetPoint(i)[1]);
     }
     EXPECT_GT(lowest, 0.0) << "a particle below the closed gate's plane";
+    expect_matches_gold(run.out, "cases/hopper_discharge/hopper_closure_small.toml");
 }
 
 } // namespace

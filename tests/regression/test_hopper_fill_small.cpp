@@ -2,6 +2,7 @@
 #include "support/case_runner.hpp"
 #include "support/csv_rows.hpp"
 #include "support/frame_reader.hpp"
+#include "support/gold_summary.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -75,6 +76,7 @@ TEST(HopperFillSmall, SandStaysInsideTheMeshHopperAndItsImpulseBalances) {
     EXPECT_NEAR(momentum, -weight_impulse + impulse, 0.01 * weight_impulse);
     EXPECT_LT(horizontal, 1e-9 * 96 * mass * g);
     EXPECT_GT(impulse, 0.5 * weight_impulse); // the hopper did catch the sand
+    expect_matches_gold(out, "cases/hopper_fill/hopper_fill_small.toml");
 }
 
 } // namespace

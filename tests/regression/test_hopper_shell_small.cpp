@@ -1,5 +1,6 @@
 #include "support/case_runner.hpp"
 #include "support/frame_reader.hpp"
+#include "support/gold_summary.hpp"
 
 #include <algorithm>
 #include <array>
@@ -207,6 +208,7 @@ TEST(HopperShellSmall, TheSheetSagsAndIsStressedAsABeamUnderTheRunsPressure) {
         EXPECT_NE(beam.source.find("beam theory"), std::string::npos) << figure;
         EXPECT_LT(beam.relative_error, kBeam) << figure;
     }
+    expect_matches_gold(run.out, "cases/hopper_discharge/hopper_shell_small.toml");
 }
 
 } // namespace

@@ -1,4 +1,5 @@
 #include "support/case_runner.hpp"
+#include "support/gold_summary.hpp"
 #include "support/plate_tip.hpp"
 
 #include <cmath>
@@ -47,6 +48,7 @@ TEST(OscillatingPlateSmall, TotalLagrangianPlateSwingsAtThinPlateFrequencyFromTh
     EXPECT_GT(level / static_tip, 1.0);
     EXPECT_LT(level / static_tip, 1.25);
     EXPECT_EQ(root_motion, 0.0);
+    expect_matches_gold(run.out, "cases/oscillating_plate/oscillating_plate_small.toml");
 }
 
 } // namespace

@@ -1,4 +1,5 @@
 #include "support/case_runner.hpp"
+#include "support/gold_summary.hpp"
 #include "support/repose_run.hpp"
 
 #include <gtest/gtest.h>
@@ -9,7 +10,7 @@ using namespace grainload::testing;
 
 // The CI version of the repose case: a cylinder of cohesionless sand (phi = 30 deg, 416
 // particles) in a frictionless tube on a rough floor (mu = 1); the tube is lifted and the
-// sand forms a heap. Checks against physics, not against a stored run:
+// sand forms a heap. Checks against physics, then against the case's gold file:
 // - every particle is kept, above the floor's surface and on it (the contact holds);
 // - the heap comes to rest: the kinetic energy at the end is below 1e-4 of its peak during
 //   the flow (a heap still creeping or bouncing on the contact would not get there);
@@ -26,7 +27,8 @@ using namespace grainload::testing;
 // - the floor carries the sand's weight, N m g (summary.json's final wall force), to 1 %: once
 //   the heap is at rest and the tube clear of it nothing else holds the sand up (the contact
 //   and friction reactions are spread onto the wall's particles, so this also checks that
-//   they are the reactions of what the sand feels).
+//   they are the reactions of what the sand feels);
+// - every figure of summary.json where cases/repose/gold/repose_small.json has it.
 TEST(ReposeSmall, LiftedTubeLeavesAHeapAtRestNoSteeperThanTheFrictionAngle) {
     const CaseRun run = run_case_file("cases/repose/repose_small.toml", "repose_small");
     ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
@@ -45,6 +47,7 @@ TEST(ReposeSmall, LiftedTubeLeavesAHeapAtRestNoSteeperThanTheFrictionAngle) {
     EXPECT_LT(heap.slope_deg, phi + 5.0);
     EXPECT_LT(heap.outer_deg, phi);
     EXPECT_GT(heap.outer_deg, 0.5 * phi);
+    expect_matches_gold(run.out, "cases/repose/repose_small.toml");
 }
 
 } // namespace

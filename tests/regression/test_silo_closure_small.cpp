@@ -1,6 +1,7 @@
 #include "support/case_runner.hpp"
 #include "support/csv_rows.hpp"
 #include "support/frame_reader.hpp"
+#include "support/gold_summary.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -67,6 +68,7 @@ TEST(SiloClosureSmall, ASlideGateShutsTheOutletAndTheArrestLoadsTheWall) {
                 at_rest, joukowsky, speed);
     EXPECT_GT(peak, 2.0 * at_rest);
     EXPECT_LT(peak, at_rest + joukowsky);
+    expect_matches_gold(run.out, "cases/silo/silo_closure_small.toml");
 }
 
 } // namespace

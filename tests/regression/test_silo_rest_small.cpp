@@ -1,5 +1,6 @@
 #include "support/case_runner.hpp"
 #include "support/csv_rows.hpp"
+#include "support/gold_summary.hpp"
 #include "support/silo_rest.hpp"
 
 #include <algorithm>
@@ -64,6 +65,7 @@ TEST(SiloRestSmall, WallPressureAtRestAgainstJanssen) {
         const double left = -forces.at("left" + std::to_string(band)).first / kBand;
         EXPECT_NEAR(cells[static_cast<std::size_t>(band)][4], left, 0.1 * left) << "band " << band;
     }
+    expect_matches_gold(run.out, "cases/silo/silo_rest_small.toml");
 }
 
 } // namespace

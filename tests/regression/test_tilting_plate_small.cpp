@@ -1,5 +1,6 @@
 #include "support/case_runner.hpp"
 #include "support/frame_reader.hpp"
+#include "support/gold_summary.hpp"
 #include "support/tilting_plate.hpp"
 
 #include <algorithm>
@@ -57,6 +58,8 @@ TEST(TiltingPlateSmall, BlockStartsSlidingAtTheFrictionAngle) {
     EXPECT_NEAR(onset.angle, friction_angle, 1.0);
     // Held, the block creeps only by the contact layer's elastic shear: under 0.01 mm.
     EXPECT_LT(onset.held_slip, 1e-5);
+    expect_matches_gold(test_folder("tilting_plate_small"),
+                        "cases/tilting_plate/tilting_plate_small.toml");
 }
 
 // The same for a heap of moist sand (c = 500 Pa, flanks at 20 deg, 250 particles), whose
@@ -70,6 +73,8 @@ TEST(TiltingPlateSmall, MoistSandHeapStartsSlidingAtTheFrictionAngle) {
     const Onset onset = measure_onset("tilting_plate_cone_moist_small", friction_angle);
     EXPECT_NEAR(onset.angle, friction_angle, 1.0);
     EXPECT_LT(onset.held_slip, 1e-4);
+    expect_matches_gold(test_folder("tilting_plate_cone_moist_small"),
+                        "cases/tilting_plate/tilting_plate_cone_moist_small.toml");
 }
 
 /// Row of every particle in spacings above the first frame's bottom row; per row from 2 to the
@@ -194,6 +199,7 @@ TEST(TiltingPlateSmall, CohesionlessHeapAvalanchesAtTheFrictionAngleThenSlides) 
     EXPECT_GT(flowing, phi - 10.0);
     EXPECT_GT(slide, slide_limit - 0.5);
     EXPECT_LT(slide, slide_limit + 2.5);
+    expect_matches_gold(out, "cases/tilting_plate/tilting_plate_cone_small.toml");
 }
 
 // A contact stiffness far beyond the time step's reach (1e4 GPa, 1e7 times the sand's modulus:
