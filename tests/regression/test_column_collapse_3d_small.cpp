@@ -1,5 +1,6 @@
 #include "support/case_runner.hpp"
 #include "support/frame_reader.hpp"
+#include "support/gold_summary.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -80,6 +81,7 @@ TEST(ColumnCollapse3dSmall, OnAPlateTheColumnSlumpsIntoAConeAtRest) {
     const double angle = result_value(summary, "heap_angle");
     EXPECT_GT(angle, 0.0);
     EXPECT_LT(angle, envelope_friction_angle() + 10.0);
+    expect_matches_gold(out, "cases/column_collapse/column_collapse_plate_small.toml");
 }
 
 // In the container (inner faces at +-108 mm, floor z = 0) the contact keeps every particle
@@ -88,7 +90,7 @@ TEST(ColumnCollapse3dSmall, OnAPlateTheColumnSlumpsIntoAConeAtRest) {
 TEST(ColumnCollapse3dSmall, InTheContainerNoParticleLeavesIt) {
     const std::string out = run_case("column_collapse_small");
     expect_heap_at_rest(out, "container", 0.4);
-    const auto column = read_particle_block(out + "/frames/column_collapse_small_000008.vtm");
+    const auto column = read_particle_block(frame_path(out, "column_collapse_small", 8));
     ASSERT_TRUE(column);
     ASSERT_EQ(column->GetNumberOfPoints(), kParticles);
     for (vtkIdType i = 0; i < column->GetNumberOfPoints(); ++i) {
@@ -97,6 +99,7 @@ TEST(ColumnCollapse3dSmall, InTheContainerNoParticleLeavesIt) {
         EXPECT_LT(std::max(std::abs(x[0]), std::abs(x[1])), 0.108) << "particle " << i;
         EXPECT_GT(x[2], 0.0) << "particle " << i;
     }
+    expect_matches_gold(out, "cases/column_collapse/column_collapse_small.toml");
 }
 
 // The same container scene with the material switched to Drucker-Prager from the command line

@@ -12,6 +12,7 @@
 
 #include "support/case_runner.hpp"
 #include "support/frame_reader.hpp"
+#include "support/gold_summary.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -31,9 +32,8 @@ constexpr const char* kShort = " --set 'case.end_time=0.3 s'";
 
 /// Positions of the column's particles in the run's frame `frame`.
 std::vector<double> positions(const std::string& out, int frame) {
-    char name[80];
-    std::snprintf(name, sizeof name, "/frames/column_collapse_2d_mu_i_small_%06d.vtm", frame);
-    const auto column = read_particle_block(out + name);
+    const auto column =
+        read_particle_block(frame_path(out, "column_collapse_2d_mu_i_small", frame));
     std::vector<double> xy;
     for (vtkIdType i = 0; i < column->GetNumberOfPoints(); ++i) {
         double x[3];
@@ -87,6 +87,7 @@ TEST(ColumnCollapseMuISmall, KeepsItsEnergyBooksAndComesToRest) {
     EXPECT_NEAR(gained / drop, 1.0, 0.01);
     EXPECT_LT(std::abs(result_value(summary, "energy_balance_error")), 0.01);
     EXPECT_LT(result_value(summary, "heap_final_kinetic_energy_ratio"), 1e-4);
+    expect_matches_gold(run.out, "cases/column_collapse_2d/column_collapse_2d_mu_i_small.toml");
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 #include "support/case_runner.hpp"
 #include "support/frame_reader.hpp"
+#include "support/gold_summary.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -58,9 +59,7 @@ TEST(ColumnCollapseSmall, LosesPotentialEnergyToHeatAndComesToRest) {
     const std::string& out = run.out;
     std::vector<ColumnState> frames;
     for (int frame = 0; frame <= 12; ++frame) {
-        char name[64];
-        std::snprintf(name, sizeof name, "/frames/column_collapse_2d_small_%06d.vtm", frame);
-        frames.push_back(read_column(out + name));
+        frames.push_back(read_column(frame_path(out, "column_collapse_2d_small", frame)));
     }
     const ColumnState& start = frames.front();
     const ColumnState& end = frames.back();
@@ -87,6 +86,7 @@ TEST(ColumnCollapseSmall, LosesPotentialEnergyToHeatAndComesToRest) {
         peak = std::max(peak, frame.speed_squared_sum);
     }
     EXPECT_LT(end.speed_squared_sum, 1e-4 * peak);
+    expect_matches_gold(out, "cases/column_collapse_2d/column_collapse_2d_small.toml");
 }
 
 // A deforming run (plasticity, wall friction and dashpot, Verlet list, gradient correction)

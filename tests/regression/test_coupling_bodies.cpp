@@ -1,6 +1,7 @@
 #include "support/case_runner.hpp"
 #include "support/coupling_figures.hpp"
 #include "support/frame_reader.hpp"
+#include "support/gold_summary.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -59,7 +60,7 @@ TEST(CouplingBodies, APlateActingOnOneBodyCarriesItAloneAndTheOtherFallsThrough)
     ASSERT_GT(time, 0.1);
     const double floor = -result_value(summary, "wall_floor_force_z");
     const double sides = -walls_force_z(summary, {"x0", "x1", "y0", "y1"});
-    const std::string last = run.out + "/frames/two_bodies_one_plate_small_000005.vtm";
+    const std::string last = frame_path(run.out, "two_bodies_one_plate_small", 5);
     const auto [held_low, held_high] = z_range(last, "held");
     const auto [passing_low, passing_high] = z_range(last, "passing");
     std::cout << "two bodies, one plate: mean plate load " << load << " N (held block " << held
@@ -78,6 +79,7 @@ TEST(CouplingBodies, APlateActingOnOneBodyCarriesItAloneAndTheOtherFallsThrough)
     EXPECT_GT(held_low, 0.0);
     EXPECT_LT(passing_high, 0.0);
     EXPECT_GT(passing_low, -0.25);
+    expect_matches_gold(run.out, "cases/sand_on_plate/two_bodies_one_plate_small.toml");
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 #include "support/case_runner.hpp"
 #include "support/coupling_figures.hpp"
+#include "support/gold_summary.hpp"
 
 #include <cmath>
 #include <iostream>
@@ -60,6 +61,7 @@ TEST(CouplingFillSmall, ATrayFilledByASourceCarriesWhatTheSourceCreated) {
               << " m (" << navier << "), relative error " << sag.relative_error << '\n';
     EXPECT_NEAR(sag.reference, navier, 1e-4 * std::abs(navier)); // the case's printed digits
     EXPECT_LT(sag.relative_error, 0.05);
+    expect_matches_gold(run.out, "cases/sand_on_plate/sand_fill_plate_small.toml");
 }
 
 // Iterated windows run every pass from the window's start state: the particles created and

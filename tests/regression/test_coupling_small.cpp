@@ -2,6 +2,7 @@
 #include "support/coupling_figures.hpp"
 #include "support/csv_rows.hpp"
 #include "support/frame_reader.hpp"
+#include "support/gold_summary.hpp"
 #include "support/interrupted_run.hpp"
 
 #include <cstdio>
@@ -69,6 +70,7 @@ TEST(CouplingSmall, SandLayerOnAPlateWeighsOnItAndBendsItLikeAUniformLoad) {
     const double expected =
         summary_number(summary, "material_points") * result_value(summary, "coupling_sph_steps");
     EXPECT_NEAR(point_steps, expected, 1e-9 * expected);
+    expect_matches_gold(run.out, "cases/sand_on_plate/sand_on_plate_small.toml");
 }
 
 // Verification 1 in plane strain: the same layer on a strip 0.4 m long and 0.1 m wide
@@ -113,6 +115,8 @@ TEST(CouplingSmall, SandLayerOnAStripInPlaneStrainBendsItLikeABeam) {
               << " m, shell alone under q " << shell << " m, beam " << beam << " m\n";
     EXPECT_NEAR(shell, beam, 0.01 * std::abs(beam));
     EXPECT_NEAR(w, shell, 0.025 * std::abs(shell));
+    expect_matches_gold(run.out, "cases/sand_on_plate/sand_on_strip_small.toml");
+    expect_matches_gold(alone.out, "cases/sand_on_plate/strip_under_load.toml");
 }
 
 // The added mass (coupling.added_mass, coupling/added_mass.hpp) on the same strip with the plain
@@ -199,8 +203,7 @@ TEST(CouplingSmall, ARigidInterfaceCarriesTheLayerAndLeavesTheShellAlone) {
                            "rigid wall, so the sand's load is not in the shell's stresses"),
               std::string::npos)
         << summary;
-    const auto plate =
-        read_named_block(run.out + "/frames/sand_on_plate_small_000005.vtm", "plate");
+    const auto plate = read_named_block(frame_path(run.out, "sand_on_plate_small", 5), "plate");
     ASSERT_NE(plate, nullptr);
     EXPECT_EQ(plate->GetCellData()->GetArray("von_mises_top"), nullptr);
     EXPECT_NE(plate->GetCellData()->GetArray("without_sand_von_mises_top"), nullptr);
@@ -307,13 +310,14 @@ TEST(CouplingSmall, SandDroppedOnAPlateGivesItItsImpulseAndEnergy) {
     std::cout << "sand drop: impulse on walls " << wall_impulse << " N s, on the plate "
               << shell_impulse << " N s; energy held " << held << " J, put in " << put_in << " J\n";
     EXPECT_NEAR(held, put_in, 0.01 * initial);
-    const auto sand = read_particle_block(run.out + "/frames/sand_drop_small_000006.vtm");
+    const auto sand = read_particle_block(frame_path(run.out, "sand_drop_small", 6));
     ASSERT_NE(sand, nullptr);
     double lowest = 1.0;
     for (vtkIdType i = 0; i < sand->GetNumberOfPoints(); ++i) {
         lowest = std::min(lowest, sand->GetPoints()->GetPoint(i)[2]);
     }
     EXPECT_GT(lowest, 0.001); // the plate's upper face (t/2), which it deflects below
+    expect_matches_gold(run.out, "cases/sand_drop/sand_drop_small.toml");
 }
 
 // The same block at 100 m/s (the fastest impact the coupling is specified for), windows of 0.05 ms:
@@ -329,10 +333,9 @@ TEST(CouplingSmall, ABlockAt100MetresPerSecondDoesNotPassThroughThePlate) {
     ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
     double deepest_plate = 0.0;
     for (int frame = 1; frame <= 10; ++frame) {
-        char name[64];
-        std::snprintf(name, sizeof name, "/frames/sand_drop_small_%06d.vtm", frame);
-        const auto sand = read_named_block(run.out + name, "sand");
-        const auto plate = read_named_block(run.out + name, "plate");
+        const std::string name = frame_path(run.out, "sand_drop_small", frame);
+        const auto sand = read_named_block(name, "sand");
+        const auto plate = read_named_block(name, "plate");
         ASSERT_NE(sand, nullptr);
         ASSERT_NE(plate, nullptr);
         for (vtkIdType i = 0; i < sand->GetNumberOfPoints(); ++i) {

@@ -1,5 +1,6 @@
 #include "support/cli_runner.hpp"
 #include "support/frame_reader.hpp"
+#include "support/gold_summary.hpp"
 #include "support/test_folder.hpp"
 
 #include <Eigen/Core>
@@ -46,8 +47,8 @@ TEST(FreeFall, ParticlesFollowTheBallisticPathToRoundOff) {
     const std::string out = out_dir("free_fall");
     const auto result = run_cli("run " + kCase + " --out '" + out + "'", out + ".log");
     ASSERT_EQ(result.exit_code, 0) << result.output;
-    const Cloud start = read_frame(out + "/frames/free_fall_small_000000.vtm");
-    const Cloud end = read_frame(out + "/frames/free_fall_small_000020.vtm");
+    const Cloud start = read_frame(frame_path(out, "free_fall_small", 0));
+    const Cloud end = read_frame(frame_path(out, "free_fall_small", 20));
     ASSERT_EQ(start.position.size(), 4u * 4u * 8u);
     const double t = 0.2;
     const Vec3 g(0.0, 0.0, -9.81);
@@ -61,6 +62,7 @@ TEST(FreeFall, ParticlesFollowTheBallisticPathToRoundOff) {
     EXPECT_NE(summary.find("\"centre_height\": {\"value\""), std::string::npos) << summary;
     EXPECT_NE(read_file(out + "/free_fall_small.pvd").find("timestep=\"0.2\""), std::string::npos);
     EXPECT_NE(read_file(out + "/log.txt").find("particle-steps/s"), std::string::npos);
+    expect_matches_gold(out, "cases/free_fall/free_fall_small.toml");
 }
 
 // A run continued from its checkpoint must end bit for bit where the uninterrupted run ends.
@@ -75,8 +77,8 @@ TEST(FreeFall, RestartFromCheckpointReproducesTheUninterruptedRun) {
         run_cli("run " + kCase + " --out '" + split + "' --restart '" + split + "/checkpoint.bin'",
                 split + ".log");
     ASSERT_EQ(second.exit_code, 0) << second.output;
-    const Cloud a = read_frame(whole + "/frames/free_fall_small_000020.vtm");
-    const Cloud b = read_frame(split + "/frames/free_fall_small_000020.vtm");
+    const Cloud a = read_frame(frame_path(whole, "free_fall_small", 20));
+    const Cloud b = read_frame(frame_path(split, "free_fall_small", 20));
     ASSERT_EQ(a.position.size(), b.position.size());
     for (std::size_t i = 0; i < a.position.size(); ++i) {
         EXPECT_EQ(a.position[i], b.position[i]) << "particle " << i;

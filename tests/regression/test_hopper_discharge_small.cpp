@@ -1,6 +1,8 @@
 #include "support/case_runner.hpp"
 #include "support/csv_rows.hpp"
 #include "support/frame_reader.hpp"
+#include "support/gold_summary.hpp"
+#include "support/hopper_beverloo.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -18,20 +20,6 @@ namespace {
 // The plane-wedge hopper (Markauskas' DEM study) in plane strain at 50 mm, rigid walls:
 // cases/hopper_discharge/hopper_discharge_small.toml, figures in
 // docs/validation/hopper_discharge.md.
-constexpr double kGravity = 9.81;
-constexpr double kBulkDensity = 300.0; // kg/m^3: 500 kg/m^3 spheres at solid fraction 0.6
-constexpr double kOrifice = 0.4;       // m, across the slot
-constexpr double kGrain = 0.065;       // m, the paper's mean sphere diameter
-
-/// Beverloo's law for a slot (Beverloo, Leniger & van de Velde 1961), per metre of
-/// slot length: W / L = C' rho_b sqrt(g) (B - k d)^(3/2) with C' = 1.03 (Myers & Sellers,
-/// Nedderman). Plane strain has no slot ends, so the (L - k d) factor of the 3D slot is L.
-double beverloo_slot(double k) {
-    constexpr double kSlotConstant = 1.03;
-    return kSlotConstant * kBulkDensity * std::sqrt(kGravity) *
-           std::pow(kOrifice - k * kGrain, 1.5);
-}
-
 // Summary: the mass audit closes to round-off, the energy books count what left, the hopper
 // empties and its steady rate lies within Beverloo's documented spread.
 //  - Mass: initial mass = mass in the scene + mass discharged. Each is a sum of at most 500
@@ -51,10 +39,9 @@ TEST(HopperDischargeSmall, MassAuditClosesAndTheRateLiesWithinBeverloosSpread) {
                                       "hopper_discharge_small");
     ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
     const std::string summary = read_file(run.out + "/summary.json");
-    expect_books_close(summary, 500);
-    const double initial = result_value(summary, "initial_mass");
-    const double fraction = result_value(summary, "discharged_mass") / initial;
-    const double rate = result_value(summary, "sink_below_steady_rate");
+    const HopperDischarge discharge = read_hopper_discharge(summary, 500);
+    const double fraction = discharge.discharged_mass / discharge.initial_mass;
+    const double rate = discharge.steady_rate;
     std::cout << "hopper discharge (50 mm): " << fraction * 100.0 << " % out at 3 s, steady rate "
               << rate << " kg/m/s (Beverloo slot: k = 1 " << beverloo_slot(1.0) << ", k = 1.5 "
               << beverloo_slot(1.5) << ", k = 3 " << beverloo_slot(3.0) << " kg/m/s)\n";
@@ -76,6 +63,7 @@ TEST(HopperDischargeSmall, MassAuditClosesAndTheRateLiesWithinBeverloosSpread) {
               std::string::npos)
         << match[2];
     EXPECT_TRUE(std::filesystem::exists(run.out + "/discharge.csv"));
+    expect_matches_gold(run.out, "cases/hopper_discharge/hopper_discharge_small.toml");
 }
 
 /// Mean density of the particles of block 0 of a frame.
@@ -131,10 +119,8 @@ TEST(HopperDepositionSmall, TheFillDepositedAtRestSettlesByItselfAndDischargesLi
         }
     }
     constexpr double kOutput = 0.05;
-    char frame[96];
-    std::snprintf(frame, sizeof frame, "/frames/hopper_deposition_small_%06d.vtm",
-                  static_cast<int>(std::floor(settled / kOutput)));
-    const double density = mean_density(run.out + frame);
+    const double density = mean_density(frame_path(
+        run.out, "hopper_deposition_small", static_cast<int>(std::floor(settled / kOutput))));
     constexpr double kDensity = 300.0;
     constexpr double kDensitySpread = 0.02;
     EXPECT_NEAR(density, kDensity, kDensitySpread * kDensity);
@@ -148,6 +134,8 @@ TEST(HopperDepositionSmall, TheFillDepositedAtRestSettlesByItselfAndDischargesLi
     EXPECT_NEAR(rate, placed_rate, kRateScatter * placed_rate);
     EXPECT_GT(rate, beverloo_slot(3.0));
     EXPECT_LT(rate, beverloo_slot(1.0));
+    expect_matches_gold(run.out, "cases/hopper_discharge/hopper_deposition_small.toml");
+    expect_matches_gold(placed.out, "cases/hopper_discharge/hopper_discharge_small.toml");
 }
 
 // A run stopped at 0.85 s (the gate gone at 0.4 s, 15 % of the fill out through the sink) and
@@ -258,8 +246,8 @@ TEST(HopperDischargeSmall, ASlideGateOpensTheOrificeByItsPrescribedMotion) {
     EXPECT_LT(rate, beverloo_slot(1.0));
     constexpr unsigned kGateBlock = 3; // fill, left, right, gate
     constexpr double kSummedRoundOff = 1e-9;
-    const double moved = mean_x(run.out + "/frames/hopper_discharge_small_000032.vtm", kGateBlock) -
-                         mean_x(run.out + "/frames/hopper_discharge_small_000000.vtm", kGateBlock);
+    const double moved = mean_x(frame_path(run.out, "hopper_discharge_small", 32), kGateBlock) -
+                         mean_x(frame_path(run.out, "hopper_discharge_small", 0), kGateBlock);
     EXPECT_NEAR(moved, 0.01 + 2.0 * 1.19, kSummedRoundOff);
 }
 
@@ -294,13 +282,14 @@ TEST(HopperDischargeSmall, ASlideGateClosingSuddenlyStopsTheFlowWithoutPushingAn
     EXPECT_EQ(at_1_5, at_end) << "material passed the closed gate";
     EXPECT_LT(at_end, 0.5 * initial);
     expect_books_close(summary, 500);
-    const auto fill = read_particle_block(run.out + "/frames/hopper_closure_small_000040.vtm", 0);
+    const auto fill = read_particle_block(frame_path(run.out, "hopper_closure_small", 40), 0);
     ASSERT_GT(fill->GetNumberOfPoints(), 0);
     double lowest = 1.0;
     for (vtkIdType i = 0; i < fill->GetNumberOfPoints(); ++i) {
         lowest = std::min(lowest, fill->GetPoint(i)[1]);
     }
     EXPECT_GT(lowest, 0.0) << "a particle below the closed gate's plane";
+    expect_matches_gold(run.out, "cases/hopper_discharge/hopper_closure_small.toml");
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 #include "support/case_runner.hpp"
 #include "support/csv_rows.hpp"
 #include "support/frame_reader.hpp"
+#include "support/gold_summary.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -35,7 +36,7 @@ TEST(HopperFillSmall, SandStaysInsideTheMeshHopperAndItsImpulseBalances) {
         run_case_file("cases/hopper_fill/hopper_fill_small.toml", "hopper_fill_small");
     ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
     const std::string& out = run.out;
-    const auto sand = read_particle_block(out + "/frames/hopper_fill_small_000030.vtm");
+    const auto sand = read_particle_block(frame_path(out, "hopper_fill_small", 30));
     ASSERT_EQ(sand->GetNumberOfPoints(), 96);
     const double dx = 0.02, mass = 1600.0 * dx * dx * dx, g = 9.81, end = 0.3;
 
@@ -75,6 +76,7 @@ TEST(HopperFillSmall, SandStaysInsideTheMeshHopperAndItsImpulseBalances) {
     EXPECT_NEAR(momentum, -weight_impulse + impulse, 0.01 * weight_impulse);
     EXPECT_LT(horizontal, 1e-9 * 96 * mass * g);
     EXPECT_GT(impulse, 0.5 * weight_impulse); // the hopper did catch the sand
+    expect_matches_gold(out, "cases/hopper_fill/hopper_fill_small.toml");
 }
 
 } // namespace

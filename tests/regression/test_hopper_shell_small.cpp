@@ -1,5 +1,6 @@
 #include "support/case_runner.hpp"
 #include "support/frame_reader.hpp"
+#include "support/gold_summary.hpp"
 
 #include <algorithm>
 #include <array>
@@ -127,9 +128,7 @@ std::pair<double, double> beam(const Profile& profile, double stiffness) {
 }
 
 std::string frame_at(const std::string& out, int index) {
-    char name[96];
-    std::snprintf(name, sizeof name, "/frames/hopper_shell_small_%06d.vtm", index);
-    return out + name;
+    return frame_path(out, "hopper_shell_small", index);
 }
 
 // The fill deposited at rest, settled (the gate goes when it has), discharged:
@@ -209,6 +208,7 @@ TEST(HopperShellSmall, TheSheetSagsAndIsStressedAsABeamUnderTheRunsPressure) {
         EXPECT_NE(beam.source.find("beam theory"), std::string::npos) << figure;
         EXPECT_LT(beam.relative_error, kBeam) << figure;
     }
+    expect_matches_gold(run.out, "cases/hopper_discharge/hopper_shell_small.toml");
 }
 
 } // namespace

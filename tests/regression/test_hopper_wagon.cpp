@@ -1,6 +1,7 @@
 #include "fem/shell_case_reader.hpp"
 #include "io/case_table.hpp"
 #include "support/case_runner.hpp"
+#include "support/frame_reader.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -239,7 +240,7 @@ void expect_reactions_equal_weight(const std::string& dir, const std::string& ca
     for (const auto& [part, area] : part_areas()) {
         weight += 7850.0 * 9.81 * area * thickness.at(part);
     }
-    const Vec3 reaction = total_reaction(out + "/frames/" + case_name + "_000001.vtm");
+    const Vec3 reaction = total_reaction(frame_path(out, case_name, 1));
     std::printf("%s: sum of reactions (%.3e, %.3e, %.6f) N, weight %.6f N, relative "
                 "difference %.2e\n",
                 case_name.c_str(), reaction.x(), reaction.y(), reaction.z(), weight,

@@ -1,6 +1,7 @@
 #include "support/case_runner.hpp"
 #include "support/csv_rows.hpp"
 #include "support/frame_reader.hpp"
+#include "support/gold_summary.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -114,6 +115,7 @@ TEST(HopperWagonDischargeSmall, HoldsItsWeightThenRunsOutThroughTheDoor) {
     EXPECT_NEAR(json_figure(figures, "mass_kg"), scene, 1e-9 * scene);
     EXPECT_NEAR(json_figure(figures, "in_body_kg") + json_figure(figures, "in_flight_kg"), scene,
                 1e-9 * scene);
+    expect_matches_gold(out, "cases/hopper_wagon/hopper_wagon_small.toml");
 }
 
 } // namespace

@@ -1,19 +1,15 @@
 #include "support/case_runner.hpp"
+#include "support/gold_summary.hpp"
 #include "support/plate_tip.hpp"
 
 #include <cmath>
-#include <cstdio>
-#include <filesystem>
 #include <gtest/gtest.h>
-#include <numbers>
 #include <vector>
 
 namespace {
 
 using namespace grainload::testing;
 
-constexpr double kLength = 0.2;
-constexpr double kThickness = 0.02;
 constexpr double kSpacing = 0.0025;
 constexpr double kInterval = 0.002; // output_interval of the case
 
@@ -33,33 +29,17 @@ TEST(OscillatingPlateSmall, TotalLagrangianPlateSwingsAtThinPlateFrequencyFromTh
     const CaseRun run = run_case_file("cases/oscillating_plate/oscillating_plate_small.toml",
                                       "oscillating_plate_small", "--threads 1");
     ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
-    const std::string& out = run.out;
-    std::vector<double> tip;
-    double root_motion = 0.0;
-    for (int k = 0;; ++k) {
-        char name[80];
-        std::snprintf(name, sizeof name, "/frames/oscillating_plate_small_%06d.vtm", k);
-        if (!std::filesystem::exists(out + name)) {
-            break;
-        }
-        const TipFrame frame = read_tip_frame(out + name, kLength, kSpacing);
-        tip.push_back(frame.tip);
-        root_motion = std::max(root_motion, frame.root_motion);
-    }
+    const auto [tip, root_motion] =
+        read_tip_history(run.out, "oscillating_plate_small", ThinPlate::length, kSpacing);
     ASSERT_EQ(tip.size(), 281u); // 0.56 s at 2 ms
     const auto [low, high] = std::minmax_element(tip.begin(), tip.end());
     const double level = 0.5 * (*low + *high);
     const auto down = crossings_down(tip, level, kInterval);
     ASSERT_GE(down.size(), 2u);
     const double period = down[1] - down[0];
-    const double k = 1.8751040687 / kLength;
-    const double young = 2.0e6;
-    const double poisson = 0.3975;
-    const double rho = 1000.0;
-    const double stiffness = young * std::pow(kThickness, 3) / (12.0 * (1.0 - poisson * poisson));
-    const double reference_period =
-        2.0 * std::numbers::pi / std::sqrt(stiffness * std::pow(k, 4) / (rho * kThickness));
-    const double static_tip = -rho * 1.0 * kThickness * std::pow(kLength, 4) / (8.0 * stiffness);
+    const ThinPlate plate = oscillating_plate_reference();
+    const double reference_period = plate.period;
+    const double static_tip = plate.static_tip;
     std::cout << "oscillating_plate_small: period " << period << " s ("
               << 100.0 * (period / reference_period - 1.0) << " %), mid level " << level << " m ("
               << 100.0 * (level / static_tip - 1.0) << " %), root motion " << root_motion << " m\n";
@@ -68,6 +48,7 @@ TEST(OscillatingPlateSmall, TotalLagrangianPlateSwingsAtThinPlateFrequencyFromTh
     EXPECT_GT(level / static_tip, 1.0);
     EXPECT_LT(level / static_tip, 1.25);
     EXPECT_EQ(root_motion, 0.0);
+    expect_matches_gold(run.out, "cases/oscillating_plate/oscillating_plate_small.toml");
 }
 
 } // namespace

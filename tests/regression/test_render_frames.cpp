@@ -167,7 +167,7 @@ TEST_F(RenderFrames, ParticlesBySpeedFillThePictureOfTheSizeAskedWithTheDataInTh
     EXPECT_EQ(p.height, kHeight);
     EXPECT_GT(p.coloured, kDrawn);
     EXPECT_GT(p.colours, kColours);
-    const double largest = largest_speed(run_->out + "/frames/sand_on_plate_small_000002.vtm");
+    const double largest = largest_speed(frame_path(run_->out, "sand_on_plate_small", 2));
     ASSERT_GT(largest, 0.0);
     const Reported bar = reported(r.output);
     EXPECT_EQ(bar.low, 0.0) << r.output;
@@ -188,8 +188,7 @@ TEST_F(RenderFrames, ShellByVonMisesStressShowsItsLargestValueInsideTheColourRan
     EXPECT_EQ(p.height, kHeight);
     EXPECT_GT(p.coloured, kDrawn);
     EXPECT_GT(p.colours, kColours);
-    const double largest =
-        largest_von_mises_mpa(run_->out + "/frames/sand_on_plate_small_000002.vtm");
+    const double largest = largest_von_mises_mpa(frame_path(run_->out, "sand_on_plate_small", 2));
     ASSERT_GT(largest, 0.0);
     const Reported bar = reported(r.output);
     EXPECT_EQ(bar.low, 0.0) << r.output;

@@ -1,6 +1,7 @@
 #include "support/case_runner.hpp"
 #include "support/csv_rows.hpp"
 #include "support/frame_reader.hpp"
+#include "support/gold_summary.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -46,7 +47,7 @@ TEST(SiloClosureSmall, ASlideGateShutsTheOutletAndTheArrestLoadsTheWall) {
     }
     ASSERT_GT(at_3_3, 0.0);
     EXPECT_EQ(at_end, at_3_3);
-    const auto sand = read_named_block(run.out + "/frames/silo_closure_small_000180.vtm", "sand");
+    const auto sand = read_named_block(frame_path(run.out, "silo_closure_small", 180), "sand");
     ASSERT_TRUE(sand);
     double lowest = 1e9;
     for (vtkIdType i = 0; i < sand->GetNumberOfPoints(); ++i) {
@@ -67,6 +68,7 @@ TEST(SiloClosureSmall, ASlideGateShutsTheOutletAndTheArrestLoadsTheWall) {
                 at_rest, joukowsky, speed);
     EXPECT_GT(peak, 2.0 * at_rest);
     EXPECT_LT(peak, at_rest + joukowsky);
+    expect_matches_gold(run.out, "cases/silo/silo_closure_small.toml");
 }
 
 } // namespace

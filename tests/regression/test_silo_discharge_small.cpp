@@ -1,4 +1,5 @@
 #include "support/case_runner.hpp"
+#include "support/gold_summary.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -60,6 +61,7 @@ TEST(SiloDischargeSmall, OutletsNarrowedByTheContactReachFollowBeverloo) {
         EXPECT_GT(rate / beverloo(outlet), 0.7) << "outlet " << outlet;
         EXPECT_LT(rate / beverloo(outlet), 1.5) << "outlet " << outlet;
     }
+    expect_matches_gold(wide.out, "cases/silo/silo_discharge_small.toml");
 }
 
 } // namespace

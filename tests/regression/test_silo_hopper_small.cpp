@@ -1,6 +1,7 @@
 #include "support/case_runner.hpp"
 #include "support/csv_rows.hpp"
 #include "support/frame_reader.hpp"
+#include "support/gold_summary.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -76,6 +77,7 @@ TEST(SiloHopperSmall, HoldsItsWeightThenDischargesThroughTheOutlet) {
     EXPECT_EQ(
         count_frame_points(out, "sand", [](const double* p) { return p[0] < 0.0 || p[1] < 0.0; }),
         0);
+    expect_matches_gold(out, "cases/silo_hopper/silo_hopper_small.toml");
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 #include "support/case_runner.hpp"
 #include "support/csv_rows.hpp"
+#include "support/gold_summary.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -85,6 +86,7 @@ TEST(SiloJanssenFillSmall, FilledRowByRowTheWallCarriesJanssensShare) {
         }
         EXPECT_LE(std::abs(friction), 1.01 * kMu * pressure) << "ring " << ring;
     }
+    expect_matches_gold(run.out, "cases/silo_janssen/silo_janssen_fill_small.toml");
 }
 
 // The placed column (cases/silo_janssen/silo_janssen_small.toml) against the same Janssen
@@ -111,6 +113,7 @@ TEST(SiloJanssenSmall, ThePlacedColumnsSummaryStatesJanssensShareAndHowFarItIs) 
     EXPECT_NEAR(floor + wall.value, weight, 0.01 * weight);
     EXPECT_LT(wall.value, 0.0);
     EXPECT_GT(wall.relative_error, 1.0);
+    expect_matches_gold(run.out, "cases/silo_janssen/silo_janssen_small.toml");
 }
 
 } // namespace

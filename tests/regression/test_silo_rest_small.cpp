@@ -1,7 +1,7 @@
 #include "support/case_runner.hpp"
 #include "support/csv_rows.hpp"
-#include "support/frame_reader.hpp"
-#include "support/silo_janssen.hpp"
+#include "support/gold_summary.hpp"
+#include "support/silo_rest.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,12 +15,9 @@ namespace {
 
 // The CI slot silo at rest (cases/silo/silo_rest_small.toml, docs/validation/silo.md): filled
 // by its source to 1.7 s, settled, read at 3 s.
-constexpr double kGravity = 9.81;
-constexpr double kMu = 0.4;              // wall friction of the case
-constexpr double kSinPhi = 0.5;          // phi = 30 deg
 constexpr double kSpacing = 0.025;       // m
 constexpr double kParticleMass = 0.9375; // kg/m
-constexpr double kBand = 0.2;            // m, the left wall's bands left0 .. left5
+constexpr double kBand = SiloRestCase::band;
 
 // - Vertical equilibrium at rest: the floor and the walls' friction carry the weight of what
 //   is in the silo (kinetic energy 1e-13 J at 3 s): to 0.1 % (measured 1e-5; the contact
@@ -38,36 +35,15 @@ TEST(SiloRestSmall, WallPressureAtRestAgainstJanssen) {
     ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
     const std::string summary = read_file(run.out + "/summary.json");
     EXPECT_LT(result_value(summary, "settle_time"), 3.0);
-    const auto sand = read_named_block(run.out + "/frames/silo_rest_small_000030.vtm", "sand");
-    ASSERT_TRUE(sand);
-    const SlotFill fill = measure_slot_fill(sand, kSpacing, kParticleMass, kGravity);
-    const double mass = fill.mass;
-    const auto forces = final_wall_forces(run.out);
-    double carried = -forces.at("floor").second - forces.at("right").second;
-    for (const auto& [wall, force] : forces) {
-        carried -= wall.rfind("left", 0) == 0 ? force.second : 0.0;
-    }
+    const SiloRest rest = read_silo_rest(run.out, frame_path(run.out, "silo_rest_small", 30),
+                                         kSpacing, kParticleMass);
+    ASSERT_EQ(rest.bands.size(), 4u);
     constexpr double kEquilibrium = 1e-3;
-    EXPECT_NEAR(carried / (mass * kGravity), 1.0, kEquilibrium);
-    const double k_low = 1.0 - kSinPhi;
-    const double k_high = 1.1 * (1.0 - kSinPhi);
+    EXPECT_NEAR(rest.carried_fraction, 1.0, kEquilibrium);
     constexpr double kLowestFraction = 0.6;
     constexpr double kMobilised = 0.85;
-    for (int band = 1; band <= 4; ++band) {
-        const auto [fx, fy] = forces.at("left" + std::to_string(band));
-        const double p_h = -fx / kBand;
-        const double a = fill.surface - kBand * (band + 1);
-        const double b = fill.surface - kBand * band;
-        const double low = janssen_band(fill, k_low, kMu, a, b);
-        const double high = janssen_band(fill, k_high, kMu, a, b);
-        std::cout << "band " << band << ": p_h " << p_h << " Pa, Janssen K=0.5 " << low
-                  << " Pa, K=0.55 " << high << " Pa, friction/(mu p_h) "
-                  << -fy / (kMu * p_h * kBand) << '\n';
-        EXPECT_LT(p_h, high) << "band " << band;
-        EXPECT_GT(p_h, kLowestFraction * low) << "band " << band;
-        EXPECT_GT(-fy / (kMu * p_h * kBand), kMobilised) << "band " << band;
-        EXPECT_LE(-fy / (kMu * p_h * kBand), 1.0 + 1e-9) << "band " << band;
-    }
+    expect_bands_against_janssen(rest, kLowestFraction, kMobilised);
+    const auto& forces = rest.forces;
 
     // The right wall's map ([[sph.wall_map]] "right": 0.2 m bins, the mean over 2.9-3 s).
     // Its cells summed are the wall's force of wall_forces.csv at 3 s (the same particle forces,
@@ -89,6 +65,7 @@ TEST(SiloRestSmall, WallPressureAtRestAgainstJanssen) {
         const double left = -forces.at("left" + std::to_string(band)).first / kBand;
         EXPECT_NEAR(cells[static_cast<std::size_t>(band)][4], left, 0.1 * left) << "band " << band;
     }
+    expect_matches_gold(run.out, "cases/silo/silo_rest_small.toml");
 }
 
 } // namespace

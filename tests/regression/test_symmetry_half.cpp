@@ -1,5 +1,6 @@
 #include "support/case_runner.hpp"
 #include "support/frame_reader.hpp"
+#include "support/gold_summary.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -33,9 +34,10 @@ TEST(SymmetryHalf, RunsFromTheCliCarriesItsWeightAndClosesItsBooks) {
         << summary;
     // The frames hold the 200 particles of the half, no ghost.
     const auto column =
-        read_named_block(run.out + "/frames/column_collapse_2d_half_000012.vtm", "column");
+        read_named_block(frame_path(run.out, "column_collapse_2d_half", 12), "column");
     ASSERT_TRUE(column);
     EXPECT_EQ(column->GetNumberOfPoints(), 200);
+    expect_matches_gold(run.out, "cases/column_collapse_2d/column_collapse_2d_half.toml");
 }
 
 // Ghosts are not checkpointed: the restart selects them again from the positions of the
@@ -83,6 +85,8 @@ TEST(SymmetryHalf, QuarterOfACoupledPlateSagsAndCarriesAsTheFullPlate) {
                 kSideWallRoundOff);
     EXPECT_NEAR(result_value(b, "energy_balance_error"), result_value(a, "energy_balance_error"),
                 kQuarterRoundOff);
+    expect_matches_gold(full.out, "cases/sand_on_plate/sand_on_plate_small.toml");
+    expect_matches_gold(quarter.out, "cases/sand_on_plate/sand_on_plate_quarter.toml");
 }
 
 } // namespace

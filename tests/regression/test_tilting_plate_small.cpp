@@ -1,5 +1,6 @@
 #include "support/case_runner.hpp"
 #include "support/frame_reader.hpp"
+#include "support/gold_summary.hpp"
 #include "support/tilting_plate.hpp"
 
 #include <algorithm>
@@ -57,6 +58,8 @@ TEST(TiltingPlateSmall, BlockStartsSlidingAtTheFrictionAngle) {
     EXPECT_NEAR(onset.angle, friction_angle, 1.0);
     // Held, the block creeps only by the contact layer's elastic shear: under 0.01 mm.
     EXPECT_LT(onset.held_slip, 1e-5);
+    expect_matches_gold(test_folder("tilting_plate_small"),
+                        "cases/tilting_plate/tilting_plate_small.toml");
 }
 
 // The same for a heap of moist sand (c = 500 Pa, flanks at 20 deg, 250 particles), whose
@@ -70,6 +73,8 @@ TEST(TiltingPlateSmall, MoistSandHeapStartsSlidingAtTheFrictionAngle) {
     const Onset onset = measure_onset("tilting_plate_cone_moist_small", friction_angle);
     EXPECT_NEAR(onset.angle, friction_angle, 1.0);
     EXPECT_LT(onset.held_slip, 1e-4);
+    expect_matches_gold(test_folder("tilting_plate_cone_moist_small"),
+                        "cases/tilting_plate/tilting_plate_cone_moist_small.toml");
 }
 
 /// Row of every particle in spacings above the first frame's bottom row; per row from 2 to the
@@ -134,8 +139,8 @@ TEST(TiltingPlateSmall, CohesionlessHeapAvalanchesAtTheFrictionAngleThenSlides) 
     expect_energy_closes(out);
     const double phi = 35.0, spacing = 0.004, interval = 0.02, threshold = 1e-3;
     const double slide_limit = std::atan(0.5) * 180.0 / std::numbers::pi;
-    const double angle_zero = plate_angle(frame_file(out, name, 0));
-    const BodyFrame first = read_body(frame_file(out, name, 0), angle_zero);
+    const double angle_zero = plate_angle(frame_path(out, name, 0));
+    const BodyFrame first = read_body(frame_path(out, name, 0), angle_zero);
     const double bottom = *std::min_element(first.n.begin(), first.n.end());
     const std::vector<std::size_t> flank = flank_surface(first, bottom, spacing);
     std::vector<std::size_t> base;
@@ -152,8 +157,8 @@ TEST(TiltingPlateSmall, CohesionlessHeapAvalanchesAtTheFrictionAngleThenSlides) 
     int flowing_frames = 0;
     double steepest = -90.0, steepest_at = std::nan("");
     BodyFrame previous = first;
-    for (int k = 1; std::filesystem::exists(frame_file(out, name, k)); ++k) {
-        const BodyFrame f = read_body(frame_file(out, name, k), angle_zero);
+    for (int k = 1; std::filesystem::exists(frame_path(out, name, k)); ++k) {
+        const BodyFrame f = read_body(frame_path(out, name, k), angle_zero);
         const double degrees = f.angle * 180.0 / std::numbers::pi;
         const double to_horizontal = slope_to_plate(f, flank_surface(f, bottom, spacing)) + degrees;
         double flank_speed = 0.0;
@@ -194,6 +199,7 @@ TEST(TiltingPlateSmall, CohesionlessHeapAvalanchesAtTheFrictionAngleThenSlides) 
     EXPECT_GT(flowing, phi - 10.0);
     EXPECT_GT(slide, slide_limit - 0.5);
     EXPECT_LT(slide, slide_limit + 2.5);
+    expect_matches_gold(out, "cases/tilting_plate/tilting_plate_cone_small.toml");
 }
 
 // A contact stiffness far beyond the time step's reach (1e4 GPa, 1e7 times the sand's modulus:
@@ -210,7 +216,7 @@ TEST(TiltingPlateSmall, ContactTooStiffForTheStepStopsTheRunAsUnstable) {
     EXPECT_EQ(run.cli.exit_code, 3) << run.cli.output;
     EXPECT_NE(run.cli.output.find("energy is being created"), std::string::npos) << run.cli.output;
     EXPECT_NE(read_file(out + "/summary.json").find("\"status\": \"unstable\""), std::string::npos);
-    const auto block = read_particle_block(frame_file(out, "tilting_plate_small", 0), 0);
+    const auto block = read_particle_block(frame_path(out, "tilting_plate_small", 0), 0);
     ASSERT_GT(block->GetNumberOfPoints(), 0);
     for (vtkIdType i = 0; i < block->GetNumberOfPoints(); ++i) {
         double x[3];

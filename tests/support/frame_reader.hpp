@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vtkCompositeDataSet.h>
@@ -11,6 +12,14 @@
 #include <vtkXMLMultiBlockDataReader.h>
 
 namespace grainload::testing {
+
+/// The frame `index` a run into `out` wrote for the case called `name` (its [case] name, the
+/// file's stem): out/frames/NAME_000012.vtm.
+inline std::string frame_path(const std::string& out, const std::string& name, int index) {
+    char number[16];
+    std::snprintf(number, sizeof number, "_%06d.vtm", index);
+    return out + "/frames/" + name + number;
+}
 
 /// Block `index` of a written frame (.vtm) as VTK's own reader returns it: a particle body.
 inline vtkSmartPointer<vtkPolyData> read_particle_block(const std::string& vtm,

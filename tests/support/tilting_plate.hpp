@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <iostream>
@@ -67,12 +66,6 @@ inline PlateFrame read_plate_frame(const std::string& vtm, double angle_zero) {
     return {body.angle, sum / static_cast<double>(body.s.size())};
 }
 
-inline std::string frame_file(const std::string& out, const std::string& name, int k) {
-    char file[96];
-    std::snprintf(file, sizeof file, "/frames/%s_%06d.vtm", name.c_str(), k);
-    return out + file;
-}
-
 struct Onset {
     double angle = std::nan(""); ///< deg: first frame sliding faster than 1 mm/s
     double held_slip = 0.0;      ///< m: largest slip while more than 1 deg below atan(mu_s)
@@ -82,11 +75,11 @@ struct Onset {
 /// (every 0.02 s, 0.1 deg near the onset).
 inline Onset onset_from_frames(const std::string& out, const std::string& name,
                                double friction_angle) {
-    const double angle_zero = plate_angle(frame_file(out, name, 0));
+    const double angle_zero = plate_angle(frame_path(out, name, 0));
     const double interval = 0.02;
     std::vector<PlateFrame> frames;
-    for (int k = 0; std::filesystem::exists(frame_file(out, name, k)); ++k) {
-        frames.push_back(read_plate_frame(frame_file(out, name, k), angle_zero));
+    for (int k = 0; std::filesystem::exists(frame_path(out, name, k)); ++k) {
+        frames.push_back(read_plate_frame(frame_path(out, name, k), angle_zero));
     }
     EXPECT_GT(frames.size(), 100u);
     Onset onset;

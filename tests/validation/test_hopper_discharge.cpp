@@ -1,5 +1,6 @@
 #include "support/case_runner.hpp"
 #include "support/csv_rows.hpp"
+#include "support/hopper_beverloo.hpp"
 
 #include <cmath>
 #include <iostream>
@@ -14,11 +15,7 @@ namespace {
 // axisymmetrical particle flow", in plane strain at 25 mm, rigid walls, the
 // gate removed at once at 0.4 s: cases/hopper_discharge/hopper_discharge.toml, figures in
 // docs/validation/hopper_discharge.md ("Results"). About 20 s on 2 threads.
-constexpr double kGravity = 9.81;
-constexpr double kBulkDensity = 300.0; // kg/m^3: 500 kg/m^3 spheres at solid fraction 0.6
-constexpr double kOrifice = 0.4;       // m, across the slot
-constexpr double kGrain = 0.065;       // m, the paper's mean sphere diameter
-constexpr double kOpening = 0.4;       // s, the gate's remove_at
+constexpr double kOpening = 0.4; // s, the gate's remove_at
 
 /// The first output time at which `level` of the initial mass has left, after the opening.
 double time_to_discharge(const std::vector<std::pair<double, double>>& rows, double initial,
@@ -50,13 +47,11 @@ TEST(HopperDischargeValidation, EmptiesInTheExperimentsTimeAt25mm) {
     const CaseRun run =
         run_case_file("cases/hopper_discharge/hopper_discharge.toml", "hopper_discharge");
     ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
-    const std::string summary = read_file(run.out + "/summary.json");
-    expect_books_close(summary, 2000);
-    const double initial = result_value(summary, "initial_mass");
-    const double emptied = time_to_discharge(discharge_rows(run.out), initial, 0.99);
-    const double rate = result_value(summary, "sink_below_steady_rate");
-    const double beverloo =
-        1.03 * kBulkDensity * std::sqrt(kGravity) * std::pow(kOrifice - 1.5 * kGrain, 1.5);
+    const HopperDischarge discharge =
+        read_hopper_discharge(read_file(run.out + "/summary.json"), 2000);
+    const double emptied = time_to_discharge(discharge_rows(run.out), discharge.initial_mass, 0.99);
+    const double rate = discharge.steady_rate;
+    const double beverloo = beverloo_slot(1.5);
     std::cout << "hopper discharge (25 mm): 99 % out " << emptied << " s after opening; steady "
               << "rate " << rate << " kg/m/s, " << rate / beverloo << " x Beverloo (k = 1.5, "
               << beverloo << " kg/m/s)\n";

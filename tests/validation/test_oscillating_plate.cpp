@@ -3,11 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <filesystem>
 #include <gtest/gtest.h>
 #include <iostream>
-#include <numbers>
 #include <vector>
 
 namespace {
@@ -17,14 +14,8 @@ using namespace grainload::testing;
 // cases/oscillating_plate/oscillating_plate.toml: Gray, Monaghan & Swift's cantilever plate,
 // total Lagrangian, 16 particles across H, released under g = 1 m/s^2 (docs/validation/
 // oscillating_plate.md, "Case (CLI): sudden gravity"). About 3.5 min on 2 threads.
-constexpr double kLength = 0.2;
-constexpr double kThickness = 0.02;
 constexpr double kSpacing = 0.00125;
 constexpr double kInterval = 0.002; // output_interval of the case
-constexpr double kYoung = 2.0e6;
-constexpr double kPoisson = 0.3975;
-constexpr double kDensity = 1000.0;
-constexpr double kGravity = 1.0;
 
 /// The swing's figures as cases/oscillating_plate/analyse.py takes them: the level is the
 /// midpoint of the extremes, refined (three times) to the time average over the whole periods
@@ -76,28 +67,14 @@ TEST(OscillatingPlateValidation, PeriodAndDeflectionWithin5PercentAt16ParticlesA
     const CaseRun run =
         run_case_file("cases/oscillating_plate/oscillating_plate.toml", "oscillating_plate");
     ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
-    std::vector<double> tip;
-    double root_motion = 0.0;
-    for (int k = 0;; ++k) {
-        char name[80];
-        std::snprintf(name, sizeof name, "/frames/oscillating_plate_%06d.vtm", k);
-        if (!std::filesystem::exists(run.out + name)) {
-            break;
-        }
-        const TipFrame frame = read_tip_frame(run.out + name, kLength, kSpacing);
-        tip.push_back(frame.tip);
-        root_motion = std::max(root_motion, frame.root_motion);
-    }
+    const auto [tip, root_motion] =
+        read_tip_history(run.out, "oscillating_plate", ThinPlate::length, kSpacing);
     ASSERT_EQ(tip.size(), 526u); // 1.05 s at 2 ms
     const Swing swing = measure_swing(tip);
     ASSERT_GE(swing.periods, 3u);
-    const double stiffness =
-        kYoung * std::pow(kThickness, 3) / (12.0 * (1.0 - kPoisson * kPoisson));
-    const double k = 1.8751040687 / kLength; // 1 + cos kL cosh kL = 0
-    const double reference_period =
-        2.0 * std::numbers::pi / std::sqrt(stiffness * std::pow(k, 4) / (kDensity * kThickness));
-    const double static_tip =
-        -kDensity * kGravity * kThickness * std::pow(kLength, 4) / (8.0 * stiffness);
+    const ThinPlate plate = oscillating_plate_reference();
+    const double reference_period = plate.period;
+    const double static_tip = plate.static_tip;
     std::cout << "oscillating_plate: period " << swing.period << " s over " << swing.periods
               << " periods (" << 100.0 * (swing.period / reference_period - 1.0) << " %), mean tip "
               << swing.level << " m (" << 100.0 * (swing.level / static_tip - 1.0)

@@ -1,25 +1,11 @@
 #include "support/case_runner.hpp"
-#include "support/frame_reader.hpp"
-#include "support/heap_profile.hpp"
+#include "support/repose_run.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <filesystem>
 #include <gtest/gtest.h>
-#include <iostream>
-#include <vector>
 
 namespace {
 
 using namespace grainload::testing;
-
-std::string frame_file(const std::string& out, int k) {
-    char name[64];
-    std::snprintf(name, sizeof name, "/frames/repose_%06d.vtm", k);
-    return out + name;
-}
 
 // cases/repose/repose.toml (docs/validation/repose.md): a cylinder of cohesionless sand
 // (phi = 30 deg, compression cone fit, 10 mm spacing, 2184 particles) in a frictionless tube
@@ -40,42 +26,16 @@ std::string frame_file(const std::string& out, int k) {
 TEST(ReposeValidation, HeapFlankStandsAtTheFrictionAngleAt10mm) {
     const CaseRun run = run_case_file("cases/repose/repose.toml", "repose");
     ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
-    const std::string& out = run.out;
     const double spacing = 0.01, phi = 30.0, floor_half_width = 0.25;
-    const double tube_moves = 0.1, interval = 0.05; // s, from the case file
+    const ReposeRun repose = read_repose_run(run.out, "repose", spacing);
+    ASSERT_GE(repose.last_frame, 35); // 1.8 s at 0.05 s
+    ASSERT_EQ(repose.last_particles, repose.first_particles);
+    EXPECT_NEAR(-repose.floor_force, repose.weight, 1e-3 * repose.weight);
 
-    std::vector<double> kinetic;
-    int last = 0;
-    for (int k = 0; std::filesystem::exists(frame_file(out, k)); ++k) {
-        kinetic.push_back(kinetic_energy(read_particle_block(frame_file(out, k))));
-        last = k;
-    }
-    ASSERT_GE(last, 35); // 1.8 s at 0.05 s
-    const auto first = read_particle_block(frame_file(out, 0));
-    const auto sand = read_particle_block(frame_file(out, last));
-    ASSERT_EQ(sand->GetNumberOfPoints(), first->GetNumberOfPoints());
-
-    const auto lift = static_cast<std::size_t>(tube_moves / interval);
-    const double peak = *std::max_element(kinetic.begin() + lift, kinetic.end());
-    const Heap heap = measure_heap(sand, spacing);
-    std::cout << "heap height " << heap.height * 1e3 << " mm, reach " << heap.farthest * 1e3
-              << " mm, slope " << heap.slope_deg << " deg, outer angle " << heap.outer_deg
-              << " deg (phi " << phi << " deg), kinetic energy at the end / peak "
-              << kinetic.back() / peak << "\n";
-
-    const std::string summary = read_file(out + "/summary.json");
-    const std::string key = "\"wall_floor_force_z\": {\"value\": ";
-    const auto at = summary.find(key);
-    ASSERT_NE(at, std::string::npos) << summary;
-    const double floor_force = std::strtod(summary.c_str() + at + key.size(), nullptr);
-    const double weight =
-        static_cast<double>(sand->GetNumberOfPoints()) * 1600.0 * std::pow(spacing, 3) * 9.81;
-    std::cout << "floor force " << floor_force << " N, weight " << weight << " N\n";
-    EXPECT_NEAR(-floor_force, weight, 1e-3 * weight);
-
+    const Heap& heap = repose.heap;
     EXPECT_GT(heap.lowest, 0.0);
     EXPECT_LT(heap.farthest, floor_half_width);
-    EXPECT_LT(kinetic.back(), 1e-4 * peak);
+    EXPECT_LT(repose.final_kinetic, 1e-4 * repose.peak_kinetic);
     EXPECT_NEAR(heap.slope_deg, phi, 2.0);
     EXPECT_LT(heap.outer_deg, phi);
 }
