@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iostream>
 #include <sstream>
 #include <stdexcept>
 
@@ -352,7 +351,7 @@ WindowLimits check_window(const io::CaseTable& coupling, const CouplingSettings&
     if (settings.max_iterations <= 1) {
         if (auto warning =
                 window_warning(limits, settings.window, fem.dynamic(), settings.relaxation)) {
-            std::cerr << "grainload: warning: " << *warning << '\n';
+            coupling.warn(*warning);
         }
     }
     return limits;
@@ -360,25 +359,27 @@ WindowLimits check_window(const io::CaseTable& coupling, const CouplingSettings&
 
 /// Warns about a ramp of the shell's own loads over more than a few windows, and about an
 /// added mass that makes the wall follow the load late.
-void warn_about_time(const fem::ShellModel& fem, const CouplingSettings& settings,
-                     const WindowLimits& limits, double end_time) {
+void warn_about_time(const io::CaseTable& coupling, const fem::ShellModel& fem,
+                     const CouplingSettings& settings, const WindowLimits& limits,
+                     double end_time) {
     // Time is physical in a coupled run: the ramp that orders a stand-alone static analysis's
     // load steps would put the structure's own weight on over the run (the wagon's body carried
     // 23 % of it when its load was heaviest with such a ramp; docs/validation/hopper_wagon.md).
     // A ramp over a few windows (the tipping cone's plate: two) is a start-up, not that.
     if (fem.has_ramped_loads() &&
         fem.load_time() > std::max(settings.window, 0.1 * end_time) * (1.0 + 1e-9)) {
-        std::cerr << "grainload: warning: the shell's own loads without a time function "
-                  << "(gravity, pressures, nodal forces) grow linearly until [fem] load_time = "
-                  << fem.load_time()
-                  << " s (by default end_time); in a coupled run time is physical and a "
-                     "structure carries its weight before the sand arrives: set load_time to "
-                     "one window ("
-                  << settings.window << " s) unless the ramp is meant\n";
+        std::ostringstream warning;
+        warning << "the shell's own loads without a time function (gravity, pressures, nodal "
+                   "forces) grow linearly until [fem] load_time = "
+                << fem.load_time()
+                << " s (by default end_time); in a coupled run time is physical and a structure "
+                   "carries its weight before the sand arrives: set load_time to one window ("
+                << settings.window << " s) unless the ramp is meant";
+        coupling.warn(warning.str());
     }
     if (auto warning =
             added_mass_lag_warning(limits, settings.window, settings.added_mass, end_time)) {
-        std::cerr << "grainload: warning: " << *warning << '\n';
+        coupling.warn(*warning);
     }
 }
 
@@ -401,7 +402,7 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
     build_walls(root, *sph, read);
     const WindowLimits limits =
         check_window(coupling, settings, *sph, *fem, read.parts, scene.end_time);
-    warn_about_time(*fem, settings, limits, scene.end_time);
+    warn_about_time(coupling, *fem, settings, limits, scene.end_time);
     if (settings.added_mass > 0.0) {
         fem->analysis().set_node_springs(added_mass_springs(fem->analysis().mesh(), read.parts,
                                                             limits.sand_mass, settings.window,
