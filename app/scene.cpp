@@ -1,7 +1,7 @@
 #include "app/scene.hpp"
 
-#include "app/memory_guard.hpp"
 #include "app/notices.hpp"
+#include "app/resources/memory_guard.hpp"
 #include "coupling/coupled_model.hpp"
 #include "coupling/coupling_case_reader.hpp"
 #include "fem/shell_model.hpp"
