@@ -1,6 +1,6 @@
 #include "app/command_line.hpp"
 
-#include "app/trade_command.hpp"
+#include "app/trade/trade_command.hpp"
 #include "io/case_error.hpp"
 
 #include <algorithm>
@@ -159,7 +159,7 @@ CommandLine parse_command_line(int argc, const char* const* argv) {
         return help_line(argc, argv, line.command);
     }
     if (line.command == CommandLine::Command::trade) {
-        return line; // `trade` has options of its own (app/trade_command.hpp)
+        return line; // `trade` has options of its own (app/trade/trade_command.hpp)
     }
     auto value_of = [&](int& i, std::string_view option) -> std::string {
         if (i + 1 >= argc) {

@@ -14,7 +14,7 @@ struct CommandLine {
     std::string input;              ///< CASE.toml or DRIVER.toml
     std::optional<std::string> out; ///< --out
     std::optional<int> threads;     ///< --threads N
-    /// --threads auto: the cores other work leaves free at start (app/thread_count.hpp).
+    /// --threads auto: the cores other work leaves free at start (app/resources/thread_count.hpp).
     bool auto_threads = false;
     std::vector<std::string> overrides; ///< --set key=value, in order
     std::optional<std::string> restart; ///< --restart CHECKPOINT

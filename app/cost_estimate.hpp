@@ -1,7 +1,7 @@
 #pragma once
 // What a run of a loaded scene will cost, estimated before it runs (grainload check).
 
-#include "app/calibration.hpp"
+#include "app/resources/calibration.hpp"
 #include "io/types.hpp"
 
 #include <optional>
@@ -51,7 +51,7 @@ struct CostEstimate {
     /// Static shell with the added mass: how long it takes to follow a load change [s]
     /// (coupling/window_limits.hpp, added_mass_lag; 0: none).
     double coupling_added_mass_lag = 0.0;
-    /// The shells' steps (app/shell_cost.hpp), as summary.json's fem_factorisations and
+    /// The shells' steps (app/resources/shell_cost.hpp), as summary.json's fem_factorisations and
     /// fem_back_substitutions count them.
     double shell_steps = 0.0;
     double shell_solved_steps = 0.0;
@@ -73,9 +73,9 @@ struct CostEstimate {
 /// (the fastest grain's speed, CostEstimate::flow_speed); time per SPH step from the neighbour
 /// list at t = 0 (entries, body and wall particles) at the calibrated costs, plus the particles
 /// sources create and less those outlets take, averaged over the run, each with a full kernel
-/// support; and the shell's steps as the run takes them (app/shell_cost.hpp: factorisations
-/// counted, a stored stiffness, rigid coupled parts); memory from the SPH solver's own heap at
-/// t = 0 (SphSolver::bytes) and the shell's DOFs, plus the baseline.
+/// support; and the shell's steps as the run takes them (app/resources/shell_cost.hpp:
+/// factorisations counted, a stored stiffness, rigid coupled parts); memory from the SPH solver's
+/// own heap at t = 0 (SphSolver::bytes) and the shell's DOFs, plus the baseline.
 CostEstimate estimate_cost(const Scene& scene, int threads, const Calibration& calibration);
 
 /// The lines `grainload check` prints.

@@ -1,9 +1,10 @@
 #include "app/case_schema.hpp"
 #include "app/command_line.hpp"
-#include "app/heap_trim.hpp"
-#include "app/openmp_wait.hpp"
+#include "app/notices.hpp"
+#include "app/resources/heap_trim.hpp"
+#include "app/resources/openmp_wait.hpp"
 #include "app/run_driver.hpp"
-#include "app/trade_command.hpp"
+#include "app/trade/trade_command.hpp"
 #include "io/case_error.hpp"
 #include "io/version.hpp"
 #include "materials/material_point_driver.hpp"
@@ -11,6 +12,26 @@
 #include <exception>
 #include <iostream>
 #include <string>
+#include <vector>
+
+namespace {
+
+/// `grainload matpoint`: its warnings and failure printed as the driver gives them, also when
+/// it refuses the driver.
+int run_material_point(const grainload::app::CommandLine& line) {
+    std::vector<std::string> notices;
+    int code = 0;
+    try {
+        code = grainload::materials::run_material_point(line.input, *line.out, notices);
+    } catch (...) {
+        grainload::app::print_notices(notices);
+        throw;
+    }
+    grainload::app::print_notices(notices);
+    return code;
+}
+
+} // namespace
 
 int main(int argc, char** argv) {
     using namespace grainload;
@@ -27,7 +48,7 @@ int main(int argc, char** argv) {
             if (!line.out) {
                 throw io::CaseError("command line: matpoint expects --out FILE.csv");
             }
-            return materials::run_material_point(line.input, *line.out);
+            return run_material_point(line);
         case app::CommandLine::Command::trade:
             return app::trade_main(argc, argv);
         case app::CommandLine::Command::version:

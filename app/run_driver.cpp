@@ -2,10 +2,10 @@
 
 #include "app/checkpoint.hpp"
 #include "app/cost_estimate.hpp"
-#include "app/openmp_wait.hpp"
 #include "app/progress_reporter.hpp"
+#include "app/resources/openmp_wait.hpp"
+#include "app/resources/thread_count.hpp"
 #include "app/scene.hpp"
-#include "app/thread_count.hpp"
 #include "io/atomic_file.hpp"
 #include "io/case_error.hpp"
 #include "io/output_streams.hpp"

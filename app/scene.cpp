@@ -1,6 +1,7 @@
 #include "app/scene.hpp"
 
-#include "app/memory_guard.hpp"
+#include "app/notices.hpp"
+#include "app/resources/memory_guard.hpp"
 #include "coupling/coupled_model.hpp"
 #include "coupling/coupling_case_reader.hpp"
 #include "fem/shell_model.hpp"
@@ -30,43 +31,53 @@ std::unique_ptr<Scene> Scene::from_document(std::unique_ptr<io::CaseDocument> do
                                             const std::string& name, std::optional<double> memory) {
     auto scene = std::make_unique<Scene>();
     scene->document = std::move(document);
-    scene->settings = io::read_scene_settings(*scene->document, name);
-    const io::CaseTable root = scene->document->root();
-    scene->materials = materials::MaterialLibrary::from_case(root);
-    const std::optional<double> spare_particles =
-        refuse_oversized_scene(root, scene->settings.dimension, memory);
-    if (root.has("coupling")) {
-        scene->steppers.push_back(
-            coupling::read_coupled_model(root, scene->settings, scene->materials, spare_particles));
-    } else if (root.has("sph")) {
-        scene->steppers.push_back(
-            sph::SphModel::from_case(root, scene->settings, scene->materials));
+    // A refused case still says what its readers warned about before the refusal.
+    try {
+        scene->settings = io::read_scene_settings(*scene->document, name);
+        const io::CaseTable root = scene->document->root();
+        scene->materials = materials::MaterialLibrary::from_case(root);
+        const std::optional<double> spare_particles =
+            refuse_oversized_scene(root, scene->settings.dimension, memory);
+        if (root.has("coupling")) {
+            scene->steppers.push_back(coupling::read_coupled_model(
+                root, scene->settings, scene->materials, spare_particles));
+        } else if (root.has("sph")) {
+            scene->steppers.push_back(
+                sph::SphModel::from_case(root, scene->settings, scene->materials));
+        }
+        if (root.has("fem") && !root.has("coupling")) {
+            scene->steppers.push_back(
+                fem::ShellModel::from_case(root, scene->settings, scene->materials));
+        }
+        if (root.has("phase") && !root.has("sph")) {
+            root.fail("phase",
+                      "phases act on the SPH scene's walls, sources and sinks: expected an "
+                      "[sph] table");
+        }
+        if (scene->steppers.empty()) {
+            root.fail("", "expected at least one physics module: an [sph] table with [[sph.body]] "
+                          "or an [fem] table with [[fem.shell]]");
+        }
+        // The readers' warnings in the order they came, then what no reader took of the decks.
+        print_notices(scene->document->take_notices());
+        // Once every reader has had its decks: what none of them took, once per deck.
+        for (const std::string& warning : root.deck_ledger().warnings()) {
+            std::cerr << "grainload: warning: " << warning << '\n';
+        }
+        // The figures at t = 0 name every figure the run reports, so a misspelt reference is
+        // refused before the run, not after it.
+        std::vector<io::ResultFigure> figures;
+        for (const auto& stepper : scene->steppers) {
+            stepper->append_results(0.0, figures);
+        }
+        scene->references = io::read_figure_references(root);
+        io::check_figure_references(scene->references, figures);
+        scene->document->reject_unknown_keys();
+        return scene;
+    } catch (...) {
+        print_notices(scene->document->take_notices());
+        throw;
     }
-    if (root.has("fem") && !root.has("coupling")) {
-        scene->steppers.push_back(
-            fem::ShellModel::from_case(root, scene->settings, scene->materials));
-    }
-    if (root.has("phase") && !root.has("sph")) {
-        root.fail("phase", "phases act on the SPH scene's walls, sources and sinks: expected an "
-                           "[sph] table");
-    }
-    if (scene->steppers.empty()) {
-        root.fail("", "expected at least one physics module: an [sph] table with [[sph.body]] "
-                      "or an [fem] table with [[fem.shell]]");
-    }
-    // Once every reader has had its decks: what none of them took, once per deck.
-    for (const std::string& warning : root.deck_ledger().warnings()) {
-        std::cerr << "grainload: warning: " << warning << '\n';
-    }
-    // The figures at t = 0 name every figure the run reports, so a misspelt reference is
-    // refused before the run, not after it.
-    std::vector<io::ResultFigure> figures;
-    for (const auto& stepper : scene->steppers) {
-        stepper->append_results(0.0, figures);
-    }
-    scene->references = io::read_figure_references(root);
-    io::check_figure_references(scene->references, figures);
-    scene->document->reject_unknown_keys();
     return scene;
 }
 

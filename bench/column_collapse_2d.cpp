@@ -12,8 +12,8 @@
 //   --set is passed to the run (e.g. --set 'case.end_time=0.1 s' for a short check).
 
 #include "app/command_line.hpp"
-#include "app/heap_trim.hpp"
-#include "app/openmp_wait.hpp"
+#include "app/resources/heap_trim.hpp"
+#include "app/resources/openmp_wait.hpp"
 #include "app/run_driver.hpp"
 
 #include <algorithm>

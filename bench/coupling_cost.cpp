@@ -103,6 +103,9 @@ void run(int n, double spacing, bool dynamic, int ratio, int windows) {
     const io::SceneSettings settings = io::read_scene_settings(*document, "bench");
     const auto materials = materials::MaterialLibrary::from_case(document->root());
     auto model = coupling::read_coupled_model(document->root(), settings, materials);
+    for (const std::string& line : document->take_notices()) {
+        std::fprintf(stderr, "%s\n", line.c_str());
+    }
     const double window = ratio * model->sph().stable_time_step();
     const fem::SparseSolver::Totals before = fem::SparseSolver::totals();
     double t = 0.0;

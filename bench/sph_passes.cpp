@@ -13,8 +13,8 @@
 // usage: sph_passes [--threads N] [--reps R] [--restart CHECKPOINT] [--set KEY=VALUE]...
 //                   [CASE.toml]
 
-#include "app/heap_trim.hpp"
-#include "app/openmp_wait.hpp"
+#include "app/resources/heap_trim.hpp"
+#include "app/resources/openmp_wait.hpp"
 #include "app/scene.hpp"
 #include "io/binary_stream.hpp"
 #include "sph/rates.hpp"

@@ -18,9 +18,9 @@
 //                                          1 thread and all cores, and a shell plate's steps;
 //                                          writes FILE as JSON with how busy the machine was)
 
-#include "app/calibration.hpp"
-#include "app/heap_trim.hpp"
-#include "app/openmp_wait.hpp"
+#include "app/resources/calibration.hpp"
+#include "app/resources/heap_trim.hpp"
+#include "app/resources/openmp_wait.hpp"
 #include "app/scene.hpp"
 #include "materials/generalized_cap.hpp"
 #include "materials/linear_elastic.hpp"
@@ -451,7 +451,7 @@ double measure_speedup(int cores, const materials::Material& sand) {
     return one / all;
 }
 
-/// Measures what `grainload check` needs and writes it as JSON (app/calibration.hpp). It
+/// Measures what `grainload check` needs and writes it as JSON (app/resources/calibration.hpp). It
 /// waits up to a minute for other processes to leave the machine quiet (app::kQuietLoad),
 /// measures the speed-up again (at most twice) when more threads came out slower than one,
 /// and records the others' load over the whole measurement, so that check can say which

@@ -1,7 +1,7 @@
 #pragma once
 // The sand's inertia put on a static shell's coupled nodes as springs (the added mass).
 
-#include "coupling/coupled_model.hpp"
+#include "coupling/coupled_part.hpp"
 #include "fem/shell_analysis.hpp"
 
 #include <vector>

@@ -1,6 +1,7 @@
 #pragma once
 // The SPH-shell coupling as the time loop sees it: the shell master, SPH its slave, per window.
 
+#include "coupling/coupled_part.hpp"
 #include "coupling/coupling_monitor.hpp"
 #include "coupling/interface_accelerator.hpp"
 #include "coupling/model_hints.hpp"
@@ -34,15 +35,6 @@ struct CouplingSettings {
     double energy_error_limit = 0.05;
     /// beta of the added-mass springs on a static shell (coupling/added_mass.hpp); 0: none.
     double added_mass = 0.0;
-};
-
-/// A coupled shell part: the walls' driver and where its particles are in the SPH model.
-struct CoupledPart {
-    std::string name;    ///< the shell part's name (the SPH wall has the same)
-    int wall_index = -1; ///< in the SPH solver's wall list
-    std::shared_ptr<ShellWall> wall;
-    std::vector<Index> elements; ///< the part's shell elements
-    ContactSide side = ContactSide::positive;
 };
 
 /// The SPH-shell coupling as the time loop sees it (thesis sections 5.3 and 9.1): the FEM is

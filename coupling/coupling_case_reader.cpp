@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iostream>
 #include <sstream>
 #include <stdexcept>
 
@@ -204,6 +203,185 @@ void read_friction(const io::CaseTable& coupling, const sph::SphModel& sph,
     }
 }
 
+/// How to lay the wall particles of an interface (`side`, `spacing`, `layers`): a spacing
+/// between 0.2 and 1 times the bodies', enough layers to fill the kernel's `support` by
+/// default, one on the mid-surface of a part with sand on both sides.
+ShellWallLayout read_layout(const io::CaseTable& table, const sph::SphModel& sph, double support) {
+    ShellWallLayout layout;
+    const std::string side = table.choice("side", {"positive", "negative", "both"});
+    layout.side = side == "positive"   ? ContactSide::positive
+                  : side == "negative" ? ContactSide::negative
+                                       : ContactSide::both;
+    layout.spacing = table.positive_quantity_or("spacing", dim::kLength, sph.spacing());
+    if (layout.spacing > sph.spacing() * (1.0 + 1e-9) || layout.spacing < 0.2 * sph.spacing()) {
+        table.fail("spacing", "expected a wall particle spacing between 0.2 and 1 times the "
+                              "bodies' spacing");
+    }
+    const auto layers =
+        table.integer_or("layers", static_cast<int>(std::ceil(support / layout.spacing)));
+    if (layers < 1 || layers > 20) {
+        table.fail("layers", "expected 1 to 20 layers of wall particles");
+    }
+    layout.layers = static_cast<int>(layers);
+    if (layout.side == ContactSide::both) {
+        // Sand on both faces: the one layer on the mid-surface, whatever the support.
+        if (table.has("layers") && layers != 1) {
+            table.fail("layers", "a part with sand on both sides has one layer of wall "
+                                 "particles, on its mid-surface: expected layers = 1 or none");
+        }
+        layout.layers = 1;
+    }
+    return layout;
+}
+
+/// The interfaces of [coupling] as the SPH side's walls, and the coupled parts that drive them.
+struct Interfaces {
+    std::vector<CoupledPart> parts; ///< the parts that send the sand's load to the shell
+    std::vector<std::string> rigid; ///< the names of the rigid ones
+    std::vector<sph::SphModel::WallDefinition> walls;
+};
+
+/// The coupled part of one [[coupling.interface]] (its part, name and elements; `coupled`
+/// marks the elements already taken), refused when its name is taken.
+CoupledPart read_part(const io::CaseTable& table, const fem::ShellModel& fem,
+                      const Interfaces& read, std::vector<char>& coupled) {
+    const auto& names = fem.part_names();
+    CoupledPart part;
+    const int index = part_index(table, "part", names);
+    part.name = table.string_or("name", names[static_cast<std::size_t>(index)]);
+    for (const sph::SphModel::WallDefinition& other : read.walls) {
+        if (other.name == part.name) {
+            table.fail(table.has("name") ? "name" : "part",
+                       "an interface called \"" + part.name +
+                           "\" already exists: expected one interface per part, or a `name` "
+                           "for each");
+        }
+    }
+    part.elements = interface_elements(table, fem.analysis().mesh(), index, coupled);
+    return part;
+}
+
+/// One [[coupling.interface]]: its part, the wall particles laid on it (within the `spare`
+/// particles), and the SPH wall they make, added to `read`.
+void read_interface(const io::CaseTable& table, const sph::SphModel& sph, fem::ShellModel& fem,
+                    double support, std::optional<double>& spare, std::vector<char>& coupled,
+                    Interfaces& read) {
+    CoupledPart part = read_part(table, fem, read, coupled);
+    const ShellWallLayout layout = read_layout(table, sph, support);
+    refuse_oversized_interface(table, fem.analysis().mesh(), part.elements, layout, spare);
+    part.side = layout.side;
+    part.wall = std::make_shared<ShellWall>(fem.analysis(), part.elements, layout);
+    sph::SphModel::WallDefinition wall;
+    wall.name = part.name;
+    wall.points = part.wall->points();
+    wall.normals = part.wall->normals();
+    wall.samples = part.wall->samples();
+    wall.two_sided = layout.side == ContactSide::both;
+    wall.bodies = sph::read_wall_bodies(table, sph.body_names());
+    wall.spacing = layout.spacing;
+    // A rigid part keeps its wall where the shell was built (no driver) and sends no load
+    // back: the same scene with a rigid wall, one key away.
+    const bool rigid = table.boolean_or("rigid", io::default_value(kInterfaceKeys, "rigid") != 0.0);
+    wall.driver = rigid ? nullptr : part.wall;
+    read.walls.push_back(std::move(wall));
+    if (rigid) {
+        read.rigid.push_back(part.name);
+    } else {
+        read.parts.push_back(std::move(part));
+    }
+}
+
+/// Every [[coupling.interface]] (at least one), in the file's order.
+Interfaces read_interfaces(const io::CaseTable& coupling, const sph::SphModel& sph,
+                           fem::ShellModel& fem, std::optional<double> spare) {
+    const double support = sph.support_radius();
+    Interfaces read;
+    const auto interfaces = coupling.array_of_tables("interface");
+    std::vector<char> coupled(static_cast<std::size_t>(fem.analysis().mesh().element_count()), 0);
+    if (interfaces.empty()) {
+        coupling.fail("interface", "expected at least one [[coupling.interface]] table");
+    }
+    for (const io::CaseTable& table : interfaces) {
+        read_interface(table, sph, fem, support, spare, coupled, read);
+    }
+    return read;
+}
+
+/// Adds the interfaces' walls to the SPH model, builds it, and gives each coupled part the
+/// index of its wall in the solver's list.
+void build_walls(const io::CaseTable& root, sph::SphModel& sph, Interfaces& read) {
+    for (auto& wall : read.walls) {
+        sph.add_wall(std::move(wall));
+    }
+    sph.build(root);
+    const auto& sph_walls = sph.solver()->walls();
+    for (CoupledPart& part : read.parts) {
+        for (std::size_t k = 0; k < sph_walls.size(); ++k) {
+            if (sph_walls[k].name == part.name) {
+                part.wall_index = static_cast<int>(k);
+            }
+        }
+    }
+}
+
+/// The staggered window's limits (window_limits.hpp): refused when no SPH step fits in it, or
+/// when it is beyond twice its limit (unless `beyond_window_limit`), warned about when beyond
+/// the limit itself.
+WindowLimits check_window(const io::CaseTable& coupling, const CouplingSettings& settings,
+                          const sph::SphModel& sph, fem::ShellModel& fem,
+                          const std::vector<CoupledPart>& parts, double end_time) {
+    const double sph_step = sph.stable_time_step();
+    if (settings.window < sph_step * (1.0 - 1e-9)) {
+        std::ostringstream message;
+        message << "the coupling window " << settings.window << " s is shorter than the SPH step "
+                << sph_step << " s: expected a window of at least one SPH step";
+        coupling.fail("window", message.str());
+    }
+    const WindowLimits limits =
+        estimate_window_limits(sph, fem, parts, settings.relaxation, end_time, settings.added_mass);
+    const bool beyond = coupling.boolean_or(
+        "beyond_window_limit", io::default_value(kCouplingKeys, "beyond_window_limit") != 0.0);
+    if (settings.max_iterations <= 1 && !beyond) {
+        if (auto refusal =
+                window_refusal(limits, settings.window, fem.dynamic(), settings.relaxation)) {
+            coupling.fail("window", *refusal);
+        }
+    }
+    if (settings.max_iterations <= 1) {
+        if (auto warning =
+                window_warning(limits, settings.window, fem.dynamic(), settings.relaxation)) {
+            coupling.warn(*warning);
+        }
+    }
+    return limits;
+}
+
+/// Warns about a ramp of the shell's own loads over more than a few windows, and about an
+/// added mass that makes the wall follow the load late.
+void warn_about_time(const io::CaseTable& coupling, const fem::ShellModel& fem,
+                     const CouplingSettings& settings, const WindowLimits& limits,
+                     double end_time) {
+    // Time is physical in a coupled run: the ramp that orders a stand-alone static analysis's
+    // load steps would put the structure's own weight on over the run (the wagon's body carried
+    // 23 % of it when its load was heaviest with such a ramp; docs/validation/hopper_wagon.md).
+    // A ramp over a few windows (the tipping cone's plate: two) is a start-up, not that.
+    if (fem.has_ramped_loads() &&
+        fem.load_time() > std::max(settings.window, 0.1 * end_time) * (1.0 + 1e-9)) {
+        std::ostringstream warning;
+        warning << "the shell's own loads without a time function (gravity, pressures, nodal "
+                   "forces) grow linearly until [fem] load_time = "
+                << fem.load_time()
+                << " s (by default end_time); in a coupled run time is physical and a structure "
+                   "carries its weight before the sand arrives: set load_time to one window ("
+                << settings.window << " s) unless the ramp is meant";
+        coupling.warn(warning.str());
+    }
+    if (auto warning =
+            added_mass_lag_warning(limits, settings.window, settings.added_mass, end_time)) {
+        coupling.warn(*warning);
+    }
+}
+
 } // namespace
 
 std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
@@ -218,140 +396,21 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
     auto sph = sph::SphModel::read_bodies(root, scene, materials);
     auto fem = fem::ShellModel::from_case(root, scene, materials);
     const CouplingSettings settings = read_settings(coupling, *fem);
-    const double support = sph->support_radius();
-    const auto& names = fem->part_names();
-    std::vector<CoupledPart> parts;
-    std::vector<std::string> rigid_interfaces;
-    std::vector<sph::SphModel::WallDefinition> walls;
-    const auto interfaces = coupling.array_of_tables("interface");
-    std::vector<char> coupled(static_cast<std::size_t>(fem->analysis().mesh().element_count()), 0);
-    if (interfaces.empty()) {
-        coupling.fail("interface", "expected at least one [[coupling.interface]] table");
-    }
-    for (const io::CaseTable& table : interfaces) {
-        CoupledPart part;
-        const int index = part_index(table, "part", names);
-        part.name = table.string_or("name", names[static_cast<std::size_t>(index)]);
-        for (const sph::SphModel::WallDefinition& other : walls) {
-            if (other.name == part.name) {
-                table.fail(table.has("name") ? "name" : "part",
-                           "an interface called \"" + part.name +
-                               "\" already exists: expected one interface per part, or a "
-                               "`name` for each");
-            }
-        }
-        part.elements = interface_elements(table, fem->analysis().mesh(), index, coupled);
-        ShellWallLayout layout;
-        const std::string side = table.choice("side", {"positive", "negative", "both"});
-        layout.side = side == "positive"   ? ContactSide::positive
-                      : side == "negative" ? ContactSide::negative
-                                           : ContactSide::both;
-        layout.spacing = table.positive_quantity_or("spacing", dim::kLength, sph->spacing());
-        if (layout.spacing > sph->spacing() * (1.0 + 1e-9) ||
-            layout.spacing < 0.2 * sph->spacing()) {
-            table.fail("spacing", "expected a wall particle spacing between 0.2 and 1 times the "
-                                  "bodies' spacing");
-        }
-        const auto layers =
-            table.integer_or("layers", static_cast<int>(std::ceil(support / layout.spacing)));
-        if (layers < 1 || layers > 20) {
-            table.fail("layers", "expected 1 to 20 layers of wall particles");
-        }
-        layout.layers = static_cast<int>(layers);
-        if (layout.side == ContactSide::both) {
-            // Sand on both faces: the one layer on the mid-surface, whatever the support.
-            if (table.has("layers") && layers != 1) {
-                table.fail("layers", "a part with sand on both sides has one layer of wall "
-                                     "particles, on its mid-surface: expected layers = 1 or none");
-            }
-            layout.layers = 1;
-        }
-        refuse_oversized_interface(table, fem->analysis().mesh(), part.elements, layout,
-                                   spare_particles);
-        part.side = layout.side;
-        part.wall = std::make_shared<ShellWall>(fem->analysis(), part.elements, layout);
-        sph::SphModel::WallDefinition wall;
-        wall.name = part.name;
-        wall.points = part.wall->points();
-        wall.normals = part.wall->normals();
-        wall.samples = part.wall->samples();
-        wall.two_sided = layout.side == ContactSide::both;
-        wall.bodies = sph::read_wall_bodies(table, sph->body_names());
-        wall.spacing = layout.spacing;
-        // A rigid part keeps its wall where the shell was built (no driver) and sends no load
-        // back: the same scene with a rigid wall, one key away.
-        const bool rigid =
-            table.boolean_or("rigid", io::default_value(kInterfaceKeys, "rigid") != 0.0);
-        wall.driver = rigid ? nullptr : part.wall;
-        walls.push_back(std::move(wall));
-        if (rigid) {
-            rigid_interfaces.push_back(part.name);
-        } else {
-            parts.push_back(std::move(part));
-        }
-    }
-    read_friction(coupling, *sph, walls);
-    for (auto& wall : walls) {
-        sph->add_wall(std::move(wall));
-    }
-    sph->build(root);
-    const auto& sph_walls = sph->solver()->walls();
-    for (CoupledPart& part : parts) {
-        for (std::size_t k = 0; k < sph_walls.size(); ++k) {
-            if (sph_walls[k].name == part.name) {
-                part.wall_index = static_cast<int>(k);
-            }
-        }
-    }
-    const double sph_step = sph->stable_time_step();
-    if (settings.window < sph_step * (1.0 - 1e-9)) {
-        std::ostringstream message;
-        message << "the coupling window " << settings.window << " s is shorter than the SPH step "
-                << sph_step << " s: expected a window of at least one SPH step";
-        coupling.fail("window", message.str());
-    }
-    const WindowLimits limits = estimate_window_limits(*sph, *fem, parts, settings.relaxation,
-                                                       scene.end_time, settings.added_mass);
-    const bool beyond = coupling.boolean_or(
-        "beyond_window_limit", io::default_value(kCouplingKeys, "beyond_window_limit") != 0.0);
-    if (settings.max_iterations <= 1 && !beyond) {
-        if (auto refusal =
-                window_refusal(limits, settings.window, fem->dynamic(), settings.relaxation)) {
-            coupling.fail("window", *refusal);
-        }
-    }
-    if (settings.max_iterations <= 1) {
-        if (auto warning =
-                window_warning(limits, settings.window, fem->dynamic(), settings.relaxation)) {
-            std::cerr << "grainload: warning: " << *warning << '\n';
-        }
-    }
-    // Time is physical in a coupled run: the ramp that orders a stand-alone static analysis's
-    // load steps would put the structure's own weight on over the run (the wagon's body carried
-    // 23 % of it when its load was heaviest with such a ramp; docs/validation/hopper_wagon.md).
-    // A ramp over a few windows (the tipping cone's plate: two) is a start-up, not that.
-    if (fem->has_ramped_loads() &&
-        fem->load_time() > std::max(settings.window, 0.1 * scene.end_time) * (1.0 + 1e-9)) {
-        std::cerr << "grainload: warning: the shell's own loads without a time function "
-                  << "(gravity, pressures, nodal forces) grow linearly until [fem] load_time = "
-                  << fem->load_time()
-                  << " s (by default end_time); in a coupled run time is physical and a "
-                     "structure carries its weight before the sand arrives: set load_time to "
-                     "one window ("
-                  << settings.window << " s) unless the ramp is meant\n";
-    }
-    if (auto warning =
-            added_mass_lag_warning(limits, settings.window, settings.added_mass, scene.end_time)) {
-        std::cerr << "grainload: warning: " << *warning << '\n';
-    }
+    Interfaces read = read_interfaces(coupling, *sph, *fem, spare_particles);
+    read_friction(coupling, *sph, read.walls);
+    build_walls(root, *sph, read);
+    const WindowLimits limits =
+        check_window(coupling, settings, *sph, *fem, read.parts, scene.end_time);
+    warn_about_time(coupling, *fem, settings, limits, scene.end_time);
     if (settings.added_mass > 0.0) {
-        fem->analysis().set_node_springs(added_mass_springs(
-            fem->analysis().mesh(), parts, limits.sand_mass, settings.window, settings.added_mass));
+        fem->analysis().set_node_springs(added_mass_springs(fem->analysis().mesh(), read.parts,
+                                                            limits.sand_mass, settings.window,
+                                                            settings.added_mass));
     }
-    auto model =
-        std::make_unique<CoupledModel>(std::move(sph), std::move(fem), std::move(parts), settings);
+    auto model = std::make_unique<CoupledModel>(std::move(sph), std::move(fem),
+                                                std::move(read.parts), settings);
     model->set_window_limits(limits);
-    model->set_rigid_interfaces(std::move(rigid_interfaces));
+    model->set_rigid_interfaces(std::move(read.rigid));
     return model;
 }
 

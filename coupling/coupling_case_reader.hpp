@@ -87,8 +87,8 @@ inline constexpr std::array<io::KeySpec, 4> kFrictionKeys{{
 /// [[coupling.interface]] on the shell (named after its part or its `name`), friction from
 /// [[coupling.friction]] (body, interface name as `part`, mu_static, mu_kinetic), joined in one
 /// CoupledModel. `spare_particles`: the SPH particles that fit in memory beside the bodies,
-/// walls and shells (app/memory_guard.hpp); the interfaces' wall particles, counted on the
-/// shell mesh before any is laid, may not exceed them (std::nullopt: no limit).
+/// walls and shells (app/resources/memory_guard.hpp); the interfaces' wall particles, counted on
+/// the shell mesh before any is laid, may not exceed them (std::nullopt: no limit).
 std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
                                                  const io::SceneSettings& scene,
                                                  const materials::MaterialLibrary& materials,

@@ -1,10 +1,15 @@
 #pragma once
 // The coupling windows the staggered exchange can take without oscillating.
 
-#include "coupling/coupled_model.hpp"
+#include "coupling/coupled_part.hpp"
+#include "fem/shell_model.hpp"
+#include "sph/sph_model.hpp"
 
+#include <Eigen/Core>
 #include <limits>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace grainload::coupling {
 

@@ -8,8 +8,6 @@
 #include "io/keyword_deck.hpp"
 #include "io/keyword_mesh.hpp"
 
-#include <iostream>
-
 namespace grainload::fem {
 
 namespace {
@@ -40,7 +38,7 @@ ShellMesh read_gmsh_shell(const io::CaseTable& shell) {
         }
         try {
             if (io::ensure_gmsh_mesh(geo, msh, numbers)) {
-                std::cerr << "grainload: meshed " << geo << " with gmsh into " << msh << '\n';
+                shell.notify("grainload: meshed " + geo + " with gmsh into " + msh);
             }
         } catch (const std::invalid_argument& e) {
             shell.fail("geo", e.what());

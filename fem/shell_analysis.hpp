@@ -6,6 +6,7 @@
 #include "fem/shell_directors.hpp"
 #include "fem/shell_mesh.hpp"
 #include "fem/sparse_solver.hpp"
+#include "fem/static_system.hpp"
 #include "fem/stored_stiffness.hpp"
 
 #include <Eigen/SparseCore>
@@ -29,7 +30,7 @@ struct ShellPart {
 /// A shell structure under static loads: MITC4 elements on a ShellMesh, 6 DOF per node
 /// (u_x, u_y, u_z, theta_x, theta_y, theta_z; rotations as global rotation vectors), fixed and
 /// prescribed DOFs, and a reference load vector scaled by the load factor lambda.
-class ShellAnalysis {
+class ShellAnalysis final : public StaticSystem {
   public:
     /// Several parts (silo wall and hopper, a wagon's sheets): one system of equations.
     ShellAnalysis(ShellMesh mesh, std::vector<ShellPart> parts, Kinematics kinematics);
@@ -74,7 +75,7 @@ class ShellAnalysis {
     void prescribe_rigid_rotation(const std::vector<Index>& nodes, const Vec3& axis,
                                   const Vec3& point, double angle);
     /// Values of all constrained DOFs at load factor `lambda` (zero at free DOFs).
-    Eigen::VectorXd prescribed_at(double lambda) const;
+    Eigen::VectorXd prescribed_at(double lambda) const override;
     /// Reference loads (scaled by f(lambda)): a nodal force/moment component; a force per unit
     /// mid-surface area (gravity: rho t g); a pressure along the initial element normal.
     void add_nodal_load(Index node, int dof, double value);
@@ -103,7 +104,7 @@ class ShellAnalysis {
     void set_load_factor(double lambda) { load_factor_ = lambda; }
     /// All DOF values: translations and (linear kinematics) rotation vectors / (total
     /// Lagrangian) sums of the rotation increments.
-    const Eigen::VectorXd& dofs() const { return dofs_; }
+    const Eigen::VectorXd& dofs() const override { return dofs_; }
     Vec3 displacement(Index node) const;
     /// Total rotation vector of the node (log of its rotation matrix).
     Vec3 rotation(Index node) const;
@@ -128,7 +129,7 @@ class ShellAnalysis {
     Eigen::VectorXd reactions();
     /// The DOFs neither fixed nor prescribed (counted before the equations are numbered too:
     /// `grainload check` sizes a shell alone before any solve).
-    Index free_dof_count() const;
+    Index free_dof_count() const override;
     /// The elements with their stresses at the committed state (evaluated here first when a
     /// stored stiffness left them behind).
     const std::vector<Mitc4Shell>& elements() const;
@@ -140,7 +141,8 @@ class ShellAnalysis {
     /// with `prescribed` (full-size DOF values) also coupling = K * prescribed over all DOFs
     /// (computed only with the tangent, unless the stiffness is stored).
     void assemble(SparseSolver::Matrix* tangent, Eigen::VectorXd& internal,
-                  const Eigen::VectorXd* prescribed = nullptr, Eigen::VectorXd* coupling = nullptr);
+                  const Eigen::VectorXd* prescribed = nullptr,
+                  Eigen::VectorXd* coupling = nullptr) override;
     /// Keep the stiffness of a linear shell (while constant_tangent() holds): assembled once
     /// over all DOFs (fem/stored_stiffness.hpp), it gives assemble() the internal force K u, the
     /// prescribed DOFs' coupling and the tangent without the element loop, and the element
@@ -149,21 +151,23 @@ class ShellAnalysis {
     /// one matrix more.
     void store_stiffness() { store_stiffness_ = true; }
     /// True when assemble() works from the stored stiffness.
-    bool uses_stored_stiffness() const { return store_stiffness_ && constant_tangent(); }
+    bool uses_stored_stiffness() const override { return store_stiffness_ && constant_tangent(); }
     /// Load factor at which assemble() evaluates the follower loads (they depend on the state,
     /// so they are assembled with the internal forces, with their load stiffness).
-    void set_assembly_load_factor(double lambda) { assembly_load_factor_ = lambda; }
+    void set_assembly_load_factor(double lambda) override { assembly_load_factor_ = lambda; }
     /// True when the tangent never changes: linear kinematics, linear elastic parts and no
     /// follower or moment loads (a factorisation can then be reused from step to step).
-    bool constant_tangent() const;
+    bool constant_tangent() const override;
     /// True when the supports prescribe a motion (a non-zero prescribed DOF or a rigid rotation
     /// of a node set), which a rigid wall in the shell's place would have to follow too.
     bool prescribes_motion() const;
     /// False when the tangent has a non-symmetric part (moment or follower loads).
-    bool tangent_symmetric() const { return !has_moment_loads_ && follower_pressures_.empty(); }
+    bool tangent_symmetric() const override {
+        return !has_moment_loads_ && follower_pressures_.empty();
+    }
     /// Add a full-size DOF increment to the state (translations add; rotations compose).
-    void update_state(const Eigen::VectorXd& increment);
-    const std::vector<Index>& equation_numbers();
+    void update_state(const Eigen::VectorXd& increment) override;
+    const std::vector<Index>& equation_numbers() override;
     /// The loads of history 0.
     const Eigen::VectorXd& reference_load() const { return histories_.front().load; }
     /// A spring between a node's translations and their committed values (the state at the
@@ -180,7 +184,7 @@ class ShellAnalysis {
     /// forces the SPH side returns to the walls (thesis section 5.3); zero by default.
     void set_additional_forces(const Eigen::VectorXd& forces) { additional_forces_ = forces; }
     /// Everything applied at load factor `lambda`: sum_h f_h(lambda) * loads_h + additional.
-    Eigen::VectorXd applied_forces(double lambda) const;
+    Eigen::VectorXd applied_forces(double lambda) const override;
     void commit();
     void revert_to_committed();
     /// Binary restart state (load factor, DOFs, rotations, integration points); read_state

@@ -10,7 +10,7 @@ constexpr double kBalanceFractionWithoutForceCriterion = 1e-10;
 
 } // namespace
 
-StaticIncrement::StaticIncrement(ShellAnalysis& analysis, double from, double to,
+StaticIncrement::StaticIncrement(StaticSystem& analysis, double from, double to,
                                  const NewtonSettings& settings)
     : analysis_(analysis), equation_(analysis.equation_numbers()),
       force_tolerance_(settings.force_tolerance > 0.0 ? settings.force_tolerance

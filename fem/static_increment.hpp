@@ -1,13 +1,13 @@
 #pragma once
-// A static load increment of a shell structure as the operator of its Newton solve.
+// A static load increment of a structure as the operator of its Newton solve.
 
 #include "fem/newton_solver.hpp"
-#include "fem/shell_analysis.hpp"
+#include "fem/static_system.hpp"
 
 namespace grainload::fem {
 
-/// A static load increment of a ShellAnalysis as the operator of its Newton solve (thesis
-/// Table 5.2.2): residual F(to) - Fu(i) over the free DOFs, the tangent K, and additive
+/// A static load increment of a StaticSystem (a ShellAnalysis) as the operator of its Newton solve
+/// (thesis Table 5.2.2): residual F(to) - Fu(i) over the free DOFs, the tangent K, and additive
 /// (rotations: multiplicative) state updates. Prescribed increments enter the first iteration
 /// through the right-hand side, -K_fp dU_p, with the tangent of the converged state (Bathe FEP
 /// section 8.4): imposing them on the state first would strain only the elements next to the
@@ -15,8 +15,7 @@ namespace grainload::fem {
 class StaticIncrement final : public NewtonOperator {
   public:
     /// The increment of `analysis` from load factor `from` to `to`.
-    StaticIncrement(ShellAnalysis& analysis, double from, double to,
-                    const NewtonSettings& settings);
+    StaticIncrement(StaticSystem& analysis, double from, double to, const NewtonSettings& settings);
 
     Eigen::VectorXd residual(int iteration, SparseSolver::Matrix* tangent) override;
     bool in_balance(const Eigen::VectorXd& residual) const override;
@@ -29,7 +28,7 @@ class StaticIncrement final : public NewtonOperator {
     const std::vector<Index>& equation_numbers() const override { return equation_; }
 
   private:
-    ShellAnalysis& analysis_;
+    StaticSystem& analysis_;
     const std::vector<Index>& equation_;
     double force_tolerance_;
     Eigen::VectorXd prescribed_increment_;

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <toml++/toml.h>
 #include <unordered_set>
+#include <utility>
 
 namespace grainload::io {
 
@@ -16,6 +17,7 @@ struct CaseDocument::Impl {
     toml::table root;
     std::unordered_set<const toml::node*> used;
     DeckLedger decks;
+    std::vector<std::string> notices;
 };
 
 CaseDocument::CaseDocument() : impl_(std::make_unique<Impl>()) {}
@@ -23,6 +25,14 @@ CaseDocument::~CaseDocument() = default;
 
 DeckLedger& CaseDocument::deck_ledger() {
     return impl_->decks;
+}
+
+void CaseDocument::notify(std::string line) {
+    impl_->notices.push_back(std::move(line));
+}
+
+std::vector<std::string> CaseDocument::take_notices() {
+    return std::exchange(impl_->notices, {});
 }
 
 namespace {

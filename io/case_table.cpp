@@ -72,6 +72,14 @@ void CaseTable::fail(std::string_view key, std::string_view message) const {
     throw CaseError(where(key) + ": " + std::string(message));
 }
 
+void CaseTable::warn(std::string_view text) const {
+    notify("grainload: warning: " + std::string(text));
+}
+
+void CaseTable::notify(std::string line) const {
+    document_->notify(std::move(line));
+}
+
 std::string CaseTable::where(std::string_view key) const {
     const toml::node* node =
         key.empty() ? nullptr : (overlay_ != nullptr ? overlay_->get(key) : nullptr);

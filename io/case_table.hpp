@@ -101,6 +101,11 @@ class CaseTable {
     /// Where fail() would locate `key`: "case.toml:12:1: key 'sph.sink[0].min'", for a warning
     /// that names its key as an error does.
     std::string where(std::string_view key) const;
+    /// A warning for the user, "grainload: warning: TEXT", kept with the document's notices
+    /// (CaseDocument::take_notices) for the reader's caller to print.
+    void warn(std::string_view text) const;
+    /// A line for the user (a note, what was done for the case), kept as warn() keeps warnings.
+    void notify(std::string line) const;
 
     /// Dimension of the scene (2 or 3), needed to read vectors; set from [case].dimension.
     int spatial_dimension() const;
@@ -143,6 +148,10 @@ class CaseDocument {
     void mark_used(const toml::node* node);
     /// What the readers took from the LS-DYNA decks the case names (io/deck_ledger.hpp).
     DeckLedger& deck_ledger();
+    /// The lines the readers had for the user (CaseTable::warn, notify), in the order they came,
+    /// and forgets them: the library prints nothing, its caller prints these on stderr.
+    void notify(std::string line);
+    std::vector<std::string> take_notices();
     /// Throw CaseError for the first key that no reader asked for.
     void reject_unknown_keys() const;
     /// The full paths ("sph.body[0].spacing") of the values the readers took, in file order:

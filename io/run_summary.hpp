@@ -40,7 +40,7 @@ struct RunSummary {
     std::optional<double> estimated_steps;
     std::optional<double> estimated_wall_time; ///< s
     /// The shell's factorisations and back-substitutions the estimate foresaw (with a shell)
-    /// and the calibration it used (app/calibration.hpp, describe_calibration).
+    /// and the calibration it used (app/resources/calibration.hpp, describe_calibration).
     std::optional<double> estimated_factorisations;
     std::optional<double> estimated_back_substitutions;
     std::string estimate_calibration;

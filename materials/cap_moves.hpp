@@ -1,6 +1,6 @@
 #pragma once
 
-#include "materials/cap_return.hpp"
+#include "materials/cap_values.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "materials/cap_moves.hpp"
-#include "materials/cap_return.hpp"
+#include "materials/cap_values.hpp"
 
 #include <span>
 

@@ -9,7 +9,6 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
-#include <iostream>
 #include <optional>
 #include <sstream>
 #include <vector>
@@ -364,10 +363,12 @@ std::unique_ptr<Material> material_from_lsdyna(const io::CaseTable& table) {
     }
     source.deck_ledger().take(path, m.file, m.line);
     if (const std::string odd = implausible_values(m, *units); !odd.empty()) {
-        std::cerr << "grainload: warning: " << table.where("from_lsdyna") << ": material \""
-                  << table.string("name") << "\" (MID " << mid.front() << " of "
-                  << std::filesystem::path(path).filename().string() << ") " << odd
-                  << ": expected the deck's own unit system in from_lsdyna.units\n";
+        std::ostringstream warning;
+        warning << table.where("from_lsdyna") << ": material \"" << table.string("name")
+                << "\" (MID " << mid.front() << " of "
+                << std::filesystem::path(path).filename().string() << ") " << odd
+                << ": expected the deck's own unit system in from_lsdyna.units";
+        table.warn(warning.str());
     }
     const ElasticConstants elastic =
         m.elastic.scaled(ElasticConstants::read_stiffness_scale(table));

@@ -7,7 +7,6 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
-#include <iostream>
 #include <optional>
 #include <stdexcept>
 
@@ -240,9 +239,12 @@ void write_material_point_csv(const Material& material,
     }
 }
 
-int run_material_point(const std::string& driver_file, const std::string& csv_out) {
-    const auto document = io::CaseDocument::from_file(driver_file);
-    const io::CaseTable root = document->root();
+namespace {
+
+/// run_material_point on the read `document`; the path's failure is its last notice.
+int drive_from(io::CaseDocument& document, const std::string& driver_file,
+               const std::string& csv_out) {
+    const io::CaseTable root = document.root();
     const std::vector<io::CaseTable> materials = root.array_of_tables("material");
     if (materials.size() != 1) {
         root.fail("material", "a material-point driver needs exactly one [[material]] table");
@@ -250,7 +252,7 @@ int run_material_point(const std::string& driver_file, const std::string& csv_ou
     materials.front().string_or("name", "");
     const auto material = make_material(materials.front());
     const MaterialPointPath path = read_material_point_path(root.table("path"));
-    document->reject_unknown_keys();
+    document.reject_unknown_keys();
 
     std::vector<MaterialPointRecord> records;
     int code = 0;
@@ -259,11 +261,27 @@ int run_material_point(const std::string& driver_file, const std::string& csv_ou
     } catch (const io::CaseError&) {
         throw;
     } catch (const std::runtime_error& error) {
-        std::cerr << driver_file << ": " << error.what() << '\n';
+        document.notify(driver_file + ": " + error.what());
         code = 1;
     }
     io::write_file_atomically(
         csv_out, [&](std::ostream& out) { write_material_point_csv(*material, records, out); });
+    return code;
+}
+
+} // namespace
+
+int run_material_point(const std::string& driver_file, const std::string& csv_out,
+                       std::vector<std::string>& notices) {
+    const auto document = io::CaseDocument::from_file(driver_file);
+    int code = 0;
+    try {
+        code = drive_from(*document, driver_file, csv_out);
+    } catch (...) {
+        notices = document->take_notices();
+        throw;
+    }
+    notices = document->take_notices();
     return code;
 }
 

@@ -59,6 +59,9 @@ void write_material_point_csv(const Material& material,
 /// `grainload matpoint DRIVER.toml --out FILE.csv`: read the driver (one [[material]] and a
 /// [path]), run it and write the CSV. Returns 0 on success and 1 when the path cannot be
 /// followed (the rows computed so far are still written); io::CaseError propagates.
-int run_material_point(const std::string& driver_file, const std::string& csv_out);
+/// `notices`: the lines for the user on stderr, in order (the reading's warnings, then the
+/// path's failure), filled also when it throws.
+int run_material_point(const std::string& driver_file, const std::string& csv_out,
+                       std::vector<std::string>& notices);
 
 } // namespace grainload::materials

@@ -44,7 +44,7 @@ The kinds, each a precise rule (what a newcomer's page may not say):
   missing-path  a path starting with a top-level folder of the tree (app/, docs/, cases/, ...)
                 that names nothing tracked, anywhere but in an #include (the compiler checks
                 those, and they may name a generated header). Globs (`cases/*/*_small.toml`)
-                and braces (`app/trade_{command,grid}.{hpp,cpp}`) are expanded and must match
+                and braces (`app/trade/trade_{command,grid}.{hpp,cpp}`) are expanded and must match
                 something; an upper-case word (`cases/NAME/NAME_small.toml`) or <...> is a
                 placeholder. Not missing: a path git ignores (a mesh a .geo makes, build/, out/:
                 a product of a run or a build), a name without its suffix (`bench/sph_throughput`:

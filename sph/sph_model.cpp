@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iostream>
 #include <limits>
 #include <sstream>
 #include <utility>
@@ -109,7 +108,7 @@ void SphModel::build(const io::CaseTable& root) {
         if (const std::string warning =
                 impact_warning(particles(), body_names_, solver_->options().contact.stiffness);
             !warning.empty()) {
-            std::cerr << "grainload: warning: " << warning << '\n';
+            sph.warn(warning);
         }
     }
     build_outlets(sph);
@@ -164,7 +163,7 @@ void SphModel::check_start(const io::CaseTable& sph) const {
         }
     }
     for (const std::string& warning : warnings) {
-        std::cerr << "grainload: warning: " << warning << '\n';
+        sph.warn(warning);
     }
 }
 
@@ -290,7 +289,7 @@ void SphModel::add_body(const io::CaseTable& body, int dimension) {
         generate_body_points(body.table("shape"), spacing, dimension, law.density(), &rounded);
     // Said once the sources are known (check_start): a seed layer a source fills is no warning.
     thin_warnings_.push_back(thin_body_warning(points, spacing, dimension, name));
-    report_rounding(name, rounded, spacing);
+    report_rounding(body, name, rounded, spacing);
     const double particle_mass = law.density() * std::pow(spacing, dimension);
     const int body_index = static_cast<int>(body_names_.size());
     const Index first = particles_.size();
@@ -313,8 +312,8 @@ void SphModel::add_body(const io::CaseTable& body, int dimension) {
     body_material_.push_back(material);
 }
 
-void SphModel::report_rounding(const std::string& body, const std::vector<RoundedSize>& rounded,
-                               double spacing) {
+void SphModel::report_rounding(const io::CaseTable& table, const std::string& body,
+                               const std::vector<RoundedSize>& rounded, double spacing) {
     if (rounded.empty()) {
         return;
     }
@@ -331,8 +330,8 @@ void SphModel::report_rounding(const std::string& body, const std::vector<Rounde
             "the size drawn along " + axis + "; the value is the extent of the particles' cells";
         body_sizes_.push_back({"body_" + body + "_size_" + axis, r.filled, "m", r.drawn, source});
     }
-    note << " summary.json: body_" << body << "_size_*\n";
-    std::cerr << note.str();
+    note << " summary.json: body_" << body << "_size_*";
+    table.notify(note.str());
 }
 
 double SphModel::stable_time_step() const {

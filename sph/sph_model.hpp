@@ -144,10 +144,10 @@ class SphModel final : public io::Stepper {
     SphModel(const materials::MaterialLibrary& materials) : materials_(&materials) {}
     std::vector<FrictionPair> added_wall_friction(const std::vector<Wall>& walls) const;
     void add_body(const io::CaseTable& body, int dimension);
-    /// Says (on stderr, so in `grainload check` too) where the lattice filled `body` to another
-    /// size than drawn, and keeps the sizes for summary.json.
-    void report_rounding(const std::string& body, const std::vector<RoundedSize>& rounded,
-                         double spacing);
+    /// Says (a notice of the body's `table`, on stderr, so in `grainload check` too) where the
+    /// lattice filled `body` to another size than drawn, and keeps the sizes for summary.json.
+    void report_rounding(const io::CaseTable& table, const std::string& body,
+                         const std::vector<RoundedSize>& rounded, double spacing);
     void compute_accelerations();
     void build_solver(const io::CaseTable& sph);
     const std::string& body_name(int body_id) const;

@@ -9,7 +9,7 @@ namespace grainload::bench {
 
 /// Seconds per SPH step of one thread: per neighbour-list entry between body particles and
 /// between a body and a wall particle (contact), per body particle and per wall particle
-/// (app/calibration.hpp).
+/// (app/resources/calibration.hpp).
 struct SphCosts {
     double entry = 0.0;
     double contact_entry = 0.0;
@@ -35,7 +35,7 @@ struct CalibrationFile {
     bool quiet = false;
 };
 
-/// Writes `c` as the JSON file app/calibration.hpp reads (atomically), dated now.
+/// Writes `c` as the JSON file app/resources/calibration.hpp reads (atomically), dated now.
 void write_calibration(const std::string& path, const CalibrationFile& c);
 
 } // namespace grainload::bench

@@ -1,6 +1,6 @@
 #include "support/machine_load.hpp"
 
-#include "app/thread_count.hpp"
+#include "app/resources/thread_count.hpp"
 
 #include <algorithm>
 #include <chrono>

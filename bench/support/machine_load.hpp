@@ -1,13 +1,13 @@
 #pragma once
 
-#include "app/thread_count.hpp"
+#include "app/resources/thread_count.hpp"
 
 #include <vector>
 
 namespace grainload::bench {
 
 /// How busy the machine is apart from this process: the busy share of each CPU's ticks in
-/// /proc/stat (app/thread_count.hpp), summed, less this process's own CPU time (all its
+/// /proc/stat (app/resources/thread_count.hpp), summed, less this process's own CPU time (all its
 /// threads, and the children it waited for) over the wall time between start() and
 /// others_cores(), in cores. A calibration reads it
 /// to know whether its wall-time ratios (the speed-up of several threads) met a quiet machine.

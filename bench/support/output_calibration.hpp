@@ -5,7 +5,7 @@
 namespace grainload::bench {
 
 /// A frame's fixed cost and its cost per point written (particle, wall particle or shell node)
-/// [CPU s] (app/calibration.hpp, seconds_per_frame and seconds_per_frame_point).
+/// [CPU s] (app/resources/calibration.hpp, seconds_per_frame and seconds_per_frame_point).
 struct FrameCosts {
     double per_frame = 0.0;
     double per_point = 0.0;
@@ -22,8 +22,8 @@ struct FrameCosts {
 FrameCosts frame_costs(const std::string& small, const std::string& large, double end);
 
 /// A model step's fixed cost, whatever its particles: the parallel loops' entries and exits, the
-/// energy books, the watches, the time loop's checks [CPU s of one thread] (app/calibration.hpp,
-/// seconds_per_step_2d and _3d).
+/// energy books, the watches, the time loop's checks [CPU s of one thread]
+/// (app/resources/calibration.hpp, seconds_per_step_2d and _3d).
 struct StepCosts {
     double per_step_2d = 0.0;
     double per_step_3d = 0.0;

@@ -2,8 +2,9 @@
 
 namespace grainload::bench {
 
-/// What a shell's steps cost on this machine, in CPU seconds of this process (app/calibration.hpp,
-/// the shell_* figures; app/shell_cost.hpp says what each is paid for).
+/// What a shell's steps cost on this machine, in CPU seconds of this process
+/// (app/resources/calibration.hpp, the shell_* figures; app/resources/shell_cost.hpp says what each
+/// is paid for).
 struct ShellCosts {
     double factorisation_seconds = 0.0; ///< one factorisation of the plate's tangent
     double factorisation_dofs = 0.0;    ///< its free DOFs

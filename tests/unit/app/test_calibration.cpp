@@ -1,9 +1,9 @@
-// The calibration `grainload check` estimates with (app/calibration.hpp): a file whose speed-up
-// of several threads is below 1 contradicts itself (more threads cannot be slower on a quiet
-// machine; the measurement met a busy one) and its speed-up is discarded, the costs kept; the
+// The calibration `grainload check` estimates with (app/resources/calibration.hpp): a file whose
+// speed-up of several threads is below 1 contradicts itself (more threads cannot be slower on a
+// quiet machine; the measurement met a busy one) and its speed-up is discarded, the costs kept; the
 // description says which file, how busy the machine was, and what was discarded.
 
-#include "app/calibration.hpp"
+#include "app/resources/calibration.hpp"
 #include "support/test_folder.hpp"
 
 #include <cstdlib>

@@ -3,8 +3,8 @@
 // arithmetic: the step's fixed cost once per SPH step on any thread count, the formulation's
 // factor on the particles' costs, and nothing for particles in free flight.
 
-#include "app/calibration.hpp"
 #include "app/cost_estimate.hpp"
+#include "app/resources/calibration.hpp"
 #include "app/scene.hpp"
 #include "support/cli_runner.hpp"
 

@@ -2,8 +2,8 @@
 // samples whose busy fractions are known, and the parser on the layout proc(5) documents; the
 // OpenMP waiting it chooses and the count it hands to the program run again.
 
-#include "app/openmp_wait.hpp"
-#include "app/thread_count.hpp"
+#include "app/resources/openmp_wait.hpp"
+#include "app/resources/thread_count.hpp"
 
 #include <cstdlib>
 #include <gtest/gtest.h>

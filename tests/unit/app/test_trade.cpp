@@ -5,8 +5,8 @@
 // worked by hand for each table.
 
 #include "app/cost_estimate.hpp"
-#include "app/trade_grid.hpp"
-#include "app/trade_table.hpp"
+#include "app/trade/trade_grid.hpp"
+#include "app/trade/trade_table.hpp"
 #include "io/case_error.hpp"
 #include "io/run_summary.hpp"
 

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace grainload::materials {
 namespace {
@@ -122,7 +123,8 @@ strain_increment = { xx = 0.01 }
 stress = { yy = "0 Pa", zz = "0 Pa" }
 )");
     const std::string csv = grainload::testing::process_folder() + "vm_driver.csv";
-    ASSERT_EQ(run_material_point(driver, csv), 0);
+    std::vector<std::string> notices;
+    ASSERT_EQ(run_material_point(driver, csv, notices), 0);
     const auto lines = lines_of(csv);
     ASSERT_EQ(lines.size(), 12u);
     EXPECT_EQ(lines[0], "step,strain_xx,strain_yy,strain_zz,strain_xy,strain_yz,strain_zx,"
@@ -148,7 +150,11 @@ steps = 6
 stress = { xx = "300 MPa", yy = "0 Pa", zz = "0 Pa" }
 )");
     const std::string csv = grainload::testing::process_folder() + "vm_limit.csv";
-    EXPECT_EQ(run_material_point(driver, csv), 1);
+    std::vector<std::string> notices;
+    EXPECT_EQ(run_material_point(driver, csv, notices), 1);
+    // The path's failure is handed to the command line to print, naming the driver.
+    ASSERT_EQ(notices.size(), 1u);
+    EXPECT_EQ(notices.front().rfind(driver + ": ", 0), 0u) << notices.front();
     EXPECT_EQ(lines_of(csv).size(), 1u + 1u + 5u); // header, step 0, 200 ... 250 MPa
 }
 
@@ -159,8 +165,10 @@ TEST(MaterialPointDriver, UnknownKeysAreRejected) {
 steps = 1
 strain_incremnt = { xx = 0.001 }
 )");
-    EXPECT_THROW(run_material_point(driver, grainload::testing::process_folder() + "typo.csv"),
-                 io::CaseError);
+    std::vector<std::string> notices;
+    EXPECT_THROW(
+        run_material_point(driver, grainload::testing::process_folder() + "typo.csv", notices),
+        io::CaseError);
 }
 
 } // namespace

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <numbers>
 #include <string>
+#include <vector>
 
 namespace grainload::materials {
 namespace {
@@ -153,8 +154,9 @@ TEST(MatpointCases, ExampleDriversRunAndTriaxialPeakIsMohrCoulomb) {
     const std::string dir = std::string(GRAINLOAD_SOURCE_DIR) + "/cases/matpoint/";
     for (const char* name : {"triaxial_dp", "hydrostatic_dp", "uniaxial_vm_cycle", "triaxial_cap",
                              "hydrostatic_cap", "oedometer_cap_wagon"}) {
+        std::vector<std::string> notices;
         EXPECT_EQ(run_material_point(dir + name + ".toml",
-                                     grainload::testing::process_folder() + name + ".csv"),
+                                     grainload::testing::process_folder() + name + ".csv", notices),
                   0)
             << name;
     }

@@ -1,4 +1,4 @@
-#include "app/process_pool.hpp"
+#include "app/resources/process_pool.hpp"
 
 #include <cerrno>
 #include <chrono>

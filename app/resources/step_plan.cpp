@@ -1,4 +1,4 @@
-#include "app/step_plan.hpp"
+#include "app/resources/step_plan.hpp"
 
 #include <algorithm>
 #include <cmath>

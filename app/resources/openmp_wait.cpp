@@ -1,6 +1,6 @@
-#include "app/openmp_wait.hpp"
+#include "app/resources/openmp_wait.hpp"
 
-#include "app/thread_count.hpp"
+#include "app/resources/thread_count.hpp"
 
 #include <cstdlib>
 #include <string>

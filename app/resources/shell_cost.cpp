@@ -1,4 +1,4 @@
-#include "app/shell_cost.hpp"
+#include "app/resources/shell_cost.hpp"
 
 #include "fem/shell_model.hpp"
 

@@ -1,4 +1,4 @@
-#include "app/trade_table.hpp"
+#include "app/trade/trade_table.hpp"
 
 #include "io/atomic_file.hpp"
 #include "io/case_error.hpp"

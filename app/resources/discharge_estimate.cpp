@@ -1,4 +1,4 @@
-#include "app/discharge_estimate.hpp"
+#include "app/resources/discharge_estimate.hpp"
 
 #include "sph/sph_model.hpp"
 

@@ -1,7 +1,7 @@
 #pragma once
 // The table of a grainload trade sweep: each run's figures against the most accurate run's.
 
-#include "app/trade_grid.hpp"
+#include "app/trade/trade_grid.hpp"
 
 #include <optional>
 #include <string>

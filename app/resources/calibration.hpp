@@ -68,8 +68,8 @@ struct Calibration {
     /// buffers. Peak resident set of `grainload run` on the CI free fall (128 particles): 22.3
     /// MiB.
     double baseline_bytes = 23.4e6;
-    /// Shell FEM, in CPU seconds of the process (app/shell_cost.hpp counts what each is paid
-    /// for; CHOLMOD's BLAS may run threads of its own, whose time this includes). Built-in:
+    /// Shell FEM, in CPU seconds of the process (app/resources/shell_cost.hpp counts what each is
+    /// paid for; CHOLMOD's BLAS may run threads of its own, whose time this includes). Built-in:
     /// bench/sph_throughput --calibrate (a 72 x 72 linear elastic plate of 31 110 free DOFs,
     /// a ShellModel as the coupling drives it) on the 2-core development machine, typical of
     /// four measurements under a load of 7-9 (2026-12-05).

@@ -1,7 +1,7 @@
 #pragma once
 // The grainload trade command: a sweep of case-key values run as subprocesses.
 
-#include "app/trade_grid.hpp"
+#include "app/trade/trade_grid.hpp"
 
 #include <optional>
 #include <string>

@@ -1,4 +1,4 @@
-#include "app/trade_grid.hpp"
+#include "app/trade/trade_grid.hpp"
 
 #include "io/case_error.hpp"
 #include "io/units.hpp"

@@ -1,6 +1,6 @@
-#include "app/memory_guard.hpp"
+#include "app/resources/memory_guard.hpp"
 
-#include "app/calibration.hpp"
+#include "app/resources/calibration.hpp"
 #include "sph/particle_estimate.hpp"
 
 #include <algorithm>
@@ -60,7 +60,7 @@ double generated_nodes(const io::CaseTable& shell, const std::string& generator)
 }
 
 /// The generated shells' memory: 6 DOFs per node at Calibration::shell_bytes_per_dof (the
-/// factor of the 256 x 256 plate, app/cost_estimate.hpp), and the largest of them.
+/// factor of the 256 x 256 plate, app/resources/calibration.hpp), and the largest of them.
 ShellCount estimate_shells(const io::CaseTable& root) {
     ShellCount largest;
     const auto fem = root.optional_table("fem");

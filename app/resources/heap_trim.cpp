@@ -1,4 +1,4 @@
-#include "app/heap_trim.hpp"
+#include "app/resources/heap_trim.hpp"
 
 #include <cstdlib> // defines __GLIBC__ where glibc is the C library
 

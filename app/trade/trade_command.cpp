@@ -1,9 +1,9 @@
-#include "app/trade_command.hpp"
+#include "app/trade/trade_command.hpp"
 
-#include "app/memory_guard.hpp"
-#include "app/process_pool.hpp"
+#include "app/resources/memory_guard.hpp"
+#include "app/resources/process_pool.hpp"
 #include "app/scene.hpp"
-#include "app/trade_table.hpp"
+#include "app/trade/trade_table.hpp"
 #include "io/atomic_file.hpp"
 #include "io/case_error.hpp"
 #include "io/case_table.hpp"

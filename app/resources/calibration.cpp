@@ -1,4 +1,4 @@
-#include "app/calibration.hpp"
+#include "app/resources/calibration.hpp"
 
 #include "io/json_value.hpp"
 

@@ -1,4 +1,4 @@
-#include "app/thread_count.hpp"
+#include "app/resources/thread_count.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -1,8 +1,8 @@
 #pragma once
 // What a shell's steps will cost in factorisations and back-substitutions, before the run.
 
-#include "app/calibration.hpp"
-#include "app/step_plan.hpp"
+#include "app/resources/calibration.hpp"
+#include "app/resources/step_plan.hpp"
 
 #include <vector>
 

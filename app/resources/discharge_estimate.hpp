@@ -1,7 +1,7 @@
 #pragma once
 // The particles sources create and sinks take over a run, and the step while sand flows.
 
-#include "app/step_plan.hpp"
+#include "app/resources/step_plan.hpp"
 #include "io/types.hpp"
 
 namespace grainload::sph {
