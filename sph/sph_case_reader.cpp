@@ -111,7 +111,9 @@ struct WallSurface {
 WallSurface wall_surface(const io::CaseTable& wall, int dimension, double spacing, int layers) {
     const std::string type = wall.choice("type", {"plane", "box", "mesh"});
     if (type == "mesh") {
-        MeshWallSamples mesh = read_mesh_wall_points(wall, dimension, spacing, layers);
+        MeshWallSamples mesh = read_mesh_wall_points(
+            wall, dimension, spacing, layers,
+            wall.boolean_or("flip_normals", io::default_value(kWallKeys, "flip_normals") != 0.0));
         return {std::move(mesh.points), {}, std::move(mesh.samples)};
     }
     if (type == "box") {

@@ -2,7 +2,6 @@
 
 #include "io/case_table.hpp"
 #include "io/surface_mesh_reader.hpp"
-#include "sph/sph_case_reader.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -214,7 +213,7 @@ MeshWallSamples mesh_wall_points(const io::SurfaceMesh& mesh, double spacing, in
 }
 
 MeshWallSamples read_mesh_wall_points(const io::CaseTable& wall, int dimension, double spacing,
-                                      int layers) {
+                                      int layers, bool flip_normals) {
     const io::SurfaceMesh mesh = io::read_surface_mesh(wall);
     const auto faces = mesh.triangles.size() + mesh.quads.size();
     if (dimension == 2 && mesh.segments.empty()) {
@@ -226,9 +225,7 @@ MeshWallSamples read_mesh_wall_points(const io::CaseTable& wall, int dimension, 
         wall.fail("file", "a 3D mesh wall needs triangles or quadrangles; this mesh has " +
                               std::to_string(mesh.segments.size()) + " lines and no faces");
     }
-    return mesh_wall_points(
-        mesh, spacing, layers, dimension,
-        wall.boolean_or("flip_normals", io::default_value(kWallKeys, "flip_normals") != 0.0));
+    return mesh_wall_points(mesh, spacing, layers, dimension, flip_normals);
 }
 
 } // namespace grainload::sph

@@ -40,9 +40,9 @@ double mesh_wall_sample_bound(const io::SurfaceMesh& mesh, double spacing, int l
                               int dimension);
 
 /// mesh_wall_points for a [[sph.wall]] of type = "mesh": the mesh of its `file` (see
-/// io::read_surface_mesh) and `flip_normals` (default false). Refused when the mesh has no
-/// faces (3D) or no line segments (plane strain).
+/// io::read_surface_mesh), with the wall's `flip_normals` as its reader read it. Refused when
+/// the mesh has no faces (3D) or no line segments (plane strain).
 MeshWallSamples read_mesh_wall_points(const io::CaseTable& wall, int dimension, double spacing,
-                                      int layers);
+                                      int layers, bool flip_normals);
 
 } // namespace grainload::sph

@@ -240,7 +240,7 @@ std::string wall_error(const std::string& body, int dimension) {
     auto document = io::CaseDocument::from_string("[wall]\n" + body, mesh_path("case.toml"));
     document->spatial_dimension = dimension;
     try {
-        read_mesh_wall_points(document->root().table("wall"), dimension, 0.1, 2);
+        read_mesh_wall_points(document->root().table("wall"), dimension, 0.1, 2, false);
     } catch (const io::CaseError& error) {
         return error.what();
     }
@@ -248,10 +248,10 @@ std::string wall_error(const std::string& body, int dimension) {
 }
 
 TEST(SurfaceMeshWall, CaseKeysAndRefusals) {
-    auto document = io::CaseDocument::from_string(
-        "[wall]\nfile = \"cube_ascii.stl\"\nflip_normals = true\n", mesh_path("case.toml"));
+    auto document = io::CaseDocument::from_string("[wall]\nfile = \"cube_ascii.stl\"\n",
+                                                  mesh_path("case.toml"));
     EXPECT_EQ(
-        read_mesh_wall_points(document->root().table("wall"), 3, 0.1, 3).points,
+        read_mesh_wall_points(document->root().table("wall"), 3, 0.1, 3, true).points,
         mesh_wall_points(io::read_surface_mesh_file(mesh_path("cube_ascii.stl")), 0.1, 3, 3, true)
             .points);
     const std::string stl_in_2d = wall_error("file = \"square_quads.msh\"\n", 2);
