@@ -33,9 +33,8 @@ std::string key_help(const std::string& table) {
     if (name.empty()) {
         out << "The tables of a case file (grainload help keys TABLE lists one's keys):\n\n";
         for (const io::KeyTable& part : case_schema()) {
-            const std::string header = part.array ? "[[" + std::string(part.name) + "]]"
-                                                  : "[" + std::string(part.name) + "]";
-            out << "  " << std::left << std::setw(26) << header << ' ' << part.doc << '\n';
+            out << "  " << std::left << std::setw(26) << io::table_header(part) << ' ' << part.doc
+                << '\n';
         }
         return out.str();
     }

@@ -6,14 +6,6 @@
 
 namespace grainload::io {
 
-std::string default_text(std::span<const KeySpec> specs, std::string_view name) {
-    const KeySpec* spec = find_key_spec(specs, name);
-    if (spec == nullptr) {
-        throw std::logic_error("no declared key '" + std::string(name) + "'");
-    }
-    return std::string(spec->default_text);
-}
-
 const KeySpec* find_key_spec(std::span<const KeySpec> specs, std::string_view name) {
     for (const KeySpec& spec : specs) {
         if (spec.name == name) {
@@ -23,12 +15,25 @@ const KeySpec* find_key_spec(std::span<const KeySpec> specs, std::string_view na
     return nullptr;
 }
 
-double default_value(std::span<const KeySpec> specs, std::string_view name) {
+namespace {
+
+/// The spec of a key the calling reader declared itself: a missing one is a programming error.
+const KeySpec& declared_spec(std::span<const KeySpec> specs, std::string_view name) {
     const KeySpec* spec = find_key_spec(specs, name);
     if (spec == nullptr) {
         throw std::logic_error("no declared key '" + std::string(name) + "'");
     }
-    return spec->value;
+    return *spec;
+}
+
+} // namespace
+
+double default_value(std::span<const KeySpec> specs, std::string_view name) {
+    return declared_spec(specs, name).value;
+}
+
+std::string default_text(std::span<const KeySpec> specs, std::string_view name) {
+    return std::string(declared_spec(specs, name).default_text);
 }
 
 std::vector<const KeyTable*> key_table_parts(std::span<const KeyTable> tables,
@@ -56,10 +61,14 @@ std::string table_of_key(std::string_view key_path) {
     return dot == std::string::npos ? std::string() : table.substr(0, dot);
 }
 
+std::string table_header(const KeyTable& table) {
+    const std::string name(table.name);
+    return table.array ? "[[" + name + "]]" : "[" + name + "]";
+}
+
 std::string describe_key_table(const KeyTable& table) {
     std::ostringstream out;
-    out << (table.array ? "[[" : "[") << table.name << (table.array ? "]]" : "]") << "  "
-        << table.doc << "\n  (" << table.guide_page << ")\n";
+    out << table_header(table) << "  " << table.doc << "\n  (" << table.guide_page << ")\n";
     if (table.user_keys) {
         out << "  its keys are names of your own choice\n";
     }

@@ -53,6 +53,8 @@ std::vector<const KeyTable*> key_table_parts(std::span<const KeyTable> tables,
 /// The declared table a key's full path lies in: "sph.body[0].shape.cut[1].normal" ->
 /// "sph.body.shape.cut" (indices dropped, the key's own name removed).
 std::string table_of_key(std::string_view key_path);
+/// The table as a case file opens it: "[[sph.wall]]" for an array of tables, "[sph]" else.
+std::string table_header(const KeyTable& table);
 /// The table as `grainload help keys TABLE` prints it: its header line, its meaning, and one
 /// block per key (name, type, default, meaning).
 std::string describe_key_table(const KeyTable& table);
