@@ -33,7 +33,7 @@ std::pair<Index, Index> count_entries(const sph::SphModel& sph) {
         return {0, 0};
     }
     const auto& wall_id = sph.particles().wall_id;
-    const sph::NeighbourList& list = sph.solver()->neighbours();
+    const particles::NeighbourList& list = sph.solver()->neighbours();
     Index bodies = 0;
     Index contacts = 0;
     const Index n = sph.particles().size();

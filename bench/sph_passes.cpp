@@ -112,9 +112,9 @@ int main(int argc, char** argv) {
                                         .p_wave_speed();
         }
     }
-    sph::NeighbourList list(kernel.support_radius(),
-                            options.verlet_skin_factor * options.smoothing_length,
-                            options.dimension);
+    particles::NeighbourList list(kernel.support_radius(),
+                                  options.verlet_skin_factor * options.smoothing_length,
+                                  options.dimension);
     // As SphSolver: each same-body pair in one row (the passes take it once).
     const std::vector<int> keys = sph::continuum_keys(p);
     auto build = [&] {

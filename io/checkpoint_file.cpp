@@ -19,6 +19,9 @@ constexpr std::uint64_t kFnvPrime = 0x100000001b3ULL;
 constexpr std::uint64_t kFirstFormatMagic = 0x474c434b50543031; // grainload 0.1's format
 /// The format before the streamed files' marks (io/output_streams.hpp) joined the clock.
 constexpr std::uint64_t kSecondFormatMagic = 0x323054504b434c47; // "GLCKPT02"
+/// The format before each scene part's state carried its part's name
+/// (particles/scene_part_list.hpp).
+constexpr std::uint64_t kThirdFormatMagic = 0x333054504b434c47; // "GLCKPT03"
 constexpr std::streamoff kMagicBytes = 8;
 constexpr std::streamoff kTrailerBytes = 16; // payload length, hash
 
@@ -65,6 +68,9 @@ void check_framing(std::istream& in, std::uint64_t size) {
             : magic == kSecondFormatMagic
                 ? "written in the second checkpoint format, which did not record where the "
                   "streamed tables (wall_forces.csv, ...) stood; rerun the case from the start"
+            : magic == kThirdFormatMagic
+                ? "written in the third checkpoint format, whose monitors' states (heap, wall "
+                  "maps) were not named by their parts; rerun the case from the start"
                 : "not a grainload checkpoint (wrong magic number)");
     }
     const std::uint64_t payload = size - static_cast<std::uint64_t>(kMagicBytes + kTrailerBytes);

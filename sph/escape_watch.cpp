@@ -1,6 +1,6 @@
 #include "sph/escape_watch.hpp"
 
-#include "sph/point_bounds.hpp"
+#include "particles/point_bounds.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -25,7 +25,8 @@ std::string vector_text(const Vec3& v, int dimension) {
 
 EscapeWatch::EscapeWatch(const ParticleSet& particles, const Vec3& gravity, int dimension)
     : dimension_(dimension), gravity_(gravity.norm()) {
-    const PointBounds box = point_bounds(particles.position, [](Index) { return true; });
+    const particles::PointBounds box =
+        particles::point_bounds(particles.position, [](Index) { return true; });
     for (Index i = 0; i < particles.size(); ++i) {
         initial_speed_ = std::max(initial_speed_, particles.velocity[i].norm());
     }
@@ -52,8 +53,8 @@ EscapeWatch::check(const ParticleSet& particles,
     // is in it already) and lend their speed to v0. Checked every step, so reduced over the
     // threads (maxima are exact in any order).
     const Index n = particles.size();
-    const PointBounds walls =
-        point_bounds(particles.position, [&particles](Index i) { return particles.is_wall(i); });
+    const particles::PointBounds walls = particles::point_bounds(
+        particles.position, [&particles](Index i) { return particles.is_wall(i); });
     double v0 = initial_speed_;
 #pragma omp parallel for schedule(static) reduction(max : v0)
     for (Index i = 0; i < n; ++i) {

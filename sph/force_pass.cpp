@@ -55,7 +55,7 @@ struct ForceSums {
 /// and are left out).
 template <class Shape, int D> struct ForceRow {
     const ParticleSet& p;
-    const NeighbourList& neighbours;
+    const particles::NeighbourList& neighbours;
     const SmoothingKernel& kernel;
     const ShapeTerms<Shape> w;
     const ForceSettings& s;
@@ -298,7 +298,7 @@ bool force_pass_uses_lanes(const SmoothingKernel& kernel, const SphOptions& opti
            pair_lanes_available();
 }
 
-void compute_accelerations(ParticleSet& p, const NeighbourList& neighbours,
+void compute_accelerations(ParticleSet& p, const particles::NeighbourList& neighbours,
                            const SmoothingKernel& kernel, const SphOptions& options,
                            const ForceInputs& in, std::vector<double>& heating_rate,
                            PairScratch* scratch, PairArithmetic arithmetic) {

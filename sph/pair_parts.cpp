@@ -15,7 +15,7 @@ std::vector<int> continuum_keys(const ParticleSet& p) {
     return key;
 }
 
-std::vector<Index> balanced_rows(const NeighbourList& list, Index rows, int parts) {
+std::vector<Index> balanced_rows(const particles::NeighbourList& list, Index rows, int parts) {
     std::vector<Index> bounds(static_cast<std::size_t>(parts) + 1, rows);
     bounds[0] = 0;
     const Index entries = rows > 0 ? list.first_entry(rows) : 0;

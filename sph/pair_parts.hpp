@@ -1,7 +1,7 @@
 #pragma once
 // The same-body pair passes split into one part per thread, summed in order to repeat bit for bit.
 
-#include "sph/neighbour_list.hpp"
+#include "particles/neighbour_list.hpp"
 #include "sph/particle_set.hpp"
 
 #include <cstddef>
@@ -33,7 +33,7 @@ std::vector<int> continuum_keys(const ParticleSet& particles);
 ///
 /// Rows [bounds[r], bounds[r + 1]) of part r, for `parts` parts of about equal numbers of list
 /// entries over the first `rows` rows.
-std::vector<Index> balanced_rows(const NeighbourList& list, Index rows, int parts);
+std::vector<Index> balanced_rows(const particles::NeighbourList& list, Index rows, int parts);
 
 /// Accumulators of the parts after the first: `width` doubles per particle each.
 class PairScratch {

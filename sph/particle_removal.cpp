@@ -30,7 +30,7 @@ void compact_state(ParticleSet& p, std::span<const char> gone) {
 template <class T>
 void compact_wall_array(std::vector<T>& values, std::span<const char> gone, Index first) {
     if (!values.empty()) {
-        compact(values, gone.subspan(static_cast<std::size_t>(first), values.size()));
+        particles::compact(values, gone.subspan(static_cast<std::size_t>(first), values.size()));
     }
 }
 
@@ -64,7 +64,7 @@ std::vector<Index> remove_particles(ParticleSet& p, std::span<const char> gone,
         wall.count = before(end) - before(first);
     }
     compact_state(p, gone);
-    p.for_each_field([gone](const auto&, auto& values) { compact(values, gone); });
+    p.for_each_field([gone](const auto&, auto& values) { particles::compact(values, gone); });
     return new_index;
 }
 

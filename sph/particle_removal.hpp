@@ -1,6 +1,7 @@
 #pragma once
 // The removal of particles from a ParticleSet: every field and wall range compacted in order.
 
+#include "particles/compact.hpp"
 #include "sph/particle_set.hpp"
 #include "sph/wall.hpp"
 
@@ -8,20 +9,6 @@
 #include <vector>
 
 namespace grainload::sph {
-
-/// Keep the entries of `values` whose `gone` flag is 0, in order (one flag per entry).
-template <class T> void compact(std::vector<T>& values, std::span<const char> gone) {
-    std::size_t kept = 0;
-    for (std::size_t i = 0; i < values.size(); ++i) {
-        if (!gone[i]) {
-            if (kept != i) {
-                values[kept] = std::move(values[i]);
-            }
-            ++kept;
-        }
-    }
-    values.resize(kept);
-}
 
 /// Remove the particles with gone[i] != 0 from `particles` (material or wall particles alike):
 /// every field is compacted in order, the material state with it (each kept particle's block

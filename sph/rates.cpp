@@ -64,7 +64,7 @@ struct GradientSums {
 /// -g and v_i - v_j = -dv); the moment -m x_ij g^T likewise.
 template <class Shape, int D, bool Corrected> struct GradientRow {
     const ParticleSet& p;
-    const NeighbourList& neighbours;
+    const particles::NeighbourList& neighbours;
     const ShapeTerms<Shape> w;
     const std::vector<int>& key;
     const double support_squared;
@@ -251,7 +251,7 @@ void write_kinematic_records(const ParticleSet& p, std::vector<PairRecord>& reco
 }
 
 template <class Shape, int D, bool Corrected>
-void velocity_gradient_pass(ParticleSet& p, const NeighbourList& neighbours,
+void velocity_gradient_pass(ParticleSet& p, const particles::NeighbourList& neighbours,
                             const SmoothingKernel& kernel, std::vector<Mat3>& velocity_gradient,
                             std::vector<Mat3>& correction, double* entry_factor,
                             PairScratch& scratch, PairArithmetic arithmetic,
@@ -346,7 +346,7 @@ void write_pair_record(const ParticleSet& p, Index i, const Mat3& sigma, double 
 
 } // namespace
 
-void compute_velocity_gradient(ParticleSet& p, const NeighbourList& neighbours,
+void compute_velocity_gradient(ParticleSet& p, const particles::NeighbourList& neighbours,
                                const SmoothingKernel& kernel, bool gradient_correction,
                                std::vector<Mat3>& velocity_gradient, std::vector<Mat3>& correction,
                                std::vector<double>* entry_factor, PairScratch* scratch,

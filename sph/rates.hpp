@@ -1,8 +1,8 @@
 #pragma once
 // The kinematic and force passes of SPH: velocity gradient and rates, then accelerations.
 
+#include "particles/neighbour_list.hpp"
 #include "sph/kernels.hpp"
-#include "sph/neighbour_list.hpp"
 #include "sph/pair_lanes.hpp"
 #include "sph/pair_parts.hpp"
 #include "sph/particle_set.hpp"
@@ -68,7 +68,7 @@ enum class PairArithmetic { lanes_where_available, scalar };
 /// on AVX2), the pass writes each material particle's position, velocity and mass into its
 /// record (ForceInputs::pair_records, which prepare_force_inputs then completes) and reads the
 /// neighbours' from there; otherwise the scalar rows run. Same bits either way.
-void compute_velocity_gradient(ParticleSet& particles, const NeighbourList& neighbours,
+void compute_velocity_gradient(ParticleSet& particles, const particles::NeighbourList& neighbours,
                                const SmoothingKernel& kernel, bool gradient_correction,
                                std::vector<Mat3>& velocity_gradient, std::vector<Mat3>& correction,
                                std::vector<double>* entry_factor = nullptr,
@@ -126,7 +126,7 @@ bool force_pass_uses_lanes(const SmoothingKernel& kernel, const SphOptions& opti
 /// minus its force on i: momentum is conserved pair by pair); contact pairs from both rows.
 /// `arithmetic` as for compute_velocity_gradient; where force_pass_uses_lanes, the lanes
 /// evaluate W'(r)/r themselves and `inputs.entry_factor` is not read.
-void compute_accelerations(ParticleSet& particles, const NeighbourList& neighbours,
+void compute_accelerations(ParticleSet& particles, const particles::NeighbourList& neighbours,
                            const SmoothingKernel& kernel, const SphOptions& options,
                            const ForceInputs& inputs, std::vector<double>& heating_rate,
                            PairScratch* scratch = nullptr,

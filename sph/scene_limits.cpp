@@ -1,7 +1,7 @@
 #include "sph/scene_limits.hpp"
 
 #include "io/case_table.hpp"
-#include "sph/cell_list.hpp"
+#include "particles/cell_list.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -136,7 +136,7 @@ struct WallPoints {
     std::vector<Vec3> position;
     std::vector<int> wall;
     std::vector<double> spacing;
-    CellList cells;
+    particles::CellList cells;
 };
 
 WallPoints wall_points(const ParticleSet& p, const std::vector<Wall>& walls, double reach,

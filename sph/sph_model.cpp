@@ -3,7 +3,9 @@
 #include "io/case_table.hpp"
 #include "sph/body_generator.hpp"
 #include "sph/outlet_reach.hpp"
+#include "sph/probes.hpp"
 #include "sph/scene_limits.hpp"
+#include "sph/scene_monitors.hpp"
 #include "sph/sph_case_reader.hpp"
 #include "sph/start_gap.hpp"
 #include "sph/wall_bodies.hpp"
@@ -102,7 +104,9 @@ void SphModel::build(const io::CaseTable& root) {
     }
     if (interactions_) {
         build_solver(sph);
-        read_probes(sph);
+        if (auto probes = ProbeSet::read(sph, solver_->particles())) {
+            parts_.add(std::move(probes));
+        }
         check_gravity_strain(root, particles(), *materials_, body_names_, gravity_, spacing_,
                              solver_->options().contact.stiffness);
         if (const std::string warning =
@@ -118,16 +122,22 @@ void SphModel::build(const io::CaseTable& root) {
         apply_phase_starts();
     }
     if (solver_) {
-        wall_maps_ = WallMapSet(sph, solver_->particles(), solver_->walls(), dimension_);
+        WallMapSet maps(sph, solver_->particles(), solver_->walls(), dimension_);
+        if (!maps.empty()) {
+            parts_.add(wall_map_part(std::move(maps), solver_->particles(), solver_->walls()));
+        }
     } else if (sph.has("wall_map")) {
         sph.fail("wall_map", "wall loads come from the SPH solver: expected interactions = true");
     }
     if (const auto heap = sph.optional_table("heap")) {
-        heap_.emplace(*heap, body_names_, particles(), spacing_, gravity_, dimension_);
+        parts_.add(
+            heap_part(HeapMonitor(*heap, body_names_, particles(), spacing_, gravity_, dimension_),
+                      particles()));
     }
     initial_position_ = particles().position;
     initial_velocity_ = particles().velocity;
-    escape_watch_ = EscapeWatch(particles(), gravity_, dimension_);
+    parts_.add(escape_part(EscapeWatch(particles(), gravity_, dimension_), particles(),
+                           [this](int body) { return body_name(body); }));
     if (!interactions_) {
         compute_accelerations();
     }
@@ -250,23 +260,6 @@ void SphModel::set_output(io::OutputStreams& output) {
     output_ = &output;
 }
 
-void SphModel::read_probes(const io::CaseTable& sph) {
-    const auto& p = solver_->particles();
-    for (const auto& table : sph.array_of_tables("probe")) {
-        const Vec3 x = table.vector("position", dim::kLength);
-        Index nearest = -1;
-        double best = std::numeric_limits<double>::infinity();
-        for (Index i = 0; i < p.size(); ++i) {
-            const double d = (p.position[i] - x).norm();
-            if (!p.is_wall(i) && d < best) {
-                best = d;
-                nearest = i;
-            }
-        }
-        probes_.emplace_back(table.string("name"), nearest);
-    }
-}
-
 void SphModel::add_body(const io::CaseTable& body, int dimension) {
     std::string name = body.string("name");
     for (const auto& existing : body_names_) {
@@ -353,14 +346,12 @@ void SphModel::advance(double t, double dt) {
     if (solver_) {
         solver_->set_time(t);
         solver_->step(dt);
-        wall_maps_.accumulate(solver_->particles(), solver_->walls(), t, dt);
+        parts_.after_step(t, dt);
         record_kinetic_energy(t + dt);
         if (!per_window_) {
             exchange_particles(t, dt);
         }
-        if (heap_) {
-            heap_->record(t + dt, solver_->particles());
-        }
+        parts_.end_step(t + dt);
         return;
     }
     // Velocity Verlet (kick-drift-kick): second order, and exact for a constant acceleration,
@@ -406,8 +397,8 @@ std::optional<std::string> SphModel::diagnose() const {
             << ") has a non-finite or non-physical " << fault(first);
         return out.str();
     }
-    if (auto escape = escape_watch_.check(p, [this](int body) { return body_name(body); })) {
-        return escape;
+    if (auto diagnosis = parts_.diagnose()) {
+        return diagnosis;
     }
     if (solver_) {
         return solver_->energy_ledger().check(solver_->held_energy(), kEnergySurplusLimit);

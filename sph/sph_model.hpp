@@ -5,9 +5,8 @@
 #include "io/scene_settings.hpp"
 #include "io/stepper.hpp"
 #include "materials/material_library.hpp"
+#include "particles/scene_part_list.hpp"
 #include "sph/body_generator.hpp"
-#include "sph/escape_watch.hpp"
-#include "sph/heap_monitor.hpp"
 #include "sph/particle_set.hpp"
 #include "sph/phase_sequence.hpp"
 #include "sph/rigid_wall.hpp"
@@ -15,7 +14,6 @@
 #include "sph/sink.hpp"
 #include "sph/source.hpp"
 #include "sph/sph_solver.hpp"
-#include "sph/wall_map.hpp"
 
 #include <array>
 #include <fstream>
@@ -37,12 +35,6 @@ inline constexpr std::array<io::KeySpec, 4> kBodyKeys{{
     {"material", "string", "", "a [[material]] name"},
     {"spacing", "length", "", "the lattice spacing; particle mass = density x spacing^dimension"},
     {"velocity", "velocity vector", "0 m/s", "the initial velocity"},
-}};
-
-/// The keys of each [[sph.probe]]: the particle nearest a point, followed in probes.csv.
-inline constexpr std::array<io::KeySpec, 2> kProbeKeys{{
-    {"name", "string", "", "names the probe's columns in probes.csv"},
-    {"position", "length vector", "", "the probe follows the particle nearest this point at t = 0"},
 }};
 
 /// The SPH side of a scene: particles of every [[sph.body]] and [[sph.wall]], advanced
@@ -132,7 +124,6 @@ class SphModel final : public io::Stepper {
     const SphSolver* solver() const { return solver_.get(); }
     const SinkSet& sinks() const { return sinks_; }
     const SourceSet& sources() const { return sources_; }
-    const WallMapSet& wall_maps() const { return wall_maps_; }
     /// Index each current particle had when the case built the scene (particles leave through
     /// sinks and removed walls; the rest keep their order).
     const std::vector<Index>& original_index() const { return origin_; }
@@ -152,7 +143,6 @@ class SphModel final : public io::Stepper {
     void build_solver(const io::CaseTable& sph);
     const std::string& body_name(int body_id) const;
     void append_wall_blocks(io::Frame& frame) const;
-    void read_probes(const io::CaseTable& sph);
     void write_output_rows(double time) const;
     /// Sinks and remove_at (sph_model_outlets.cpp): read them, refuse what cannot lose
     /// particles, and open the mass audit.
@@ -209,18 +199,15 @@ class SphModel final : public io::Stepper {
     std::vector<WallDefinition> added_walls_;
     std::unique_ptr<SphSolver> solver_;
     io::OutputStreams* output_ = nullptr;
-    /// [[sph.probe]]: a name and the particle nearest to the probe's initial position.
-    std::vector<std::pair<std::string, Index>> probes_;
     /// Written at each output instant, i.e. when the driver collects a frame.
     mutable double last_row_time_ = -1.0;
-    /// [sph.heap]: the measured body's kinetic energy per step and its heap at the end.
-    std::optional<HeapMonitor> heap_;
-    EscapeWatch escape_watch_; ///< the watchdog for particles leaving the scene
+    /// The scene's monitors ([[sph.probe]], [[sph.wall_map]], [sph.heap], the escape watch) as
+    /// parts, in the order the case builds them. Mutable because they write their rows at the
+    /// output instants, which the driver reaches through the const append_blocks.
+    mutable particles::ScenePartList parts_;
     /// [[sph.sink]]: mutable because its history is recorded at the output instants, which the
-    /// driver reaches through the const append_blocks (as the wall and probe writers above).
+    /// driver reaches through the const append_blocks (as the parts above).
     mutable SinkSet sinks_;
-    /// [[sph.wall_map]]: summed every step, written at the output instants (mutable as sinks_).
-    mutable WallMapSet wall_maps_;
     bool removals_ = false; ///< a sink or a wall with remove_at: particles may leave
     std::vector<Index> origin_;
     /// [[sph.source]]: particles entering the scene.

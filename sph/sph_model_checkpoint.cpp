@@ -1,6 +1,6 @@
 // SphModel's checkpoint: what a restart needs beyond the case (created and removed particles,
-// every particle array, the walls' state, the solver's scalars and books, the heap, the outlets
-// and the wall maps). The rest of SphModel is in sph_model.cpp.
+// every particle array, the walls' state, the solver's scalars and books, the outlets and the
+// scene parts). The rest of SphModel is in sph_model.cpp.
 #include "io/binary_stream.hpp"
 #include "sph/sph_model.hpp"
 
@@ -39,11 +39,8 @@ void SphModel::write_checkpoint(std::ostream& out) const {
         io::write_array(out, std::vector<Vec3>(reference.begin(), reference.end()));
         io::write_array(out, solver_->energy_ledger().state());
     }
-    if (heap_) {
-        io::write_array(out, heap_->state());
-    }
     write_outlet_state(out);
-    io::write_array(out, wall_maps_.state());
+    parts_.write_checkpoint(out);
 }
 
 void SphModel::read_checkpoint(std::istream& in) {
@@ -104,15 +101,8 @@ void SphModel::read_checkpoint(std::istream& in) {
         io::read_array(in, ledger);
         solver_->energy_ledger().set_state(ledger);
     }
-    if (heap_) {
-        std::vector<double> state;
-        io::read_array(in, state);
-        heap_->set_state(state);
-    }
     read_outlet_state(in);
-    std::vector<double> maps;
-    io::read_array(in, maps);
-    wall_maps_.set_state(maps);
+    parts_.read_checkpoint(in);
 }
 
 } // namespace grainload::sph

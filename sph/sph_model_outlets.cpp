@@ -128,14 +128,10 @@ void SphModel::apply_removal(std::span<const char> gone) {
         }
     }
     solver_->remove_particles(gone);
-    compact(initial_position_, gone);
-    compact(initial_velocity_, gone);
-    compact(origin_, gone);
-    for (auto& probe : probes_) {
-        if (probe.second >= 0) {
-            probe.second = new_index[static_cast<std::size_t>(probe.second)];
-        }
-    }
+    particles::compact(initial_position_, gone);
+    particles::compact(initial_velocity_, gone);
+    particles::compact(origin_, gone);
+    parts_.after_removal(new_index);
 }
 
 void SphModel::write_outlet_state(std::ostream& out) const {

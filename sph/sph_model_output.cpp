@@ -1,5 +1,6 @@
 #include "io/output_streams.hpp"
 #include "sph/sph_model.hpp"
+#include "sph/stress_measures.hpp"
 
 #include <cmath>
 #include <limits>
@@ -7,25 +8,10 @@
 #include <sstream>
 #include <utility>
 
-// SphModel's output: the frames' particle and wall blocks, the probes' rows and the
-// summary's figures.
+// SphModel's output: the frames' particle and wall blocks, the walls' and sinks' rows, and
+// the summary's figures (the scene parts write their own).
 
 namespace grainload::sph {
-
-namespace {
-
-double pressure_of(const Voigt6& s) {
-    return -(s[0] + s[1] + s[2]) / 3.0;
-}
-
-double von_mises_of(const Voigt6& s) {
-    const double p = (s[0] + s[1] + s[2]) / 3.0;
-    const double dev = (s[0] - p) * (s[0] - p) + (s[1] - p) * (s[1] - p) + (s[2] - p) * (s[2] - p) +
-                       2.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
-    return std::sqrt(1.5 * dev);
-}
-
-} // namespace
 
 void SphModel::write_output_rows(double time) const {
     if (output_ == nullptr || !(time > last_row_time_)) {
@@ -39,27 +25,7 @@ void SphModel::write_output_rows(double time) const {
     if (!sinks_.empty() && sinks_.record(time)) {
         output_->open("discharge.csv", sinks_.csv_header()).append(sinks_.last_rows());
     }
-    if (!wall_maps_.empty()) {
-        wall_maps_.record(time, output_->directory());
-    }
-    if (probes_.empty()) {
-        return;
-    }
-    std::ostringstream rows;
-    const auto& p = solver_->particles();
-    for (const auto& [name, i] : probes_) {
-        if (i < 0) { // its particle left through a sink
-            continue;
-        }
-        const Voigt6& s = p.stress[i];
-        rows << time << ',' << name << ',' << i << ',' << s[0] << ',' << s[1] << ',' << s[2] << ','
-             << s[3] << ',' << von_mises_of(s) << ',' << pressure_of(s) << ','
-             << p.plastic_strain[i] << '\n';
-    }
-    output_
-        ->open("probes.csv", "time_s,probe,particle,stress_xx_Pa,stress_yy_Pa,stress_zz_Pa,"
-                             "stress_xy_Pa,von_mises_Pa,pressure_Pa,plastic_strain\n")
-        .append(rows.str());
+    parts_.at_output(time, *output_);
 }
 
 void SphModel::append_blocks(io::Frame& frame) const {
@@ -122,13 +88,10 @@ void SphModel::append_wall_blocks(io::Frame& frame) const {
 
 void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) const {
     results.insert(results.end(), body_sizes_.begin(), body_sizes_.end());
-    if (heap_) {
-        heap_->append_results(particles(), results);
-    }
     if (audit_) {
         sinks_.append_results(scene_mass(), sources_.created(), results);
     }
-    wall_maps_.append_results(results);
+    parts_.append_results(results);
     if (settle_) {
         // null (NaN) when the scene never settled.
         results.push_back(

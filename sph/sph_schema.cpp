@@ -5,6 +5,7 @@
 #include "sph/heap_monitor.hpp"
 #include "sph/keyword_body.hpp"
 #include "sph/phase_sequence.hpp"
+#include "sph/probes.hpp"
 #include "sph/settle_watch.hpp"
 #include "sph/sink.hpp"
 #include "sph/source.hpp"

@@ -121,9 +121,9 @@ void SphSolver::remove_particles(std::span<const char> gone) {
         energy_.add_removed(held, contact_energy_of(gone));
     }
     sph::remove_particles(particles_, gone, walls_);
-    compact(is_wall_, gone);
-    compact(wave_speed_, gone);
-    compact(force_inputs_.sound_speed, gone);
+    particles::compact(is_wall_, gone);
+    particles::compact(wave_speed_, gone);
+    particles::compact(force_inputs_.sound_speed, gone);
     rebuild_neighbours(particles_.position);
 }
 

@@ -2,9 +2,9 @@
 // Explicit SPH for solids in plane strain and 3D, integrated by kick-drift-kick leapfrog.
 
 #include "materials/material.hpp"
+#include "particles/neighbour_list.hpp"
 #include "sph/energy_ledger.hpp"
 #include "sph/kernels.hpp"
-#include "sph/neighbour_list.hpp"
 #include "sph/particle_set.hpp"
 #include "sph/rates.hpp"
 #include "sph/sph_options.hpp"
@@ -94,7 +94,7 @@ class SphSolver {
     /// With symmetry planes the list's rows beyond particles().size() are empty and its entries
     /// there name mirror images (mirror_images()), which exist in the particle set only during
     /// a step.
-    const NeighbourList& neighbours() const { return neighbours_; }
+    const particles::NeighbourList& neighbours() const { return neighbours_; }
     /// The positions of the particles (mirror images left out) at the last list build, which a
     /// checkpoint stores: restart() selects the same images from them and rebuilds the same list.
     std::span<const Vec3> neighbour_reference() const;
@@ -161,7 +161,7 @@ class SphSolver {
     MaterialList materials_;
     SphOptions options_;
     SmoothingKernel kernel_;
-    NeighbourList neighbours_;
+    particles::NeighbourList neighbours_;
     std::vector<Wall> walls_;
     /// Body-wall pairs left out of the neighbour list after each build (Wall::bodies); empty:
     /// none, and the list is used as built.

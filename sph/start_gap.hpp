@@ -1,7 +1,7 @@
 #pragma once
 // Bodies and sources that start within the contact potential's reach of a wall: refused or warned.
 
-#include "sph/cell_list.hpp"
+#include "particles/cell_list.hpp"
 #include "sph/kernels.hpp"
 #include "sph/particle_set.hpp"
 #include "sph/source.hpp"
@@ -58,7 +58,7 @@ class WallParticleIndex {
     std::vector<Vec3> position_;
     std::vector<double> volume_;
     std::vector<int> wall_;
-    CellList cells_;
+    particles::CellList cells_;
 };
 
 /// A start is judged by E0 / (M g s): the energy the contact potential stores at t = 0 (E0)

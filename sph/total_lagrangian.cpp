@@ -1,6 +1,6 @@
 #include "sph/total_lagrangian.hpp"
 
-#include "sph/neighbour_list.hpp"
+#include "particles/neighbour_list.hpp"
 #include "sph/rates.hpp"
 
 #include <Eigen/LU>
@@ -16,7 +16,7 @@ TotalLagrangian::TotalLagrangian(const ParticleSet& p, const SmoothingKernel& ke
     for (Index i = 0; i < n; ++i) {
         wall[i] = p.is_wall(i) ? 1 : 0;
     }
-    NeighbourList search(kernel.support_radius(), 0.0, dimension_);
+    particles::NeighbourList search(kernel.support_radius(), 0.0, dimension_);
     search.update(p.position, wall, true);
     const double support_squared = kernel.support_radius() * kernel.support_radius();
     offset_.assign(static_cast<std::size_t>(n) + 1, 0);

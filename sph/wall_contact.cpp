@@ -54,7 +54,7 @@ WallTouch& touch_of(std::array<WallTouch, kMaxWalls>& walls, int& count, int wal
     return walls[kMaxWalls - 1];
 }
 
-int gather_walls(const ParticleSet& p, Index i, const NeighbourList& neighbours,
+int gather_walls(const ParticleSet& p, Index i, const particles::NeighbourList& neighbours,
                  const SmoothingKernel& kernel, const SphOptions& options,
                  const std::vector<Wall>& rigid_walls, const WallImages& images,
                  std::array<WallTouch, kMaxWalls>& walls) {
@@ -113,7 +113,7 @@ Vec3 coulomb_force(const FrictionPair& pair, double load, double mass, const Vec
 
 } // namespace
 
-void WallContact::apply(ParticleSet& p, const NeighbourList& neighbours,
+void WallContact::apply(ParticleSet& p, const particles::NeighbourList& neighbours,
                         const SmoothingKernel& kernel, const SphOptions& options,
                         const std::vector<Wall>& rigid_walls, double dt,
                         std::vector<double>& heating_rate, const WallImages& images) {
@@ -210,7 +210,8 @@ void WallContact::apply(ParticleSet& p, const NeighbourList& neighbours,
     distribute_reactions(p, neighbours, kernel);
 }
 
-void WallContact::find_particles_near_walls(const ParticleSet& p, const NeighbourList& neighbours) {
+void WallContact::find_particles_near_walls(const ParticleSet& p,
+                                            const particles::NeighbourList& neighbours) {
     const Index n = p.size();
     if (near_wall_list_ == &neighbours && near_wall_generation_ == neighbours.generation() &&
         static_cast<Index>(near_wall_.size()) == n) {
@@ -230,7 +231,7 @@ void WallContact::find_particles_near_walls(const ParticleSet& p, const Neighbou
     near_wall_generation_ = neighbours.generation();
 }
 
-void WallContact::distribute_reactions(ParticleSet& p, const NeighbourList& neighbours,
+void WallContact::distribute_reactions(ParticleSet& p, const particles::NeighbourList& neighbours,
                                        const SmoothingKernel& kernel) {
     // Serial: only the contact layer has records, and wall particles are shared between
     // the records of neighbouring body particles. In the particles' order (each particle's

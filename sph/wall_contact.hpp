@@ -1,8 +1,8 @@
 #pragma once
 // What a body particle feels of a wall beyond the repulsion: a normal dashpot and friction.
 
+#include "particles/neighbour_list.hpp"
 #include "sph/kernels.hpp"
-#include "sph/neighbour_list.hpp"
 #include "sph/particle_set.hpp"
 #include "sph/sph_options.hpp"
 #include "sph/wall.hpp"
@@ -54,9 +54,10 @@ class WallContact {
     /// heating_rate, and the reaction to wall particles. Call after the contact-potential
     /// force pass, with the step about to be taken.
     /// Reactions on images of wall particles stay on the images (the solver folds them back).
-    void apply(ParticleSet& p, const NeighbourList& neighbours, const SmoothingKernel& kernel,
-               const SphOptions& options, const std::vector<Wall>& walls, double dt,
-               std::vector<double>& heating_rate, const WallImages& images = {});
+    void apply(ParticleSet& p, const particles::NeighbourList& neighbours,
+               const SmoothingKernel& kernel, const SphOptions& options,
+               const std::vector<Wall>& walls, double dt, std::vector<double>& heating_rate,
+               const WallImages& images = {});
 
     /// Work done against wall friction so far (J, or J/m in plane strain), positive.
     double friction_work() const { return friction_work_; }
@@ -80,10 +81,11 @@ class WallContact {
         Vec3 wall_velocity;   ///< the wall's velocity at the body particle
         double friction_work; ///< -F_friction . slip dt of this touch [J]
     };
-    void distribute_reactions(ParticleSet& p, const NeighbourList& neighbours,
+    void distribute_reactions(ParticleSet& p, const particles::NeighbourList& neighbours,
                               const SmoothingKernel& kernel);
     /// near_wall_ for the list as it is now, recomputed only when the list has changed.
-    void find_particles_near_walls(const ParticleSet& p, const NeighbourList& neighbours);
+    void find_particles_near_walls(const ParticleSet& p,
+                                   const particles::NeighbourList& neighbours);
 
     std::vector<std::vector<Record>> per_thread_;
     std::vector<Record> merged_; ///< the threads' records in the particles' order
@@ -91,7 +93,7 @@ class WallContact {
     /// their neighbour walk is skipped. Kept while the list (its address, generation and
     /// size) stays the same.
     std::vector<char> near_wall_;
-    const NeighbourList* near_wall_list_ = nullptr;
+    const particles::NeighbourList* near_wall_list_ = nullptr;
     Index near_wall_generation_ = -1;
     double friction_work_ = 0.0;
     double reaction_power_correction_ = 0.0;

@@ -21,7 +21,7 @@ struct Scene {
         : kernel(KernelType::cubic_spline, 0.13, dimension), neighbours(0.26, 0.05, dimension) {}
     ParticleSet particles;
     SmoothingKernel kernel;
-    NeighbourList neighbours;
+    particles::NeighbourList neighbours;
 };
 
 void fill(Scene& s, int dimension) {

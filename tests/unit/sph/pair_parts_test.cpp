@@ -16,7 +16,7 @@ namespace {
 struct Scene {
     ParticleSet particles;
     SmoothingKernel kernel;
-    NeighbourList neighbours;
+    particles::NeighbourList neighbours;
 };
 
 Scene make_scene(int dimension) {
@@ -35,7 +35,7 @@ Scene make_scene(int dimension) {
         }
     }
     SmoothingKernel kernel(KernelType::cubic_spline, 1.3 * spacing, dimension);
-    NeighbourList neighbours(kernel.support_radius(), 0.02, dimension);
+    particles::NeighbourList neighbours(kernel.support_radius(), 0.02, dimension);
     std::vector<char> frozen(static_cast<std::size_t>(particles.size()));
     for (Index i = 0; i < particles.size(); ++i) {
         frozen[i] = particles.wall_id[i] >= 0 ? 1 : 0;
@@ -44,7 +44,7 @@ Scene make_scene(int dimension) {
     return {std::move(particles), kernel, std::move(neighbours)};
 }
 
-std::set<std::pair<Index, Index>> entries(const NeighbourList& list, Index n) {
+std::set<std::pair<Index, Index>> entries(const particles::NeighbourList& list, Index n) {
     std::set<std::pair<Index, Index>> all;
     for (Index i = 0; i < n; ++i) {
         for (const auto j : list.neighbours(i)) {

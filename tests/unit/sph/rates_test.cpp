@@ -14,7 +14,7 @@ namespace {
 struct Block {
     ParticleSet particles;
     SmoothingKernel kernel;
-    NeighbourList neighbours;
+    particles::NeighbourList neighbours;
 };
 
 Block make_block(int dimension, int per_side, KernelType type = KernelType::cubic_spline) {
@@ -26,7 +26,7 @@ Block make_block(int dimension, int per_side, KernelType type = KernelType::cubi
     body.density = 1000.0;
     fill_box_lattice(particles, body, dimension);
     SmoothingKernel kernel(type, 1.3 * spacing, dimension);
-    NeighbourList neighbours(kernel.support_radius(), 0.0, dimension);
+    particles::NeighbourList neighbours(kernel.support_radius(), 0.0, dimension);
     neighbours.update(particles.position, {});
     return {std::move(particles), kernel, std::move(neighbours)};
 }
@@ -137,7 +137,7 @@ TEST(Rates, ContactPotentialIsRepulsiveAndPairwise) {
     p.add(Vec3(0, 0, 0), Vec3::Zero(), 10.0, 1000.0, 0, 0, 0);
     p.add(Vec3(0.08, 0.02, 0), Vec3::Zero(), 10.0, 1000.0, 1, 0, 0);
     SmoothingKernel kernel(KernelType::wendland_c2, 0.12, 2);
-    NeighbourList list(kernel.support_radius(), 0.0, 2);
+    particles::NeighbourList list(kernel.support_radius(), 0.0, 2);
     list.update(p.position, {});
     SphOptions options;
     options.dimension = 2;
@@ -199,7 +199,7 @@ TEST(Rates, GradientCorrectionFallsBackAtNearlyCollinearNeighbours) {
     const Index centre = 2;
     p.velocity[3] = Vec3(0.0, 1e-3, 0.0); // velocity noise on the off-line neighbour
     const SmoothingKernel kernel(KernelType::cubic_spline, 1.3 * spacing, 2);
-    NeighbourList neighbours(kernel.support_radius(), 0.0, 2);
+    particles::NeighbourList neighbours(kernel.support_radius(), 0.0, 2);
     neighbours.update(p.position, {});
 
     // The moment as the solver forms it, to show the configuration is the dangerous one.

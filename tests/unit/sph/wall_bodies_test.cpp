@@ -1,4 +1,4 @@
-#include "sph/neighbour_list.hpp"
+#include "particles/neighbour_list.hpp"
 #include "sph/wall_bodies.hpp"
 #include "support/sph_scene.hpp"
 
@@ -49,9 +49,9 @@ TEST(WallBodies, DroppedPairsAreExactlyTheWallsPairsWithTheOtherBody) {
         group[static_cast<std::size_t>(i)] = i % 3;
         frozen[static_cast<std::size_t>(i)] = i % 3 == 2 ? 1 : 0;
     }
-    NeighbourList full(0.08, 0.01, 3);
+    particles::NeighbourList full(0.08, 0.01, 3);
     full.update(points, frozen);
-    NeighbourList filtered(0.08, 0.01, 3);
+    particles::NeighbourList filtered(0.08, 0.01, 3);
     filtered.update(points, frozen);
     const WallBodyFilter filter = wall_body_filter({wall_with(2, {0})});
     filtered.drop_pairs(group, filter.apart, filter.groups);

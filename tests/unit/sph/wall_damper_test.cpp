@@ -22,7 +22,7 @@ double damping_heat(const Vec3& normal, const Vec3& x, const Vec3& v) {
     std::vector<Wall> walls;
     walls.push_back(add_wall(particles, "wall", 0, 1, {Vec3::Zero()}, kSpacing, 1.0, 3));
     walls[0].normals = {normal};
-    NeighbourList neighbours(kernel.support_radius(), 0.0, 3);
+    particles::NeighbourList neighbours(kernel.support_radius(), 0.0, 3);
     const std::vector<char> frozen{0, 1};
     neighbours.update(particles.position, frozen, true);
     std::vector<double> heating(2, 0.0);

@@ -40,7 +40,7 @@ TEST(Objectivity, RigidlyRotatingStressedBodyKeepsItsPrincipalStresses) {
             particles.velocity[i] = omega.cross(particles.position[i]);
         }
         const SmoothingKernel kernel(KernelType::cubic_spline, 1.3 * spacing, dimension);
-        NeighbourList neighbours(kernel.support_radius(), 0.0, dimension);
+        particles::NeighbourList neighbours(kernel.support_radius(), 0.0, dimension);
         const std::vector<const materials::Material*> materials{&aluminium};
         const int steps = 100;
         const double dt = 0.5 * std::numbers::pi / omega.norm() / steps;

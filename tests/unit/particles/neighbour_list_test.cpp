@@ -1,5 +1,5 @@
-#include "sph/cell_list.hpp"
-#include "sph/neighbour_list.hpp"
+#include "particles/cell_list.hpp"
+#include "particles/neighbour_list.hpp"
 
 #include <algorithm>
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-namespace grainload::sph {
+namespace grainload::particles {
 namespace {
 
 std::vector<Vec3> random_points(int count, int dimension, unsigned seed) {
@@ -194,4 +194,4 @@ TEST(NeighbourList, SameKeyRowsAreTheHalvedRowsWithoutOtherKeys) {
 }
 
 } // namespace
-} // namespace grainload::sph
+} // namespace grainload::particles

@@ -1,13 +1,13 @@
 #pragma once
-// The neighbour list of SPH particles: pairs within support + Verlet skin, rebuilt when stale.
+// The neighbour list of a particle set: pairs within reach + a Verlet skin, rebuilt when stale.
 
-#include "sph/cell_list.hpp"
+#include "particles/cell_list.hpp"
 
 #include <cstdint>
 #include <span>
 #include <vector>
 
-namespace grainload::sph {
+namespace grainload::particles {
 
 /// Neighbour list in compressed rows: the neighbours of i are index[offset[i] .. offset[i+1]).
 /// As built, each pair appears in both rows, so a loop over i can gather from its neighbours in
@@ -23,19 +23,19 @@ class NeighbourList {
 
     /// Rebuild if needed (or always when `force`). `frozen[i] && frozen[j]` pairs are left out
     /// (wall particles do not interact with each other); pass an empty span to keep all.
-    /// Rows i >= `rows` (when >= 0) are left empty: mirror images (sph/symmetry.hpp) are seen
-    /// by the particles before them but have no neighbours of their own.
+    /// Rows i >= `rows` (when >= 0) are left empty: mirror images (a symmetry plane's copies) are
+    /// seen by the particles before them but have no neighbours of their own.
     /// Returns whether the list was rebuilt.
     bool update(std::span<const Vec3> positions, std::span<const char> frozen, bool force = false,
                 Index rows = -1);
     /// Leave out the pairs whose particles' groups are kept apart: entry (i, j) goes when
-    /// apart[group[i] * groups + group[j]] is nonzero (a wall and the bodies it does not act on,
-    /// Wall::bodies). The list must have just been rebuilt: it holds no such pair until the next
-    /// rebuild, which needs another call. `group` covers every position the list was built on.
+    /// apart[group[i] * groups + group[j]] is nonzero (a wall and the bodies it does not act on).
+    /// The list must have just been rebuilt: it holds no such pair until the next rebuild, which
+    /// needs another call. `group` covers every position the list was built on.
     void drop_pairs(std::span<const int> group, std::span<const char> apart, int groups);
-    /// Keep each pair of equal keys (sph/pair_parts.hpp: the same body, neither a wall
-    /// particle) in the row of its lower index only, for the passes that take such a pair once;
-    /// the other pairs stay in both rows. Like drop_pairs, until the next rebuild.
+    /// Keep each pair of equal keys (a method's pairs within one body, neither a
+    /// wall particle) in the row of its lower index only, for the passes that take such a pair
+    /// once; the other pairs stay in both rows. Like drop_pairs, until the next rebuild.
     void halve_pairs(std::span<const int> key);
     /// Whether row i holds only pairs of equal keys, each taken in this row (j > i), as
     /// halve_pairs leaves the rows of particles that touch no other body or wall: the passes
@@ -84,4 +84,4 @@ class NeighbourList {
     Index generation_ = 0;
 };
 
-} // namespace grainload::sph
+} // namespace grainload::particles

@@ -1,11 +1,11 @@
-#include "sph/neighbour_list.hpp"
+#include "particles/neighbour_list.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-namespace grainload::sph {
+namespace grainload::particles {
 
 NeighbourList::NeighbourList(double support_radius, double skin, int dimension)
     : support_(support_radius), skin_(skin), dimension_(dimension) {
@@ -191,4 +191,4 @@ std::size_t NeighbourList::bytes() const {
            free_cells_.bytes();
 }
 
-} // namespace grainload::sph
+} // namespace grainload::particles

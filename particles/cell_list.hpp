@@ -1,5 +1,5 @@
 #pragma once
-// The uniform grid of cells in which the neighbours of SPH particles are searched.
+// The uniform grid of cells in which the neighbours of particles are searched.
 
 #include "io/types.hpp"
 
@@ -8,7 +8,7 @@
 #include <span>
 #include <vector>
 
-namespace grainload::sph {
+namespace grainload::particles {
 
 /// Uniform grid of cells of edge >= the search radius: the neighbours of a particle lie in its
 /// own cell and the adjacent ones (9 in plane strain, 27 in 3D). Particles are binned by a
@@ -105,4 +105,4 @@ class CellList {
     std::array<std::vector<double>, 3> coordinates_; ///< x, y, z of sorted_[k] at k
 };
 
-} // namespace grainload::sph
+} // namespace grainload::particles

@@ -7,7 +7,7 @@
 #include <limits>
 #include <span>
 
-namespace grainload::sph {
+namespace grainload::particles {
 
 /// Axis-aligned box of a set of points; empty (lower = +inf, upper = -inf) when none was taken.
 struct PointBounds {
@@ -40,4 +40,4 @@ template <class Take> PointBounds point_bounds(std::span<const Vec3> x, Take tak
     return box;
 }
 
-} // namespace grainload::sph
+} // namespace grainload::particles

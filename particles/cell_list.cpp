@@ -1,12 +1,12 @@
-#include "sph/cell_list.hpp"
+#include "particles/cell_list.hpp"
 
-#include "sph/point_bounds.hpp"
+#include "particles/point_bounds.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-namespace grainload::sph {
+namespace grainload::particles {
 
 namespace {
 
@@ -157,4 +157,4 @@ void CellList::bin(std::span<const Vec3> positions, std::span<const char> skip) 
     }
 }
 
-} // namespace grainload::sph
+} // namespace grainload::particles

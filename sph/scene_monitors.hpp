@@ -1,0 +1,33 @@
+#pragma once
+// The SPH scene's monitors as scene parts: wall-load maps, the heap, the escape watch.
+
+#include "particles/scene_part.hpp"
+#include "sph/escape_watch.hpp"
+#include "sph/heap_monitor.hpp"
+#include "sph/wall.hpp"
+#include "sph/wall_map.hpp"
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace grainload::sph {
+
+/// [[sph.wall_map]]: the maps sum the walls' loads after every step and write their interval
+/// and window tables at the output instants (sph/wall_map.hpp). `particles` and `walls` are
+/// the solver's, observed from then on.
+std::unique_ptr<particles::ScenePart> wall_map_part(WallMapSet maps, const ParticleSet& particles,
+                                                    const std::vector<Wall>& walls);
+
+/// [sph.heap]: the measured body's kinetic energy at the end of every step, its heap's figures
+/// in summary.json (sph/heap_monitor.hpp).
+std::unique_ptr<particles::ScenePart> heap_part(HeapMonitor heap, const ParticleSet& particles);
+
+/// The watchdog for particles leaving the scene (sph/escape_watch.hpp), naming a particle's
+/// body by `body_name`.
+std::unique_ptr<particles::ScenePart>
+escape_part(EscapeWatch watch, const ParticleSet& particles,
+            std::function<std::string(int body_id)> body_name);
+
+} // namespace grainload::sph
