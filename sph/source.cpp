@@ -28,7 +28,7 @@ io::Dimension mass_rate_dimension(int dimension) {
 /// start and end: times, or "phase:NAME" (the phase's start, resolved by apply_phase_starts).
 /// An end before the start is refused where the case fixes both: two times, or two phases
 /// (which begin in the order of the table).
-void read_window(const io::CaseTable& table, const PhaseSequence* phases,
+void read_window(const io::CaseTable& table, const particles::PhaseSequence* phases,
                  SourceSet::Source& source) {
     if (const auto phase = read_phase_reference(table, "start", phases)) {
         source.start_phase = *phase;
@@ -50,7 +50,7 @@ void read_window(const io::CaseTable& table, const PhaseSequence* phases,
 
 } // namespace
 
-void SourceSet::apply_phase_starts(const PhaseSequence& phases) {
+void SourceSet::apply_phase_starts(const particles::PhaseSequence& phases) {
     for (Source& source : sources_) {
         if (source.start_phase >= 0) {
             source.start = phases.start(source.start_phase);
@@ -64,7 +64,7 @@ void SourceSet::apply_phase_starts(const PhaseSequence& phases) {
 SourceSet::SourceSet(const io::CaseTable& sph, const std::vector<std::string>& body_names,
                      const std::vector<int>& body_material, const std::vector<double>& body_density,
                      double spacing, int dimension, const Vec3& gravity,
-                     const PhaseSequence* phases)
+                     const particles::PhaseSequence* phases)
     : spacing_(spacing), dimension_(dimension) {
     for (const auto& table : sph.array_of_tables("source")) {
         Source source;

@@ -3,8 +3,8 @@
 
 #include "io/key_spec.hpp"
 #include "io/region.hpp"
+#include "particles/phase_sequence.hpp"
 #include "sph/particle_set.hpp"
-#include "sph/phase_sequence.hpp"
 
 #include <array>
 #include <limits>
@@ -80,9 +80,9 @@ class SourceSet {
     SourceSet(const io::CaseTable& sph, const std::vector<std::string>& body_names,
               const std::vector<int>& body_material, const std::vector<double>& body_density,
               double spacing, int dimension, const Vec3& gravity,
-              const PhaseSequence* phases = nullptr);
+              const particles::PhaseSequence* phases = nullptr);
     /// Set the start and end that name phases to those phases' starts as now known.
-    void apply_phase_starts(const PhaseSequence& phases);
+    void apply_phase_starts(const particles::PhaseSequence& phases);
     SourceSet(std::vector<Source> sources, double spacing)
         : sources_(std::move(sources)), spacing_(spacing) {}
 

@@ -158,7 +158,7 @@ std::vector<std::pair<double, Vec3>> motion_history(const io::CaseTable& wall,
 }
 
 /// remove_at: a time, "settled" ([sph.settle]) or "phase:NAME" (that phase's start).
-void read_removal(const io::CaseTable& table, const PhaseSequence* phases, Wall& wall) {
+void read_removal(const io::CaseTable& table, const particles::PhaseSequence* phases, Wall& wall) {
     if (!table.has("remove_at")) {
         return;
     }
@@ -174,8 +174,8 @@ void read_removal(const io::CaseTable& table, const PhaseSequence* phases, Wall&
 /// The wall's prescribed motion: constant velocities, or histories that count from t = 0 or
 /// from `history_start` (a time, or a phase's start, placed once known). Before its start a
 /// history holds its first value, so the wall starts with that.
-void attach_motion(const io::CaseTable& table, const PhaseSequence* phases, ParticleSet& particles,
-                   Wall& wall) {
+void attach_motion(const io::CaseTable& table, const particles::PhaseSequence* phases,
+                   ParticleSet& particles, Wall& wall) {
     auto velocity_history = motion_history(table, "velocity", dim::kVelocity);
     auto angular_history = motion_history(table, "angular_velocity", dim::kAngularVelocity);
     const bool shifted = table.has("history_start");
@@ -211,7 +211,7 @@ void attach_motion(const io::CaseTable& table, const PhaseSequence* phases, Part
 
 std::vector<Wall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& particles, int dimension,
                                    double spacing, double support_radius, int first_body_id,
-                                   const PhaseSequence* phases) {
+                                   const particles::PhaseSequence* phases) {
     std::vector<Wall> walls;
     for (const auto& table : sph.array_of_tables("wall")) {
         // A finer wall is smoother: see docs/theory/sph.md, "Wall contact".

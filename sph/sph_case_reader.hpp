@@ -2,8 +2,8 @@
 // The readers of a case's [sph] tables: solver options, walls, clamps, friction, symmetry.
 
 #include "io/key_spec.hpp"
+#include "particles/phase_sequence.hpp"
 #include "sph/particle_set.hpp"
-#include "sph/phase_sequence.hpp"
 #include "sph/rigid_wall.hpp"
 #include "sph/sph_options.hpp"
 
@@ -120,7 +120,7 @@ SphOptions read_sph_options(const io::CaseTable& sph, int dimension, double spac
 /// the phases' starts from SphModel.
 std::vector<Wall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& particles, int dimension,
                                    double spacing, double support_radius, int first_body_id,
-                                   const PhaseSequence* phases = nullptr);
+                                   const particles::PhaseSequence* phases = nullptr);
 
 /// The [[sph.body.clamp]] boxes (`min`, `max`) of one body, whose particles are
 /// particles[first, size()): every particle inside one of them (boundary included) is flagged

@@ -89,7 +89,7 @@ int SphModel::body_id(const std::string& name) const {
 
 void SphModel::build(const io::CaseTable& root) {
     const io::CaseTable sph = root.table("sph");
-    phases_ = PhaseSequence(root);
+    phases_ = particles::PhaseSequence(root);
     if (!phases_.empty() && !interactions_) {
         root.fail("phase", "phases act on the SPH solver's walls, sources and sinks: expected "
                            "interactions = true");
@@ -117,7 +117,7 @@ void SphModel::build(const io::CaseTable& root) {
     }
     build_outlets(sph);
     check_start(sph);
-    phases_.check_conditions(root, solver_ != nullptr, !sinks_.empty());
+    check_phase_conditions(root);
     if (solver_) {
         apply_phase_starts();
     }

@@ -5,12 +5,12 @@
 #include "io/scene_settings.hpp"
 #include "io/stepper.hpp"
 #include "materials/material_library.hpp"
+#include "particles/phase_sequence.hpp"
 #include "particles/scene_part_list.hpp"
+#include "particles/settle_watch.hpp"
 #include "sph/body_generator.hpp"
 #include "sph/particle_set.hpp"
-#include "sph/phase_sequence.hpp"
 #include "sph/rigid_wall.hpp"
-#include "sph/settle_watch.hpp"
 #include "sph/sink.hpp"
 #include "sph/source.hpp"
 #include "sph/sph_solver.hpp"
@@ -108,7 +108,7 @@ class SphModel final : public io::Stepper {
     std::vector<std::string> take_events() override;
     /// The [[phase]] table's phases: when each began and ended, and why (sph_model_phases.cpp).
     void append_phases(std::vector<io::PhaseRecord>& records) const override;
-    const PhaseSequence& phases() const { return phases_; }
+    const particles::PhaseSequence& phases() const { return phases_; }
     void write_checkpoint(std::ostream& out) const override;
     void read_checkpoint(std::istream& in) override;
 
@@ -176,6 +176,9 @@ class SphModel final : public io::Stepper {
     /// After a step ending at `time`: the settle watches ([sph.settle], the phases') see the
     /// material's kinetic energy.
     void record_kinetic_energy(double time);
+    /// Refuses [[phase]] conditions the scene cannot meet: `settled` without the SPH solver,
+    /// `discharged` without a sink (failing at that phase's `end`).
+    void check_phase_conditions(const io::CaseTable& root) const;
     /// Walls' removal times and histories and sources' windows that name a phase get its start.
     void apply_phase_starts();
     /// The first phase ending on `settled`, when no [sph.settle] reports settle_time.
@@ -225,9 +228,9 @@ class SphModel final : public io::Stepper {
     /// drawn one, for summary.json (body_NAME_size_AXIS).
     std::vector<io::ResultFigure> body_sizes_;
     /// [sph.settle]: the settle phase, and the events (its end) not yet taken by the driver.
-    std::optional<SettleWatch> settle_;
+    std::optional<particles::SettleWatch> settle_;
     /// [[phase]]: the run's phases, read before the walls and sources that may name them.
-    PhaseSequence phases_;
+    particles::PhaseSequence phases_;
     std::vector<std::string> events_;
     bool per_window_ = false; ///< exchange_particles_per_window() was called
     bool audit_ = false;      ///< a sink, remove_at or a source: the mass audit and energy books

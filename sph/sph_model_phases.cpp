@@ -1,6 +1,7 @@
 // SphModel's phases ([[phase]]): the settle watches that see the material's kinetic energy, the
 // phases' ends after each step, and their starts handed to the walls and sources that name
 // them. The rest of SphModel is in sph_model.cpp.
+#include "io/case_table.hpp"
 #include "sph/sph_model.hpp"
 
 #include <limits>
@@ -8,8 +9,23 @@
 
 namespace grainload::sph {
 
+void SphModel::check_phase_conditions(const io::CaseTable& root) const {
+    const auto tables = root.array_of_tables("phase");
+    for (std::size_t k = 0; k < phases_.phases().size(); ++k) {
+        const particles::PhaseSequence::End end = phases_.phases()[k].end;
+        if (end == particles::PhaseSequence::End::settled && !solver_) {
+            tables[k].fail("end", "the settle condition measures the SPH solver's kinetic "
+                                  "energy: expected interactions = true");
+        }
+        if (end == particles::PhaseSequence::End::discharged && sinks_.empty()) {
+            tables[k].fail("end", "the discharged condition counts the mass the sinks take: "
+                                  "expected an [[sph.sink]]");
+        }
+    }
+}
+
 void SphModel::record_kinetic_energy(double time) {
-    const bool phase_watch = phases_.ends_on(PhaseSequence::End::settled);
+    const bool phase_watch = phases_.ends_on(particles::PhaseSequence::End::settled);
     if (!settle_ && !phase_watch) {
         return;
     }
@@ -60,12 +76,12 @@ void SphModel::append_phases(std::vector<io::PhaseRecord>& records) const {
 }
 
 void SphModel::append_phase_results(std::vector<io::ResultFigure>& results) const {
-    for (const PhaseSequence::Phase& phase : phases_.phases()) {
-        if (phase.end != PhaseSequence::End::settled) {
+    for (const particles::PhaseSequence::Phase& phase : phases_.phases()) {
+        if (phase.end != particles::PhaseSequence::End::settled) {
             continue;
         }
         // The figures of [sph.settle], which a case moved to the phase table keeps.
-        const SettleWatch& watch = phase.watch;
+        const particles::SettleWatch& watch = phase.watch;
         results.push_back(
             {"settle_time",
              watch.settled() ? watch.settle_time() : std::numeric_limits<double>::quiet_NaN(), "s",

@@ -1,12 +1,12 @@
 #include "sph/sph_schema.hpp"
 
 #include "io/surface_mesh_reader.hpp"
+#include "particles/phase_sequence.hpp"
+#include "particles/settle_watch.hpp"
 #include "sph/body_generator.hpp"
 #include "sph/heap_monitor.hpp"
 #include "sph/keyword_body.hpp"
-#include "sph/phase_sequence.hpp"
 #include "sph/probes.hpp"
-#include "sph/settle_watch.hpp"
 #include "sph/sink.hpp"
 #include "sph/source.hpp"
 #include "sph/sph_case_reader.hpp"
@@ -68,14 +68,14 @@ const std::array<io::KeyTable, 26> kTables{{
      "### `[[sph.body.shape.cut]]`"},
     {"sph.sink", true, "particles leaving the scene beyond a plane or inside a box", kSinkKeys,
      kGuide, "## `[[sph.sink]]`"},
-    {"sph.settle", false, "when the scene counts as settled (`settled` in time keys)", kSettleKeys,
-     kGuide, "## Settling: `[sph.settle]`"},
+    {"sph.settle", false, "when the scene counts as settled (`settled` in time keys)",
+     particles::kSettleKeys, kGuide, "## Settling: `[sph.settle]`"},
     {"sph.symmetry", true, "a mirror plane: the scene is a half or a quarter of the whole",
      kSymmetryKeys, kGuide, "## Symmetry planes: `[[sph.symmetry]]`"},
     {"sph.wall_map", true, "the wall pressure and friction in bins over a wall's surface",
      kWallMapKeys, kGuide, "## `[[sph.wall_map]]`"},
     {"phase", true, "a named stage of the run (fill, settle, discharge) that starts on an event",
-     kPhaseKeys, kGuide, "## Phases: `[[phase]]`"},
+     particles::kPhaseKeys, kGuide, "## Phases: `[[phase]]`"},
 }};
 
 } // namespace

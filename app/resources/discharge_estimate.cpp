@@ -25,11 +25,11 @@ double created_by(const sph::SourceSet::Source& s, double end) {
 
 /// The earliest phase `k` can start: the latest stated end of the phases before it, each of
 /// which ends no earlier than it began (0 for the first).
-double earliest_start(const sph::PhaseSequence& phases, int k) {
+double earliest_start(const particles::PhaseSequence& phases, int k) {
     double start = 0.0;
     for (int j = 0; j < k && j < static_cast<int>(phases.phases().size()); ++j) {
         const auto& phase = phases.phases()[static_cast<std::size_t>(j)];
-        if (phase.end == sph::PhaseSequence::End::time) {
+        if (phase.end == particles::PhaseSequence::End::time) {
             start = std::max(start, phase.end_time);
         }
     }

@@ -1,11 +1,11 @@
-#include "sph/settle_watch.hpp"
+#include "particles/settle_watch.hpp"
 
 #include "io/case_table.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 
-namespace grainload::sph {
+namespace grainload::particles {
 
 SettleWatch::SettleWatch(const io::CaseTable& settle)
     : fraction_(settle.number("kinetic_energy_fraction")),
@@ -39,4 +39,4 @@ void SettleWatch::set_state(const std::vector<double>& state) {
     settle_time_ = state[1];
 }
 
-} // namespace grainload::sph
+} // namespace grainload::particles

@@ -13,7 +13,7 @@ namespace grainload::io {
 class CaseTable;
 }
 
-namespace grainload::sph {
+namespace grainload::particles {
 
 /// The keys of [sph.settle] (docs/user-guide/sph.md, "Settling: `[sph.settle]`").
 inline constexpr std::array<io::KeySpec, 2> kSettleKeys{{
@@ -51,4 +51,4 @@ class SettleWatch {
     double settle_time_ = std::numeric_limits<double>::infinity();
 };
 
-} // namespace grainload::sph
+} // namespace grainload::particles

@@ -1,4 +1,4 @@
-#include "sph/phase_sequence.hpp"
+#include "particles/phase_sequence.hpp"
 
 #include "io/case_table.hpp"
 #include "io/units.hpp"
@@ -8,7 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace grainload::sph {
+namespace grainload::particles {
 
 namespace dim = io::dimension;
 
@@ -128,20 +128,6 @@ PhaseSequence::PhaseSequence(const io::CaseTable& root) {
 bool PhaseSequence::ends_on(End end) const {
     return std::any_of(phases_.begin(), phases_.end(),
                        [end](const Phase& phase) { return phase.end == end; });
-}
-
-void PhaseSequence::check_conditions(const io::CaseTable& root, bool solver, bool sinks) const {
-    const auto tables = root.array_of_tables("phase");
-    for (std::size_t k = 0; k < phases_.size(); ++k) {
-        if (phases_[k].end == End::settled && !solver) {
-            tables[k].fail("end", "the settle condition measures the SPH solver's kinetic "
-                                  "energy: expected interactions = true");
-        }
-        if (phases_[k].end == End::discharged && !sinks) {
-            tables[k].fail("end", "the discharged condition counts the mass the sinks take: "
-                                  "expected an [[sph.sink]]");
-        }
-    }
 }
 
 int PhaseSequence::index_of(const io::CaseTable& table, std::string_view key,
@@ -290,4 +276,4 @@ std::optional<int> read_phase_reference(const io::CaseTable& table, std::string_
     return (phases != nullptr ? *phases : none).index_of(table, key, *text);
 }
 
-} // namespace grainload::sph
+} // namespace grainload::particles

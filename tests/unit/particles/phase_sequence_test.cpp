@@ -1,10 +1,10 @@
 #include "io/case_table.hpp"
-#include "sph/phase_sequence.hpp"
+#include "particles/phase_sequence.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
 
-namespace grainload::sph {
+namespace grainload::particles {
 namespace {
 
 PhaseSequence read(const std::string& phases) {
@@ -95,4 +95,4 @@ TEST(PhaseSequence, StatedEndPassedByAConditionEndsAtOnceAndStateRestores) {
 }
 
 } // namespace
-} // namespace grainload::sph
+} // namespace grainload::particles

@@ -3,7 +3,7 @@
 
 #include "io/frame.hpp"
 #include "io/key_spec.hpp"
-#include "sph/settle_watch.hpp"
+#include "particles/settle_watch.hpp"
 
 #include <array>
 #include <limits>
@@ -16,7 +16,7 @@ namespace grainload::io {
 class CaseTable;
 }
 
-namespace grainload::sph {
+namespace grainload::particles {
 
 /// The keys of each [[phase]] table (docs/user-guide/sph.md, "Phases: `[[phase]]`").
 inline constexpr std::array<io::KeySpec, 4> kPhaseKeys{{
@@ -59,16 +59,13 @@ class PhaseSequence {
     bool empty() const { return phases_.empty(); }
     const std::vector<Phase>& phases() const { return phases_; }
     bool ends_on(End end) const;
-    /// Refuse conditions the scene cannot meet: `settled` without the SPH solver, `discharged`
-    /// without a sink (failing at that phase's `end` in `root`).
-    void check_conditions(const io::CaseTable& root, bool solver, bool sinks) const;
     /// Index of the phase "phase:NAME" names (the text of `table.key`); fails there otherwise.
     int index_of(const io::CaseTable& table, std::string_view key, std::string_view text) const;
     /// The start of phase k; +infinity while it is not known.
     double start(int k) const { return phases_[static_cast<std::size_t>(k)].start; }
 
-    /// After every SPH step: the material's kinetic energy at its end, for the settle watches
-    /// (each measures its peak from t = 0, as [sph.settle] does).
+    /// After every step: the material's kinetic energy at its end, for the settle watches (each
+    /// measures its peak from t = 0, as a standalone settle watch does).
     void record_kinetic(double time, double kinetic);
     /// After a step ending at `time`, with `discharged` the mass the sinks have taken so far:
     /// ends the current phase (and the next ones, whose end has come too) and returns one log
@@ -96,4 +93,4 @@ bool names_phase(std::string_view text);
 std::optional<int> read_phase_reference(const io::CaseTable& table, std::string_view key,
                                         const PhaseSequence* phases);
 
-} // namespace grainload::sph
+} // namespace grainload::particles
