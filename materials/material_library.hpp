@@ -26,7 +26,7 @@ class MaterialLibrary {
     }
     const std::string& name(int index) const { return names_[static_cast<std::size_t>(index)]; }
     /// The material's grain size d (`grain_size`, the mean grain diameter), where it declares
-    /// one: Beverloo's discharge law reduces an outlet by k d (sph/sink.hpp).
+    /// one: Beverloo's discharge law reduces an outlet by k d (particles/sink.hpp).
     std::optional<double> grain_size(int index) const {
         return grain_sizes_[static_cast<std::size_t>(index)];
     }

@@ -251,7 +251,8 @@ bool touches(const ReachMap& reach, const ParticleSet& particles, const Wall& wa
 
 std::vector<std::string> outlet_reach_warnings(const io::CaseTable& sph,
                                                const ParticleSet& particles,
-                                               const std::vector<Wall>& walls, const SinkSet& sinks,
+                                               const std::vector<Wall>& walls,
+                                               const particles::SinkSet& sinks,
                                                const SourceSet& sources, const Vec3& gravity,
                                                double spacing, int dimension) {
     const auto wall_tables = sph.array_of_tables("wall");
@@ -266,7 +267,7 @@ std::vector<std::string> outlet_reach_warnings(const io::CaseTable& sph,
         return warnings;
     }
     std::vector<io::Region> regions;
-    for (const SinkSet::Sink& sink : sinks.sinks()) {
+    for (const particles::SinkSet::Sink& sink : sinks.sinks()) {
         regions.push_back(sink.region);
     }
     // One flood per body a sink takes (-1: all), made when first needed.
@@ -285,7 +286,7 @@ std::vector<std::string> outlet_reach_warnings(const io::CaseTable& sph,
                                "close it off or it lies above them";
     const auto sink_tables = sph.array_of_tables("sink");
     for (std::size_t s = 0; s < sinks.sinks().size(); ++s) {
-        const SinkSet::Sink& sink = sinks.sinks()[s];
+        const particles::SinkSet::Sink& sink = sinks.sinks()[s];
         if (flood(sink.body).reaches(sink.region)) {
             continue;
         }

@@ -2,8 +2,8 @@
 // Where a scene's material can get to, found before the run, and the outlets it cannot reach.
 
 #include "io/region.hpp"
+#include "particles/sink.hpp"
 #include "sph/particle_set.hpp"
-#include "sph/sink.hpp"
 #include "sph/source.hpp"
 #include "sph/wall.hpp"
 
@@ -63,10 +63,9 @@ class ReachMap {
 /// (whose outlet_width would give `grainload check` a Beverloo discharge that never comes)
 /// and a wall due to be removed (a gate that releases nothing). `walls` are the solver's, the
 /// [[sph.wall]] tables' first.
-std::vector<std::string> outlet_reach_warnings(const io::CaseTable& sph,
-                                               const ParticleSet& particles,
-                                               const std::vector<Wall>& walls, const SinkSet& sinks,
-                                               const SourceSet& sources, const Vec3& gravity,
-                                               double spacing, int dimension);
+std::vector<std::string>
+outlet_reach_warnings(const io::CaseTable& sph, const ParticleSet& particles,
+                      const std::vector<Wall>& walls, const particles::SinkSet& sinks,
+                      const SourceSet& sources, const Vec3& gravity, double spacing, int dimension);
 
 } // namespace grainload::sph

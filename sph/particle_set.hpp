@@ -2,6 +2,7 @@
 // All SPH particles of a scene, one contiguous array per field (structure of arrays).
 
 #include "io/types.hpp"
+#include "particles/particle_view.hpp"
 
 #include <cstddef>
 #include <tuple>
@@ -65,6 +66,8 @@ struct ParticleSet {
     void add_wall_particle(const Vec3& x, const Vec3& v, double particle_mass, double rho, int body,
                            int wall);
     bool is_wall(Index i) const { return wall_id[i] >= 0; }
+    /// The fields every particle method shares, for the scene parts of the particles floor.
+    particles::ParticleView view() const { return {position, mass, body_id, wall_id}; }
     void reserve(Index n);
 
     /// Call f(field, values) for every registered per-particle field, in registration order:

@@ -266,7 +266,7 @@ struct Held {
     bool leaves() const { return total > 0 && held == total && !fed; }
 };
 
-std::vector<Held> held_bodies(const ParticleSet& particles, const SinkSet& sinks,
+std::vector<Held> held_bodies(const ParticleSet& particles, const particles::SinkSet& sinks,
                               const SourceSet& sources, std::size_t bodies) {
     const auto& list = sinks.sinks();
     // The first sink that takes a particle of `body` at x, as SinkSet::collect, or -1.
@@ -301,7 +301,8 @@ std::vector<Held> held_bodies(const ParticleSet& particles, const SinkSet& sinks
 } // namespace
 
 std::vector<std::string> check_sinks_hold_bodies(const io::CaseTable& sph,
-                                                 const ParticleSet& particles, const SinkSet& sinks,
+                                                 const ParticleSet& particles,
+                                                 const particles::SinkSet& sinks,
                                                  const SourceSet& sources,
                                                  const std::vector<std::string>& body_names) {
     std::vector<std::string> warnings;
@@ -317,7 +318,7 @@ std::vector<std::string> check_sinks_hold_bodies(const io::CaseTable& sph,
             continue;
         }
         const auto s = static_cast<std::size_t>(*held[b].sinks.begin());
-        const SinkSet::Sink& sink = sinks.sinks()[s];
+        const particles::SinkSet::Sink& sink = sinks.sinks()[s];
         const bool plane = sink.region.kind == io::Region::Kind::half_space;
         const char* key = plane ? "normal" : "min";
         const std::string what = "sink \"" + sink.name + "\" holds all " +

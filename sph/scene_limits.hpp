@@ -2,8 +2,8 @@
 // Checks of an SPH scene before the run: gravity strain, fast impacts, bodies in walls or sinks.
 
 #include "materials/material_library.hpp"
+#include "particles/sink.hpp"
 #include "sph/particle_set.hpp"
-#include "sph/sink.hpp"
 #include "sph/source.hpp"
 #include "sph/wall.hpp"
 
@@ -85,7 +85,8 @@ void check_wall_overlaps(const io::CaseTable& sph, const ParticleSet& particles,
 /// `normal` (a plane: the side it points to leaves) or `min` (a box); otherwise each held body
 /// is a warning, returned.
 std::vector<std::string> check_sinks_hold_bodies(const io::CaseTable& sph,
-                                                 const ParticleSet& particles, const SinkSet& sinks,
+                                                 const ParticleSet& particles,
+                                                 const particles::SinkSet& sinks,
                                                  const SourceSet& sources,
                                                  const std::vector<std::string>& body_names);
 

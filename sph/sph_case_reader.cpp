@@ -1,6 +1,7 @@
 #include "sph/sph_case_reader.hpp"
 
 #include "io/case_table.hpp"
+#include "io/named_index.hpp"
 #include "sph/initial_stress.hpp"
 #include "sph/surface_mesh_wall.hpp"
 
@@ -240,28 +241,9 @@ std::vector<Wall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& partic
     return walls;
 }
 
-namespace {
-
-template <typename Named, typename NameOf>
-int index_by_name(const io::CaseTable& table, const std::string& key, const Named& items,
-                  NameOf name_of, const char* what) {
-    const std::string name = table.string(key);
-    std::string known;
-    for (std::size_t k = 0; k < items.size(); ++k) {
-        if (name_of(items[k]) == name) {
-            return static_cast<int>(k);
-        }
-        known += (known.empty() ? "\"" : ", \"") + name_of(items[k]) + "\"";
-    }
-    table.fail(key, std::string("expected the name of a ") + what + " (" +
-                        (known.empty() ? std::string("none defined") : known) + ")");
-}
-
-} // namespace
-
 int body_index(const io::CaseTable& table, const std::string& key,
                const std::vector<std::string>& body_names) {
-    return index_by_name(
+    return io::index_by_name(
         table, key, body_names, [](const std::string& s) { return s; }, "[[sph.body]]");
 }
 
@@ -321,7 +303,7 @@ std::vector<FrictionPair> read_friction_pairs(const io::CaseTable& sph,
     for (const auto& table : sph.array_of_tables("friction")) {
         FrictionPair pair;
         pair.body_id = body_index(table, "body", body_names);
-        const int wall = index_by_name(
+        const int wall = io::index_by_name(
             table, "wall", walls, [](const Wall& w) { return w.name; }, "[[sph.wall]]");
         const Wall& met = walls[static_cast<std::size_t>(wall)];
         pair.wall_body_id = met.body_id;

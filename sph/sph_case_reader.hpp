@@ -80,6 +80,17 @@ inline constexpr std::array<io::KeySpec, 2> kClampKeys{{
     {"max", "length vector", "", "the box's upper corner, above min in every direction"},
 }};
 
+/// The keys of [[sph.wall]] that open an outlet or time a gate (docs/user-guide/sph.md,
+/// "Outlets and gates").
+inline constexpr std::array<io::KeySpec, 2> kWallOutletKeys{{
+    {"remove_at", "time, `settled` or `phase:NAME`", "never",
+     "the wall leaves the scene at the end of the first step that reaches this time, that "
+     "settles the scene ([sph.settle]), or that begins the phase ([[phase]])"},
+    {"history_start", "time or `phase:NAME`", "0 s",
+     "the time velocity_history and angular_velocity_history count from; until then the wall "
+     "holds their first values"},
+}};
+
 /// The keys of each [[sph.wall]] but its outlet keys (kWallOutletKeys) and a mesh wall's file
 /// (io::kSurfaceMeshKeys).
 inline constexpr std::array<io::KeySpec, 18> kWallKeys{{

@@ -8,10 +8,10 @@
 #include "particles/phase_sequence.hpp"
 #include "particles/scene_part_list.hpp"
 #include "particles/settle_watch.hpp"
+#include "particles/sink.hpp"
 #include "sph/body_generator.hpp"
 #include "sph/particle_set.hpp"
 #include "sph/rigid_wall.hpp"
-#include "sph/sink.hpp"
 #include "sph/source.hpp"
 #include "sph/sph_solver.hpp"
 
@@ -122,7 +122,7 @@ class SphModel final : public io::Stepper {
 
     const ParticleSet& particles() const { return solver_ ? solver_->particles() : particles_; }
     const SphSolver* solver() const { return solver_.get(); }
-    const SinkSet& sinks() const { return sinks_; }
+    const particles::SinkSet& sinks() const { return sinks_; }
     const SourceSet& sources() const { return sources_; }
     /// Index each current particle had when the case built the scene (particles leave through
     /// sinks and removed walls; the rest keep their order).
@@ -210,7 +210,7 @@ class SphModel final : public io::Stepper {
     mutable particles::ScenePartList parts_;
     /// [[sph.sink]]: mutable because its history is recorded at the output instants, which the
     /// driver reaches through the const append_blocks (as the parts above).
-    mutable SinkSet sinks_;
+    mutable particles::SinkSet sinks_;
     bool removals_ = false; ///< a sink or a wall with remove_at: particles may leave
     std::vector<Index> origin_;
     /// [[sph.source]]: particles entering the scene.

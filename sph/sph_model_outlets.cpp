@@ -24,11 +24,12 @@ constexpr double kRemovalTimeTolerance = 1e-12;
 void SphModel::build_outlets(const io::CaseTable& sph) {
     // A symmetry plane through an outlet leaves the model half of it (each [[sph.symmetry]]).
     const double share = std::pow(0.5, static_cast<double>(sph.array_of_tables("symmetry").size()));
-    std::vector<SinkSet::BodyGrain> grains;
+    std::vector<particles::SinkSet::BodyGrain> grains;
     for (const int material : body_material_) {
         grains.push_back({materials_->name(material), materials_->grain_size(material)});
     }
-    sinks_ = SinkSet(sph, body_names_, dimension_, gravity_.norm(), share, grains);
+    sinks_ = particles::SinkSet(sph, {"[[sph.body]]", body_names_}, dimension_, gravity_.norm(),
+                                share, grains);
     bool walls_go = false;
     bool on_settle = false;
     if (solver_) {
@@ -105,7 +106,7 @@ void SphModel::remove_departed(double time) {
     }
     const ParticleSet& p = solver_->particles();
     std::vector<char> gone(static_cast<std::size_t>(p.size()), 0);
-    Index count = sinks_.collect(p, gone);
+    Index count = sinks_.collect(p.view(), gone);
     const bool settled = settle_ && settle_->settled();
     for (const Wall& wall : solver_->walls()) {
         const double due = wall.removal_time * (1.0 - kRemovalTimeTolerance);

@@ -3,11 +3,11 @@
 #include "io/surface_mesh_reader.hpp"
 #include "particles/phase_sequence.hpp"
 #include "particles/settle_watch.hpp"
+#include "particles/sink.hpp"
 #include "sph/body_generator.hpp"
 #include "sph/heap_monitor.hpp"
 #include "sph/keyword_body.hpp"
 #include "sph/probes.hpp"
-#include "sph/sink.hpp"
 #include "sph/source.hpp"
 #include "sph/sph_case_reader.hpp"
 #include "sph/sph_model.hpp"
@@ -66,8 +66,8 @@ const std::array<io::KeyTable, 26> kTables{{
      io::kSurfaceMeshKeys, kGuide, kMeshHeading},
     {"sph.source.shape.cut", true, "a plane the source's region is cut by", kCutKeys, kGuide,
      "### `[[sph.body.shape.cut]]`"},
-    {"sph.sink", true, "particles leaving the scene beyond a plane or inside a box", kSinkKeys,
-     kGuide, "## `[[sph.sink]]`"},
+    {"sph.sink", true, "particles leaving the scene beyond a plane or inside a box",
+     particles::kSinkKeys, kGuide, "## `[[sph.sink]]`"},
     {"sph.settle", false, "when the scene counts as settled (`settled` in time keys)",
      particles::kSettleKeys, kGuide, "## Settling: `[sph.settle]`"},
     {"sph.symmetry", true, "a mirror plane: the scene is a half or a quarter of the whole",

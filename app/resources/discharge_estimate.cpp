@@ -107,7 +107,7 @@ namespace {
 
 /// Beverloo's mean velocity through sink s's outlet, W / (rho_b A) (A: B L for a slot, pi D^2 / 4
 /// for a circle, B per metre in plane strain); 0 without an outlet.
-double outlet_velocity(const sph::Outlet& outlet, double gravity, int dimension) {
+double outlet_velocity(const particles::Outlet& outlet, double gravity, int dimension) {
     const double area = dimension == 2 ? outlet.width
                         : outlet.length > 0.0
                             ? outlet.width * outlet.length
@@ -138,7 +138,7 @@ double fastest_grain(const sph::SphModel& sph, const Vec3& gravity) {
     const Vec3 down = gravity / g;
     const auto lowest = lowest_material(sph.particles(), down);
     double fastest = 0.0;
-    for (const sph::SinkSet::Sink& sink : sph.sinks().sinks()) {
+    for (const particles::SinkSet::Sink& sink : sph.sinks().sinks()) {
         const double towards = down.dot(sink.region.normal);
         if (!sink.outlet || !lowest || sink.region.kind != io::Region::Kind::half_space ||
             !(towards > 0.0)) {

@@ -1,5 +1,5 @@
+#include "particles/sink.hpp"
 #include "sph/particle_removal.hpp"
-#include "sph/sink.hpp"
 
 #include <gtest/gtest.h>
 
@@ -132,19 +132,19 @@ TEST(ParticleRemoval, AWallRemovedWholeKeepsItsPlaceWithNoParticles) {
 TEST(SinkSet, TakesMaterialParticlesInItsRegionAndBooksTheirMass) {
     Scene scene = make_scene();
     scene.particles.body_id[4] = 7;
-    std::vector<SinkSet::Sink> sinks(3);
+    std::vector<particles::SinkSet::Sink> sinks(3);
     sinks[0] = {"right", io::Region::half_space(Vec3(2.5, 0, 0), Vec3(1, 0, 0), 3), -1, 0.0,
                 std::nullopt};
     sinks[1] = {"box", io::Region::box(Vec3(-1, -1, -1), Vec3(3.5, 10, 1), 3), 0, 0.0,
                 std::nullopt};
     sinks[2] = {"unused", io::Region::half_space(Vec3(0, -100, 0), Vec3(0, -1, 0), 3), -1, 0.0,
                 std::nullopt};
-    SinkSet set(std::move(sinks), 3);
+    particles::SinkSet set(std::move(sinks), 3);
     set.set_initial_mass(0.25 * 15);
     std::vector<char> gone(static_cast<std::size_t>(scene.particles.size()), 0);
     // x = 3 and 4 are beyond x = 2.5 ("right" first); 0, 1, 2 in the box (body 0 only); the
     // walls at z = 0 lie in both regions and stay.
-    EXPECT_EQ(set.collect(scene.particles, gone), 5);
+    EXPECT_EQ(set.collect(scene.particles.view(), gone), 5);
     EXPECT_EQ(set.sinks()[0].discharged, 0.25 * (4 + 5));
     EXPECT_EQ(set.sinks()[1].discharged, 0.25 * (1 + 2 + 3));
     EXPECT_EQ(set.sinks()[2].discharged, 0.0);

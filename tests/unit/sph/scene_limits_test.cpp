@@ -107,7 +107,7 @@ TEST(SceneLimits, ASinkHoldingEveryBodyAtTheStartIsRefused) {
             p.add(Vec3(0.1 * k, 0.25, 0.0), Vec3::Zero(), 1.0, 1500.0, 0, 0, 0);
             p.add(Vec3(0.1 * k, 1.5, 0.0), Vec3::Zero(), 1.0, 1500.0, 1, 0, 0);
         }
-        const SinkSet sinks(sph, names, 3, 9.81);
+        const particles::SinkSet sinks(sph, {"[[sph.body]]", names}, 3, 9.81);
         std::vector<SourceSet::Source> list;
         if (fed) {
             SourceSet::Source source;

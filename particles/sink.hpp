@@ -4,7 +4,8 @@
 #include "io/frame.hpp"
 #include "io/key_spec.hpp"
 #include "io/region.hpp"
-#include "sph/particle_set.hpp"
+#include "particles/body_names.hpp"
+#include "particles/particle_view.hpp"
 
 #include <array>
 #include <optional>
@@ -15,7 +16,7 @@ namespace grainload::io {
 class CaseTable;
 }
 
-namespace grainload::sph {
+namespace grainload::particles {
 
 /// The keys of each [[sph.sink]] table (docs/user-guide/sph.md, "Sinks").
 inline constexpr std::array<io::KeySpec, 10> kSinkKeys{{
@@ -61,17 +62,6 @@ inline constexpr double kBeverlooCircle = 0.58;
 /// between 1 and 3" for other grains (Darias, Madrid & Pugnaloni, Powders & Grains 2017).
 inline constexpr double kBeverlooGrain = 1.5;
 
-/// The keys of [[sph.wall]] that open an outlet or time a gate (docs/user-guide/sph.md,
-/// "Outlets and gates").
-inline constexpr std::array<io::KeySpec, 2> kWallOutletKeys{{
-    {"remove_at", "time, `settled` or `phase:NAME`", "never",
-     "the wall leaves the scene at the end of the first step that reaches this time, that "
-     "settles the scene ([sph.settle]), or that begins the phase ([[phase]])"},
-    {"history_start", "time or `phase:NAME`", "0 s",
-     "the time velocity_history and angular_velocity_history count from; until then the wall "
-     "holds their first values"},
-}};
-
 /// Particles leaving the scene through regions (io::Region), and the books of what left: the
 /// mass per sink, a history at the output instants (discharge.csv) and the summary figures
 /// (discharged mass, steady rate, mass audit). In terms of particles and masses only, so a
@@ -93,11 +83,11 @@ class SinkSet {
         std::optional<double> size;
     };
 
-    /// The [[sph.sink]] tables of `sph`; body names resolve against `body_names`; `gravity` is
-    /// the magnitude Beverloo's rate takes, `share` the part of each outlet the model holds
-    /// (1/2 per symmetry plane through it), `grains` each body's grain size (empty: none).
-    SinkSet(const io::CaseTable& sph, const std::vector<std::string>& body_names, int dimension,
-            double gravity, double share = 1.0, const std::vector<BodyGrain>& grains = {});
+    /// The sink tables of `scene` ([[sph.sink]] in `[sph]`); `body` keys name `bodies`; `gravity`
+    /// is the magnitude Beverloo's rate takes, `share` the part of each outlet the model holds (1/2
+    /// per symmetry plane through it), `grains` each body's grain size (empty: none).
+    SinkSet(const io::CaseTable& scene, const BodyNames& bodies, int dimension, double gravity,
+            double share = 1.0, const std::vector<BodyGrain>& grains = {});
     /// `dimension` 2: masses are per unit thickness (kg/m), as the particles' are.
     SinkSet(std::vector<Sink> sinks, int dimension)
         : sinks_(std::move(sinks)), dimension_(dimension) {}
@@ -106,7 +96,7 @@ class SinkSet {
     const std::vector<Sink>& sinks() const { return sinks_; }
     /// Flag (gone[i] = 1) every material particle inside a sink that takes its body, the first
     /// such sink in case order taking it, and book its mass there. Returns how many were flagged.
-    Index collect(const ParticleSet& particles, std::vector<char>& gone);
+    Index collect(const ParticleView& particles, std::vector<char>& gone);
     double discharged() const;
 
     /// The mass of the material particles when the scene was built, for the mass audit.
@@ -147,4 +137,4 @@ class SinkSet {
     std::vector<std::vector<double>> history_; ///< per row, the discharged mass per sink
 };
 
-} // namespace grainload::sph
+} // namespace grainload::particles

@@ -1,9 +1,8 @@
-#include "sph/sink.hpp"
+#include "particles/sink.hpp"
 
 #include "io/binary_stream.hpp"
 #include "io/case_table.hpp"
 #include "io/steady_rate.hpp"
-#include "sph/sph_case_reader.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -12,7 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace grainload::sph {
+namespace grainload::particles {
 
 namespace dim = io::dimension;
 
@@ -118,10 +117,10 @@ std::string Outlet::form(int dimension) const {
     return std::string("Beverloo, Leniger & van de Velde 1961: ") + law + "; " + grain;
 }
 
-SinkSet::SinkSet(const io::CaseTable& sph, const std::vector<std::string>& body_names,
-                 int dimension, double gravity, double share, const std::vector<BodyGrain>& grains)
+SinkSet::SinkSet(const io::CaseTable& scene, const BodyNames& bodies, int dimension, double gravity,
+                 double share, const std::vector<BodyGrain>& grains)
     : dimension_(dimension), gravity_(gravity), share_(share) {
-    for (const auto& table : sph.array_of_tables("sink")) {
+    for (const auto& table : scene.array_of_tables("sink")) {
         Sink sink;
         sink.name = table.string("name");
         for (const Sink& other : sinks_) {
@@ -131,7 +130,7 @@ SinkSet::SinkSet(const io::CaseTable& sph, const std::vector<std::string>& body_
         }
         sink.region = read_region(table, dimension);
         if (table.has("body")) {
-            sink.body = body_index(table, "body", body_names);
+            sink.body = bodies.index(table, "body");
         }
         sink.outlet = read_outlet(table, dimension);
         if (sink.outlet) {
@@ -141,7 +140,7 @@ SinkSet::SinkSet(const io::CaseTable& sph, const std::vector<std::string>& body_
     }
 }
 
-Index SinkSet::collect(const ParticleSet& p, std::vector<char>& gone) {
+Index SinkSet::collect(const ParticleView& p, std::vector<char>& gone) {
     Index flagged = 0;
     for (Index i = 0; i < p.size(); ++i) {
         if (p.is_wall(i) || gone[static_cast<std::size_t>(i)]) {
@@ -280,4 +279,4 @@ void SinkSet::set_state(const std::vector<double>& state) {
     }
 }
 
-} // namespace grainload::sph
+} // namespace grainload::particles
