@@ -37,8 +37,8 @@ double process_cpu_seconds() {
 io::Frame collect_frame(const Scene& scene, double t) {
     io::Frame frame;
     frame.time = t;
-    for (const auto& stepper : scene.steppers) {
-        stepper->append_blocks(frame);
+    for (const io::Reporter* reporter : scene.reporters) {
+        reporter->append_blocks(frame);
     }
     return frame;
 }
@@ -91,11 +91,11 @@ io::RunSummary make_summary(const Scene& scene, const CommandLine& line, const R
     summary.material_point_steps = clock.material_point_steps;
     summary.shell_nodes = scene.shell_node_count();
     summary.shell_node_steps = clock.shell_node_steps;
-    for (const auto& stepper : scene.steppers) {
-        stepper->append_results(clock.t, summary.results);
-        stepper->describe_model(summary.model);
-        stepper->append_hints(summary.hints);
-        stepper->append_phases(summary.phases);
+    for (const io::Reporter* reporter : scene.reporters) {
+        reporter->append_results(clock.t, summary.results);
+        reporter->describe_model(summary.model);
+        reporter->append_hints(summary.hints);
+        reporter->append_phases(summary.phases);
     }
     io::apply_figure_references(scene.references, summary.results);
     return summary;
@@ -178,8 +178,8 @@ int check_case(const CommandLine& line) {
               << scene->settings.end_time << " s)\n";
     // What will be modelled, as summary.json's "model" block will say it.
     std::vector<io::ModelChoice> model;
-    for (const auto& stepper : scene->steppers) {
-        stepper->describe_model(model);
+    for (const io::Reporter* reporter : scene->reporters) {
+        reporter->describe_model(model);
     }
     std::cout << "model:";
     for (std::size_t k = 0; k < model.size(); ++k) {
@@ -226,8 +226,8 @@ int run_case(const CommandLine& line) {
     if (line.restart) {
         clock = restart_from(*scene, *line.restart, streams, writer);
     }
-    for (const auto& stepper : scene->steppers) {
-        stepper->set_output(streams);
+    for (io::Reporter* reporter : scene->reporters) {
+        reporter->set_output(streams);
     }
     ProgressReporter progress(streams.open("log.txt"), scene->settings.end_time);
     const double cpu_start = process_cpu_seconds();
@@ -249,8 +249,8 @@ int run_case(const CommandLine& line) {
     auto write_output = [&] {
         writer.write(collect_frame(*scene, clock.t));
         clock.frame_times = writer.times();
-        for (const auto& stepper : scene->steppers) {
-            stepper->write_logs();
+        for (const io::Reporter* reporter : scene->reporters) {
+            reporter->write_logs();
         }
         clock.streams = streams.marks();
         write_checkpoint(*scene, clock, checkpoint);
@@ -288,8 +288,8 @@ int run_case(const CommandLine& line) {
         clock.shell_node_steps += static_cast<double>(scene->shell_node_count());
         clock.t += dt;
         ++clock.step;
-        for (const auto& stepper : scene->steppers) {
-            for (const std::string& event : stepper->take_events()) {
+        for (io::Reporter* reporter : scene->reporters) {
+            for (const std::string& event : reporter->take_events()) {
                 progress.message(event);
             }
         }

@@ -39,15 +39,13 @@ std::unique_ptr<Scene> Scene::from_document(std::unique_ptr<io::CaseDocument> do
         const std::optional<double> spare_particles =
             refuse_oversized_scene(root, scene->settings.dimension, memory);
         if (root.has("coupling")) {
-            scene->steppers.push_back(coupling::read_coupled_model(
-                root, scene->settings, scene->materials, spare_particles));
+            scene->add(coupling::read_coupled_model(root, scene->settings, scene->materials,
+                                                    spare_particles));
         } else if (root.has("sph")) {
-            scene->steppers.push_back(
-                sph::SphModel::from_case(root, scene->settings, scene->materials));
+            scene->add(sph::SphModel::from_case(root, scene->settings, scene->materials));
         }
         if (root.has("fem") && !root.has("coupling")) {
-            scene->steppers.push_back(
-                fem::ShellModel::from_case(root, scene->settings, scene->materials));
+            scene->add(fem::ShellModel::from_case(root, scene->settings, scene->materials));
         }
         if (root.has("phase") && !root.has("sph")) {
             root.fail("phase",
@@ -67,8 +65,8 @@ std::unique_ptr<Scene> Scene::from_document(std::unique_ptr<io::CaseDocument> do
         // The figures at t = 0 name every figure the run reports, so a misspelt reference is
         // refused before the run, not after it.
         std::vector<io::ResultFigure> figures;
-        for (const auto& stepper : scene->steppers) {
-            stepper->append_results(0.0, figures);
+        for (const io::Reporter* reporter : scene->reporters) {
+            reporter->append_results(0.0, figures);
         }
         scene->references = io::read_figure_references(root);
         io::check_figure_references(scene->references, figures);

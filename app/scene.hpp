@@ -3,6 +3,7 @@
 
 #include "io/case_table.hpp"
 #include "io/figure_reference.hpp"
+#include "io/reporter.hpp"
 #include "io/scene_settings.hpp"
 #include "io/stepper.hpp"
 #include "materials/material_library.hpp"
@@ -21,7 +22,10 @@ struct Scene {
     std::unique_ptr<io::CaseDocument> document;
     io::SceneSettings settings;
     materials::MaterialLibrary materials;
+    /// The physics modules as the time loop steps them, in the order they step.
     std::vector<std::unique_ptr<io::Stepper>> steppers;
+    /// The same modules as the output reads them (each steppers[k] is reporters[k]).
+    std::vector<io::Reporter*> reporters;
     /// [[case.reference]]: the independent references the case states for its figures.
     std::vector<io::FigureReference> references;
 
@@ -43,6 +47,12 @@ struct Scene {
     Index shell_node_count() const;
     /// The steppers' inner steps so far (io::Stepper::inner_steps).
     long long inner_steps() const;
+
+    /// Append a module that both steps and reports, in both lists.
+    template <class Module> void add(std::unique_ptr<Module> module) {
+        reporters.push_back(module.get());
+        steppers.push_back(std::move(module));
+    }
 };
 
 } // namespace grainload::app

@@ -7,6 +7,7 @@
 #include "coupling/model_hints.hpp"
 #include "coupling/shell_wall.hpp"
 #include "fem/shell_model.hpp"
+#include "io/reporter.hpp"
 #include "io/step_collapse.hpp"
 #include "io/stepper.hpp"
 #include "sph/sph_model.hpp"
@@ -51,7 +52,7 @@ struct CouplingSettings {
 /// factor. With max_iterations > 1 the window is instead repeated from its start with the
 /// load it produced, relaxed by Aitken's method, until the load stops changing (a fixed-point
 /// iteration on the interface load).
-class CoupledModel final : public io::Stepper {
+class CoupledModel final : public io::Stepper, public io::Reporter {
   public:
     CoupledModel(std::unique_ptr<sph::SphModel> sph, std::unique_ptr<fem::ShellModel> fem,
                  std::vector<CoupledPart> parts, CouplingSettings settings);

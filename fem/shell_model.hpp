@@ -5,6 +5,7 @@
 #include "fem/shell_case_reader.hpp"
 #include "fem/shell_step_totals.hpp"
 #include "io/key_spec.hpp"
+#include "io/reporter.hpp"
 #include "io/scene_settings.hpp"
 #include "io/stepper.hpp"
 #include "materials/material_library.hpp"
@@ -65,7 +66,7 @@ struct ShellStepLog {
 /// t + dt (cut-backs halve the time increment), so "time" only orders the load steps. Dynamic
 /// analysis: implicit Newmark or HHT-alpha steps of at most [fem].time_step. Built from the case's
 /// [fem] table and its [[fem.shell]] tables, one per shell part.
-class ShellModel final : public io::Stepper {
+class ShellModel final : public io::Stepper, public io::Reporter {
   public:
     static std::unique_ptr<ShellModel> from_case(const io::CaseTable& root,
                                                  const io::SceneSettings& scene,

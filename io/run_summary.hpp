@@ -32,8 +32,8 @@ struct RunSummary {
     std::string status = "completed"; ///< "completed" or "unstable"
     std::string diagnosis;
     std::vector<ResultFigure> results;
-    std::vector<ModelChoice> model;  ///< what was modelled (Stepper::describe_model)
-    std::vector<std::string> hints;  ///< what could have been left out (Stepper::append_hints)
+    std::vector<ModelChoice> model;  ///< what was modelled (Reporter::describe_model)
+    std::vector<std::string> hints;  ///< what could have been left out (Reporter::append_hints)
     std::vector<PhaseRecord> phases; ///< the case's [[phase]] table as the run went through it
     /// What `grainload check` estimated before the run (app/cost_estimate.hpp); written with
     /// the ratios actual / estimated when set.

@@ -1,5 +1,5 @@
 // What an SPH scene modelled and what it could have left out: the
-// SphModel members behind io::Stepper::describe_model and append_hints.
+// SphModel members behind io::Reporter::describe_model and append_hints.
 #include "materials/generalized_cap.hpp"
 #include "sph/rigid_wall.hpp"
 #include "sph/sph_model.hpp"

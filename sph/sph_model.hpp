@@ -2,6 +2,7 @@
 // The SPH side of a scene: its bodies and walls advanced by SphSolver, as one Stepper.
 
 #include "io/key_spec.hpp"
+#include "io/reporter.hpp"
 #include "io/scene_settings.hpp"
 #include "io/stepper.hpp"
 #include "materials/material_library.hpp"
@@ -40,7 +41,7 @@ inline constexpr std::array<io::KeySpec, 4> kBodyKeys{{
 /// The SPH side of a scene: particles of every [[sph.body]] and [[sph.wall]], advanced
 /// explicitly by SphSolver (or, with interactions = false, in free flight under gravity).
 /// Built from the case's [sph] tables; the time loop lives in the app's driver.
-class SphModel final : public io::Stepper {
+class SphModel final : public io::Stepper, public io::Reporter {
   public:
     /// A wall built outside the [sph] tables (the coupling's shell walls): its particles,
     /// their normals into the material and origins, the driver that moves them, and the

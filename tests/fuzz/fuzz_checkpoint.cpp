@@ -91,9 +91,11 @@ void touch_every_array(const grainload::app::Scene& scene) {
     for (const auto& stepper : scene.steppers) {
         (void)stepper->stable_time_step();
         (void)stepper->diagnose();
-        stepper->append_blocks(frame);
+    }
+    for (const grainload::io::Reporter* reporter : scene.reporters) {
+        reporter->append_blocks(frame);
         std::vector<grainload::io::ResultFigure> results;
-        stepper->append_results(0.0, results);
+        reporter->append_results(0.0, results);
     }
 }
 
