@@ -2,6 +2,7 @@
 // One feature of a particle scene (a monitor, a watch, a wall map) behind one seam.
 
 #include "io/frame.hpp"
+#include "particles/particle_view.hpp"
 
 #include <iosfwd>
 #include <optional>
@@ -33,6 +34,15 @@ class ScenePart {
         (void)t;
         (void)dt;
     }
+    /// After a step: flag (gone[i] = 1) the particles that leave the scene through this part
+    /// and book them; a particle another part flagged already is not this part's. Returns how
+    /// many it flagged. May be called more than once after a step (a phase that ends on the mass
+    /// that left lets the next phase's gates go at once).
+    virtual Index collect_departures(const ParticleView& particles, std::vector<char>& gone) {
+        (void)particles;
+        (void)gone;
+        return 0;
+    }
     /// At the end of a step ending at `time`, once particles left and entered.
     virtual void end_step(double time) { (void)time; }
     /// Particles left the scene: `new_index` maps each old index to its new one (-1: gone).
@@ -45,9 +55,12 @@ class ScenePart {
     }
     /// Its figures for summary.json.
     virtual void append_results(std::vector<io::ResultFigure>& results) const { (void)results; }
+    /// Its events since the last call ("settled at t = 2.1 s ..."), one line each, for the log.
+    virtual void take_events(std::vector<std::string>& events) { (void)events; }
     /// A diagnosis when the run must stop (the watchdog's), std::nullopt while sound.
     virtual std::optional<std::string> diagnose() const { return std::nullopt; }
-    /// Restart state; read_checkpoint restores exactly what write_checkpoint saved.
+    /// Restart state; read_checkpoint restores exactly what write_checkpoint saved, and drops
+    /// the events not yet taken (a coupling pass that goes back to a state did not have them).
     virtual void write_checkpoint(std::ostream& out) const { (void)out; }
     virtual void read_checkpoint(std::istream& in) { (void)in; }
 };

@@ -19,6 +19,14 @@ void ScenePartList::end_step(double time) {
     }
 }
 
+Index ScenePartList::collect_departures(const ParticleView& particles, std::vector<char>& gone) {
+    Index count = 0;
+    for (const auto& part : parts_) {
+        count += part->collect_departures(particles, gone);
+    }
+    return count;
+}
+
 void ScenePartList::after_removal(std::span<const Index> new_index) {
     for (const auto& part : parts_) {
         part->after_removal(new_index);
@@ -35,6 +43,14 @@ void ScenePartList::append_results(std::vector<io::ResultFigure>& results) const
     for (const auto& part : parts_) {
         part->append_results(results);
     }
+}
+
+std::vector<std::string> ScenePartList::take_events() {
+    std::vector<std::string> events;
+    for (const auto& part : parts_) {
+        part->take_events(events);
+    }
+    return events;
 }
 
 std::optional<std::string> ScenePartList::diagnose() const {

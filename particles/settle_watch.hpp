@@ -2,8 +2,10 @@
 // The [sph.settle] watch: the step whose kinetic energy falls below a fraction of its largest.
 
 #include "io/key_spec.hpp"
+#include "particles/scene_part.hpp"
 
 #include <array>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <string>
@@ -50,5 +52,31 @@ class SettleWatch {
     double peak_ = 0.0;
     double settle_time_ = std::numeric_limits<double>::infinity();
 };
+
+/// [sph.settle] as a scene part: after every step it gives the watch the material's kinetic
+/// energy (read through `kinetic_energy`), says when the scene settled (an event for the log),
+/// reports settle_time and settle_peak_kinetic_energy, and checkpoints the watch.
+class SettlePart final : public ScenePart {
+  public:
+    SettlePart(SettleWatch watch, std::function<double()> kinetic_energy)
+        : watch_(watch), kinetic_energy_(std::move(kinetic_energy)) {}
+    const SettleWatch& watch() const { return watch_; }
+
+    std::string_view name() const override { return "settle"; }
+    void after_step(double t, double dt) override;
+    void take_events(std::vector<std::string>& events) override;
+    void append_results(std::vector<io::ResultFigure>& results) const override;
+    void write_checkpoint(std::ostream& out) const override;
+    void read_checkpoint(std::istream& in) override;
+
+  private:
+    SettleWatch watch_;
+    std::function<double()> kinetic_energy_;
+    std::vector<std::string> events_;
+};
+
+/// The figures of a settle watch for summary.json: settle_time (null while not settled) and
+/// settle_peak_kinetic_energy.
+void append_settle_results(const SettleWatch& watch, std::vector<io::ResultFigure>& results);
 
 } // namespace grainload::particles

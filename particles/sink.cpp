@@ -2,6 +2,7 @@
 
 #include "io/binary_stream.hpp"
 #include "io/case_table.hpp"
+#include "io/output_streams.hpp"
 #include "io/steady_rate.hpp"
 
 #include <cmath>
@@ -140,7 +141,7 @@ SinkSet::SinkSet(const io::CaseTable& scene, const BodyNames& bodies, int dimens
     }
 }
 
-Index SinkSet::collect(const ParticleView& p, std::vector<char>& gone) {
+Index SinkSet::collect_departures(const ParticleView& p, std::vector<char>& gone) {
     Index flagged = 0;
     for (Index i = 0; i < p.size(); ++i) {
         if (p.is_wall(i) || gone[static_cast<std::size_t>(i)]) {
@@ -165,11 +166,6 @@ double SinkSet::discharged() const {
         sum += sink.discharged;
     }
     return sum;
-}
-
-double SinkSet::audit_error(double scene_mass, double created) const {
-    const double total = initial_mass_ + created;
-    return total > 0.0 ? (scene_mass + discharged() - initial_mass_ - created) / total : 0.0;
 }
 
 bool SinkSet::record(double time) {
@@ -204,8 +200,13 @@ std::string SinkSet::last_rows() const {
     return out.str();
 }
 
-void SinkSet::append_results(double scene_mass, double created,
-                             std::vector<io::ResultFigure>& results) const {
+void SinkSet::at_output(double time, io::OutputStreams& output) {
+    if (record(time)) {
+        output.open("discharge.csv", csv_header()).append(last_rows());
+    }
+}
+
+void SinkSet::append_results(std::vector<io::ResultFigure>& results) const {
     const std::string mass_unit = dimension_ == 2 ? "kg/m" : "kg";
     const double nan = std::numeric_limits<double>::quiet_NaN();
     for (std::size_t s = 0; s < sinks_.size(); ++s) {
@@ -226,12 +227,6 @@ void SinkSet::append_results(double scene_mass, double created,
         results.push_back(
             {prefix + "_steady_window_end", fit ? fit->end : nan, "s", std::nullopt, ""});
     }
-    results.push_back({"scene_mass", scene_mass, mass_unit, std::nullopt, "material in the scene"});
-    results.push_back({"discharged_mass", discharged(), mass_unit, std::nullopt, ""});
-    results.push_back({"initial_mass", initial_mass_, mass_unit, std::nullopt, ""});
-    results.push_back({"created_mass", created, mass_unit, std::nullopt, ""});
-    results.push_back({"mass_audit_error", audit_error(scene_mass, created), "", 0.0,
-                       "mass in the scene + mass discharged = initial mass + mass created"});
 }
 
 std::optional<double> SinkSet::outlet_rate(std::size_t s) const {
@@ -243,7 +238,7 @@ std::optional<double> SinkSet::outlet_rate(std::size_t s) const {
 }
 
 std::vector<double> SinkSet::state() const {
-    std::vector<double> state{initial_mass_, static_cast<double>(history_times_.size())};
+    std::vector<double> state{static_cast<double>(history_times_.size())};
     for (const Sink& sink : sinks_) {
         state.push_back(sink.discharged);
     }
@@ -256,16 +251,14 @@ std::vector<double> SinkSet::state() const {
 
 void SinkSet::set_state(const std::vector<double>& state) {
     const std::size_t sinks = sinks_.size();
-    const auto rows = state.size() >= 2
-                          ? io::state_count(state[1], static_cast<double>(state.size()),
-                                            "the sinks' history rows")
-                          : 0;
-    if (state.size() < 2 || state.size() != 2 + sinks + rows * (1 + sinks)) {
+    const auto rows = !state.empty() ? io::state_count(state[0], static_cast<double>(state.size()),
+                                                       "the sinks' history rows")
+                                     : 0;
+    if (state.empty() || state.size() != 1 + sinks + rows * (1 + sinks)) {
         throw std::runtime_error("checkpoint: the sinks' state does not match the case's " +
                                  std::to_string(sinks) + " sinks");
     }
-    initial_mass_ = state[0];
-    std::size_t k = 2;
+    std::size_t k = 1;
     for (Sink& sink : sinks_) {
         sink.discharged = state[k++];
     }
@@ -277,6 +270,16 @@ void SinkSet::set_state(const std::vector<double>& state) {
                               state.begin() + static_cast<std::ptrdiff_t>(k + sinks));
         k += sinks;
     }
+}
+
+void SinkSet::write_checkpoint(std::ostream& out) const {
+    io::write_array(out, state());
+}
+
+void SinkSet::read_checkpoint(std::istream& in) {
+    std::vector<double> values;
+    io::read_array(in, values);
+    set_state(values);
 }
 
 } // namespace grainload::particles

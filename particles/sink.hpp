@@ -6,6 +6,7 @@
 #include "io/region.hpp"
 #include "particles/body_names.hpp"
 #include "particles/particle_view.hpp"
+#include "particles/scene_part.hpp"
 
 #include <array>
 #include <optional>
@@ -64,9 +65,9 @@ inline constexpr double kBeverlooGrain = 1.5;
 
 /// Particles leaving the scene through regions (io::Region), and the books of what left: the
 /// mass per sink, a history at the output instants (discharge.csv) and the summary figures
-/// (discharged mass, steady rate, mass audit). In terms of particles and masses only, so a
-/// DEM scene can use it as it stands.
-class SinkSet {
+/// (discharged mass, steady rate against Beverloo's). A scene part in terms of particles and
+/// masses only, so a DEM scene can use it as it stands.
+class SinkSet final : public ScenePart {
   public:
     struct Sink {
         std::string name;
@@ -94,16 +95,11 @@ class SinkSet {
 
     bool empty() const { return sinks_.empty(); }
     const std::vector<Sink>& sinks() const { return sinks_; }
+    std::string_view name() const override { return "sink"; }
     /// Flag (gone[i] = 1) every material particle inside a sink that takes its body, the first
     /// such sink in case order taking it, and book its mass there. Returns how many were flagged.
-    Index collect(const ParticleView& particles, std::vector<char>& gone);
+    Index collect_departures(const ParticleView& particles, std::vector<char>& gone) override;
     double discharged() const;
-
-    /// The mass of the material particles when the scene was built, for the mass audit.
-    void set_initial_mass(double mass) { initial_mass_ = mass; }
-    /// (mass in the scene + mass discharged - initial mass - mass created) / (initial mass +
-    /// mass created).
-    double audit_error(double scene_mass, double created) const;
 
     /// Add a row (time, discharged mass per sink) to the history, at an output instant; false
     /// (and nothing added) when the history already reaches `time`.
@@ -113,26 +109,27 @@ class SinkSet {
     /// rate since the instant before).
     std::string csv_header() const;
     std::string last_rows() const;
+    /// At an output instant: the history's row, and its lines appended to discharge.csv.
+    void at_output(double time, io::OutputStreams& output) override;
     /// Per sink: sink_NAME_discharged_mass, sink_NAME_steady_rate (io::steady_rate over the
     /// history, null when it cannot be fitted; with an outlet, Beverloo's rate as its
-    /// reference), sink_NAME_steady_window_start/_end; then
-    /// discharged_mass, initial_mass, created_mass (by sources) and mass_audit_error.
-    void append_results(double scene_mass, double created,
-                        std::vector<io::ResultFigure>& results) const;
+    /// reference), sink_NAME_steady_window_start/_end.
+    void append_results(std::vector<io::ResultFigure>& results) const override;
 
     /// Beverloo's rate of sink s's outlet, the model's share of it (none without outlet_width).
     std::optional<double> outlet_rate(std::size_t s) const;
 
-    /// For checkpoints: the masses, the initial mass and the history.
+    /// For checkpoints: the masses and the history.
     std::vector<double> state() const;
     void set_state(const std::vector<double>& state);
+    void write_checkpoint(std::ostream& out) const override;
+    void read_checkpoint(std::istream& in) override;
 
   private:
     std::vector<Sink> sinks_;
     int dimension_ = 3;
     double gravity_ = 0.0;
     double share_ = 1.0;
-    double initial_mass_ = 0.0;
     std::vector<double> history_times_;
     std::vector<std::vector<double>> history_; ///< per row, the discharged mass per sink
 };

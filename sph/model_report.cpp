@@ -81,7 +81,7 @@ void SphModel::describe_model(std::vector<io::ModelChoice>& choices) const {
                       plane.at, plane.side > 0 ? "+" : "-");
         choices.push_back({std::string("symmetry ") + axis, text});
     }
-    for (const particles::SinkSet::Sink& sink : sinks_.sinks()) {
+    for (const particles::SinkSet::Sink& sink : sinks_->sinks()) {
         choices.push_back({"sink " + sink.name, sink.region.kind == io::Region::Kind::half_space
                                                     ? "half-space beyond a plane"
                                                     : "box"});

@@ -164,10 +164,10 @@ void SphModel::check_start(const io::CaseTable& sph) const {
             warnings.push_back(std::move(w));
         }
         for (std::string& w :
-             check_sinks_hold_bodies(sph, particles(), sinks_, sources_, body_names_)) {
+             check_sinks_hold_bodies(sph, particles(), *sinks_, sources_, body_names_)) {
             warnings.push_back(std::move(w));
         }
-        for (std::string& w : outlet_reach_warnings(sph, particles(), walls, sinks_, sources_,
+        for (std::string& w : outlet_reach_warnings(sph, particles(), walls, *sinks_, sources_,
                                                     gravity_, spacing_, dimension_)) {
             warnings.push_back(std::move(w));
         }
@@ -407,7 +407,12 @@ std::optional<std::string> SphModel::diagnose() const {
 }
 
 std::vector<std::string> SphModel::take_events() {
-    return std::exchange(events_, {});
+    // The parts' events of the steps since the last call (a settle), then the phases' ends,
+    // which follow them within a step.
+    std::vector<std::string> events = parts_.take_events();
+    events.insert(events.end(), events_.begin(), events_.end());
+    events_.clear();
+    return events;
 }
 
 } // namespace grainload::sph

@@ -123,7 +123,7 @@ class SphModel final : public io::Stepper, public io::Reporter {
 
     const ParticleSet& particles() const { return solver_ ? solver_->particles() : particles_; }
     const SphSolver* solver() const { return solver_.get(); }
-    const particles::SinkSet& sinks() const { return sinks_; }
+    const particles::SinkSet& sinks() const { return *sinks_; }
     const SourceSet& sources() const { return sources_; }
     /// Index each current particle had when the case built the scene (particles leave through
     /// sinks and removed walls; the rest keep their order).
@@ -148,6 +148,8 @@ class SphModel final : public io::Stepper, public io::Reporter {
     /// Sinks and remove_at (sph_model_outlets.cpp): read them, refuse what cannot lose
     /// particles, and open the mass audit.
     void build_outlets(const io::CaseTable& sph);
+    /// [sph.settle] as a part; without one, `walls_wait` (a wall removed on "settled") fails.
+    void build_settle(const io::CaseTable& sph, bool walls_wait);
     /// After a step ending at `time`: the particles in a sink and the walls due to go leave.
     void remove_departed(double time);
     /// Take the flagged particles out of the solver and of every per-particle array here.
@@ -174,8 +176,8 @@ class SphModel final : public io::Stepper, public io::Reporter {
     /// Phases (sph_model_phases.cpp): after a step ending at `time`, end the phases whose end
     /// has come and hand their starts to the walls and sources; true when one ended.
     bool advance_phases(double time);
-    /// After a step ending at `time`: the settle watches ([sph.settle], the phases') see the
-    /// material's kinetic energy.
+    /// After a step ending at `time`: the phases' settle watches see the material's kinetic
+    /// energy.
     void record_kinetic_energy(double time);
     /// Refuses [[phase]] conditions the scene cannot meet: `settled` without the SPH solver,
     /// `discharged` without a sink (failing at that phase's `end`).
@@ -209,9 +211,8 @@ class SphModel final : public io::Stepper, public io::Reporter {
     /// parts, in the order the case builds them. Mutable because they write their rows at the
     /// output instants, which the driver reaches through the const append_blocks.
     mutable particles::ScenePartList parts_;
-    /// [[sph.sink]]: mutable because its history is recorded at the output instants, which the
-    /// driver reaches through the const append_blocks (as the parts above).
-    mutable particles::SinkSet sinks_;
+    /// [[sph.sink]], shared with parts_ when there is one (empty: none).
+    std::shared_ptr<particles::SinkSet> sinks_ = std::make_shared<particles::SinkSet>();
     bool removals_ = false; ///< a sink or a wall with remove_at: particles may leave
     std::vector<Index> origin_;
     /// [[sph.source]]: particles entering the scene.
@@ -228,8 +229,8 @@ class SphModel final : public io::Stepper, public io::Reporter {
     /// Per body and axis where its lattice changed its drawn size: the filled size against the
     /// drawn one, for summary.json (body_NAME_size_AXIS).
     std::vector<io::ResultFigure> body_sizes_;
-    /// [sph.settle]: the settle phase, and the events (its end) not yet taken by the driver.
-    std::optional<particles::SettleWatch> settle_;
+    /// [sph.settle] (null: none), shared with parts_: the gates that wait for it read it.
+    std::shared_ptr<const particles::SettlePart> settle_;
     /// [[phase]]: the run's phases, read before the walls and sources that may name them.
     particles::PhaseSequence phases_;
     std::vector<std::string> events_;

@@ -3,6 +3,7 @@
 // sph_model.cpp.
 #include "io/binary_stream.hpp"
 #include "io/case_table.hpp"
+#include "particles/mass_audit.hpp"
 #include "sph/particle_removal.hpp"
 #include "sph/sph_model.hpp"
 
@@ -28,8 +29,12 @@ void SphModel::build_outlets(const io::CaseTable& sph) {
     for (const int material : body_material_) {
         grains.push_back({materials_->name(material), materials_->grain_size(material)});
     }
-    sinks_ = particles::SinkSet(sph, {"[[sph.body]]", body_names_}, dimension_, gravity_.norm(),
-                                share, grains);
+    sinks_ =
+        std::make_shared<particles::SinkSet>(sph, particles::BodyNames{"[[sph.body]]", body_names_},
+                                             dimension_, gravity_.norm(), share, grains);
+    if (!sinks_->empty()) {
+        parts_.add(sinks_);
+    }
     bool walls_go = false;
     bool on_settle = false;
     if (solver_) {
@@ -39,17 +44,8 @@ void SphModel::build_outlets(const io::CaseTable& sph) {
             on_settle = on_settle || wall.removal_on_settle;
         }
     }
-    if (const auto settle = sph.optional_table("settle")) {
-        if (!solver_) {
-            settle->fail("kinetic_energy_fraction",
-                         "the settle watch needs the SPH solver: expected interactions = true");
-        }
-        settle_.emplace(*settle);
-    } else if (on_settle) {
-        sph.fail("wall", "a wall with remove_at = \"settled\" needs an [sph.settle] table "
-                         "saying when the scene has settled");
-    }
-    removals_ = !sinks_.empty() || walls_go;
+    build_settle(sph, on_settle);
+    removals_ = !sinks_->empty() || walls_go;
     build_sources(sph);
     audit_ = removals_ || !sources_.empty();
     built_count_ = particles().size();
@@ -66,7 +62,7 @@ void SphModel::build_outlets(const io::CaseTable& sph) {
     if (!audit_) {
         return;
     }
-    const char* key = !sources_.empty() ? "source" : sinks_.empty() ? "wall" : "sink";
+    const char* key = !sources_.empty() ? "source" : sinks_->empty() ? "wall" : "sink";
     if (!solver_) {
         sph.fail(key, "particles leave or enter the scene only in the SPH solver: expected "
                       "interactions = true");
@@ -76,7 +72,27 @@ void SphModel::build_outlets(const io::CaseTable& sph) {
                       "ever, so no particle can leave or enter: expected formulation = "
                       "\"updated_lagrangian\" with sinks, sources or remove_at");
     }
-    sinks_.set_initial_mass(scene_mass());
+    parts_.add(std::make_shared<particles::MassAudit>(
+        scene_mass(), dimension_,
+        particles::MassAudit::Books{[this] { return scene_mass(); },
+                                    [this] { return sinks_->discharged(); },
+                                    [this] { return sources_.created(); }}));
+}
+
+void SphModel::build_settle(const io::CaseTable& sph, bool walls_wait) {
+    if (const auto settle = sph.optional_table("settle")) {
+        if (!solver_) {
+            settle->fail("kinetic_energy_fraction",
+                         "the settle watch needs the SPH solver: expected interactions = true");
+        }
+        auto part = std::make_shared<particles::SettlePart>(
+            particles::SettleWatch(*settle), [this] { return solver_->kinetic_energy(); });
+        settle_ = part;
+        parts_.add(std::move(part));
+    } else if (walls_wait) {
+        sph.fail("wall", "a wall with remove_at = \"settled\" needs an [sph.settle] table "
+                         "saying when the scene has settled");
+    }
 }
 
 double SphModel::scene_mass() const {
@@ -106,8 +122,8 @@ void SphModel::remove_departed(double time) {
     }
     const ParticleSet& p = solver_->particles();
     std::vector<char> gone(static_cast<std::size_t>(p.size()), 0);
-    Index count = sinks_.collect(p.view(), gone);
-    const bool settled = settle_ && settle_->settled();
+    Index count = parts_.collect_departures(p.view(), gone);
+    const bool settled = settle_ && settle_->watch().settled();
     for (const Wall& wall : solver_->walls()) {
         const double due = wall.removal_time * (1.0 - kRemovalTimeTolerance);
         if (wall.count > 0 && (time >= due || (wall.removal_on_settle && settled))) {
@@ -136,14 +152,8 @@ void SphModel::apply_removal(std::span<const char> gone) {
 }
 
 void SphModel::write_outlet_state(std::ostream& out) const {
-    if (audit_) {
-        io::write_array(out, sinks_.state());
-    }
     if (!sources_.empty()) {
         io::write_array(out, sources_.state());
-    }
-    if (settle_) {
-        io::write_array(out, settle_->state());
     }
     if (!phases_.empty()) {
         io::write_array(out, phases_.state());
@@ -176,20 +186,10 @@ void SphModel::read_removals(std::istream& in) {
 }
 
 void SphModel::read_outlet_state(std::istream& in) {
-    if (audit_) {
-        std::vector<double> state;
-        io::read_array(in, state);
-        sinks_.set_state(state);
-    }
     if (!sources_.empty()) {
         std::vector<double> state;
         io::read_array(in, state);
         sources_.set_state(state);
-    }
-    if (settle_) {
-        std::vector<double> state;
-        io::read_array(in, state);
-        settle_->set_state(state);
     }
     if (!phases_.empty()) {
         std::vector<double> state;

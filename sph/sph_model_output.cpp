@@ -22,9 +22,6 @@ void SphModel::write_output_rows(double time) const {
         output_->open("wall_forces.csv", kWallForcesHeader)
             .append(wall_force_rows(time, solver_->walls()));
     }
-    if (!sinks_.empty() && sinks_.record(time)) {
-        output_->open("discharge.csv", sinks_.csv_header()).append(sinks_.last_rows());
-    }
     parts_.at_output(time, *output_);
 }
 
@@ -88,18 +85,8 @@ void SphModel::append_wall_blocks(io::Frame& frame) const {
 
 void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) const {
     results.insert(results.end(), body_sizes_.begin(), body_sizes_.end());
-    if (audit_) {
-        sinks_.append_results(scene_mass(), sources_.created(), results);
-    }
     parts_.append_results(results);
-    if (settle_) {
-        // null (NaN) when the scene never settled.
-        results.push_back(
-            {"settle_time",
-             settle_->settled() ? settle_->settle_time() : std::numeric_limits<double>::quiet_NaN(),
-             "s", std::nullopt, ""});
-        results.push_back({"settle_peak_kinetic_energy", settle_->peak(), "J", std::nullopt, ""});
-    } else {
+    if (!settle_) {
         append_phase_results(results);
     }
     if (solver_) {

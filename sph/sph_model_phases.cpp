@@ -17,7 +17,7 @@ void SphModel::check_phase_conditions(const io::CaseTable& root) const {
             tables[k].fail("end", "the settle condition measures the SPH solver's kinetic "
                                   "energy: expected interactions = true");
         }
-        if (end == particles::PhaseSequence::End::discharged && sinks_.empty()) {
+        if (end == particles::PhaseSequence::End::discharged && sinks_->empty()) {
             tables[k].fail("end", "the discharged condition counts the mass the sinks take: "
                                   "expected an [[sph.sink]]");
         }
@@ -25,20 +25,8 @@ void SphModel::check_phase_conditions(const io::CaseTable& root) const {
 }
 
 void SphModel::record_kinetic_energy(double time) {
-    const bool phase_watch = phases_.ends_on(particles::PhaseSequence::End::settled);
-    if (!settle_ && !phase_watch) {
-        return;
-    }
-    const double kinetic = solver_->kinetic_energy();
-    if (settle_ && settle_->record(time, kinetic)) {
-        std::ostringstream event;
-        event << "settled at t = " << time << " s: the material's kinetic energy " << kinetic
-              << " J is below " << settle_->fraction() << " of its peak " << settle_->peak()
-              << " J";
-        events_.push_back(event.str());
-    }
-    if (phase_watch) {
-        phases_.record_kinetic(time, kinetic);
+    if (phases_.ends_on(particles::PhaseSequence::End::settled)) {
+        phases_.record_kinetic(time, solver_->kinetic_energy());
     }
 }
 
@@ -46,7 +34,7 @@ bool SphModel::advance_phases(double time) {
     if (phases_.empty()) {
         return false;
     }
-    std::vector<std::string> ended = phases_.update(time, sinks_.discharged());
+    std::vector<std::string> ended = phases_.update(time, sinks_->discharged());
     if (ended.empty()) {
         return false;
     }
@@ -81,12 +69,7 @@ void SphModel::append_phase_results(std::vector<io::ResultFigure>& results) cons
             continue;
         }
         // The figures of [sph.settle], which a case moved to the phase table keeps.
-        const particles::SettleWatch& watch = phase.watch;
-        results.push_back(
-            {"settle_time",
-             watch.settled() ? watch.settle_time() : std::numeric_limits<double>::quiet_NaN(), "s",
-             std::nullopt, ""});
-        results.push_back({"settle_peak_kinetic_energy", watch.peak(), "J", std::nullopt, ""});
+        particles::append_settle_results(phase.watch, results);
         return;
     }
 }

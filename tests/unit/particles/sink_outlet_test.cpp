@@ -31,7 +31,7 @@ TEST(SinkOutlet, BeverloosRateForASlotACircleAndAPlaneStrainSlot) {
 /// The results of `sinks` in a scene that holds 1 kg and created nothing.
 std::vector<io::ResultFigure> results_of(const SinkSet& sinks) {
     std::vector<io::ResultFigure> results;
-    sinks.append_results(1.0, 0.0, results);
+    sinks.append_results(results);
     return results;
 }
 
