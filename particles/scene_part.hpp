@@ -34,12 +34,14 @@ class ScenePart {
         (void)t;
         (void)dt;
     }
-    /// After a step: flag (gone[i] = 1) the particles that leave the scene through this part
-    /// and book them; a particle another part flagged already is not this part's. Returns how
-    /// many it flagged. May be called more than once after a step (a phase that ends on the mass
-    /// that left lets the next phase's gates go at once).
-    virtual Index collect_departures(const ParticleView& particles, std::vector<char>& gone) {
+    /// After a step ending at `time`: flag (gone[i] = 1) the particles that leave the scene
+    /// through this part and book them; a particle another part flagged already is not this
+    /// part's. Returns how many it flagged. May be called more than once after a step (a phase
+    /// that ends on the mass that left lets the next phase's gates go at once).
+    virtual Index collect_departures(const ParticleView& particles, double time,
+                                     std::vector<char>& gone) {
         (void)particles;
+        (void)time;
         (void)gone;
         return 0;
     }

@@ -19,10 +19,11 @@ void ScenePartList::end_step(double time) {
     }
 }
 
-Index ScenePartList::collect_departures(const ParticleView& particles, std::vector<char>& gone) {
+Index ScenePartList::collect_departures(const ParticleView& particles, double time,
+                                        std::vector<char>& gone) {
     Index count = 0;
     for (const auto& part : parts_) {
-        count += part->collect_departures(particles, gone);
+        count += part->collect_departures(particles, time, gone);
     }
     return count;
 }

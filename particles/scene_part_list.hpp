@@ -23,7 +23,7 @@ class ScenePartList {
     void after_step(double t, double dt);
     void end_step(double time);
     /// Every part's departures, in order (see ScenePart::collect_departures); the count.
-    Index collect_departures(const ParticleView& particles, std::vector<char>& gone);
+    Index collect_departures(const ParticleView& particles, double time, std::vector<char>& gone);
     void after_removal(std::span<const Index> new_index);
     void at_output(double time, io::OutputStreams& output);
     void append_results(std::vector<io::ResultFigure>& results) const;

@@ -141,7 +141,8 @@ SinkSet::SinkSet(const io::CaseTable& scene, const BodyNames& bodies, int dimens
     }
 }
 
-Index SinkSet::collect_departures(const ParticleView& p, std::vector<char>& gone) {
+Index SinkSet::collect_departures(const ParticleView& p, double time, std::vector<char>& gone) {
+    (void)time;
     Index flagged = 0;
     for (Index i = 0; i < p.size(); ++i) {
         if (p.is_wall(i) || gone[static_cast<std::size_t>(i)]) {

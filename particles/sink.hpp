@@ -97,8 +97,10 @@ class SinkSet final : public ScenePart {
     const std::vector<Sink>& sinks() const { return sinks_; }
     std::string_view name() const override { return "sink"; }
     /// Flag (gone[i] = 1) every material particle inside a sink that takes its body, the first
-    /// such sink in case order taking it, and book its mass there. Returns how many were flagged.
-    Index collect_departures(const ParticleView& particles, std::vector<char>& gone) override;
+    /// such sink in case order taking it, and book its mass there, whatever the time. Returns
+    /// how many were flagged.
+    Index collect_departures(const ParticleView& particles, double time,
+                             std::vector<char>& gone) override;
     double discharged() const;
 
     /// Add a row (time, discharged mass per sink) to the history, at an output instant; false

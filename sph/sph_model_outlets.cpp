@@ -4,23 +4,16 @@
 #include "io/binary_stream.hpp"
 #include "io/case_table.hpp"
 #include "particles/mass_audit.hpp"
+#include "sph/gates.hpp"
 #include "sph/particle_removal.hpp"
 #include "sph/sph_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <set>
 
 namespace grainload::sph {
-
-namespace {
-
-// A wall due at remove_at leaves after the step whose end reaches it; the end of a step that
-// the driver cut to an output instant can fall an ulp short of that instant, and
-// remove_at = an output instant means that instant (as the driver's own end tolerance).
-constexpr double kRemovalTimeTolerance = 1e-12;
-
-} // namespace
 
 void SphModel::build_outlets(const io::CaseTable& sph) {
     // A symmetry plane through an outlet leaves the model half of it (each [[sph.symmetry]]).
@@ -35,16 +28,14 @@ void SphModel::build_outlets(const io::CaseTable& sph) {
     if (!sinks_->empty()) {
         parts_.add(sinks_);
     }
-    bool walls_go = false;
-    bool on_settle = false;
-    if (solver_) {
-        for (const Wall& wall : solver_->walls()) {
-            walls_go = walls_go || std::isfinite(wall.removal_time) || wall.removal_on_settle ||
-                       wall.removal_phase >= 0;
-            on_settle = on_settle || wall.removal_on_settle;
-        }
+    const std::vector<Wall> none;
+    const std::vector<Wall>& walls = solver_ ? solver_->walls() : none;
+    build_settle(sph, std::any_of(walls.begin(), walls.end(),
+                                  [](const Wall& wall) { return wall.removal_on_settle; }));
+    const bool walls_go = GateSet::any(walls);
+    if (walls_go) {
+        parts_.add(std::make_shared<GateSet>(solver_->walls(), settle_));
     }
-    build_settle(sph, on_settle);
     removals_ = !sinks_->empty() || walls_go;
     build_sources(sph);
     audit_ = removals_ || !sources_.empty();
@@ -122,15 +113,7 @@ void SphModel::remove_departed(double time) {
     }
     const ParticleSet& p = solver_->particles();
     std::vector<char> gone(static_cast<std::size_t>(p.size()), 0);
-    Index count = parts_.collect_departures(p.view(), gone);
-    const bool settled = settle_ && settle_->watch().settled();
-    for (const Wall& wall : solver_->walls()) {
-        const double due = wall.removal_time * (1.0 - kRemovalTimeTolerance);
-        if (wall.count > 0 && (time >= due || (wall.removal_on_settle && settled))) {
-            std::fill_n(gone.begin() + wall.first, wall.count, char{1});
-            count += wall.count;
-        }
-    }
+    const Index count = parts_.collect_departures(p.view(), time, gone);
     if (count > 0) {
         apply_removal(gone);
     }

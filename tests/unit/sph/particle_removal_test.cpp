@@ -144,7 +144,7 @@ TEST(SinkSet, TakesMaterialParticlesInItsRegionAndBooksTheirMass) {
     std::vector<char> gone(static_cast<std::size_t>(scene.particles.size()), 0);
     // x = 3 and 4 are beyond x = 2.5 ("right" first); 0, 1, 2 in the box (body 0 only); the
     // walls at z = 0 lie in both regions and stay.
-    EXPECT_EQ(set.collect_departures(scene.particles.view(), gone), 5);
+    EXPECT_EQ(set.collect_departures(scene.particles.view(), 0.0, gone), 5);
     EXPECT_EQ(set.sinks()[0].discharged, 0.25 * (4 + 5));
     EXPECT_EQ(set.sinks()[1].discharged, 0.25 * (1 + 2 + 3));
     EXPECT_EQ(set.sinks()[2].discharged, 0.0);
