@@ -2,7 +2,6 @@
 
 #include "fem/imported_shell_mesh.hpp"
 #include "fem/shell_mesh_generators.hpp"
-#include "fem/shell_model.hpp"
 #include "io/case_table.hpp"
 
 #include <algorithm>

@@ -17,41 +17,6 @@
 
 namespace grainload::fem {
 
-/// The keys of the [fem] table (docs/user-guide/fem.md).
-inline constexpr std::array<io::KeySpec, 15> kFemKeys{{
-    {"analysis", "`static` or `dynamic`", "`\"static\"`",
-     "static: load steps, time only orders them; dynamic: implicit Newmark or HHT-α"},
-    {"kinematics", "`linear` or `total_lagrangian`", "`\"linear\"`",
-     "small displacements, or large displacements and rotations with small strains"},
-    {"load_time", "time", "`[case].end_time`",
-     "when the load factor (a linear ramp, then held) reaches 1; it scales every load and "
-     "prescribed value that names no `time_function`"},
-    {"increments_per_step", "integer", "1", "load increments per time step (static)", 1.0},
-    {"time_step", "time", "required when `dynamic`", "the implicit step of a dynamic analysis"},
-    {"integrator", "`newmark` or `hht`", "`\"newmark\"`",
-     "dynamic: Newmark, or Hilber–Hughes–Taylor α (damps high frequencies, second order)"},
-    {"newmark_gamma", "number >= 0.5", "0.5",
-     "`newmark`: γ; 0.5 is the energy-conserving trapezoidal rule, more damps high frequencies "
-     "but is first order (β = (γ+½)²/4)",
-     0.5},
-    {"hht_alpha", "number in [-1/3, 0]", "-0.05",
-     "`hht`: α; high-frequency spectral radius (1+α)/(1−α); 0 is the trapezoidal rule", -0.05},
-    {"mass", "`lumped` or `consistent`", "`\"lumped\"`",
-     "dynamic: diagonal mass, or the element mass matrix (frequencies converge from above, "
-     "lumped from below)"},
-    {"force_tolerance", "number", "1e-6",
-     "ε_F of thesis eq. 5.2.8 (out-of-balance force ratio); <= 0 switches it off", 1e-6},
-    {"energy_tolerance", "number", "1e-10",
-     "ε_E of thesis eq. 5.2.9 (energy ratio); <= 0 switches it off", 1e-10},
-    {"displacement_tolerance", "number", "0",
-     "ε_U of thesis eq. 5.2.7 (displacement ratio); <= 0 switches it off", 0.0},
-    {"max_iterations", "integer", "20", "Newton iterations per increment", 20.0},
-    {"max_cutbacks", "integer", "6", "successive halvings of an increment that does not converge",
-     6.0},
-    {"seam_tolerance", "length", "10⁻⁶ × the largest part's size",
-     "nodes of different parts closer than this are one node (the seam between the parts)", 1e-6},
-}};
-
 /// Convergence record of one time step: the Newton iterations of its load increments.
 struct ShellStepLog {
     double time = 0.0;

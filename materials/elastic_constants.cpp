@@ -1,7 +1,7 @@
 #include "materials/elastic_constants.hpp"
 
 #include "io/case_table.hpp"
-#include "materials/material_factory.hpp"
+#include "materials/material_keys.hpp"
 
 #include <cmath>
 

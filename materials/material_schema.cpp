@@ -3,7 +3,7 @@
 #include "materials/drucker_prager.hpp"
 #include "materials/generalized_cap.hpp"
 #include "materials/lsdyna_material.hpp"
-#include "materials/material_factory.hpp"
+#include "materials/material_keys.hpp"
 #include "materials/mu_i_material.hpp"
 #include "materials/von_mises.hpp"
 
