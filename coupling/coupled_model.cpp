@@ -24,34 +24,15 @@ double relative_change(const Eigen::VectorXd& next, const Eigen::VectorXd& previ
     return scale > 0.0 ? (next - previous).norm() / scale : (previous.norm() > 0.0 ? 1.0 : 0.0);
 }
 
-/// Below this share of the interface impulse's magnitude a component is the residue of sums
-/// that cancel (the x and y of a load along z), not a momentum to compare.
-constexpr double kNegligibleShare = 1e-3;
+} // namespace
 
-/// shell_impulse_AXIS, what the shell's nodes received, beside what the sand put into the
-/// coupled walls (`wall`, the SPH side's own sum) as its reference: momentum crosses the
-/// interface unchanged (the staggered exchange lags it by a window's load, an iterated one by
-/// its tolerance). `magnitude`: the interface impulse's.
-io::ResultFigure shell_impulse_figure(const std::string& axis, double shell, double wall,
-                                      double magnitude) {
-    if (std::abs(wall) < kNegligibleShare * magnitude) {
-        return {"shell_impulse_" + axis, shell, "N s", std::nullopt,
-                "its interface_impulse is below 1e-3 of the impulse: not compared"};
-    }
-    return {"shell_impulse_" + axis, shell, "N s", wall,
-            "the sand's impulse on the coupled walls (interface_impulse): momentum conservation "
-            "across the interface"};
-}
-
-Vec3 force_sum(const Eigen::VectorXd& load) {
+Vec3 load_resultant(const Eigen::VectorXd& load) {
     Vec3 sum = Vec3::Zero();
     for (Eigen::Index n = 0; n + 5 < load.size(); n += 6) {
         sum += load.segment<3>(n);
     }
     return sum;
 }
-
-} // namespace
 
 CoupledModel::CoupledModel(std::unique_ptr<sph::SphModel> sph, std::unique_ptr<fem::ShellModel> fem,
                            std::vector<CoupledPart> parts, CouplingSettings settings)
@@ -208,7 +189,7 @@ void CoupledModel::run_window(double t, double dt, const Eigen::VectorXd& applie
     // The work the shell receives: its loads at the window's ends, trapezoidal (Newmark's energy
     // identity; for a static linear shell the change of its strain energy).
     record.shell_work = 0.5 * (start_load_ + end_load_).dot(fem_->analysis().dofs() - before);
-    record.shell_impulse = dt * force_sum(applied);
+    record.shell_impulse = dt * load_resultant(applied);
     pending_ = record;
 }
 
@@ -247,36 +228,6 @@ void CoupledModel::track_extremes() {
         extremes_.add_deflection(fem_->analysis(), part.elements);
     }
     extremes_.add_stress(fem_->analysis());
-}
-
-void CoupledModel::describe_model(std::vector<io::ModelChoice>& choices) const {
-    sph_->describe_model(choices);
-    for (const CoupledPart& part : parts_) {
-        for (io::ModelChoice& choice : choices) {
-            if (choice.item == "wall " + part.name) {
-                choice.choice = "elastic shell, coupled";
-            }
-        }
-    }
-    for (const fem::ShellPart& part : fem_->analysis().parts()) {
-        choices.push_back(
-            {"shell " + part.name,
-             std::string(part.material->model()) +
-                 (parts_.empty() ? ", not loaded by the sand (rigid interfaces)" : "")});
-    }
-    choices.push_back({"coupling", settings_.max_iterations > 1 ? "iterated" : "staggered"});
-}
-
-void CoupledModel::append_hints(std::vector<std::string>& hints) const {
-    sph_->append_hints(hints);
-    if (!parts_.empty()) {
-        std::string names;
-        for (const CoupledPart& part : parts_) {
-            names += (names.empty() ? "" : ", ") + part.name;
-        }
-        append_shell_hints(extremes_, *fem_, names, sph_->spacing(), hints);
-    }
-    append_rigid_interface_hints(rigid_interfaces_, parts_.empty(), *fem_, hints);
 }
 
 void CoupledModel::iterate_window(double t, double dt) {
@@ -360,107 +311,6 @@ std::string CoupledModel::instability_remedy() const {
         remedy << "(max_iterations > 1)";
     }
     return remedy.str();
-}
-
-void CoupledModel::append_blocks(io::Frame& frame) const {
-    sph_->append_blocks(frame);
-    if (parts_.empty()) {
-        // Every interface rigid: the shell carries its own loads only, and the sand's pressure
-        // is on the rigid walls ([[sph.wall_map]]), not on it.
-        fem_->append_blocks(frame, {}, {}, "without_sand_");
-        return;
-    }
-    // The same arrays per element: the mean of its corners', for cell-based filters.
-    const std::vector<io::FieldArray> nodes = interface_fields();
-    std::vector<io::FieldArray> elements;
-    const fem::ShellMesh& mesh = fem_->analysis().mesh();
-    for (const io::FieldArray& field : nodes) {
-        io::FieldArray cell{field.name, field.components, {}};
-        const auto c = static_cast<std::size_t>(field.components);
-        for (const fem::ShellElement& element : mesh.elements()) {
-            const int corners = element.is_triangle() ? 3 : 4;
-            for (std::size_t k = 0; k < c; ++k) {
-                double sum = 0.0;
-                for (int a = 0; a < corners; ++a) {
-                    sum += field.values[c * static_cast<std::size_t>(
-                                                element.nodes[static_cast<std::size_t>(a)]) +
-                                        k];
-                }
-                cell.values.push_back(sum / corners);
-            }
-        }
-        elements.push_back(std::move(cell));
-    }
-    fem_->append_blocks(frame, nodes, elements);
-}
-
-void CoupledModel::append_results(double t, std::vector<io::ResultFigure>& results) const {
-    sph_->append_results(t, results);
-    fem_->append_results(t, results);
-    const double scale = sph_->solver()->energy_ledger().throughput();
-    results.push_back({"coupling_windows",
-                       static_cast<double>(monitor_.windows().size() + windows_before_restart_), "",
-                       std::nullopt, ""});
-    // A shell that no interface loads has no result stress or deflection to report: its own
-    // loads' are in the frames, labelled (append_blocks), and the hints say so.
-    if (!parts_.empty()) {
-        results.push_back(
-            {"shell_largest_deflection", extremes_.deflection, "m", std::nullopt, ""});
-        results.push_back({"shell_largest_von_mises", extremes_.von_mises, "Pa", std::nullopt, ""});
-    }
-    results.push_back({"coupling_sand_work", monitor_.sand_work(), "J", std::nullopt, ""});
-    results.push_back({"coupling_shell_work", monitor_.shell_work(), "J", std::nullopt, ""});
-    results.push_back(
-        {"coupling_energy_error", monitor_.relative_energy_error(scale), "", std::nullopt, ""});
-    results.push_back({"coupling_energy_created", monitor_.relative_created_energy(scale), "",
-                       std::nullopt,
-                       "energy the interface created since its error was largest, relative "
-                       "(the watchdog's measure)"});
-    results.push_back({"coupling_window_limit", window_limit(), "s", std::nullopt,
-                       fem_->dynamic()
-                           ? "staggered, dynamic shell: longest stable window (estimate)"
-                           : "staggered, static shell: shortest stable window (estimate)"});
-    if (added_mass_lag_ > 0.0) {
-        results.push_back({"coupling_added_mass_lag", added_mass_lag_, "s", std::nullopt,
-                           "static shell with the added mass: time to follow a load change"});
-    }
-    results.push_back({"coupling_largest_subcycles",
-                       static_cast<double>(monitor_.largest_subcycles()), "", std::nullopt, ""});
-    // The run's `steps` count windows; the SPH steps behind them (every pass of an iterated
-    // window) are these.
-    results.push_back(
-        {"coupling_sph_steps", static_cast<double>(monitor_.subcycles()), "", std::nullopt, ""});
-    const Vec3 load = force_sum(load_);
-    const Vec3 momentum = sph_->solver()->linear_momentum();
-    for (int a = 0; a < 3; ++a) {
-        const std::string axis(1, static_cast<char>('x' + a));
-        results.push_back({"interface_force_" + axis, load[a], "N", std::nullopt, ""});
-        // The impulse balance of the exchange: what the sand put into the coupled walls (SPH
-        // side, trapezoidal like the leapfrog's own momentum update) and what the shell
-        // received (the applied loads times the windows), with the sand's momentum.
-        results.push_back(
-            {"interface_impulse_" + axis, monitor_.wall_impulse()[a], "N s", std::nullopt, ""});
-        results.push_back(shell_impulse_figure(axis, monitor_.shell_impulse()[a],
-                                               monitor_.wall_impulse()[a],
-                                               monitor_.wall_impulse().norm()));
-        results.push_back({"sand_momentum_" + axis, momentum[a], "kg m/s", std::nullopt, ""});
-    }
-    results.push_back({"shell_kinetic_energy", fem_->kinetic_energy(), "J", std::nullopt, ""});
-    results.push_back({"shell_strain_energy", fem_->strain_energy(), "J", std::nullopt, ""});
-}
-
-void CoupledModel::write_logs() const {
-    sph_->write_logs();
-    fem_->write_logs();
-    if (output_ != nullptr) {
-        monitor_.write_csv(*output_);
-    }
-}
-
-void CoupledModel::set_output(io::OutputStreams& output) {
-    output_ = &output;
-    sph_->set_output(output);
-    fem_->set_output(output);
 }
 
 void CoupledModel::write_checkpoint(std::ostream& out) const {

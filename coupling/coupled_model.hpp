@@ -38,6 +38,9 @@ struct CouplingSettings {
     double added_mass = 0.0;
 };
 
+/// The resultant force of a nodal load vector of 6 entries per node (3 forces, 3 moments).
+Vec3 load_resultant(const Eigen::VectorXd& load);
+
 /// The SPH-shell coupling as the time loop sees it (thesis sections 5.3 and 9.1): the FEM is
 /// master, SPH its slave. advance(t, dt) is one window:
 ///  1. the shell is solved from t to t + dt under the sand's mean load of the previous window
