@@ -61,6 +61,15 @@ class Material {
     /// Equivalent plastic strain carried in `state`, for output.
     virtual double equivalent_plastic_strain(std::span<const double> state) const;
 
+    /// A state entry the frames show per particle beside the stress and the plastic strain.
+    struct StateField {
+        std::string name;
+        int index = 0; ///< into the point's state
+    };
+    /// The state entries worth a frame array (the mu(I) material's inertial number); none by
+    /// default.
+    virtual std::vector<StateField> frame_state() const { return {}; }
+
     const ElasticConstants& elastic() const { return elastic_; }
     double density() const { return elastic_.density; }
 

@@ -13,6 +13,7 @@ namespace grainload::materials {
 namespace {
 
 constexpr int kPlasticStrain = 0;
+constexpr int kInertialNumber = 2;
 
 /// A friction coefficient given as a number (`number_key`) or as the angle whose tangent it is
 /// (`angle_key`), exactly one of the two.
@@ -84,7 +85,11 @@ DruckerPragerCone MuIMaterial::cone(double mu) {
 }
 
 std::vector<std::string> MuIMaterial::state_names() const {
-    return {"equivalent_plastic_strain", "plastic_volumetric_strain"};
+    return {"equivalent_plastic_strain", "plastic_volumetric_strain", "inertial_number"};
+}
+
+std::vector<Material::StateField> MuIMaterial::frame_state() const {
+    return {{"inertial_number", kInertialNumber}};
 }
 
 double MuIMaterial::equivalent_plastic_strain(std::span<const double> state) const {
@@ -102,15 +107,19 @@ PlasticRegion MuIMaterial::update_over(const Voigt6& strain_increment, double ti
                                        Matrix6* tangent) const {
     const DruckerPragerTrial trial = drucker_prager_trial(elastic_, stress, strain_increment);
     DruckerPragerCone step_cone = cone(law_.mu_s);
+    double inertial = 0.0;
     // Inside the static cone (there I1 <= 0) the step is elastic whatever the rate, as mu(I) >=
     // mu_s only widens the cone: the rate is needed only outside it, where most steps are not.
     if (trial.sqrt_j2 + step_cone.alpha * trial.i1 > 0.0) {
         // The step's shear rate and its trial pressure: the cone return keeps I1
         // (alpha_flow = 0), so p is also the pressure the step ends at.
-        const double inertial =
-            law_.inertial_number(shear_rate(strain_increment, time_step), -trial.i1 / 3.0);
+        inertial = law_.inertial_number(shear_rate(strain_increment, time_step), -trial.i1 / 3.0);
         step_cone = cone(law_.friction(inertial));
     }
+    // Where p <= 0 the grains carry no pressure and I is undefined (the law takes it as
+    // infinite, mu = mu_2): the state says so with NaN, which colour maps leave out.
+    state[kInertialNumber] =
+        std::isfinite(inertial) ? inertial : std::numeric_limits<double>::quiet_NaN();
     return drucker_prager_return(elastic_, step_cone, trial, stress, state, tangent);
 }
 

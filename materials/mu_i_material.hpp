@@ -43,7 +43,11 @@ inline constexpr std::array<io::KeySpec, 7> kMuIKeys{{
 /// tangent is the cone's at the step's mu (it leaves out d mu / d eps). Equations, the cone in
 /// 3D and in plane strain, and the known limits of the law in docs/theory/mu_i.md.
 ///
-/// State per point as DruckerPrager: equivalent plastic strain, plastic volumetric strain.
+/// State per point as DruckerPrager (equivalent plastic strain, plastic volumetric strain), then
+/// the inertial number of the last step: I where the trial stress reached the static cone, 0
+/// where the step stayed inside it (elastic whatever its rate), NaN where p <= 0 (undefined). The frames show it
+/// (`inertial_number`): where the flow is quasi-static (I < 1e-3), dense (1e-3 to 0.1) or
+/// collisional (I > 0.1; GDR MiDi 2004).
 class MuIMaterial final : public Material {
   public:
     MuIMaterial(ElasticConstants elastic, MuILaw law);
@@ -54,7 +58,7 @@ class MuIMaterial final : public Material {
     static DruckerPragerCone cone(double mu);
 
     std::string_view model() const override { return "mu_i"; }
-    int state_size() const override { return 2; }
+    int state_size() const override { return 3; }
     std::vector<std::string> state_names() const override;
     /// The quasi-static limit: update_over() with an infinite time step, I = 0, mu = mu_s.
     PlasticRegion update(const Voigt6& strain_increment, Voigt6& stress, std::span<double> state,
@@ -62,6 +66,7 @@ class MuIMaterial final : public Material {
     PlasticRegion update_over(const Voigt6& strain_increment, double time_step, Voigt6& stress,
                               std::span<double> state, Matrix6* tangent) const override;
     double equivalent_plastic_strain(std::span<const double> state) const override;
+    std::vector<StateField> frame_state() const override;
 
     const MuILaw& law() const { return law_; }
 

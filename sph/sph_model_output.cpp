@@ -35,6 +35,12 @@ void SphModel::append_blocks(io::Frame& frame) const {
         io::FieldArray von_mises{"von_mises", 1, {}}, plastic{"plastic_strain", 1, {}};
         io::FieldArray density{"density", 1, {}}, body{"body_id", 1, {}};
         io::FieldArray material{"material_id", 1, {}};
+        // The state entries the body's material shows (the mu(I) material's inertial number).
+        const auto state_fields = (*materials_)[body_material_[b]].frame_state();
+        std::vector<io::FieldArray> states;
+        for (const auto& field : state_fields) {
+            states.push_back({field.name, 1, {}});
+        }
         for (std::size_t i = 0; i < p.position.size(); ++i) {
             if (p.body_id[i] != static_cast<int>(b)) {
                 continue;
@@ -51,9 +57,15 @@ void SphModel::append_blocks(io::Frame& frame) const {
             density.values.push_back(p.density[i]);
             body.values.push_back(p.body_id[i]);
             material.values.push_back(p.material_id[i]);
+            const auto offset = static_cast<std::size_t>(p.state_offset[i]);
+            for (std::size_t k = 0; k < states.size(); ++k) {
+                states[k].values.push_back(
+                    p.state[offset + static_cast<std::size_t>(state_fields[k].index)]);
+            }
         }
         block.point_arrays = {velocity, displacement, stress, pressure, von_mises,
                               plastic,  density,      body,   material};
+        block.point_arrays.insert(block.point_arrays.end(), states.begin(), states.end());
         frame.blocks.push_back(std::move(block));
     }
     append_wall_blocks(frame);

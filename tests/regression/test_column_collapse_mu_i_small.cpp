@@ -87,6 +87,24 @@ TEST(ColumnCollapseMuISmall, KeepsItsEnergyBooksAndComesToRest) {
     EXPECT_NEAR(gained / drop, 1.0, 0.01);
     EXPECT_LT(std::abs(result_value(summary, "energy_balance_error")), 0.01);
     EXPECT_LT(result_value(summary, "heap_final_kinetic_energy_ratio"), 1e-4);
+    // The frames' inertial number: a collapse flows in the dense regime 1e-3 < I < 0.1 of GDR
+    // MiDi (2004), so while it flows (0.05 s) part of the column lies above 1e-3 and none beyond
+    // 0.5, the collisional regime; once at rest (the last frame) every particle lies below 1e-3.
+    const auto largest = [&run](int frame) {
+        const auto block =
+            read_particle_block(frame_path(run.out, "column_collapse_2d_mu_i_small", frame));
+        vtkDataArray* inertial = block->GetPointData()->GetArray("inertial_number");
+        EXPECT_NE(inertial, nullptr) << "frame " << frame;
+        double most = 0.0;
+        for (vtkIdType i = 0; inertial != nullptr && i < block->GetNumberOfPoints(); ++i) {
+            const double value = inertial->GetTuple1(i);
+            most = std::isnan(value) ? most : std::max(most, value); // NaN: p <= 0
+        }
+        return most;
+    };
+    EXPECT_GT(largest(1), 1e-3);
+    EXPECT_LT(largest(1), 0.5);
+    EXPECT_LT(largest(12), 1e-3);
     expect_matches_gold(run.out, "cases/column_collapse_2d/column_collapse_2d_mu_i_small.toml");
 }
 

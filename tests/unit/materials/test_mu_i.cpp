@@ -150,9 +150,9 @@ TEST(MuIMaterial, AtRestItIsTheDruckerPragerConeOfMuSBitForBit) {
         Voigt6 s_mu = Voigt6::Zero();
         Voigt6 s_dp = Voigt6::Zero();
         Voigt6 s_limit = Voigt6::Zero();
-        std::vector<double> st_mu(2, 0.0);
+        std::vector<double> st_mu(3, 0.0);
         std::vector<double> st_dp(2, 0.0);
-        std::vector<double> st_limit(2, 0.0);
+        std::vector<double> st_limit(3, 0.0);
         for (std::size_t k = 0; k < path.size(); ++k) {
             Matrix6 d_mu;
             Matrix6 d_dp;
@@ -188,7 +188,7 @@ TEST(MuIMaterial, VolumeChangeAloneAtAFiniteStepIsAtRest) {
     for (const double volumetric : {-0x1p-14, -0x1p-20, 0x1p-20, 0x1p-14}) {
         Voigt6 s_mu = start;
         Voigt6 s_dp = start;
-        std::vector<double> st_mu(2, 0.0);
+        std::vector<double> st_mu(3, 0.0);
         std::vector<double> st_dp(2, 0.0);
         const Voigt6 de = volumetric * voigt::identity();
         EXPECT_EQ(mu_i->update_over(de, 1e-6, s_mu, st_mu, nullptr),
@@ -205,7 +205,7 @@ TEST(MuIMaterial, AShearedStepIsStrongerThanTheStaticCone) {
     const auto dp = build(std::string(kDruckerPragerKeysText) + kElastic);
     Voigt6 s_mu = -1e3 * voigt::identity();
     Voigt6 s_dp = s_mu;
-    std::vector<double> st_mu(2, 0.0);
+    std::vector<double> st_mu(3, 0.0);
     std::vector<double> st_dp(2, 0.0);
     Voigt6 de = Voigt6::Zero();
     de(3) = 1e-3; // far beyond yield in one step
@@ -215,6 +215,8 @@ TEST(MuIMaterial, AShearedStepIsStrongerThanTheStaticCone) {
     const double mu = 0.375 + 0.225 / (0.3 / (10.0 * 0.5e-3 / std::sqrt(0.4)) + 1.0);
     EXPECT_NEAR(s_mu(3) / 1e3, mu, 1e-12);
     EXPECT_NEAR(s_dp(3) / 1e3, 0.375, 1e-12);
+    // The state keeps the step's I (the frames' inertial_number).
+    EXPECT_NEAR(st_mu[2], 10.0 * 0.5e-3 / std::sqrt(0.4), 1e-15);
 }
 
 TEST(MuIMaterial, NoCreepAtRest) {
@@ -230,7 +232,7 @@ TEST(MuIMaterial, NoCreepAtRest) {
     limit(3) = 384.0; // 0.375 * 1024
     for (const Voigt6& start : {inside, limit}) {
         Voigt6 stress = start;
-        std::vector<double> state(2, 0.0);
+        std::vector<double> state(3, 0.0);
         for (int step = 0; step < 10000; ++step) {
             mu_i->update_over(Voigt6::Zero(), 1e-5, stress, state, nullptr);
         }
@@ -239,7 +241,7 @@ TEST(MuIMaterial, NoCreepAtRest) {
         EXPECT_LT(std::abs(state[1]), 1e-12);
     }
     Voigt6 stress = inside;
-    std::vector<double> state(2, 0.0);
+    std::vector<double> state(3, 0.0);
     for (int step = 0; step < 10000; ++step) {
         mu_i->update_over(Voigt6::Zero(), 1e-5, stress, state, nullptr);
     }
@@ -252,18 +254,18 @@ TEST(MuIMaterial, UpdatePointsGivesTheBitsOfUpdateOver) {
     const std::vector<Voigt6> path = random_path(64, 1e-4, 3);
     std::vector<Voigt6> single(path.size(), Voigt6::Zero());
     std::vector<Voigt6> blocked = single;
-    std::vector<double> single_state(2 * path.size(), 0.0);
+    std::vector<double> single_state(3 * path.size(), 0.0);
     std::vector<double> blocked_state = single_state;
     std::vector<double*> states(path.size());
     std::vector<PlasticRegion> regions(path.size());
     for (std::size_t k = 0; k < path.size(); ++k) {
-        states[k] = blocked_state.data() + 2 * k;
+        states[k] = blocked_state.data() + 3 * k;
     }
     for (int step = 0; step < 20; ++step) {
         mu_i->update_points(path, 2e-5, blocked, states, regions);
         for (std::size_t k = 0; k < path.size(); ++k) {
             const PlasticRegion region = mu_i->update_over(
-                path[k], 2e-5, single[k], {single_state.data() + 2 * k, 2}, nullptr);
+                path[k], 2e-5, single[k], {single_state.data() + 3 * k, 3}, nullptr);
             ASSERT_EQ(region, regions[k]);
             ASSERT_TRUE(same_bits(single[k].data(), blocked[k].data(), 6));
         }

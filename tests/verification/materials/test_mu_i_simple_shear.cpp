@@ -43,6 +43,7 @@ struct ShearRun {
     std::vector<double> pressure;      ///< -I1/3 after each step
     std::vector<double> normal_spread; ///< max |sigma_ii + p| in the shear frame
     std::vector<PlasticRegion> regions;
+    std::vector<double> inertial_number; ///< the state's inertial number after each step
 };
 
 /// `steps` increments of engineering shear `increment` in the x-y plane of the frame rotated
@@ -53,7 +54,7 @@ ShearRun shear(const MuIMaterial& m, double p, double increment, double time_ste
     de(3) = increment;
     const Voigt6 de_rotated = testing::rotate_strain(r, de);
     Voigt6 stress = testing::rotate_stress(r, -p * voigt::identity());
-    std::vector<double> state(2, 0.0);
+    std::vector<double> state(static_cast<std::size_t>(m.state_size()), 0.0);
     ShearRun run;
     for (int step = 0; step < steps; ++step) {
         run.regions.push_back(m.update_over(de_rotated, time_step, stress, state, nullptr));
@@ -62,6 +63,7 @@ ShearRun shear(const MuIMaterial& m, double p, double increment, double time_ste
         run.pressure.push_back(pressure);
         run.shear_stress.push_back(voigt::norm(voigt::deviator(stress)) / std::sqrt(2.0));
         run.normal_spread.push_back((local.head<3>().array() + pressure).abs().maxCoeff());
+        run.inertial_number.push_back(state[2]);
     }
     return run;
 }
@@ -100,6 +102,9 @@ void expect_reaches_mu_of_i(double p, double inertial_number, const Mat3& r) {
         }
         EXPECT_NEAR(tau / p, mu, kRoundOff * mu)
             << "I = " << inertial_number << ", p = " << p << " Pa, step " << step;
+        // The state, and with it the frames' inertial_number, holds the imposed I.
+        EXPECT_NEAR(run.inertial_number[s], inertial_number, kRoundOff * inertial_number)
+            << "p = " << p << " Pa, step " << step;
     }
     // Yield where the elastic line G gamma meets mu(I) p (to round-off on either side).
     ASSERT_GE(first_plastic, 0) << "never yielded: I = " << inertial_number;
