@@ -2,6 +2,7 @@
 // One feature of a particle scene (a monitor, a watch, a wall map) behind one seam.
 
 #include "io/frame.hpp"
+#include "particles/arrival.hpp"
 #include "particles/particle_view.hpp"
 
 #include <iosfwd>
@@ -44,6 +45,15 @@ class ScenePart {
         (void)time;
         (void)gone;
         return 0;
+    }
+    /// After a step [t, t + dt] and its departures: the particles that enter through this part,
+    /// appended to `arrivals`, given the particles there now.
+    virtual void collect_arrivals(const ParticleView& particles, double t, double dt,
+                                  std::vector<Arrival>& arrivals) {
+        (void)particles;
+        (void)t;
+        (void)dt;
+        (void)arrivals;
     }
     /// At the end of a step ending at `time`, once particles left and entered.
     virtual void end_step(double time) { (void)time; }

@@ -34,6 +34,15 @@ void ScenePartList::after_removal(std::span<const Index> new_index) {
     }
 }
 
+std::vector<Arrival> ScenePartList::collect_arrivals(const ParticleView& particles, double t,
+                                                     double dt) {
+    std::vector<Arrival> arrivals;
+    for (const auto& part : parts_) {
+        part->collect_arrivals(particles, t, dt, arrivals);
+    }
+    return arrivals;
+}
+
 void ScenePartList::at_output(double time, io::OutputStreams& output) {
     for (const auto& part : parts_) {
         part->at_output(time, output);

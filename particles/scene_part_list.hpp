@@ -11,9 +11,9 @@ namespace grainload::particles {
 /// The parts of a scene in the order the case built them. Each point of a step calls every
 /// part in that order, so their rows, figures and diagnoses keep it. The particle method
 /// calls, per step: after_step; collect_departures, then after_removal when particles left;
-/// end_step; take_events and diagnose; at each output instant at_output; for summary.json
-/// append_results; and the checkpoint pair. A part may be shared with the model that reads
-/// it (the sinks' discharged mass, the settle watch's time).
+/// collect_arrivals; end_step; take_events and diagnose; at each output instant at_output; for
+/// summary.json append_results; and the checkpoint pair. A part may be shared with the model that
+/// reads it (the sinks' discharged mass, the settle watch's time).
 class ScenePartList {
   public:
     void add(std::shared_ptr<ScenePart> part) { parts_.push_back(std::move(part)); }
@@ -25,6 +25,8 @@ class ScenePartList {
     /// Every part's departures, in order (see ScenePart::collect_departures); the count.
     Index collect_departures(const ParticleView& particles, double time, std::vector<char>& gone);
     void after_removal(std::span<const Index> new_index);
+    /// Every part's arrivals over [t, t + dt], in order.
+    std::vector<Arrival> collect_arrivals(const ParticleView& particles, double t, double dt);
     void at_output(double time, io::OutputStreams& output);
     void append_results(std::vector<io::ResultFigure>& results) const;
     /// Every part's events, in order.

@@ -145,8 +145,9 @@ std::vector<Vec3> SourceSet::lattice(const io::Region& box, double spacing, int 
     return sites;
 }
 
-std::vector<Arrival> SourceSet::collect(const ParticleSet& particles, double t, double dt) {
-    std::vector<Arrival> arrivals;
+std::vector<particles::Arrival> SourceSet::collect(const particles::ParticleView& particles,
+                                                   double t, double dt) {
+    std::vector<particles::Arrival> arrivals;
     for (std::size_t s = 0; s < sources_.size(); ++s) {
         Source& source = sources_[s];
         const double active = std::min(t + dt, source.end) - std::max(t, source.start);
@@ -154,14 +155,14 @@ std::vector<Arrival> SourceSet::collect(const ParticleSet& particles, double t, 
             source.owed += source.mass_rate * active;
         }
         if (source.owed >= source.particle_mass * (1.0 - kOwedRoundOff)) {
-            collect_one(source, particles, arrivals, static_cast<int>(s));
+            collect_one(source, particles, arrivals);
         }
     }
     return arrivals;
 }
 
-void SourceSet::collect_one(Source& source, const ParticleSet& particles,
-                            std::vector<Arrival>& arrivals, int index) const {
+void SourceSet::collect_one(Source& source, const particles::ParticleView& particles,
+                            std::vector<particles::Arrival>& arrivals) const {
     // Only particles within a spacing of the box can block a site: gather them once.
     const double gap = kMinimumGap * spacing_;
     std::vector<Vec3> near;
@@ -173,7 +174,7 @@ void SourceSet::collect_one(Source& source, const ParticleSet& particles,
             near.push_back(x);
         }
     }
-    for (const Arrival& a : arrivals) {
+    for (const particles::Arrival& a : arrivals) {
         near.push_back(a.position);
     }
     const std::size_t n = source.sites.size();
@@ -189,7 +190,8 @@ void SourceSet::collect_one(Source& source, const ParticleSet& particles,
         if (!free) {
             continue;
         }
-        arrivals.push_back({site, source.velocity, index});
+        arrivals.push_back(
+            {site, source.velocity, source.particle_mass, source.body, source.material});
         near.push_back(site);
         source.owed -= source.particle_mass;
         source.created += source.particle_mass;
@@ -227,6 +229,22 @@ void SourceSet::set_state(const std::vector<double>& state) {
             io::state_count(state[3 * s + 2], static_cast<double>(sources_[s].sites.size()) - 1.0,
                             "the cursor of source '" + sources_[s].name + "'");
     }
+}
+
+void SourceSet::collect_arrivals(const particles::ParticleView& particles, double t, double dt,
+                                 std::vector<particles::Arrival>& arrivals) {
+    const std::vector<particles::Arrival> mine = collect(particles, t, dt);
+    arrivals.insert(arrivals.end(), mine.begin(), mine.end());
+}
+
+void SourceSet::write_checkpoint(std::ostream& out) const {
+    io::write_array(out, state());
+}
+
+void SourceSet::read_checkpoint(std::istream& in) {
+    std::vector<double> values;
+    io::read_array(in, values);
+    set_state(values);
 }
 
 } // namespace grainload::sph

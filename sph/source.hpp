@@ -4,6 +4,7 @@
 #include "io/key_spec.hpp"
 #include "io/region.hpp"
 #include "particles/phase_sequence.hpp"
+#include "particles/scene_part.hpp"
 #include "sph/particle_set.hpp"
 
 #include <array>
@@ -32,20 +33,14 @@ inline constexpr std::array<io::KeySpec, 9> kSourceKeys{{
     {"velocity", "velocity vector", "0 m/s", "the velocity the new particles start with"},
 }};
 
-/// A particle a source is about to create: where, how fast, and which source.
-struct Arrival {
-    Vec3 position = Vec3::Zero();
-    Vec3 velocity = Vec3::Zero();
-    int source = 0;
-};
-
 /// Particles entering the scene through box regions at a mass rate (the way silos are filled).
 /// Each source owns a lattice at the body's spacing inside its box; a step owes it
 /// mass_rate * (the part of the step inside [start, end)), and whole particles are created
 /// from what is owed at lattice sites no particle is near (closer than kMinimumGap spacings),
-/// taking the sites round-robin so the stream covers the box evenly. In terms of positions and
-/// masses only: the model turns arrivals into particles.
-class SourceSet {
+/// taking the sites round-robin so the stream covers the box evenly. A scene part in terms of
+/// positions and masses only: the model turns its arrivals into particles. (The sites of a
+/// shaped source come from the SPH lattice, which keeps it in sph/.)
+class SourceSet final : public particles::ScenePart {
   public:
     struct Source {
         std::string name;
@@ -92,7 +87,8 @@ class SourceSet {
     static std::vector<Vec3> lattice(const io::Region& box, double spacing, int dimension);
     /// The particles to create over the step [t, t + dt], given the particles there now; books
     /// their mass as created.
-    std::vector<Arrival> collect(const ParticleSet& particles, double t, double dt);
+    std::vector<particles::Arrival> collect(const particles::ParticleView& particles, double t,
+                                            double dt);
     /// Total mass created so far (kg, in plane strain kg/m).
     double created() const;
 
@@ -100,9 +96,16 @@ class SourceSet {
     std::vector<double> state() const;
     void set_state(const std::vector<double>& state);
 
+    std::string_view name() const override { return "sph.source"; }
+    /// collect()'s arrivals, appended.
+    void collect_arrivals(const particles::ParticleView& particles, double t, double dt,
+                          std::vector<particles::Arrival>& arrivals) override;
+    void write_checkpoint(std::ostream& out) const override;
+    void read_checkpoint(std::istream& in) override;
+
   private:
-    void collect_one(Source& source, const ParticleSet& particles, std::vector<Arrival>& arrivals,
-                     int index) const;
+    void collect_one(Source& source, const particles::ParticleView& particles,
+                     std::vector<particles::Arrival>& arrivals) const;
 
     std::vector<Source> sources_;
     double spacing_ = 0.0;

@@ -146,7 +146,7 @@ void SphModel::build(const io::CaseTable& root) {
 void SphModel::check_start(const io::CaseTable& sph) const {
     std::vector<std::string> warnings;
     for (std::size_t b = 0; b < thin_warnings_.size(); ++b) {
-        const auto& sources = sources_.sources();
+        const auto& sources = sources_->sources();
         const bool filled = std::any_of(sources.begin(), sources.end(), [b](const auto& s) {
             return s.body == static_cast<int>(b);
         });
@@ -156,18 +156,18 @@ void SphModel::check_start(const io::CaseTable& sph) const {
     }
     if (solver_) {
         const std::vector<Wall>& walls = solver_->walls();
-        check_wall_overlaps(sph, particles(), walls, sources_, body_names_, spacing_, dimension_,
+        check_wall_overlaps(sph, particles(), walls, *sources_, body_names_, spacing_, dimension_,
                             solver_->kernel().support_radius());
         for (std::string& w :
-             check_start_gaps(sph, particles(), walls, sources_, body_names_, solver_->kernel(),
+             check_start_gaps(sph, particles(), walls, *sources_, body_names_, solver_->kernel(),
                               solver_->options().contact, gravity_.norm(), spacing_, dimension_)) {
             warnings.push_back(std::move(w));
         }
         for (std::string& w :
-             check_sinks_hold_bodies(sph, particles(), *sinks_, sources_, body_names_)) {
+             check_sinks_hold_bodies(sph, particles(), *sinks_, *sources_, body_names_)) {
             warnings.push_back(std::move(w));
         }
-        for (std::string& w : outlet_reach_warnings(sph, particles(), walls, *sinks_, sources_,
+        for (std::string& w : outlet_reach_warnings(sph, particles(), walls, *sinks_, *sources_,
                                                     gravity_, spacing_, dimension_)) {
             warnings.push_back(std::move(w));
         }

@@ -124,7 +124,7 @@ class SphModel final : public io::Stepper, public io::Reporter {
     const ParticleSet& particles() const { return solver_ ? solver_->particles() : particles_; }
     const SphSolver* solver() const { return solver_.get(); }
     const particles::SinkSet& sinks() const { return *sinks_; }
-    const SourceSet& sources() const { return sources_; }
+    const SourceSet& sources() const { return *sources_; }
     /// Index each current particle had when the case built the scene (particles leave through
     /// sinks and removed walls; the rest keep their order).
     const std::vector<Index>& original_index() const { return origin_; }
@@ -168,11 +168,11 @@ class SphModel final : public io::Stepper, public io::Reporter {
     void check_start(const io::CaseTable& sph) const;
     /// Sources (sph_model_sources.cpp): read them and refuse what cannot gain particles.
     void build_sources(const io::CaseTable& sph);
-    /// After a step [t, t + dt] (and its removals): the sources' new particles enter.
+    /// After a step [t, t + dt] (and its removals): the parts' new particles enter.
     void create_arrivals(double t, double dt);
-    /// Append particles (source index and creation position per arrival) to the solver and to
-    /// every per-particle array here; `book_energy` as SphSolver::add_particles.
-    void apply_creation(std::span<const Arrival> arrivals, bool book_energy);
+    /// Append the arrivals' particles to the solver and to every per-particle array here, and
+    /// to the creation log; `book_energy` as SphSolver::add_particles.
+    void apply_creation(std::span<const particles::Arrival> arrivals, bool book_energy);
     /// Phases (sph_model_phases.cpp): after a step ending at `time`, end the phases whose end
     /// has come and hand their starts to the walls and sources; true when one ended.
     bool advance_phases(double time);
@@ -215,10 +215,11 @@ class SphModel final : public io::Stepper, public io::Reporter {
     std::shared_ptr<particles::SinkSet> sinks_ = std::make_shared<particles::SinkSet>();
     bool removals_ = false; ///< a sink or a wall with remove_at: particles may leave
     std::vector<Index> origin_;
-    /// [[sph.source]]: particles entering the scene.
-    SourceSet sources_;
-    /// Every particle a source created, in order: its source and position at creation (4
-    /// numbers each), so a checkpoint can replay the creations on the freshly built scene.
+    /// [[sph.source]]: particles entering the scene (empty: none), shared with parts_.
+    std::shared_ptr<SourceSet> sources_ = std::make_shared<SourceSet>();
+    /// Every particle a part created, in order: position, velocity, mass, body and material
+    /// (kCreationEntry numbers each), so a checkpoint can replay the creations on the freshly
+    /// built scene.
     std::vector<double> created_log_;
     /// The number of particles the case built: created particles' original_index() follows.
     Index built_count_ = 0;

@@ -38,7 +38,7 @@ void SphModel::build_outlets(const io::CaseTable& sph) {
     }
     removals_ = !sinks_->empty() || walls_go;
     build_sources(sph);
-    audit_ = removals_ || !sources_.empty();
+    audit_ = removals_ || !sources_->empty();
     built_count_ = particles().size();
     const ParticleSet& p = particles();
     std::set<int> used;
@@ -53,7 +53,7 @@ void SphModel::build_outlets(const io::CaseTable& sph) {
     if (!audit_) {
         return;
     }
-    const char* key = !sources_.empty() ? "source" : sinks_->empty() ? "wall" : "sink";
+    const char* key = !sources_->empty() ? "source" : sinks_->empty() ? "wall" : "sink";
     if (!solver_) {
         sph.fail(key, "particles leave or enter the scene only in the SPH solver: expected "
                       "interactions = true");
@@ -67,7 +67,7 @@ void SphModel::build_outlets(const io::CaseTable& sph) {
         scene_mass(), dimension_,
         particles::MassAudit::Books{[this] { return scene_mass(); },
                                     [this] { return sinks_->discharged(); },
-                                    [this] { return sources_.created(); }}));
+                                    [this] { return sources_->created(); }}));
 }
 
 void SphModel::build_settle(const io::CaseTable& sph, bool walls_wait) {
@@ -135,9 +135,6 @@ void SphModel::apply_removal(std::span<const char> gone) {
 }
 
 void SphModel::write_outlet_state(std::ostream& out) const {
-    if (!sources_.empty()) {
-        io::write_array(out, sources_.state());
-    }
     if (!phases_.empty()) {
         io::write_array(out, phases_.state());
     }
@@ -169,11 +166,6 @@ void SphModel::read_removals(std::istream& in) {
 }
 
 void SphModel::read_outlet_state(std::istream& in) {
-    if (!sources_.empty()) {
-        std::vector<double> state;
-        io::read_array(in, state);
-        sources_.set_state(state);
-    }
     if (!phases_.empty()) {
         std::vector<double> state;
         io::read_array(in, state);

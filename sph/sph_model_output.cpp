@@ -112,7 +112,7 @@ void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) 
             results.push_back(
                 {"removed_contact_energy", ledger.removed_contact(), "J", std::nullopt, ""});
         }
-        if (!sources_.empty()) {
+        if (!sources_->empty()) {
             results.push_back({"created_energy", ledger.created_held(), "J", std::nullopt, ""});
             results.push_back(
                 {"created_contact_energy", ledger.created_contact(), "J", std::nullopt, ""});

@@ -56,7 +56,7 @@ void SphModel::apply_phase_starts() {
             motion->start_histories(phases_.start(motion->history_phase));
         }
     }
-    sources_.apply_phase_starts(phases_);
+    sources_->apply_phase_starts(phases_);
 }
 
 void SphModel::append_phases(std::vector<io::PhaseRecord>& records) const {

@@ -40,16 +40,17 @@ TEST(SourceSet, CreatesWholeParticlesAtTheRateOnFreeSitesOnly) {
     SourceSet set(std::move(list), 0.1);
     ParticleSet p;
     p.add(Vec3(0.15, 0.05 + 0.09, 0), Vec3::Zero(), 1.0, 1.0, 0, 0, 0); // 0.09 above site 1
-    auto a = set.collect(p, 0.75, 0.5);
+    auto a = set.collect(p.view(), 0.75, 0.5);
     ASSERT_EQ(a.size(), 1u);
     EXPECT_EQ(a[0].position, Vec3(0.05, 0.05, 0));
     EXPECT_EQ(a[0].velocity, Vec3(0, -1, 0));
-    a = set.collect(p, 1.25, 0.5);
+    EXPECT_EQ(a[0].mass, 0.5) << "an arrival is whole: the source's particle mass";
+    a = set.collect(p.view(), 1.25, 0.5);
     ASSERT_EQ(a.size(), 2u);
     EXPECT_NEAR(a[0].position.x(), 0.25, 1e-15) << "site 1 is blocked, site 2 next";
     EXPECT_NEAR(a[1].position.x(), 0.35, 1e-15);
     EXPECT_EQ(set.created(), 1.5);
-    EXPECT_EQ(set.collect(p, 2.0, 0.5).size(), 0u);
+    EXPECT_EQ(set.collect(p.view(), 2.0, 0.5).size(), 0u);
     EXPECT_EQ(set.created(), 1.5);
 }
 
@@ -58,12 +59,12 @@ TEST(SourceSet, StateRoundTrips) {
     std::vector<SourceSet::Source> list{line_source(3.0)};
     SourceSet set(std::move(list), 0.1);
     ParticleSet p;
-    set.collect(p, 1.0, 0.3);
+    set.collect(p.view(), 1.0, 0.3);
     SourceSet copy(std::vector<SourceSet::Source>{line_source(3.0)}, 0.1);
     copy.set_state(set.state());
     EXPECT_EQ(copy.created(), set.created());
-    EXPECT_EQ(copy.collect(p, 1.3, 0.3).front().position,
-              set.collect(p, 1.3, 0.3).front().position);
+    EXPECT_EQ(copy.collect(p.view(), 1.3, 0.3).front().position,
+              set.collect(p.view(), 1.3, 0.3).front().position);
     EXPECT_THROW(copy.set_state({1.0}), std::runtime_error);
 }
 
