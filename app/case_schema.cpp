@@ -1,6 +1,7 @@
 #include "app/case_schema.hpp"
 
 #include "coupling/coupling_schema.hpp"
+#include "dem/dem_schema.hpp"
 #include "fem/fem_schema.hpp"
 #include "io/case_error.hpp"
 #include "io/io_schema.hpp"
@@ -18,7 +19,7 @@ const std::vector<io::KeyTable>& case_schema() {
         std::vector<io::KeyTable> tables;
         for (const auto floor :
              {io::io_key_tables(), materials::material_key_tables(), sph::sph_key_tables(),
-              fem::fem_key_tables(), coupling::coupling_key_tables()}) {
+              dem::dem_key_tables(), fem::fem_key_tables(), coupling::coupling_key_tables()}) {
             tables.insert(tables.end(), floor.begin(), floor.end());
         }
         return tables;

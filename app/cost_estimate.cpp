@@ -6,6 +6,7 @@
 #include "app/scene.hpp"
 #include "app/trade/trade_table.hpp"
 #include "coupling/coupled_model.hpp"
+#include "dem/dem_model.hpp"
 #include "fem/shell_model.hpp"
 #include "io/json_value.hpp"
 #include "sph/sph_model.hpp"
@@ -267,6 +268,13 @@ CostEstimate estimate_cost(const Scene& scene, int threads, const Calibration& c
             add_shell(*fem, false, false);
         }
     }
+    for (const auto& stepper : scene.steppers) {
+        if (const auto* dem = dynamic_cast<const dem::DemModel*>(stepper.get())) {
+            e.dem_grains += dem->point_count();
+            e.dem_grain_steps +=
+                static_cast<double>(dem->point_count()) * static_cast<double>(plan.steps);
+        }
+    }
     add_output(plan, calibration, e);
     e.wall_time_s = e.sph_seconds + e.shell_seconds + e.output_seconds;
     e.memory_bytes = bytes;
@@ -346,6 +354,12 @@ std::string describe_cost(const CostEstimate& e) {
              "cost: %lld SPH particles (%lld of them walls), %lld shell nodes (%lld free DOFs)\n",
              static_cast<long long>(e.sph_particles), static_cast<long long>(e.wall_particles),
              static_cast<long long>(e.shell_nodes), static_cast<long long>(e.shell_dofs));
+    if (e.dem_grains > 0) {
+        add_line(out,
+                 "      DEM: %lld grains, %.3g grain-steps; not timed (the calibration measures "
+                 "the SPH and shell kernels): the estimated wall time leaves them out\n",
+                 static_cast<long long>(e.dem_grains), e.dem_grain_steps);
+    }
     describe_sources_and_sinks(out, e);
     add_line(out,
              "      step %.3g s at t = 0: %lld steps to the end time (%.3g SPH steps, %.3g "

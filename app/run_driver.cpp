@@ -319,7 +319,10 @@ int run_case(const CommandLine& line) {
             "estimate before the run: " + std::to_string(estimate->steps) + " steps, " +
             std::to_string(estimate->wall_time_s) + " s (actual / estimate: steps " +
             std::to_string(static_cast<double>(clock.step) / static_cast<double>(estimate->steps)) +
-            ", wall time " + std::to_string(summary.wall_time / estimate->wall_time_s) + ")");
+            ", wall time " +
+            (estimate->wall_time_s > 0.0 ? std::to_string(summary.wall_time / estimate->wall_time_s)
+                                         : std::string("not estimated")) +
+            ")");
     }
     return kExitOk;
 }

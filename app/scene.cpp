@@ -4,6 +4,7 @@
 #include "app/resources/memory_guard.hpp"
 #include "coupling/coupled_model.hpp"
 #include "coupling/coupling_case_reader.hpp"
+#include "dem/dem_model.hpp"
 #include "fem/shell_model.hpp"
 #include "io/deck_ledger.hpp"
 #include "sph/sph_model.hpp"
@@ -16,6 +17,25 @@
 namespace grainload::app {
 
 namespace dim = io::dimension;
+
+namespace {
+
+/// A [dem] scene's grains touch only its own walls: SPH or shells in the same file would be
+/// passed through unseen.
+void refuse_beside_dem(const io::CaseTable& root) {
+    if (!root.has("dem")) {
+        return;
+    }
+    for (const char* other : {"sph", "fem", "coupling"}) {
+        if (root.has(other)) {
+            root.fail(other, "a [dem] scene's grains touch only its [[dem.wall]] walls: expected "
+                             "no [" +
+                                 std::string(other) + "] beside [dem]");
+        }
+    }
+}
+
+} // namespace
 
 std::unique_ptr<Scene> Scene::load(const std::string& file,
                                    const std::vector<std::string>& overrides) {
@@ -38,11 +58,15 @@ std::unique_ptr<Scene> Scene::from_document(std::unique_ptr<io::CaseDocument> do
         scene->materials = materials::MaterialLibrary::from_case(root);
         const std::optional<double> spare_particles =
             refuse_oversized_scene(root, scene->settings.dimension, memory);
+        refuse_beside_dem(root);
         if (root.has("coupling")) {
             scene->add(coupling::read_coupled_model(root, scene->settings, scene->materials,
                                                     spare_particles));
         } else if (root.has("sph")) {
             scene->add(sph::SphModel::from_case(root, scene->settings, scene->materials));
+        }
+        if (root.has("dem")) {
+            scene->add(dem::DemModel::from_case(root, scene->settings, scene->materials));
         }
         if (root.has("fem") && !root.has("coupling")) {
             scene->add(fem::ShellModel::from_case(root, scene->settings, scene->materials));
@@ -53,8 +77,8 @@ std::unique_ptr<Scene> Scene::from_document(std::unique_ptr<io::CaseDocument> do
                       "[sph] table");
         }
         if (scene->steppers.empty()) {
-            root.fail("", "expected at least one physics module: an [sph] table with [[sph.body]] "
-                          "or an [fem] table with [[fem.shell]]");
+            root.fail("", "expected at least one physics module: an [sph] table with [[sph.body]], "
+                          "a [dem] table with [[dem.body]] or an [fem] table with [[fem.shell]]");
         }
         // The readers' warnings in the order they came, then what no reader took of the decks.
         print_notices(scene->document->take_notices());
@@ -108,6 +132,8 @@ Index Scene::material_point_count() const {
         } else if (const auto* coupled =
                        dynamic_cast<const coupling::CoupledModel*>(stepper.get())) {
             count += material_particles(coupled->sph());
+        } else if (const auto* dem = dynamic_cast<const dem::DemModel*>(stepper.get())) {
+            count += dem->point_count();
         }
     }
     return count;

@@ -5,8 +5,8 @@ include each other through any chain. Prints each finding and exits 1 when there
 
     python3 scripts/check_floors.py [ROOT]
 
-The floors, bottom to top: io, materials, particles, then sph and fem side by side (neither
-includes the other), coupling, app. Folders inside a floor (app/trade, app/resources) belong
+The floors, bottom to top: io, materials, particles, then sph, dem and fem side by side (none
+includes another), coupling, app. Folders inside a floor (app/trade, app/resources) belong
 to it.
 """
 
@@ -14,7 +14,7 @@ import pathlib
 import re
 import sys
 
-FLOORS = {"io": 0, "materials": 1, "particles": 2, "sph": 3, "fem": 3, "coupling": 4, "app": 5}
+FLOORS = {"io": 0, "materials": 1, "particles": 2, "sph": 3, "dem": 3, "fem": 3, "coupling": 4, "app": 5}
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)\.hpp"')
 
 

@@ -1,0 +1,96 @@
+#include "dem/contact_law.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace grainload::dem {
+
+void combine_elastic(const GrainElastic& a, const std::optional<GrainElastic>& b,
+                     PairProperties& pair) {
+    double compliance = (1.0 - a.poisson * a.poisson) / a.young;
+    double shear_compliance = (2.0 - a.poisson) / a.shear();
+    if (b) {
+        compliance += (1.0 - b->poisson * b->poisson) / b->young;
+        shear_compliance += (2.0 - b->poisson) / b->shear();
+    }
+    pair.young = 1.0 / compliance;
+    pair.shear = 1.0 / shear_compliance;
+}
+
+namespace {
+
+/// The linear law's normal dashpot: gamma_n m*, or the one that gives restitution e.
+double linear_damping(const ContactLaw& law, const PairProperties& pair) {
+    if (!law.restitution) {
+        return law.gamma_n * pair.mass;
+    }
+    const double log_e = std::log(*law.restitution);
+    return 2.0 * std::sqrt(law.normal_stiffness * pair.mass) * (-log_e) /
+           std::sqrt(std::numbers::pi * std::numbers::pi + log_e * log_e);
+}
+
+} // namespace
+
+void contact_force(const ContactLaw& law, const PairProperties& pair, double time_step,
+                   ContactState& state) {
+    const Vec3& n = state.normal;
+    const double delta = state.overlap;
+    const double normal_speed = state.relative_velocity.dot(n);
+    const Vec3 tangential_velocity = state.relative_velocity - normal_speed * n;
+
+    double elastic_normal = 0.0;
+    double stiffness_t = 0.0;
+    double damping_n = 0.0;
+    if (law.model == ContactLaw::Model::linear) {
+        elastic_normal = law.normal_stiffness * delta;
+        stiffness_t = law.tangential_stiffness_ratio * law.normal_stiffness;
+        damping_n = linear_damping(law, pair);
+        state.elastic_energy = 0.5 * elastic_normal * delta;
+    } else {
+        const double root = std::sqrt(pair.radius * delta);
+        elastic_normal = 4.0 / 3.0 * pair.young * root * delta;
+        stiffness_t = 8.0 * pair.shear * root;
+        damping_n = law.gamma_n * pair.mass;
+        state.elastic_energy = 0.4 * elastic_normal * delta;
+    }
+    const double normal_force = elastic_normal - damping_n * normal_speed;
+
+    // The spring lives in the tangent plane: turn it with the contact by removing the part
+    // along the new normal and restoring its length (Luding 2008), then add this step's slip.
+    Vec3 spring = state.spring;
+    const double length = spring.norm();
+    spring -= spring.dot(n) * n;
+    const double turned = spring.norm();
+    if (turned > 0.0) {
+        spring *= length / turned;
+    }
+    spring += tangential_velocity * time_step;
+    Vec3 tangential = -stiffness_t * spring - law.gamma_t * pair.mass * tangential_velocity;
+    const double limit = pair.friction * std::abs(normal_force);
+    const double magnitude = tangential.norm();
+    if (magnitude > limit) {
+        tangential *= magnitude > 0.0 ? limit / magnitude : 0.0;
+        spring = stiffness_t > 0.0 ? Vec3(-tangential / stiffness_t) : Vec3::Zero();
+    }
+    state.spring = spring;
+    if (stiffness_t > 0.0) {
+        state.elastic_energy += 0.5 * stiffness_t * spring.squaredNorm();
+    }
+    state.force = normal_force * n + tangential;
+}
+
+double contact_time(const ContactLaw& law, const PairProperties& pair, double speed) {
+    if (law.model == ContactLaw::Model::linear) {
+        const double damping = linear_damping(law, pair) / pair.mass;
+        const double omega0_squared = law.normal_stiffness / pair.mass;
+        return std::numbers::pi / std::sqrt(omega0_squared - 0.25 * damping * damping);
+    }
+    // Hertz: delta_max from (1/2) m* v^2 = (8/15) E* sqrt(R*) delta^(5/2); the duration is
+    // 2 delta_max / v times int_0^1 (1 - x^(5/2))^(-1/2) dx = (2/5) B(2/5, 1/2).
+    const double delta_max = std::pow(
+        15.0 * pair.mass * speed * speed / (16.0 * pair.young * std::sqrt(pair.radius)), 0.4);
+    const double beta = std::tgamma(0.4) * std::tgamma(0.5) / std::tgamma(0.9);
+    return 2.0 * delta_max / speed * 0.4 * beta;
+}
+
+} // namespace grainload::dem

@@ -1,0 +1,80 @@
+#pragma once
+// The force of one contact: Hooke or Hertz-Mindlin in the normal, a spring and Coulomb's slider
+// in the tangent, viscous damping in both.
+
+#include "io/types.hpp"
+
+#include <optional>
+
+namespace grainload::dem {
+
+/// The contact law of a scene ([dem.contact]). Normal force on grain a from grain (or wall) b,
+/// with overlap delta > 0, normal n from b to a and relative normal speed v_n = (v_a - v_b).n:
+///   linear (Kelvin-Voigt, as Lazarevic, Dvornik & Fresl 2002 model silo grains):
+///       f_n = k_n delta - c_n v_n
+///   hertz_mindlin (Hertz 1882; Mindlin 1949; as in Balevicius et al. 2004 and Markauskas'
+///   hopper study of axisymmetric particles):
+///       f_n = 4/3 E* sqrt(R* delta) delta - c_n v_n
+/// with c_n = gamma_n m* (Balevicius et al.'s normal damping coefficient in 1/s), or, for the
+/// linear law given a restitution e, c_n = 2 sqrt(k_n m*) (-ln e) / sqrt(pi^2 + ln^2 e), which
+/// makes the coefficient of restitution of every pair exactly e (the damped oscillator's half
+/// period, Schwager & Poeschel 2007). The dashpot is not cut at zero force: the Kelvin-Voigt
+/// element as the seeds state it, for which that restitution holds.
+/// Tangent: a spring xi integrated from the tangential relative speed, f_t = -k_t xi -
+/// gamma_t m* v_t, capped at mu f_n (Coulomb); at the cap the spring is reset to the slip
+/// force, -f_t / k_t (Cundall & Strack 1979). k_t = ratio k_n (linear; 2/7 makes the normal and
+/// tangential periods of a sphere equal, Silbert et al. 2001) or 8 G* sqrt(R* delta) (Mindlin).
+struct ContactLaw {
+    enum class Model { linear, hertz_mindlin };
+    Model model = Model::linear;
+    double normal_stiffness = 0.0;           ///< k_n of the linear law [N/m]
+    double tangential_stiffness_ratio = 0.0; ///< k_t / k_n of the linear law
+    double gamma_n = 0.0;                    ///< [1/s]
+    double gamma_t = 0.0;                    ///< [1/s]
+    std::optional<double> restitution;       ///< linear law: e instead of gamma_n
+    double friction = 0.0;                   ///< mu between grains
+    double wall_friction = 0.0;              ///< mu between a grain and a wall
+};
+
+/// The pair's effective properties: m*, R*, E*, G* (a wall: infinite mass and radius, rigid).
+struct PairProperties {
+    double mass = 0.0;   ///< m* = m_a m_b / (m_a + m_b); m_a at a wall
+    double radius = 0.0; ///< R* = R_a R_b / (R_a + R_b); R_a at a wall
+    double young = 0.0;  ///< E* = 1 / ((1 - nu_a^2)/E_a + (1 - nu_b^2)/E_b)
+    double shear = 0.0;  ///< G* = 1 / ((2 - nu_a)/G_a + (2 - nu_b)/G_b)
+    double friction = 0.0;
+};
+
+/// The elastic constants of one side of a contact.
+struct GrainElastic {
+    double young = 0.0;
+    double poisson = 0.0;
+    double shear() const { return young / (2.0 * (1.0 + poisson)); }
+};
+/// E* and G* of two grains; of a grain on a rigid wall with `b` empty.
+void combine_elastic(const GrainElastic& a, const std::optional<GrainElastic>& b,
+                     PairProperties& pair);
+
+/// One contact's state and result. In: overlap, normal n (from b to a), the relative velocity
+/// of the contact points (a's less b's), the time step, and the tangential spring as the last
+/// step left it. Out: the force on a (b gets its opposite) and the spring for the next step.
+struct ContactState {
+    double overlap = 0.0;
+    Vec3 normal = Vec3::Zero();
+    Vec3 relative_velocity = Vec3::Zero();
+    Vec3 spring = Vec3::Zero();
+    Vec3 force = Vec3::Zero();
+    /// The elastic energy the contact holds (normal and tangential springs), for the books.
+    double elastic_energy = 0.0;
+};
+
+/// Evaluate the contact: state.force, state.spring and state.elastic_energy from the rest.
+void contact_force(const ContactLaw& law, const PairProperties& pair, double time_step,
+                   ContactState& state);
+
+/// The duration of a contact of the pair at a normal impact speed `speed`: pi / omega for the
+/// linear law (omega the damped frequency), Hertz's 2.94 delta_max / v for the elastic Hertz
+/// law (Johnson 1985, eq. 11.24), which damping lengthens by little.
+double contact_time(const ContactLaw& law, const PairProperties& pair, double speed);
+
+} // namespace grainload::dem

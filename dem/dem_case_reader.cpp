@@ -1,0 +1,198 @@
+#include "dem/dem_case_reader.hpp"
+
+#include "io/case_table.hpp"
+#include "materials/material_library.hpp"
+
+#include <cmath>
+#include <string>
+
+namespace grainload::dem {
+
+namespace dim = io::dimension;
+
+namespace {
+
+double coefficient(const io::CaseTable& table, std::string_view key, double fallback) {
+    const double value = table.number_or(key, fallback);
+    if (!(value >= 0.0 && std::isfinite(value))) {
+        table.fail(key, "expected a coefficient >= 0, got " + std::to_string(value));
+    }
+    return value;
+}
+
+ContactLaw read_contact_law(const io::CaseTable& dem) {
+    const io::CaseTable table = dem.table("contact");
+    ContactLaw law;
+    const std::string model = table.choice("law", {"linear", "hertz_mindlin"});
+    law.model = model == "linear" ? ContactLaw::Model::linear : ContactLaw::Model::hertz_mindlin;
+    law.gamma_n = table.positive_quantity_or("gamma_n", dim::kFrequency, 0.0, true);
+    law.gamma_t = table.positive_quantity_or("gamma_t", dim::kFrequency, 0.0, true);
+    law.friction = coefficient(table, "friction", 0.0);
+    law.wall_friction = coefficient(table, "wall_friction", law.friction);
+    if (law.model == ContactLaw::Model::linear) {
+        law.normal_stiffness = table.positive_quantity("normal_stiffness", dim::kForcePerLength);
+        law.tangential_stiffness_ratio =
+            table.number_or("tangential_stiffness_ratio",
+                            io::default_value(kDemContactKeys, "tangential_stiffness_ratio"));
+        if (!(law.tangential_stiffness_ratio >= 0.0 && law.tangential_stiffness_ratio <= 1.0)) {
+            table.fail("tangential_stiffness_ratio", "expected a number in [0, 1]");
+        }
+    } else {
+        for (const char* key : {"normal_stiffness", "tangential_stiffness_ratio", "restitution"}) {
+            if (table.has(key)) {
+                table.fail(key, "the hertz_mindlin law takes its stiffness from the grains' E "
+                                "and nu and its damping from gamma_n: expected no " +
+                                    std::string(key));
+            }
+        }
+    }
+    if (table.has("restitution")) {
+        if (table.has("gamma_n")) {
+            table.fail("restitution", "expected either restitution or gamma_n, not both");
+        }
+        const double e = table.number("restitution");
+        if (!(e > 0.0 && e <= 1.0)) {
+            table.fail("restitution", "expected a coefficient of restitution in (0, 1]");
+        }
+        law.restitution = e;
+    }
+    return law;
+}
+
+void read_placement(const io::CaseTable& table, BodySettings& body) {
+    if (table.has("centre")) {
+        for (const char* key : {"min", "max", "count"}) {
+            if (table.has(key)) {
+                table.fail(key, "a body with a centre is one grain there: expected no " +
+                                    std::string(key));
+            }
+        }
+        if (body.radius_min != body.radius_max) {
+            table.fail("centre", "a body with a centre is one grain: expected its radius, not "
+                                 "radius_min and radius_max");
+        }
+        body.centre = table.vector("centre", dim::kLength);
+        body.where = table.where("centre");
+        return;
+    }
+    body.min = table.vector("min", dim::kLength);
+    body.max = table.vector("max", dim::kLength);
+    body.count = table.integer("count");
+    body.where = table.where("count");
+    if (body.count < 1) {
+        table.fail("count", "expected at least one grain");
+    }
+    for (int a = 0; a < 3; ++a) {
+        if (!(body.max[a] - body.min[a] >= 2.0 * body.radius_max)) {
+            table.fail("max", "the box must hold a grain of the largest radius: expected max - "
+                              "min >= 2 radius_max on every axis");
+        }
+    }
+}
+
+BodySettings read_body(const io::CaseTable& table, const materials::MaterialLibrary& materials) {
+    BodySettings body;
+    body.name = table.string("name");
+    body.material = materials.index_of(table, "material");
+    if (materials[body.material].model() != "linear_elastic") {
+        table.fail("material", "a grain's material is the solid grain's: expected a "
+                               "linear_elastic [[material]], got " +
+                                   std::string(materials[body.material].model()));
+    }
+    if (table.has("radius")) {
+        if (table.has("radius_min") || table.has("radius_max")) {
+            table.fail("radius", "expected either radius or radius_min and radius_max");
+        }
+        body.radius_min = body.radius_max = table.positive_quantity("radius", dim::kLength);
+    } else {
+        body.radius_min = table.positive_quantity("radius_min", dim::kLength);
+        body.radius_max = table.positive_quantity("radius_max", dim::kLength);
+        if (body.radius_max < body.radius_min) {
+            table.fail("radius_max", "expected radius_max >= radius_min");
+        }
+    }
+    read_placement(table, body);
+    body.velocity = table.vector_or("velocity", dim::kVelocity, Vec3::Zero());
+    body.rotation = table.boolean_or("rotation", true);
+    const std::int64_t seed = table.integer_or("seed", 1);
+    if (seed < 0) {
+        table.fail("seed", "expected an integer >= 0");
+    }
+    body.seed = static_cast<std::uint64_t>(seed);
+    return body;
+}
+
+PlaneWall read_wall(const io::CaseTable& table, int up) {
+    PlaneWall wall;
+    wall.name = table.string("name");
+    if (table.choice("type", {"plane", "box"}) == "plane") {
+        const Vec3 normal = table.vector("normal", dim::kNone);
+        if (!(normal.norm() > 0.0)) {
+            table.fail("normal", "expected a non-zero vector");
+        }
+        wall.faces.push_back({table.vector("point", dim::kLength), normal.normalized()});
+        return wall;
+    }
+    const Vec3 min = table.vector("min", dim::kLength);
+    const Vec3 max = table.vector("max", dim::kLength);
+    if (!(min.array() < max.array()).all()) {
+        table.fail("max", "expected max above min on every axis");
+    }
+    wall.faces = PlaneWall::box_faces(min, max, up, table.boolean_or("open_top", true));
+    return wall;
+}
+
+template <class Named>
+void refuse_repeated(const io::CaseTable& table, const std::vector<Named>& known,
+                     const std::string& name, const char* what) {
+    for (const Named& other : known) {
+        if (other.name == name) {
+            table.fail("name",
+                       std::string("a ") + what + " called \"" + name + "\" is already defined");
+        }
+    }
+}
+
+} // namespace
+
+DemSettings read_dem_settings(const io::CaseTable& root,
+                              const materials::MaterialLibrary& materials, int up) {
+    if (root.spatial_dimension() != 3) {
+        root.table("case").fail("dimension", "the DEM's grains are spheres: expected dimension = 3 "
+                                             "with a [dem] table");
+    }
+    const io::CaseTable dem = root.table("dem");
+    DemSettings settings;
+    if (dem.has("time_step")) {
+        settings.time_step = dem.positive_quantity("time_step", dim::kTime);
+    }
+    settings.steps_per_contact =
+        dem.number_or("steps_per_contact", io::default_value(kDemKeys, "steps_per_contact"));
+    if (!(settings.steps_per_contact >= 10.0 && settings.steps_per_contact <= 1e4)) {
+        dem.fail("steps_per_contact", "expected a number in [10, 10000]");
+    }
+    settings.impact_velocity = dem.positive_quantity_or(
+        "impact_velocity", dim::kVelocity, io::default_value(kDemKeys, "impact_velocity"));
+    if (dem.has("skin")) {
+        settings.skin = dem.positive_quantity("skin", dim::kLength);
+    }
+    settings.law = read_contact_law(dem);
+    const io::CaseTable contact = dem.table("contact");
+    settings.damping_where = contact.where(contact.has("gamma_n") ? "gamma_n" : "law");
+    for (const io::CaseTable& table : dem.array_of_tables("body")) {
+        BodySettings body = read_body(table, materials);
+        refuse_repeated(table, settings.bodies, body.name, "body");
+        settings.bodies.push_back(std::move(body));
+    }
+    if (settings.bodies.empty()) {
+        dem.fail("body", "expected at least one [[dem.body]]");
+    }
+    for (const io::CaseTable& table : dem.array_of_tables("wall")) {
+        PlaneWall wall = read_wall(table, up);
+        refuse_repeated(table, settings.walls, wall.name, "wall");
+        settings.walls.push_back(std::move(wall));
+    }
+    return settings;
+}
+
+} // namespace grainload::dem

@@ -1,0 +1,120 @@
+#pragma once
+// The [dem] tables of a case: their keys, declared once, read into typed settings.
+
+#include "dem/contact_law.hpp"
+#include "dem/plane_wall.hpp"
+#include "io/key_spec.hpp"
+#include "io/types.hpp"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace grainload::io {
+class CaseTable;
+}
+namespace grainload::materials {
+class MaterialLibrary;
+}
+
+namespace grainload::dem {
+
+/// The keys of [dem] (docs/user-guide/dem.md).
+inline constexpr std::array<io::KeySpec, 4> kDemKeys{{
+    {"time_step", "time", "the contact time / steps_per_contact",
+     "a fixed step instead of the one from the contact time"},
+    {"steps_per_contact", "number in [10, 10000]", "100",
+     "steps per contact duration of the smallest grains (t_c / 100 as in Markauskas' hopper study)",
+     100.0},
+    {"impact_velocity", "velocity", "1 m/s",
+     "Hertz: the contact time is taken at the faster of this and twice the fastest grain's speed",
+     1.0},
+    {"skin", "length", "0.4 × the largest radius",
+     "the neighbour list's Verlet skin, rebuilt when a grain has moved half of it"},
+}};
+
+/// The keys of [dem.contact].
+inline constexpr std::array<io::KeySpec, 8> kDemContactKeys{{
+    {"law", "`linear` or `hertz_mindlin`", "",
+     "linear: a Kelvin-Voigt spring and dashpot; hertz_mindlin: Hertz's normal and Mindlin's "
+     "tangential stiffness from the grains' E and nu"},
+    {"normal_stiffness", "force per length", "required for `linear`", "k_n of the linear law"},
+    {"tangential_stiffness_ratio", "number in [0, 1]", "2/7", "k_t / k_n of the linear law",
+     2.0 / 7.0},
+    {"gamma_n", "frequency", "0 1/s", "normal damping per unit effective mass: c_n = gamma_n m*"},
+    {"gamma_t", "frequency", "0 1/s", "tangential damping per unit effective mass"},
+    {"restitution", "number in (0, 1]", "none",
+     "`linear` only, instead of gamma_n: the coefficient of restitution of every pair"},
+    {"friction", "number >= 0", "0", "Coulomb's coefficient between grains"},
+    {"wall_friction", "number >= 0", "friction", "Coulomb's coefficient between grain and wall"},
+}};
+
+/// The keys of each [[dem.body]].
+inline constexpr std::array<io::KeySpec, 12> kDemBodyKeys{{
+    {"name", "string", "", "names the body in frames and summary.json"},
+    {"material", "string", "",
+     "a `linear_elastic` [[material]]: the solid grain's density, E and nu"},
+    {"radius", "length", "required unless radius_min and radius_max", "every grain's radius"},
+    {"radius_min", "length", "required unless radius",
+     "radii drawn uniformly in [radius_min, radius_max]"},
+    {"radius_max", "length", "required unless radius", "with radius_min"},
+    {"count", "integer >= 1", "required with min and max", "grains placed at random in the box"},
+    {"min", "length vector", "required unless centre", "the lower corner of the box they fill"},
+    {"max", "length vector", "required unless centre", "the upper corner"},
+    {"centre", "length vector", "none", "instead of a box: one grain with its centre here"},
+    {"velocity", "velocity vector", "0 m/s", "every grain's initial velocity"},
+    {"rotation", "boolean", "true", "false: the grains do not turn (no rotational freedom)", 1.0},
+    {"seed", "integer >= 0", "1", "the random placement's seed: equal seeds, equal packings", 1.0},
+}};
+
+/// The keys of each [[dem.wall]].
+inline constexpr std::array<io::KeySpec, 7> kDemWallKeys{{
+    {"name", "string", "", "names the wall in wall_forces.csv and summary.json"},
+    {"type", "`plane` or `box`", "", "an unbounded plane, or the inside of a box"},
+    {"point", "length vector", "required for a plane", "a point of the plane"},
+    {"normal", "vector", "required for a plane", "points into the material"},
+    {"min", "length vector", "required for a box", "the box's inner lower corner"},
+    {"max", "length vector", "required for a box", "the box's inner upper corner"},
+    {"open_top", "boolean", "true", "a box without its top face", 1.0},
+}};
+
+/// One [[dem.body]] as read.
+struct BodySettings {
+    std::string name;
+    int material = -1;
+    double radius_min = 0.0;
+    double radius_max = 0.0;
+    Index count = 1;
+    Vec3 min = Vec3::Zero();
+    Vec3 max = Vec3::Zero();
+    std::optional<Vec3> centre;
+    Vec3 velocity = Vec3::Zero();
+    bool rotation = true;
+    std::uint64_t seed = 1;
+    /// Where the case gives the count (or the centre): a packing that cannot hold the count is
+    /// refused there.
+    std::string where;
+};
+
+/// The [dem] tables as read: what DemModel is built from.
+struct DemSettings {
+    std::optional<double> time_step;
+    double steps_per_contact = 0.0;
+    double impact_velocity = 0.0;
+    std::optional<double> skin;
+    ContactLaw law;
+    std::vector<BodySettings> bodies;
+    std::vector<PlaneWall> walls;
+    /// Where the case gives the contact's damping ([dem.contact] gamma_n, else its law): an
+    /// over-damped pair is refused there.
+    std::string damping_where;
+};
+
+/// Reads [dem], [dem.contact], [[dem.body]] and [[dem.wall]] of the case; `up` is the scene's
+/// vertical axis (a box's open top). Bad input throws io::CaseError naming the key.
+DemSettings read_dem_settings(const io::CaseTable& root,
+                              const materials::MaterialLibrary& materials, int up);
+
+} // namespace grainload::dem

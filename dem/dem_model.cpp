@@ -1,0 +1,202 @@
+#include "dem/dem_model.hpp"
+
+#include "dem/grain_generator.hpp"
+#include "io/case_error.hpp"
+#include "materials/material_library.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <sstream>
+
+namespace grainload::dem {
+
+namespace {
+
+/// The Verlet skin: the declared one, else 0.4 of the largest radius (a rebuild every few
+/// dozen steps of a settling packing).
+double skin_of(const DemSettings& settings, double largest) {
+    return settings.skin.value_or(0.4 * largest);
+}
+
+double largest_radius(const DemSettings& settings) {
+    double largest = 0.0;
+    for (const BodySettings& body : settings.bodies) {
+        largest = std::max(largest, body.radius_max);
+    }
+    return largest;
+}
+
+} // namespace
+
+DemModel::DemModel(DemSettings settings, const io::SceneSettings& scene,
+                   const materials::MaterialLibrary& materials)
+    : settings_(std::move(settings)), gravity_(scene.gravity),
+      neighbours_(2.0 * largest_radius(settings_), skin_of(settings_, largest_radius(settings_)),
+                  3) {
+    for (std::size_t b = 0; b < settings_.bodies.size(); ++b) {
+        const BodySettings& body = settings_.bodies[b];
+        const auto& elastic = materials[body.material].elastic();
+        body_names_.push_back(body.name);
+        body_materials_.push_back(materials.name(body.material));
+        body_elastic_.push_back({elastic.young(), elastic.poisson()});
+        body_density_.push_back(elastic.density);
+        place_grains(body, static_cast<int>(b), elastic.density, grains_);
+    }
+    if (over_damped()) {
+        throw io::CaseError(settings_.damping_where +
+                            ": gamma_n over-damps a pair of grains, or a grain on a wall (its "
+                            "dashpot stops it before it rebounds): expected a smaller gamma_n");
+    }
+    walls_ = settings_.walls;
+    start_position_ = grains_.position;
+    evaluate();
+}
+
+std::unique_ptr<DemModel> DemModel::from_case(const io::CaseTable& root,
+                                              const io::SceneSettings& scene,
+                                              const materials::MaterialLibrary& materials) {
+    return std::make_unique<DemModel>(read_dem_settings(root, materials, scene.up_axis()), scene,
+                                      materials);
+}
+
+double DemModel::pair_contact_time(std::size_t a, std::optional<std::size_t> b, bool largest,
+                                   double speed) const {
+    const auto radius = [&](std::size_t body) {
+        return largest ? settings_.bodies[body].radius_max : settings_.bodies[body].radius_min;
+    };
+    const auto mass = [&](std::size_t body) {
+        const double r = radius(body);
+        return 4.0 / 3.0 * std::numbers::pi * r * r * r * body_density_[body];
+    };
+    PairProperties pair;
+    pair.mass = mass(a);
+    pair.radius = radius(a);
+    if (b) {
+        pair.mass = mass(a) * mass(*b) / (mass(a) + mass(*b));
+        pair.radius = radius(a) * radius(*b) / (radius(a) + radius(*b));
+    }
+    combine_elastic(body_elastic_[a],
+                    b ? std::optional<GrainElastic>(body_elastic_[*b]) : std::nullopt, pair);
+    return contact_time(settings_.law, pair, speed);
+}
+
+double DemModel::shortest_contact_time(double speed) const {
+    double shortest = std::numeric_limits<double>::infinity();
+    for (std::size_t a = 0; a < body_elastic_.size(); ++a) {
+        if (!settings_.walls.empty()) {
+            shortest = std::min(shortest, pair_contact_time(a, std::nullopt, false, speed));
+        }
+        for (std::size_t b = a; b < body_elastic_.size(); ++b) {
+            shortest = std::min(shortest, pair_contact_time(a, b, false, speed));
+        }
+    }
+    return shortest;
+}
+
+bool DemModel::over_damped() const {
+    // The linear law's dashpot gamma_n m* over-damps the heavier pairs first (its ratio to the
+    // critical 2 sqrt(k m*) grows with sqrt(m*)): the largest grains and their walls.
+    for (std::size_t a = 0; a < body_elastic_.size(); ++a) {
+        for (const bool largest : {false, true}) {
+            if (std::isnan(pair_contact_time(a, std::nullopt, largest, 1.0))) {
+                return true;
+            }
+            for (std::size_t b = a; b < body_elastic_.size(); ++b) {
+                if (std::isnan(pair_contact_time(a, b, largest, 1.0))) {
+                    return true;
+                }
+            }
+        }
+    }
+    return false;
+}
+
+double DemModel::stable_time_step() const {
+    if (settings_.time_step) {
+        return *settings_.time_step;
+    }
+    double speed = settings_.impact_velocity;
+    if (settings_.law.model == ContactLaw::Model::hertz_mindlin) {
+        for (const Vec3& v : grains_.velocity) {
+            speed = std::max(speed, 2.0 * v.norm());
+        }
+    }
+    return shortest_contact_time(speed) / settings_.steps_per_contact;
+}
+
+void DemModel::evaluate() {
+    neighbours_.update(grains_.position, {});
+    books_ = evaluate_contacts(grains_, neighbours_, walls_,
+                               {settings_.law, body_elastic_, gravity_}, step_);
+}
+
+void DemModel::advance(double /*t*/, double dt) {
+    GrainSet& g = grains_;
+    const Index n = g.size();
+    const double half = 0.5 * dt;
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+        g.velocity[i] += half / g.mass[i] * g.force[i];
+        g.position[i] += dt * g.velocity[i];
+        if (g.inertia[i] > 0.0) {
+            g.angular_velocity[i] += half / g.inertia[i] * g.torque[i];
+            const Vec3 turn = dt * g.angular_velocity[i];
+            const double angle = turn.norm();
+            if (angle > 0.0) {
+                g.orientation[i] =
+                    (Eigen::Quaterniond(Eigen::AngleAxisd(angle, turn / angle)) * g.orientation[i])
+                        .normalized();
+            }
+        }
+    }
+    step_ = dt;
+    evaluate();
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+        g.velocity[i] += half / g.mass[i] * g.force[i];
+        if (g.inertia[i] > 0.0) {
+            g.angular_velocity[i] += half / g.inertia[i] * g.torque[i];
+        }
+    }
+}
+
+DemEnergy DemModel::energy() const {
+    DemEnergy e;
+    const GrainSet& g = grains_;
+    for (Index i = 0; i < g.size(); ++i) {
+        e.translational += 0.5 * g.mass[i] * g.velocity[i].squaredNorm();
+        e.rotational += 0.5 * g.inertia[i] * g.angular_velocity[i].squaredNorm();
+        e.gravity -= g.mass[i] * gravity_.dot(g.position[i] - start_position_[g.id[i]]);
+    }
+    e.elastic = books_.elastic_energy;
+    return e;
+}
+
+std::optional<std::string> DemModel::diagnose() const {
+    const GrainSet& g = grains_;
+    for (Index i = 0; i < g.size(); ++i) {
+        if (!g.position[i].allFinite() || !g.velocity[i].allFinite() ||
+            !g.angular_velocity[i].allFinite()) {
+            std::ostringstream text;
+            text << "grain " << g.id[i] << " (body " << body_names_[g.body_id[i]]
+                 << "): its position or velocity is not finite";
+            return text.str();
+        }
+    }
+    // Beyond a radius of overlap one grain passes into another: the contact is too soft for
+    // the speeds of the scene (or the step too long for its stiffness).
+    if (books_.deepest_overlap > 1.0) {
+        const Index i = books_.deepest_grain;
+        std::ostringstream text;
+        text << "grain " << g.id[i] << " (body " << body_names_[g.body_id[i]]
+             << ") overlaps a neighbour or wall by " << books_.deepest_overlap
+             << " of its radius: the contact is too soft for the speeds of the scene; expected "
+                "a stiffer [dem.contact] or material, or a shorter step";
+        return text.str();
+    }
+    return std::nullopt;
+}
+
+} // namespace grainload::dem

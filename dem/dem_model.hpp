@@ -1,0 +1,98 @@
+#pragma once
+// The DEM as the driver steps it: spheres, their contacts and plane walls, velocity Verlet.
+
+#include "dem/contact_pass.hpp"
+#include "dem/dem_case_reader.hpp"
+#include "dem/grain_set.hpp"
+#include "io/reporter.hpp"
+#include "io/scene_settings.hpp"
+#include "io/stepper.hpp"
+#include "particles/neighbour_list.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace grainload::io {
+class CaseTable;
+}
+namespace grainload::materials {
+class MaterialLibrary;
+}
+
+namespace grainload::dem {
+
+/// The energy books of the grains: kinetic (translation and rotation), the contacts' springs,
+/// and the potential of gravity measured from the start.
+struct DemEnergy {
+    double translational = 0.0;
+    double rotational = 0.0;
+    double elastic = 0.0;
+    double gravity = 0.0; ///< -sum m g.(x - x0)
+    double total() const { return translational + rotational + elastic + gravity; }
+};
+
+/// A DEM scene: spheres of the [[dem.body]] tables, the contact law of [dem.contact], the plane
+/// walls of [[dem.wall]]. Integrates translation and rotation by velocity Verlet (Verlet 1967;
+/// Allen & Tildesley 1987): half a kick with the forces of the last evaluation, a drift, the
+/// forces at the new positions (their velocity-dependent parts with the half-step velocities),
+/// the second half kick. A sphere's inertia is isotropic, so its angular velocity follows the
+/// torque with no gyroscopic term; its orientation turns by omega dt as a quaternion.
+class DemModel final : public io::Stepper, public io::Reporter {
+  public:
+    DemModel(DemSettings settings, const io::SceneSettings& scene,
+             const materials::MaterialLibrary& materials);
+    static std::unique_ptr<DemModel> from_case(const io::CaseTable& root,
+                                               const io::SceneSettings& scene,
+                                               const materials::MaterialLibrary& materials);
+
+    std::string_view name() const override { return "dem"; }
+    /// The fixed time_step, else the contact time of the scene's fastest contact over
+    /// steps_per_contact.
+    double stable_time_step() const override;
+    void advance(double t, double dt) override;
+    Index point_count() const override { return grains_.size(); }
+    std::optional<std::string> diagnose() const override;
+    void write_checkpoint(std::ostream& out) const override;
+    void read_checkpoint(std::istream& in) override;
+
+    void append_blocks(io::Frame& frame) const override;
+    void append_results(double t, std::vector<io::ResultFigure>& results) const override;
+    void describe_model(std::vector<io::ModelChoice>& choices) const override;
+    void set_output(io::OutputStreams& output) override { output_ = &output; }
+
+    const GrainSet& grains() const { return grains_; }
+    const std::vector<PlaneWall>& walls() const { return walls_; }
+    const ContactBooks& books() const { return books_; }
+    DemEnergy energy() const;
+    /// The shortest contact time of the scene at a normal impact speed `speed`: of the
+    /// smallest grains of each pair of bodies, and of each body's smallest on a wall.
+    double shortest_contact_time(double speed) const;
+
+  private:
+    /// The contact time of the smallest (or largest) grains of bodies a and b, or of a's on a
+    /// wall (b empty).
+    double pair_contact_time(std::size_t a, std::optional<std::size_t> b, bool largest,
+                             double speed) const;
+    /// Whether the linear law's dashpot stops some pair before it rebounds.
+    bool over_damped() const;
+    void evaluate();
+    void write_wall_rows(double time) const;
+
+    DemSettings settings_;
+    Vec3 gravity_;
+    std::vector<std::string> body_names_;
+    std::vector<std::string> body_materials_;
+    std::vector<GrainElastic> body_elastic_;
+    std::vector<double> body_density_;
+    GrainSet grains_;
+    std::vector<Vec3> start_position_; ///< by grain id, for the potential of gravity
+    std::vector<PlaneWall> walls_;
+    particles::NeighbourList neighbours_;
+    ContactBooks books_;
+    double step_ = 0.0; ///< the step the last evaluation's springs advanced by
+    io::OutputStreams* output_ = nullptr;
+    mutable double last_row_time_ = -1.0;
+};
+
+} // namespace grainload::dem

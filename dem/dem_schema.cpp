@@ -1,0 +1,30 @@
+#include "dem/dem_schema.hpp"
+
+#include "dem/dem_case_reader.hpp"
+
+#include <array>
+
+namespace grainload::dem {
+
+namespace {
+
+constexpr std::string_view kGuide = "docs/user-guide/dem.md";
+
+const std::array<io::KeyTable, 4> kTables{{
+    {"dem", false, "the discrete element method: its step and neighbour search", kDemKeys, kGuide,
+     "### `[dem]`"},
+    {"dem.contact", false, "the contact law between grains and with walls", kDemContactKeys, kGuide,
+     "### `[dem.contact]`"},
+    {"dem.body", true, "a body of spherical grains: material, radii, placement", kDemBodyKeys,
+     kGuide, "### `[[dem.body]]`"},
+    {"dem.wall", true, "a rigid wall of plane faces: a plane or a box", kDemWallKeys, kGuide,
+     "### `[[dem.wall]]`"},
+}};
+
+} // namespace
+
+std::span<const io::KeyTable> dem_key_tables() {
+    return kTables;
+}
+
+} // namespace grainload::dem

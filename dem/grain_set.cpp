@@ -1,0 +1,25 @@
+#include "dem/grain_set.hpp"
+
+#include <numbers>
+
+namespace grainload::dem {
+
+void GrainSet::add(int body, double grain_radius, double density, const Vec3& at, bool rotates) {
+    const double m =
+        4.0 / 3.0 * std::numbers::pi * grain_radius * grain_radius * grain_radius * density;
+    id.push_back(next_id++);
+    body_id.push_back(body);
+    radius.push_back(grain_radius);
+    mass.push_back(m);
+    inertia.push_back(rotates ? 0.4 * m * grain_radius * grain_radius : 0.0);
+    position.push_back(at);
+    velocity.push_back(Vec3::Zero());
+    angular_velocity.push_back(Vec3::Zero());
+    orientation.push_back(Eigen::Quaterniond::Identity());
+    force.push_back(Vec3::Zero());
+    torque.push_back(Vec3::Zero());
+    contacts.push_back(0);
+    springs.emplace_back();
+}
+
+} // namespace grainload::dem
