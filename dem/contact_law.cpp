@@ -1,5 +1,6 @@
 #include "dem/contact_law.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -65,12 +66,17 @@ void contact_force(const ContactLaw& law, const PairProperties& pair, double tim
         spring *= length / turned;
     }
     spring += tangential_velocity * time_step;
-    Vec3 tangential = -stiffness_t * spring - law.gamma_t * pair.mass * tangential_velocity;
-    const double limit = pair.friction * std::abs(normal_force);
+    const Vec3 damping_t = law.gamma_t * pair.mass * tangential_velocity;
+    Vec3 tangential = -stiffness_t * spring - damping_t;
+    // Friction needs the grains pressed together: where the dashpot pulls at the end of a
+    // contact (a normal force below zero) the slider carries nothing.
+    const double limit = pair.friction * std::max(normal_force, 0.0);
     const double magnitude = tangential.norm();
     if (magnitude > limit) {
         tangential *= magnitude > 0.0 ? limit / magnitude : 0.0;
-        spring = stiffness_t > 0.0 ? Vec3(-tangential / stiffness_t) : Vec3::Zero();
+        // The spring takes the slip force less the dashpot's share (Luding 2008), so that a
+        // contact that stops slipping starts from the force it slid with.
+        spring = stiffness_t > 0.0 ? Vec3(-(tangential + damping_t) / stiffness_t) : Vec3::Zero();
     }
     state.spring = spring;
     if (stiffness_t > 0.0) {

@@ -21,8 +21,9 @@ namespace grainload::dem {
 /// period, Schwager & Poeschel 2007). The dashpot is not cut at zero force: the Kelvin-Voigt
 /// element as the seeds state it, for which that restitution holds.
 /// Tangent: a spring xi integrated from the tangential relative speed, f_t = -k_t xi -
-/// gamma_t m* v_t, capped at mu f_n (Coulomb); at the cap the spring is reset to the slip
-/// force, -f_t / k_t (Cundall & Strack 1979). k_t = ratio k_n (linear; 2/7 makes the normal and
+/// gamma_t m* v_t, capped at mu max(f_n, 0) (Coulomb); at the cap the spring is reset to the
+/// slip force less the dashpot's part, -(f_t + gamma_t m* v_t) / k_t (Cundall & Strack 1979;
+/// Luding 2008). k_t = ratio k_n (linear; 2/7 makes the normal and
 /// tangential periods of a sphere equal, Silbert et al. 2001) or 8 G* sqrt(R* delta) (Mindlin).
 struct ContactLaw {
     enum class Model { linear, hertz_mindlin };

@@ -77,18 +77,18 @@ int gather_walls(GrainSet& g, std::vector<PlaneWall>& walls, const ContactScene&
                  Index i, std::vector<Spring>& kept, double& energy, double& deepest) {
     int contacts = 0;
     for (std::size_t w = 0; w < walls.size(); ++w) {
+        if (walls[w].removed) {
+            continue;
+        }
         for (std::size_t f = 0; f < walls[w].faces.size(); ++f) {
-            const PlaneWall::Face& face = walls[w].faces[f];
-            const double gap = (g.position[i] - face.point).dot(face.normal);
-            if (gap >= g.radius[i]) {
+            ContactState state;
+            if (!touches(walls[w].faces[f], g.position[i], g.radius[i], state.overlap,
+                         state.normal)) {
                 continue;
             }
-            ContactState state;
-            state.normal = face.normal;
-            state.overlap = g.radius[i] - gap;
             const double arm = g.radius[i] - 0.5 * state.overlap;
             state.relative_velocity =
-                g.velocity[i] - arm * g.angular_velocity[i].cross(face.normal);
+                g.velocity[i] - arm * g.angular_velocity[i].cross(state.normal);
             const std::uint64_t key = kWallPartner | (w << 8) | f;
             state.spring = spring_with(g.springs[i], key);
             PairProperties pair;
@@ -98,7 +98,7 @@ int gather_walls(GrainSet& g, std::vector<PlaneWall>& walls, const ContactScene&
             pair.friction = scene.law.wall_friction;
             contact_force(scene.law, pair, dt, state);
             g.force[i] += state.force;
-            g.torque[i] -= arm * face.normal.cross(state.force);
+            g.torque[i] -= arm * state.normal.cross(state.force);
             walls[w].force -= state.force;
             energy += state.elastic_energy;
             deepest = std::max(deepest, state.overlap / g.radius[i]);

@@ -1,8 +1,10 @@
 #include "dem/dem_case_reader.hpp"
 
 #include "io/case_table.hpp"
+#include "io/scene_settings.hpp"
 #include "materials/material_library.hpp"
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <string>
 
@@ -122,10 +124,37 @@ BodySettings read_body(const io::CaseTable& table, const materials::MaterialLibr
     return body;
 }
 
+PlaneWall::Face read_rectangle(const io::CaseTable& table) {
+    PlaneWall::Face face;
+    face.bounded = true;
+    face.point = table.vector("origin", dim::kLength);
+    face.edge_u = table.vector("edge_u", dim::kLength);
+    face.edge_v = table.vector("edge_v", dim::kLength);
+    const double u = face.edge_u.norm();
+    const double v = face.edge_v.norm();
+    if (!(u > 0.0 && v > 0.0)) {
+        table.fail(u > 0.0 ? "edge_v" : "edge_u", "expected an edge of non-zero length");
+    }
+    // Right angles to round-off of the written digits: 1e-6 of the edges' lengths.
+    if (std::abs(face.edge_u.dot(face.edge_v)) > 1e-6 * u * v) {
+        table.fail("edge_v", "expected edge_v at right angles to edge_u");
+    }
+    face.normal = face.edge_u.cross(face.edge_v).normalized();
+    return face;
+}
+
 PlaneWall read_wall(const io::CaseTable& table, int up) {
     PlaneWall wall;
     wall.name = table.string("name");
-    if (table.choice("type", {"plane", "box"}) == "plane") {
+    if (table.has("remove_at")) {
+        wall.remove_at = table.positive_quantity("remove_at", dim::kTime, true);
+    }
+    const std::string type = table.choice("type", {"plane", "rectangle", "box"});
+    if (type == "rectangle") {
+        wall.faces.push_back(read_rectangle(table));
+        return wall;
+    }
+    if (type == "plane") {
         const Vec3 normal = table.vector("normal", dim::kNone);
         if (!(normal.norm() > 0.0)) {
             table.fail("normal", "expected a non-zero vector");
@@ -155,8 +184,24 @@ void refuse_repeated(const io::CaseTable& table, const std::vector<Named>& known
 
 } // namespace
 
+/// The sinks of [[dem.sink]], each body's grain size the mean diameter of its radii.
+std::shared_ptr<particles::SinkSet> read_sinks(const io::CaseTable& dem,
+                                               const DemSettings& settings,
+                                               const materials::MaterialLibrary& materials,
+                                               const io::SceneSettings& scene) {
+    particles::BodyNames bodies{"[[dem.body]]", {}};
+    std::vector<particles::SinkSet::BodyGrain> grains;
+    for (const BodySettings& body : settings.bodies) {
+        bodies.names.push_back(body.name);
+        grains.push_back({materials.name(body.material), body.radius_min + body.radius_max});
+    }
+    return std::make_shared<particles::SinkSet>(dem, bodies, 3, scene.gravity.norm(), 1.0, grains);
+}
+
 DemSettings read_dem_settings(const io::CaseTable& root,
-                              const materials::MaterialLibrary& materials, int up) {
+                              const materials::MaterialLibrary& materials,
+                              const io::SceneSettings& scene) {
+    const int up = scene.up_axis();
     if (root.spatial_dimension() != 3) {
         root.table("case").fail("dimension", "the DEM's grains are spheres: expected dimension = 3 "
                                              "with a [dem] table");
@@ -165,6 +210,7 @@ DemSettings read_dem_settings(const io::CaseTable& root,
     DemSettings settings;
     if (dem.has("time_step")) {
         settings.time_step = dem.positive_quantity("time_step", dim::kTime);
+        settings.time_step_where = dem.where("time_step");
     }
     settings.steps_per_contact =
         dem.number_or("steps_per_contact", io::default_value(kDemKeys, "steps_per_contact"));
@@ -192,6 +238,7 @@ DemSettings read_dem_settings(const io::CaseTable& root,
         refuse_repeated(table, settings.walls, wall.name, "wall");
         settings.walls.push_back(std::move(wall));
     }
+    settings.sinks = read_sinks(dem, settings, materials, scene);
     return settings;
 }
 

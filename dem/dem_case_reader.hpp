@@ -5,16 +5,19 @@
 #include "dem/plane_wall.hpp"
 #include "io/key_spec.hpp"
 #include "io/types.hpp"
+#include "particles/sink.hpp"
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace grainload::io {
 class CaseTable;
-}
+struct SceneSettings;
+} // namespace grainload::io
 namespace grainload::materials {
 class MaterialLibrary;
 }
@@ -70,14 +73,20 @@ inline constexpr std::array<io::KeySpec, 12> kDemBodyKeys{{
 }};
 
 /// The keys of each [[dem.wall]].
-inline constexpr std::array<io::KeySpec, 7> kDemWallKeys{{
+inline constexpr std::array<io::KeySpec, 11> kDemWallKeys{{
     {"name", "string", "", "names the wall in wall_forces.csv and summary.json"},
-    {"type", "`plane` or `box`", "", "an unbounded plane, or the inside of a box"},
+    {"type", "`plane`, `rectangle` or `box`", "",
+     "an unbounded plane, a rectangular plate, or the inside of a box"},
     {"point", "length vector", "required for a plane", "a point of the plane"},
     {"normal", "vector", "required for a plane", "points into the material"},
+    {"origin", "length vector", "required for a rectangle", "a corner of the rectangle"},
+    {"edge_u", "length vector", "required for a rectangle", "the rectangle is origin + s edge_u"},
+    {"edge_v", "length vector", "required for a rectangle",
+     "+ t edge_v, s and t in [0, 1], edge_v at right angles to edge_u"},
     {"min", "length vector", "required for a box", "the box's inner lower corner"},
     {"max", "length vector", "required for a box", "the box's inner upper corner"},
     {"open_top", "boolean", "true", "a box without its top face", 1.0},
+    {"remove_at", "time", "never", "the wall leaves the scene at this time (a gate that opens)"},
 }};
 
 /// One [[dem.body]] as read.
@@ -107,14 +116,20 @@ struct DemSettings {
     ContactLaw law;
     std::vector<BodySettings> bodies;
     std::vector<PlaneWall> walls;
+    /// [[dem.sink]]: the regions grains leave the scene through.
+    std::shared_ptr<particles::SinkSet> sinks;
+    /// Where the case gives time_step: a step too long for the contacts is refused there.
+    std::string time_step_where;
     /// Where the case gives the contact's damping ([dem.contact] gamma_n, else its law): an
     /// over-damped pair is refused there.
     std::string damping_where;
 };
 
-/// Reads [dem], [dem.contact], [[dem.body]] and [[dem.wall]] of the case; `up` is the scene's
-/// vertical axis (a box's open top). Bad input throws io::CaseError naming the key.
+/// Reads [dem], [dem.contact], [[dem.body]], [[dem.wall]] and [[dem.sink]] of the case; the
+/// scene's up axis opens a box's top, its gravity gives the sinks' Beverloo rates. Bad input
+/// throws io::CaseError naming the key.
 DemSettings read_dem_settings(const io::CaseTable& root,
-                              const materials::MaterialLibrary& materials, int up);
+                              const materials::MaterialLibrary& materials,
+                              const io::SceneSettings& scene);
 
 } // namespace grainload::dem

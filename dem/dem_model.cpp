@@ -3,6 +3,8 @@
 #include "dem/grain_generator.hpp"
 #include "io/case_error.hpp"
 #include "materials/material_library.hpp"
+#include "particles/compact.hpp"
+#include "particles/mass_audit.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -49,16 +51,41 @@ DemModel::DemModel(DemSettings settings, const io::SceneSettings& scene,
                             ": gamma_n over-damps a pair of grains, or a grain on a wall (its "
                             "dashpot stops it before it rebounds): expected a smaller gamma_n");
     }
+    if (settings_.time_step &&
+        *settings_.time_step > 0.1 * shortest_contact_time(settings_.impact_velocity)) {
+        throw io::CaseError(settings_.time_step_where + ": a step longer than a tenth of the " +
+                            "shortest contact time (" +
+                            std::to_string(shortest_contact_time(settings_.impact_velocity)) +
+                            " s) resolves no contact: expected a shorter time_step");
+    }
     walls_ = settings_.walls;
     start_position_ = grains_.position;
+    sinks_ = settings_.sinks ? settings_.sinks : std::make_shared<particles::SinkSet>();
+    if (!sinks_->empty()) {
+        double initial = 0.0;
+        for (const double m : grains_.mass) {
+            initial += m;
+        }
+        parts_.add(sinks_);
+        parts_.add(std::make_shared<particles::MassAudit>(
+            initial, 3,
+            particles::MassAudit::Books{[this] {
+                                            double mass = 0.0;
+                                            for (const double m : grains_.mass) {
+                                                mass += m;
+                                            }
+                                            return mass;
+                                        },
+                                        [this] { return sinks_->discharged(); },
+                                        [] { return 0.0; }}));
+    }
     evaluate();
 }
 
 std::unique_ptr<DemModel> DemModel::from_case(const io::CaseTable& root,
                                               const io::SceneSettings& scene,
                                               const materials::MaterialLibrary& materials) {
-    return std::make_unique<DemModel>(read_dem_settings(root, materials, scene.up_axis()), scene,
-                                      materials);
+    return std::make_unique<DemModel>(read_dem_settings(root, materials, scene), scene, materials);
 }
 
 double DemModel::pair_contact_time(std::size_t a, std::optional<std::size_t> b, bool largest,
@@ -132,7 +159,7 @@ void DemModel::evaluate() {
                                {settings_.law, body_elastic_, gravity_}, step_);
 }
 
-void DemModel::advance(double /*t*/, double dt) {
+void DemModel::advance(double t, double dt) {
     GrainSet& g = grains_;
     const Index n = g.size();
     const double half = 0.5 * dt;
@@ -160,6 +187,54 @@ void DemModel::advance(double /*t*/, double dt) {
             g.angular_velocity[i] += half / g.inertia[i] * g.torque[i];
         }
     }
+    exchange(t + dt);
+}
+
+void DemModel::exchange(double time) {
+    for (PlaneWall& wall : walls_) {
+        if (!wall.removed && time >= wall.remove_at) {
+            wall.removed = true;
+            wall.force = Vec3::Zero();
+            std::ostringstream text;
+            text << "wall " << wall.name << " removed at t = " << time << " s";
+            events_.push_back(text.str());
+        }
+    }
+    if (parts_.empty()) {
+        return;
+    }
+    std::vector<char> gone(static_cast<std::size_t>(grains_.size()), 0);
+    if (parts_.collect_departures(grains_.view(), time, gone) > 0) {
+        remove_grains(gone);
+    }
+    parts_.end_step(time);
+}
+
+void DemModel::remove_grains(const std::vector<char>& gone) {
+    std::vector<Index> new_index(gone.size(), -1);
+    Index kept = 0;
+    for (std::size_t i = 0; i < gone.size(); ++i) {
+        if (!gone[i]) {
+            new_index[i] = kept++;
+        }
+    }
+    grains_.keep(gone);
+    parts_.after_removal(new_index);
+    if (books_.deepest_grain >= 0) {
+        books_.deepest_grain = new_index[static_cast<std::size_t>(books_.deepest_grain)];
+        books_.deepest_overlap = books_.deepest_grain >= 0 ? books_.deepest_overlap : 0.0;
+    }
+    // The list's rows are the old indices: a new list, at the positions now.
+    neighbours_.update(grains_.position, {}, true);
+}
+
+std::vector<std::string> DemModel::take_events() {
+    std::vector<std::string> events = std::move(events_);
+    events_.clear();
+    for (std::string& line : parts_.take_events()) {
+        events.push_back(std::move(line));
+    }
+    return events;
 }
 
 DemEnergy DemModel::energy() const {

@@ -8,6 +8,7 @@
 #include "io/scene_settings.hpp"
 #include "io/stepper.hpp"
 #include "particles/neighbour_list.hpp"
+#include "particles/scene_part_list.hpp"
 
 #include <memory>
 #include <string>
@@ -37,7 +38,9 @@ struct DemEnergy {
 /// Allen & Tildesley 1987): half a kick with the forces of the last evaluation, a drift, the
 /// forces at the new positions (their velocity-dependent parts with the half-step velocities),
 /// the second half kick. A sphere's inertia is isotropic, so its angular velocity follows the
-/// torque with no gyroscopic term; its orientation turns by omega dt as a quaternion.
+/// torque with no gyroscopic term; its orientation turns by omega dt as a quaternion. After
+/// each step the walls due leave and the grains in a sink are removed (the scene parts of
+/// particles/: sinks and the mass audit).
 class DemModel final : public io::Stepper, public io::Reporter {
   public:
     DemModel(DemSettings settings, const io::SceneSettings& scene,
@@ -59,6 +62,7 @@ class DemModel final : public io::Stepper, public io::Reporter {
     void append_blocks(io::Frame& frame) const override;
     void append_results(double t, std::vector<io::ResultFigure>& results) const override;
     void describe_model(std::vector<io::ModelChoice>& choices) const override;
+    std::vector<std::string> take_events() override;
     void set_output(io::OutputStreams& output) override { output_ = &output; }
 
     const GrainSet& grains() const { return grains_; }
@@ -77,7 +81,11 @@ class DemModel final : public io::Stepper, public io::Reporter {
     /// Whether the linear law's dashpot stops some pair before it rebounds.
     bool over_damped() const;
     void evaluate();
+    /// Walls whose remove_at the step reached leave, and grains that reached a sink.
+    void exchange(double time);
+    void remove_grains(const std::vector<char>& gone);
     void write_wall_rows(double time) const;
+    void write_part_rows(double time) const;
 
     DemSettings settings_;
     Vec3 gravity_;
@@ -90,9 +98,14 @@ class DemModel final : public io::Stepper, public io::Reporter {
     std::vector<PlaneWall> walls_;
     particles::NeighbourList neighbours_;
     ContactBooks books_;
+    /// The scene's parts: the sinks and, with them, the mass audit.
+    mutable particles::ScenePartList parts_;
+    std::shared_ptr<particles::SinkSet> sinks_;
+    std::vector<std::string> events_;
     double step_ = 0.0; ///< the step the last evaluation's springs advanced by
     io::OutputStreams* output_ = nullptr;
     mutable double last_row_time_ = -1.0;
+    mutable double last_part_time_ = -1.0;
 };
 
 } // namespace grainload::dem

@@ -50,6 +50,7 @@ void DemModel::append_blocks(io::Frame& frame) const {
         frame.blocks.push_back(std::move(block));
     }
     write_wall_rows(frame.time);
+    write_part_rows(frame.time);
 }
 
 void DemModel::write_wall_rows(double time) const {
@@ -66,9 +67,17 @@ void DemModel::write_wall_rows(double time) const {
     output_->open("wall_forces.csv", kWallForcesHeader).append(rows.str());
 }
 
+void DemModel::write_part_rows(double time) const {
+    if (output_ != nullptr && time > last_part_time_) {
+        last_part_time_ = time;
+        parts_.at_output(time, *output_);
+    }
+}
+
 void DemModel::append_results(double /*t*/, std::vector<io::ResultFigure>& results) const {
     const GrainSet& g = grains_;
     results.push_back({"grains", static_cast<double>(g.size()), "", std::nullopt, ""});
+    parts_.append_results(results);
     const DemEnergy e = energy();
     results.push_back({"kinetic_energy", e.translational + e.rotational, "J", std::nullopt, ""});
     results.push_back({"contact_energy", e.elastic, "J", std::nullopt, ""});
@@ -144,14 +153,18 @@ void DemModel::write_checkpoint(std::ostream& out) const {
     io::write_array(out, springs);
     io::write_value(out, g.next_id);
     std::vector<Vec3> wall_forces;
+    std::vector<char> removed;
     for (const PlaneWall& wall : walls_) {
         wall_forces.push_back(wall.force);
+        removed.push_back(wall.removed ? 1 : 0);
     }
     io::write_array(out, wall_forces);
+    io::write_array(out, removed);
     io::write_value(out, books_);
     io::write_value(out, step_);
     io::write_array(
         out, std::vector<Vec3>(neighbours_.reference().begin(), neighbours_.reference().end()));
+    parts_.write_checkpoint(out);
 }
 
 void DemModel::read_checkpoint(std::istream& in) {
@@ -195,9 +208,12 @@ void DemModel::read_checkpoint(std::istream& in) {
     }
     g.next_id = io::read_value<std::uint64_t>(in);
     std::vector<Vec3> wall_forces;
+    std::vector<char> removed;
     io::read_array(in, wall_forces, walls_.size(), "wall forces");
+    io::read_array(in, removed, walls_.size(), "walls removed");
     for (std::size_t w = 0; w < walls_.size(); ++w) {
         walls_[w].force = wall_forces[w];
+        walls_[w].removed = removed[w] != 0;
     }
     books_ = io::read_value<ContactBooks>(in);
     step_ = io::read_value<double>(in);
@@ -206,6 +222,8 @@ void DemModel::read_checkpoint(std::istream& in) {
     std::vector<Vec3> reference;
     io::read_array(in, reference, n, "neighbour list positions");
     neighbours_.update(reference, {}, true);
+    events_.clear();
+    parts_.read_checkpoint(in);
 }
 
 } // namespace grainload::dem

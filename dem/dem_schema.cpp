@@ -10,15 +10,17 @@ namespace {
 
 constexpr std::string_view kGuide = "docs/user-guide/dem.md";
 
-const std::array<io::KeyTable, 4> kTables{{
+const std::array<io::KeyTable, 5> kTables{{
     {"dem", false, "the discrete element method: its step and neighbour search", kDemKeys, kGuide,
      "### `[dem]`"},
     {"dem.contact", false, "the contact law between grains and with walls", kDemContactKeys, kGuide,
      "### `[dem.contact]`"},
     {"dem.body", true, "a body of spherical grains: material, radii, placement", kDemBodyKeys,
      kGuide, "### `[[dem.body]]`"},
-    {"dem.wall", true, "a rigid wall of plane faces: a plane or a box", kDemWallKeys, kGuide,
-     "### `[[dem.wall]]`"},
+    {"dem.wall", true, "a rigid wall of flat faces: a plane, a rectangle or a box", kDemWallKeys,
+     kGuide, "### `[[dem.wall]]`"},
+    {"dem.sink", true, "a region grains leave the scene through", particles::kSinkKeys, kGuide,
+     "### `[[dem.sink]]`"},
 }};
 
 } // namespace

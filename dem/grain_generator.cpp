@@ -72,24 +72,30 @@ void place_grains(const BodySettings& body, int body_id, double density, GrainSe
     }
     PlacementGrid grid(grains, 2.0 * largest);
     std::mt19937_64 generator(body.seed);
-    // A thousand draws per grain before the box is called full: random sequential addition
+    // Ten thousand draws per grain before the box is called full: random sequential addition
     // jams near 0.38 of the volume (Torquato & Stillinger 2010), long before that runs out.
-    const Index most_draws = 1000 * body.count;
+    // Each grain's radius is drawn once and kept through the draws of its centre: drawing it
+    // anew with each centre would favour the small grains, which fit more often, and bias the
+    // size distribution (by 2.7 % of the mass in the hopper's fill).
+    const Index most_draws = 10000;
     Index placed = 0;
-    for (Index draw = 0; draw < most_draws && placed < body.count; ++draw) {
+    for (bool fits = true; fits && placed < body.count;) {
         const double r = body.radius_min + (body.radius_max - body.radius_min) * uniform(generator);
-        Vec3 centre;
-        for (int a = 0; a < 3; ++a) {
-            centre[a] =
-                body.min[a] + r + (body.max[a] - body.min[a] - 2.0 * r) * uniform(generator);
+        fits = false;
+        for (Index draw = 0; draw < most_draws && !fits; ++draw) {
+            Vec3 centre;
+            for (int a = 0; a < 3; ++a) {
+                centre[a] =
+                    body.min[a] + r + (body.max[a] - body.min[a] - 2.0 * r) * uniform(generator);
+            }
+            fits = grid.free(centre, r);
+            if (fits) {
+                grains.add(body_id, r, density, centre, body.rotation);
+                grains.velocity.back() = body.velocity;
+                grid.insert(grains.size() - 1);
+                ++placed;
+            }
         }
-        if (!grid.free(centre, r)) {
-            continue;
-        }
-        grains.add(body_id, r, density, centre, body.rotation);
-        grains.velocity.back() = body.velocity;
-        grid.insert(grains.size() - 1);
-        ++placed;
     }
     if (placed < body.count) {
         throw io::CaseError(body.where + ": only " + std::to_string(placed) + " of its " +

@@ -1,5 +1,7 @@
 #include "dem/grain_set.hpp"
 
+#include "particles/compact.hpp"
+
 #include <numbers>
 
 namespace grainload::dem {
@@ -20,6 +22,22 @@ void GrainSet::add(int body, double grain_radius, double density, const Vec3& at
     torque.push_back(Vec3::Zero());
     contacts.push_back(0);
     springs.emplace_back();
+}
+
+void GrainSet::keep(std::span<const char> gone) {
+    particles::compact(id, gone);
+    particles::compact(body_id, gone);
+    particles::compact(radius, gone);
+    particles::compact(mass, gone);
+    particles::compact(inertia, gone);
+    particles::compact(position, gone);
+    particles::compact(velocity, gone);
+    particles::compact(angular_velocity, gone);
+    particles::compact(orientation, gone);
+    particles::compact(force, gone);
+    particles::compact(torque, gone);
+    particles::compact(contacts, gone);
+    particles::compact(springs, gone);
 }
 
 } // namespace grainload::dem

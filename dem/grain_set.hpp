@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace grainload::dem {
@@ -42,6 +43,8 @@ struct GrainSet {
     Index size() const { return static_cast<Index>(id.size()); }
     /// Append a sphere at rest in its orientation of reference.
     void add(int body, double grain_radius, double density, const Vec3& at, bool rotates);
+    /// Keep the grains whose `gone` flag is 0, in order, in every field.
+    void keep(std::span<const char> gone);
     /// The common fields the scene parts read.
     particles::ParticleView view() const { return {position, mass, body_id, {}}; }
 };

@@ -30,7 +30,8 @@ inline constexpr std::array<io::KeySpec, 10> kSinkKeys{{
     {"min", "length vector", "required for a box", "the box's lower corner"},
     {"max", "length vector", "required for a box",
      "the box's upper corner, above min on every axis"},
-    {"body", "string", "every body", "only particles of this [[sph.body]] leave through the sink"},
+    {"body", "string", "every body",
+     "only the particles of the body of this name leave through the sink"},
     {"outlet_width", "length", "none",
      "the effective width of the outlet the sink drains (a slot's width, a circle's diameter): "
      "gives the steady rate Beverloo's figure as its reference and `grainload check` a "
