@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace grainload::dem {
 
@@ -15,66 +14,81 @@ Vec3 spring_with(const std::vector<Spring>& springs, std::uint64_t partner) {
     return found != springs.end() && found->partner == partner ? found->shear : Vec3::Zero();
 }
 
-/// What one row (grain i) gathers.
-struct RowResult {
-    Vec3 force = Vec3::Zero();
-    Vec3 torque = Vec3::Zero();
-    int contacts = 0;
-    double energy = 0.0;
-    double deepest = 0.0;
+/// The pass's inputs and per-sphere results.
+struct Pass {
+    GrainSet& g;
+    SphereSet& s;
+    const ContactScene& scene;
+    double dt;
+    std::vector<Vec3> point_velocity; ///< each sphere centre's velocity, v + omega x arm
+    std::vector<Vec3> force;          ///< each sphere's pair forces
+    std::vector<Vec3> torque;         ///< about its centre
+    std::vector<double> energy;
+    std::vector<double> deepest;
+    std::vector<std::vector<Spring>> kept;
 };
 
-/// Grain i's contacts with the other grains of its neighbour row.
-void gather_pairs(const GrainSet& g, const particles::NeighbourList& neighbours,
-                  const ContactScene& scene, double dt, Index i, std::vector<Spring>& kept,
-                  RowResult& row) {
+/// Sphere i's contacts with the spheres of other grains in its neighbour row.
+int gather_pairs(Pass& p, const particles::NeighbourList& neighbours, Index i) {
+    const GrainSet& g = p.g;
+    const SphereSet& s = p.s;
+    int contacts = 0;
     for (const std::int32_t jj : neighbours.neighbours(i)) {
         const auto j = static_cast<Index>(jj);
-        const double reach = g.radius[i] + g.radius[j];
-        if ((g.position[i] - g.position[j]).squaredNorm() >= reach * reach) {
+        const double reach = s.radius[i] + s.radius[j];
+        if (s.grain[i] == s.grain[j] ||
+            (s.position[i] - s.position[j]).squaredNorm() >= reach * reach) {
             continue;
         }
-        const bool owner = g.id[i] < g.id[j];
+        const bool owner = s.id[i] < s.id[j];
         const Index a = owner ? i : j;
         const Index b = owner ? j : i;
-        const Vec3 offset = g.position[a] - g.position[b];
+        const auto ga = static_cast<std::size_t>(s.grain[a]);
+        const auto gb = static_cast<std::size_t>(s.grain[b]);
+        const Vec3 offset = s.position[a] - s.position[b];
         const double distance = offset.norm();
         ContactState state;
         state.normal = offset / distance;
         state.overlap = reach - distance;
-        const double arm_a = g.radius[a] - 0.5 * state.overlap;
-        const double arm_b = g.radius[b] - 0.5 * state.overlap;
+        const double arm_a = s.radius[a] - 0.5 * state.overlap;
+        const double arm_b = s.radius[b] - 0.5 * state.overlap;
         state.relative_velocity =
-            g.velocity[a] - g.velocity[b] -
-            (arm_a * g.angular_velocity[a] + arm_b * g.angular_velocity[b]).cross(state.normal);
-        state.spring = spring_with(g.springs[a], g.id[b]);
+            p.point_velocity[a] - p.point_velocity[b] -
+            (arm_a * g.angular_velocity[ga] + arm_b * g.angular_velocity[gb]).cross(state.normal);
+        state.spring = spring_with(s.springs[a], s.id[b]);
         PairProperties pair;
-        pair.mass = g.mass[a] * g.mass[b] / (g.mass[a] + g.mass[b]);
-        pair.radius = g.radius[a] * g.radius[b] / reach;
-        combine_elastic(scene.body_elastic[g.body_id[a]], scene.body_elastic[g.body_id[b]], pair);
-        pair.friction = scene.law.friction;
-        contact_force(scene.law, pair, dt, state);
+        pair.mass = g.mass[ga] * g.mass[gb] / (g.mass[ga] + g.mass[gb]);
+        pair.radius = s.radius[a] * s.radius[b] / reach;
+        combine_elastic(p.scene.body_elastic[g.body_id[ga]], p.scene.body_elastic[g.body_id[gb]],
+                        pair);
+        pair.friction = p.scene.law.friction;
+        contact_force(p.scene.law, pair, p.dt, state);
         // Torque of the force on a at its contact point, -arm_a n from a's centre; b's by the
         // same force reversed at +arm_b n from b's centre: both are -arm n x F.
         const Vec3 turn = state.normal.cross(state.force);
+        const auto at = static_cast<std::size_t>(i);
         if (owner) {
-            row.force += state.force;
-            row.torque -= arm_a * turn;
-            row.energy += state.elastic_energy;
-            kept.push_back({g.id[j], state.spring});
+            p.force[at] += state.force;
+            p.torque[at] -= arm_a * turn;
+            p.energy[at] += state.elastic_energy;
+            p.kept[at].push_back({s.id[j], state.spring});
         } else {
-            row.force -= state.force;
-            row.torque -= arm_b * turn;
+            p.force[at] -= state.force;
+            p.torque[at] -= arm_b * turn;
         }
-        ++row.contacts;
-        row.deepest = std::max(row.deepest, state.overlap / std::min(g.radius[i], g.radius[j]));
+        ++contacts;
+        p.deepest[at] = std::max(p.deepest[at], state.overlap / std::min(s.radius[i], s.radius[j]));
     }
+    return contacts;
 }
 
-/// Grain i's contacts with the walls' faces: force and torque added to the grain's, springs
-/// to `kept`, the force's opposite to the wall; returns the contacts.
-int gather_walls(GrainSet& g, std::vector<PlaneWall>& walls, const ContactScene& scene, double dt,
-                 Index i, std::vector<Spring>& kept, double& energy, double& deepest) {
+/// Sphere i's contacts with the walls' faces: force and torque added to its grain's, springs
+/// to its list, the force's opposite to the wall; returns the contacts.
+int gather_walls(Pass& p, std::vector<PlaneWall>& walls, Index i) {
+    GrainSet& g = p.g;
+    const SphereSet& s = p.s;
+    const auto owner = static_cast<std::size_t>(s.grain[i]);
+    const auto at = static_cast<std::size_t>(i);
     int contacts = 0;
     for (std::size_t w = 0; w < walls.size(); ++w) {
         if (walls[w].removed) {
@@ -82,27 +96,28 @@ int gather_walls(GrainSet& g, std::vector<PlaneWall>& walls, const ContactScene&
         }
         for (std::size_t f = 0; f < walls[w].faces.size(); ++f) {
             ContactState state;
-            if (!touches(walls[w].faces[f], g.position[i], g.radius[i], state.overlap,
+            if (!touches(walls[w].faces[f], s.position[i], s.radius[i], state.overlap,
                          state.normal)) {
                 continue;
             }
-            const double arm = g.radius[i] - 0.5 * state.overlap;
+            const double arm = s.radius[i] - 0.5 * state.overlap;
             state.relative_velocity =
-                g.velocity[i] - arm * g.angular_velocity[i].cross(state.normal);
+                p.point_velocity[at] - arm * g.angular_velocity[owner].cross(state.normal);
             const std::uint64_t key = kWallPartner | (w << 8) | f;
-            state.spring = spring_with(g.springs[i], key);
+            state.spring = spring_with(s.springs[at], key);
             PairProperties pair;
-            pair.mass = g.mass[i];
-            pair.radius = g.radius[i];
-            combine_elastic(scene.body_elastic[g.body_id[i]], std::nullopt, pair);
-            pair.friction = scene.law.wall_friction;
-            contact_force(scene.law, pair, dt, state);
-            g.force[i] += state.force;
-            g.torque[i] -= arm * state.normal.cross(state.force);
+            pair.mass = g.mass[owner];
+            pair.radius = s.radius[i];
+            combine_elastic(p.scene.body_elastic[g.body_id[owner]], std::nullopt, pair);
+            pair.friction = p.scene.law.wall_friction;
+            contact_force(p.scene.law, pair, p.dt, state);
+            g.force[owner] += state.force;
+            g.torque[owner] -= arm * state.normal.cross(state.force);
+            g.torque[owner] += s.arm[at].cross(state.force);
             walls[w].force -= state.force;
-            energy += state.elastic_energy;
-            deepest = std::max(deepest, state.overlap / g.radius[i]);
-            kept.push_back({key, state.spring});
+            p.energy[at] += state.elastic_energy;
+            p.deepest[at] = std::max(p.deepest[at], state.overlap / s.radius[i]);
+            p.kept[at].push_back({key, state.spring});
             ++contacts;
         }
     }
@@ -111,46 +126,64 @@ int gather_walls(GrainSet& g, std::vector<PlaneWall>& walls, const ContactScene&
 
 } // namespace
 
-ContactBooks evaluate_contacts(GrainSet& g, const particles::NeighbourList& neighbours,
+ContactBooks evaluate_contacts(GrainSet& g, SphereSet& s,
+                               const particles::NeighbourList& neighbours,
                                std::vector<PlaneWall>& walls, const ContactScene& scene,
                                double time_step) {
-    const Index n = g.size();
-    std::vector<std::vector<Spring>> kept(static_cast<std::size_t>(n));
-    std::vector<double> energy(static_cast<std::size_t>(n), 0.0);
-    std::vector<double> deepest(static_cast<std::size_t>(n), 0.0);
+    const Index n = s.size();
+    const auto count = static_cast<std::size_t>(n);
+    Pass p{g,
+           s,
+           scene,
+           time_step,
+           std::vector<Vec3>(count),
+           std::vector<Vec3>(count, Vec3::Zero()),
+           std::vector<Vec3>(count, Vec3::Zero()),
+           std::vector<double>(count, 0.0),
+           std::vector<double>(count, 0.0),
+           std::vector<std::vector<Spring>>(count)};
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+        const auto owner = static_cast<std::size_t>(s.grain[i]);
+        p.point_velocity[i] = g.velocity[owner] + g.angular_velocity[owner].cross(s.arm[i]);
+    }
     Index pair_entries = 0;
 #pragma omp parallel for schedule(static) reduction(+ : pair_entries)
     for (Index i = 0; i < n; ++i) {
-        RowResult row;
-        gather_pairs(g, neighbours, scene, time_step, i, kept[static_cast<std::size_t>(i)], row);
-        g.force[i] = g.mass[i] * scene.gravity + row.force;
-        g.torque[i] = row.torque;
-        g.contacts[i] = row.contacts;
-        energy[i] = row.energy;
-        deepest[i] = row.deepest;
-        pair_entries += row.contacts;
+        s.contacts[i] = gather_pairs(p, neighbours, i);
+        pair_entries += s.contacts[i];
+    }
+    // Each grain sums its spheres in order: eqs. 7 and 8 of Markauskas.
+    const std::vector<Index> first = s.first_of_grains(g.size());
+#pragma omp parallel for schedule(static)
+    for (Index k = 0; k < g.size(); ++k) {
+        g.force[k] = g.mass[k] * scene.gravity;
+        g.torque[k] = Vec3::Zero();
+        for (Index i = first[k]; i < first[k + 1]; ++i) {
+            g.force[k] += p.force[i];
+            g.torque[k] += p.torque[i] + s.arm[i].cross(p.force[i]);
+        }
     }
     ContactBooks books;
     books.pair_contacts = pair_entries / 2;
-    // The walls, grain by grain in order: their sums do not depend on the thread count.
+    // The walls, sphere by sphere in order: their sums do not depend on the thread count.
     for (PlaneWall& wall : walls) {
         wall.force = Vec3::Zero();
     }
     for (Index i = 0; i < n; ++i) {
         const auto at = static_cast<std::size_t>(i);
-        const int touching =
-            gather_walls(g, walls, scene, time_step, i, kept[at], energy[at], deepest[at]);
-        g.contacts[i] += touching;
+        const int touching = gather_walls(p, walls, i);
+        s.contacts[i] += touching;
         books.wall_contacts += touching;
-        std::sort(kept[at].begin(), kept[at].end(),
+        std::sort(p.kept[at].begin(), p.kept[at].end(),
                   [](const Spring& x, const Spring& y) { return x.partner < y.partner; });
-        books.elastic_energy += energy[at];
-        if (deepest[at] > books.deepest_overlap) {
-            books.deepest_overlap = deepest[at];
-            books.deepest_grain = i;
+        books.elastic_energy += p.energy[at];
+        if (p.deepest[at] > books.deepest_overlap) {
+            books.deepest_overlap = p.deepest[at];
+            books.deepest_grain = s.grain[i];
         }
     }
-    g.springs = std::move(kept);
+    s.springs = std::move(p.kept);
     return books;
 }
 

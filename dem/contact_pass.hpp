@@ -1,9 +1,10 @@
 #pragma once
-// One evaluation of every grain's force and torque: gravity, the grain pairs, the walls.
+// One evaluation of every grain's force and torque: gravity, the sphere pairs, the walls.
 
 #include "dem/contact_law.hpp"
 #include "dem/grain_set.hpp"
 #include "dem/plane_wall.hpp"
+#include "dem/sphere_set.hpp"
 #include "particles/neighbour_list.hpp"
 
 #include <span>
@@ -14,7 +15,7 @@ namespace grainload::dem {
 /// What the pass saw, for the books and the diagnosis.
 struct ContactBooks {
     double elastic_energy = 0.0; ///< held in the contacts' springs [J]
-    Index pair_contacts = 0;
+    Index pair_contacts = 0;     ///< between spheres of different grains
     Index wall_contacts = 0;
     double deepest_overlap = 0.0; ///< overlap / the smaller radius, largest over the contacts
     Index deepest_grain = -1;
@@ -27,12 +28,16 @@ struct ContactScene {
     Vec3 gravity;
 };
 
-/// Set grains.force, torque, contacts and springs at the current positions and velocities.
-/// Each pair is evaluated in both grains' rows, oriented from the grain of the lower id, so
-/// that the rows run in parallel with no shared writes and the two forces are exact opposites
-/// (momentum kept to round-off); the spring is kept by the lower id. Then the walls, grain by
-/// grain, with walls[w].force their sum. `neighbours` must be current for the positions.
-ContactBooks evaluate_contacts(GrainSet& grains, const particles::NeighbourList& neighbours,
+/// Set grains.force and torque, and the spheres' contacts and springs, at the current
+/// positions and velocities. Each pair of spheres of two grains is evaluated in both spheres'
+/// rows, oriented from the sphere of the lower id, so that the rows run in parallel with no
+/// shared writes and the two forces are exact opposites (momentum kept to round-off); the
+/// spring is kept by the lower id. A grain's force is gravity plus its spheres' forces, its
+/// torque their torques about its centre of mass (Markauskas, eqs. 7 and 8). Then the walls,
+/// grain by grain, with walls[w].force their sum. `neighbours` holds the spheres' pairs, current
+/// for their positions.
+ContactBooks evaluate_contacts(GrainSet& grains, SphereSet& spheres,
+                               const particles::NeighbourList& neighbours,
                                std::vector<PlaneWall>& walls, const ContactScene& scene,
                                double time_step);
 

@@ -61,6 +61,25 @@ ContactLaw read_contact_law(const io::CaseTable& dem) {
     return law;
 }
 
+void read_clump(const io::CaseTable& table, BodySettings& body) {
+    const std::int64_t spheres = table.integer_or("spheres", 1);
+    if (spheres < 1 || spheres > 16) {
+        table.fail("spheres", "expected an integer in [1, 16]");
+    }
+    body.spheres = static_cast<int>(spheres);
+    body.sphere_distance = table.number_or("sphere_distance", 1.0);
+    // The clump's mass is its spheres' sum: overlapping spheres would count their lens twice.
+    if (!(body.sphere_distance >= 1.0 && body.sphere_distance <= 10.0)) {
+        table.fail("sphere_distance", "expected a number in [1, 10]: the spheres of a clump "
+                                      "touch or stand apart (overlapping ones would count "
+                                      "their common volume twice)");
+    }
+    body.axis = table.vector_or("axis", dim::kNone, Vec3::UnitX());
+    if (!(body.axis.norm() > 0.0)) {
+        table.fail("axis", "expected a non-zero vector");
+    }
+}
+
 void read_placement(const io::CaseTable& table, BodySettings& body) {
     if (table.has("centre")) {
         for (const char* key : {"min", "max", "count"}) {
@@ -84,10 +103,14 @@ void read_placement(const io::CaseTable& table, BodySettings& body) {
     if (body.count < 1) {
         table.fail("count", "expected at least one grain");
     }
+    // A grain of the largest radius, turned any way: its farthest sphere's surface lies
+    // r (1 + (k - 1) sphere_distance) from its centre.
+    const double extent = body.radius_max * (1.0 + (body.spheres - 1) * body.sphere_distance);
     for (int a = 0; a < 3; ++a) {
-        if (!(body.max[a] - body.min[a] >= 2.0 * body.radius_max)) {
-            table.fail("max", "the box must hold a grain of the largest radius: expected max - "
-                              "min >= 2 radius_max on every axis");
+        if (!(body.max[a] - body.min[a] >= 2.0 * extent)) {
+            table.fail("max", "the box must hold a grain of the largest radius turned any way: "
+                              "expected max - min >= 2 radius_max (1 + (spheres - 1) "
+                              "sphere_distance) on every axis");
         }
     }
 }
@@ -113,8 +136,11 @@ BodySettings read_body(const io::CaseTable& table, const materials::MaterialLibr
             table.fail("radius_max", "expected radius_max >= radius_min");
         }
     }
+    read_clump(table, body);
     read_placement(table, body);
     body.velocity = table.vector_or("velocity", dim::kVelocity, Vec3::Zero());
+    body.angular_velocity =
+        table.vector_or("angular_velocity", dim::kAngularVelocity, Vec3::Zero());
     body.rotation = table.boolean_or("rotation", true);
     const std::int64_t seed = table.integer_or("seed", 1);
     if (seed < 0) {

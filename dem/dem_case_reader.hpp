@@ -55,7 +55,7 @@ inline constexpr std::array<io::KeySpec, 8> kDemContactKeys{{
 }};
 
 /// The keys of each [[dem.body]].
-inline constexpr std::array<io::KeySpec, 12> kDemBodyKeys{{
+inline constexpr std::array<io::KeySpec, 16> kDemBodyKeys{{
     {"name", "string", "", "names the body in frames and summary.json"},
     {"material", "string", "",
      "a `linear_elastic` [[material]]: the solid grain's density, E and nu"},
@@ -67,7 +67,16 @@ inline constexpr std::array<io::KeySpec, 12> kDemBodyKeys{{
     {"min", "length vector", "required unless centre", "the lower corner of the box they fill"},
     {"max", "length vector", "required unless centre", "the upper corner"},
     {"centre", "length vector", "none", "instead of a box: one grain with its centre here"},
+    {"spheres", "integer in [1, 16]", "1",
+     "spheres per grain: 2 or more make a rigid clump of equal spheres on one axis", 1.0},
+    {"sphere_distance", "number >= 1", "1",
+     "a clump's centre-to-centre distance of neighbouring spheres over their diameter (1: "
+     "touching)",
+     1.0},
+    {"axis", "vector", "1 0 0", "a clump placed at a centre: the direction of its axis"},
     {"velocity", "velocity vector", "0 m/s", "every grain's initial velocity"},
+    {"angular_velocity", "angular velocity vector", "0 rad/s",
+     "every grain's initial angular velocity"},
     {"rotation", "boolean", "true", "false: the grains do not turn (no rotational freedom)", 1.0},
     {"seed", "integer >= 0", "1", "the random placement's seed: equal seeds, equal packings", 1.0},
 }};
@@ -99,7 +108,11 @@ struct BodySettings {
     Vec3 min = Vec3::Zero();
     Vec3 max = Vec3::Zero();
     std::optional<Vec3> centre;
+    int spheres = 1;
+    double sphere_distance = 1.0;
+    Vec3 axis = Vec3::UnitX();
     Vec3 velocity = Vec3::Zero();
+    Vec3 angular_velocity = Vec3::Zero();
     bool rotation = true;
     std::uint64_t seed = 1;
     /// Where the case gives the count (or the centre): a packing that cannot hold the count is

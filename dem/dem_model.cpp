@@ -44,7 +44,7 @@ DemModel::DemModel(DemSettings settings, const io::SceneSettings& scene,
         body_materials_.push_back(materials.name(body.material));
         body_elastic_.push_back({elastic.young(), elastic.poisson()});
         body_density_.push_back(elastic.density);
-        place_grains(body, static_cast<int>(b), elastic.density, grains_);
+        place_grains(body, static_cast<int>(b), elastic.density, grains_, spheres_);
     }
     if (over_damped()) {
         throw io::CaseError(settings_.damping_where +
@@ -154,37 +154,77 @@ double DemModel::stable_time_step() const {
 }
 
 void DemModel::evaluate() {
-    neighbours_.update(grains_.position, {});
-    books_ = evaluate_contacts(grains_, neighbours_, walls_,
+    neighbours_.update(spheres_.position, {});
+    books_ = evaluate_contacts(grains_, spheres_, neighbours_, walls_,
                                {settings_.law, body_elastic_, gravity_}, step_);
 }
+
+namespace {
+
+/// omega = I_world^-1 L for a grain of principal moments `moments` turned by `turned`.
+Vec3 spin_of(const Eigen::Quaterniond& turned, const Vec3& moments, const Vec3& momentum) {
+    const Vec3 own = turned.conjugate() * momentum;
+    return turned * Vec3(own.cwiseQuotient(moments));
+}
+
+/// `turned` rotated by the angle |turn| about turn / |turn|.
+Eigen::Quaterniond rotated(const Eigen::Quaterniond& turned, const Vec3& turn) {
+    const double angle = turn.norm();
+    if (!(angle > 0.0)) {
+        return turned;
+    }
+    return (Eigen::Quaterniond(Eigen::AngleAxisd(angle, turn / angle)) * turned).normalized();
+}
+
+/// L = I_world omega.
+Vec3 momentum_of(const Eigen::Quaterniond& turned, const Vec3& moments, const Vec3& spin) {
+    const Vec3 own = turned.conjugate() * spin;
+    return turned * Vec3(own.cwiseProduct(moments));
+}
+
+} // namespace
 
 void DemModel::advance(double t, double dt) {
     GrainSet& g = grains_;
     const Index n = g.size();
     const double half = 0.5 * dt;
+    momentum_.resize(static_cast<std::size_t>(n));
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
         g.velocity[i] += half / g.mass[i] * g.force[i];
         g.position[i] += dt * g.velocity[i];
-        if (g.inertia[i] > 0.0) {
-            g.angular_velocity[i] += half / g.inertia[i] * g.torque[i];
-            const Vec3 turn = dt * g.angular_velocity[i];
-            const double angle = turn.norm();
-            if (angle > 0.0) {
-                g.orientation[i] =
-                    (Eigen::Quaterniond(Eigen::AngleAxisd(angle, turn / angle)) * g.orientation[i])
-                        .normalized();
-            }
+        if (!(g.inertia[i].x() > 0.0)) {
+            continue;
         }
+        if (g.isotropic(i)) {
+            g.angular_velocity[i] += half / g.inertia[i].x() * g.torque[i];
+        } else {
+            // A clump: its angular momentum takes the torque's kick; over the step it turns
+            // with the angular velocity that momentum has at the step's middle orientation
+            // (Euler's equations, the gyroscopic term included, to second order: the midpoint
+            // found with one turn by the start's angular velocity).
+            momentum_[i] = momentum_of(g.orientation[i], g.inertia[i], g.angular_velocity[i]) +
+                           half * g.torque[i];
+            const Vec3 start = spin_of(g.orientation[i], g.inertia[i], momentum_[i]);
+            const Eigen::Quaterniond middle = rotated(g.orientation[i], half * start);
+            g.angular_velocity[i] = spin_of(middle, g.inertia[i], momentum_[i]);
+        }
+        g.orientation[i] = rotated(g.orientation[i], dt * g.angular_velocity[i]);
     }
+    spheres_.place(g);
     step_ = dt;
     evaluate();
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
         g.velocity[i] += half / g.mass[i] * g.force[i];
-        if (g.inertia[i] > 0.0) {
-            g.angular_velocity[i] += half / g.inertia[i] * g.torque[i];
+        if (!(g.inertia[i].x() > 0.0)) {
+            continue;
+        }
+        if (g.isotropic(i)) {
+            g.angular_velocity[i] += half / g.inertia[i].x() * g.torque[i];
+        } else {
+            g.angular_velocity[i] =
+                spin_of(g.orientation[i], g.inertia[i], momentum_[i] + half * g.torque[i]);
         }
     }
     exchange(t + dt);
@@ -219,13 +259,14 @@ void DemModel::remove_grains(const std::vector<char>& gone) {
         }
     }
     grains_.keep(gone);
+    spheres_.keep(gone, new_index);
     parts_.after_removal(new_index);
     if (books_.deepest_grain >= 0) {
         books_.deepest_grain = new_index[static_cast<std::size_t>(books_.deepest_grain)];
         books_.deepest_overlap = books_.deepest_grain >= 0 ? books_.deepest_overlap : 0.0;
     }
     // The list's rows are the old indices: a new list, at the positions now.
-    neighbours_.update(grains_.position, {}, true);
+    neighbours_.update(spheres_.position, {}, true);
 }
 
 std::vector<std::string> DemModel::take_events() {
@@ -242,7 +283,10 @@ DemEnergy DemModel::energy() const {
     const GrainSet& g = grains_;
     for (Index i = 0; i < g.size(); ++i) {
         e.translational += 0.5 * g.mass[i] * g.velocity[i].squaredNorm();
-        e.rotational += 0.5 * g.inertia[i] * g.angular_velocity[i].squaredNorm();
+        e.rotational += g.isotropic(i)
+                            ? 0.5 * g.inertia[i].x() * g.angular_velocity[i].squaredNorm()
+                            : 0.5 * g.angular_velocity[i].dot(momentum_of(
+                                        g.orientation[i], g.inertia[i], g.angular_velocity[i]));
         e.gravity -= g.mass[i] * gravity_.dot(g.position[i] - start_position_[g.id[i]]);
     }
     e.elastic = books_.elastic_energy;

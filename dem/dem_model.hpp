@@ -4,6 +4,7 @@
 #include "dem/contact_pass.hpp"
 #include "dem/dem_case_reader.hpp"
 #include "dem/grain_set.hpp"
+#include "dem/sphere_set.hpp"
 #include "io/reporter.hpp"
 #include "io/scene_settings.hpp"
 #include "io/stepper.hpp"
@@ -33,12 +34,15 @@ struct DemEnergy {
     double total() const { return translational + rotational + elastic + gravity; }
 };
 
-/// A DEM scene: spheres of the [[dem.body]] tables, the contact law of [dem.contact], the plane
-/// walls of [[dem.wall]]. Integrates translation and rotation by velocity Verlet (Verlet 1967;
-/// Allen & Tildesley 1987): half a kick with the forces of the last evaluation, a drift, the
-/// forces at the new positions (their velocity-dependent parts with the half-step velocities),
-/// the second half kick. A sphere's inertia is isotropic, so its angular velocity follows the
-/// torque with no gyroscopic term; its orientation turns by omega dt as a quaternion. After
+/// A DEM scene: the grains of the [[dem.body]] tables (spheres, or clumps of spheres), the
+/// contact law of [dem.contact], the walls of [[dem.wall]]. Integrates translation and
+/// rotation by velocity Verlet (Verlet 1967; Allen & Tildesley 1987): half a kick with the
+/// forces of the last evaluation, a drift, the forces at the new positions (their
+/// velocity-dependent parts with the half-step velocities), the second half kick. A sphere's
+/// inertia is isotropic, so its angular velocity follows the torque with no gyroscopic term; a
+/// clump's angular momentum L takes the kicks and omega = R I^-1 R^T L follows from its
+/// principal moments as it is turned (Euler's equations in full). The orientation turns by
+/// omega dt as a quaternion. After
 /// each step the walls due leave and the grains in a sink are removed (the scene parts of
 /// particles/: sinks and the mass audit).
 class DemModel final : public io::Stepper, public io::Reporter {
@@ -66,6 +70,7 @@ class DemModel final : public io::Stepper, public io::Reporter {
     void set_output(io::OutputStreams& output) override { output_ = &output; }
 
     const GrainSet& grains() const { return grains_; }
+    const SphereSet& spheres() const { return spheres_; }
     const std::vector<PlaneWall>& walls() const { return walls_; }
     const ContactBooks& books() const { return books_; }
     DemEnergy energy() const;
@@ -94,6 +99,9 @@ class DemModel final : public io::Stepper, public io::Reporter {
     std::vector<GrainElastic> body_elastic_;
     std::vector<double> body_density_;
     GrainSet grains_;
+    SphereSet spheres_;
+    /// The clumps' angular momentum between a step's two half kicks.
+    std::vector<Vec3> momentum_;
     std::vector<Vec3> start_position_; ///< by grain id, for the potential of gravity
     std::vector<PlaneWall> walls_;
     particles::NeighbourList neighbours_;

@@ -1,11 +1,9 @@
 #include "dem/dem_model.hpp"
-#include "io/binary_stream.hpp"
 #include "io/output_streams.hpp"
 
 #include <sstream>
 
-// DemModel's output: the frames' grain blocks, wall_forces.csv, the summary's figures, and the
-// checkpoint.
+// DemModel's output: the frames' grain blocks, wall_forces.csv and the summary's figures.
 
 namespace grainload::dem {
 
@@ -28,25 +26,30 @@ void append3(io::FieldArray& array, const Vec3& v) {
 
 void DemModel::append_blocks(io::Frame& frame) const {
     const GrainSet& g = grains_;
+    const SphereSet& s = spheres_;
+    // A clump shows as its spheres, each with its grain's motion and id.
     for (std::size_t b = 0; b < body_names_.size(); ++b) {
         io::Block block;
         block.name = body_names_[b];
         io::FieldArray radius{"radius", 1, {}}, velocity{"velocity", 3, {}};
         io::FieldArray spin{"angular_velocity", 3, {}}, orientation{"orientation", 3, {}};
         io::FieldArray contacts{"contact_count", 1, {}}, body{"body_id", 1, {}};
-        for (Index i = 0; i < g.size(); ++i) {
-            if (g.body_id[i] != static_cast<int>(b)) {
+        io::FieldArray grain{"grain_id", 1, {}};
+        for (Index i = 0; i < s.size(); ++i) {
+            const auto k = static_cast<std::size_t>(s.grain[i]);
+            if (g.body_id[k] != static_cast<int>(b)) {
                 continue;
             }
-            block.points.push_back(g.position[i]);
-            radius.values.push_back(g.radius[i]);
-            append3(velocity, g.velocity[i]);
-            append3(spin, g.angular_velocity[i]);
-            append3(orientation, rotation_vector(g.orientation[i]));
-            contacts.values.push_back(g.contacts[i]);
-            body.values.push_back(g.body_id[i]);
+            block.points.push_back(s.position[i]);
+            radius.values.push_back(s.radius[i]);
+            append3(velocity, g.velocity[k] + g.angular_velocity[k].cross(s.arm[i]));
+            append3(spin, g.angular_velocity[k]);
+            append3(orientation, rotation_vector(g.orientation[k]));
+            contacts.values.push_back(s.contacts[i]);
+            body.values.push_back(g.body_id[k]);
+            grain.values.push_back(static_cast<double>(g.id[k]));
         }
-        block.point_arrays = {radius, velocity, spin, orientation, contacts, body};
+        block.point_arrays = {radius, velocity, spin, orientation, contacts, body, grain};
         frame.blocks.push_back(std::move(block));
     }
     write_wall_rows(frame.time);
@@ -123,107 +126,6 @@ void DemModel::describe_model(std::vector<io::ModelChoice>& choices) const {
     for (const PlaneWall& wall : walls_) {
         choices.push_back({"dem wall " + wall.name, "rigid plane faces"});
     }
-}
-
-void DemModel::write_checkpoint(std::ostream& out) const {
-    const GrainSet& g = grains_;
-    io::write_array(out, g.id);
-    io::write_array(out, g.body_id);
-    io::write_array(out, g.radius);
-    io::write_array(out, g.mass);
-    io::write_array(out, g.inertia);
-    io::write_array(out, g.position);
-    io::write_array(out, g.velocity);
-    io::write_array(out, g.angular_velocity);
-    std::vector<Eigen::Vector4d> orientation;
-    for (const auto& q : g.orientation) {
-        orientation.push_back(q.coeffs());
-    }
-    io::write_array(out, orientation);
-    io::write_array(out, g.force);
-    io::write_array(out, g.torque);
-    io::write_array(out, g.contacts);
-    std::vector<std::uint64_t> spring_counts;
-    std::vector<Spring> springs;
-    for (const auto& row : g.springs) {
-        spring_counts.push_back(row.size());
-        springs.insert(springs.end(), row.begin(), row.end());
-    }
-    io::write_array(out, spring_counts);
-    io::write_array(out, springs);
-    io::write_value(out, g.next_id);
-    std::vector<Vec3> wall_forces;
-    std::vector<char> removed;
-    for (const PlaneWall& wall : walls_) {
-        wall_forces.push_back(wall.force);
-        removed.push_back(wall.removed ? 1 : 0);
-    }
-    io::write_array(out, wall_forces);
-    io::write_array(out, removed);
-    io::write_value(out, books_);
-    io::write_value(out, step_);
-    io::write_array(
-        out, std::vector<Vec3>(neighbours_.reference().begin(), neighbours_.reference().end()));
-    parts_.write_checkpoint(out);
-}
-
-void DemModel::read_checkpoint(std::istream& in) {
-    GrainSet& g = grains_;
-    io::read_array(in, g.id);
-    const std::size_t n = g.id.size();
-    io::read_array(in, g.body_id, n, "grain bodies");
-    for (const int b : g.body_id) {
-        if (b < 0 || b >= static_cast<int>(body_names_.size())) {
-            throw std::runtime_error("checkpoint: a grain's body is not one of the case's");
-        }
-    }
-    io::read_array(in, g.radius, n, "grain radii");
-    io::read_array(in, g.mass, n, "grain masses");
-    io::read_array(in, g.inertia, n, "grain inertias");
-    io::read_array(in, g.position, n, "grain positions");
-    io::read_array(in, g.velocity, n, "grain velocities");
-    io::read_array(in, g.angular_velocity, n, "grain angular velocities");
-    std::vector<Eigen::Vector4d> orientation;
-    io::read_array(in, orientation, n, "grain orientations");
-    g.orientation.clear();
-    for (const auto& c : orientation) {
-        g.orientation.emplace_back(c);
-    }
-    io::read_array(in, g.force, n, "grain forces");
-    io::read_array(in, g.torque, n, "grain torques");
-    io::read_array(in, g.contacts, n, "grain contact counts");
-    std::vector<std::uint64_t> spring_counts;
-    std::vector<Spring> springs;
-    io::read_array(in, spring_counts, n, "grain spring counts");
-    io::read_array(in, springs);
-    g.springs.assign(n, {});
-    std::size_t at = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        if (spring_counts[i] > springs.size() - at) {
-            throw std::runtime_error("checkpoint: the grains' springs are cut short");
-        }
-        g.springs[i].assign(springs.begin() + static_cast<std::ptrdiff_t>(at),
-                            springs.begin() + static_cast<std::ptrdiff_t>(at + spring_counts[i]));
-        at += spring_counts[i];
-    }
-    g.next_id = io::read_value<std::uint64_t>(in);
-    std::vector<Vec3> wall_forces;
-    std::vector<char> removed;
-    io::read_array(in, wall_forces, walls_.size(), "wall forces");
-    io::read_array(in, removed, walls_.size(), "walls removed");
-    for (std::size_t w = 0; w < walls_.size(); ++w) {
-        walls_[w].force = wall_forces[w];
-        walls_[w].removed = removed[w] != 0;
-    }
-    books_ = io::read_value<ContactBooks>(in);
-    step_ = io::read_value<double>(in);
-    // The list the uninterrupted run is using was built at these positions: the same pairs in
-    // the same order, so the same sums.
-    std::vector<Vec3> reference;
-    io::read_array(in, reference, n, "neighbour list positions");
-    neighbours_.update(reference, {}, true);
-    events_.clear();
-    parts_.read_checkpoint(in);
 }
 
 } // namespace grainload::dem

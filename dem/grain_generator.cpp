@@ -2,7 +2,9 @@
 
 #include "io/case_error.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <random>
 #include <unordered_map>
 
@@ -15,15 +17,15 @@ double uniform(std::mt19937_64& generator) {
     return static_cast<double>(generator() >> 11) * 0x1.0p-53;
 }
 
-/// The grains placed so far, hashed by cell, for the overlap test of each new draw.
+/// The spheres placed so far, hashed by cell, for the overlap test of each new draw.
 class PlacementGrid {
   public:
-    PlacementGrid(const GrainSet& grains, double cell) : grains_(grains), cell_(cell) {
-        for (Index i = 0; i < grains.size(); ++i) {
+    PlacementGrid(const SphereSet& spheres, double cell) : spheres_(spheres), cell_(cell) {
+        for (Index i = 0; i < spheres.size(); ++i) {
             insert(i);
         }
     }
-    void insert(Index i) { cells_[key(cell_of(grains_.position[i]))].push_back(i); }
+    void insert(Index i) { cells_[key(cell_of(spheres_.position[i]))].push_back(i); }
     bool free(const Vec3& centre, double radius) const {
         const Eigen::Vector3i c = cell_of(centre);
         for (int dx = -1; dx <= 1; ++dx) {
@@ -34,8 +36,8 @@ class PlacementGrid {
                         continue;
                     }
                     for (const Index j : found->second) {
-                        const double reach = radius + grains_.radius[j];
-                        if ((grains_.position[j] - centre).squaredNorm() < reach * reach) {
+                        const double reach = radius + spheres_.radius[j];
+                        if ((spheres_.position[j] - centre).squaredNorm() < reach * reach) {
                             return false;
                         }
                     }
@@ -53,24 +55,69 @@ class PlacementGrid {
         };
         return part(c.x()) | part(c.y()) << 21 | part(c.z()) << 42;
     }
-    const GrainSet& grains_;
+    const SphereSet& spheres_;
     double cell_;
     std::unordered_map<std::uint64_t, std::vector<Index>> cells_;
 };
 
+/// A uniformly random orientation (Shoemake 1992, "Uniform random rotations").
+Eigen::Quaterniond random_orientation(std::mt19937_64& generator) {
+    const double u1 = uniform(generator);
+    const double u2 = 2.0 * std::numbers::pi * uniform(generator);
+    const double u3 = 2.0 * std::numbers::pi * uniform(generator);
+    const double a = std::sqrt(1.0 - u1);
+    const double b = std::sqrt(u1);
+    return Eigen::Quaterniond(b * std::cos(u3), a * std::sin(u2), a * std::cos(u2),
+                              b * std::sin(u3));
+}
+
+/// Append one grain of `shape` at `centre`, turned by `turned`, with the body's velocities.
+void add_grain(const BodySettings& body, int body_id, const GrainShape& shape, const Vec3& centre,
+               const Eigen::Quaterniond& turned, GrainSet& grains, SphereSet& spheres) {
+    const Index g = grains.add(body_id, shape.mass, body.rotation ? shape.inertia : Vec3::Zero(),
+                               centre, turned);
+    grains.velocity[static_cast<std::size_t>(g)] = body.velocity;
+    grains.angular_velocity[static_cast<std::size_t>(g)] =
+        body.rotation ? body.angular_velocity : Vec3::Zero();
+    for (const Vec3& offset : shape.offsets) {
+        spheres.add(g, shape.radius, offset);
+    }
+}
+
 } // namespace
 
-void place_grains(const BodySettings& body, int body_id, double density, GrainSet& grains) {
+GrainShape grain_shape(const BodySettings& body, double radius, double density) {
+    GrainShape shape;
+    shape.radius = radius;
+    const double sphere_mass = 4.0 / 3.0 * std::numbers::pi * radius * radius * radius * density;
+    const double own = 0.4 * sphere_mass * radius * radius;
+    const double spacing = body.sphere_distance * 2.0 * radius;
+    const auto k = static_cast<double>(body.spheres);
+    shape.mass = k * sphere_mass;
+    shape.inertia = Vec3(k * own, 0.0, 0.0);
+    for (int j = 0; j < body.spheres; ++j) {
+        const double x = (static_cast<double>(j) - 0.5 * (k - 1.0)) * spacing;
+        shape.offsets.emplace_back(x, 0.0, 0.0);
+        shape.inertia.y() += own + sphere_mass * x * x;
+    }
+    shape.inertia.z() = shape.inertia.y();
+    return shape;
+}
+
+void place_grains(const BodySettings& body, int body_id, double density, GrainSet& grains,
+                  SphereSet& spheres) {
     if (body.centre) {
-        grains.add(body_id, body.radius_min, density, *body.centre, body.rotation);
-        grains.velocity.back() = body.velocity;
+        const Vec3 axis = body.axis.normalized();
+        add_grain(body, body_id, grain_shape(body, body.radius_min, density), *body.centre,
+                  Eigen::Quaterniond::FromTwoVectors(Vec3::UnitX(), axis), grains, spheres);
+        spheres.place(grains);
         return;
     }
     double largest = body.radius_max;
-    for (const double r : grains.radius) {
+    for (const double r : spheres.radius) {
         largest = std::max(largest, r);
     }
-    PlacementGrid grid(grains, 2.0 * largest);
+    PlacementGrid grid(spheres, 2.0 * largest);
     std::mt19937_64 generator(body.seed);
     // Ten thousand draws per grain before the box is called full: random sequential addition
     // jams near 0.38 of the volume (Torquato & Stillinger 2010), long before that runs out.
@@ -81,18 +128,30 @@ void place_grains(const BodySettings& body, int body_id, double density, GrainSe
     Index placed = 0;
     for (bool fits = true; fits && placed < body.count;) {
         const double r = body.radius_min + (body.radius_max - body.radius_min) * uniform(generator);
+        const GrainShape shape = grain_shape(body, r, density);
         fits = false;
         for (Index draw = 0; draw < most_draws && !fits; ++draw) {
+            // A sphere keeps the identity: its draws are the centre's alone. A clump's
+            // orientation comes first, and the centre where each of its spheres fits.
+            const Eigen::Quaterniond turned =
+                body.spheres > 1 ? random_orientation(generator) : Eigen::Quaterniond::Identity();
+            Vec3 margin = Vec3::Constant(r);
+            for (const Vec3& offset : shape.offsets) {
+                margin = margin.cwiseMax(Vec3(Vec3::Constant(r) + (turned * offset).cwiseAbs()));
+            }
             Vec3 centre;
             for (int a = 0; a < 3; ++a) {
-                centre[a] =
-                    body.min[a] + r + (body.max[a] - body.min[a] - 2.0 * r) * uniform(generator);
+                centre[a] = body.min[a] + margin[a] +
+                            (body.max[a] - body.min[a] - 2.0 * margin[a]) * uniform(generator);
             }
-            fits = grid.free(centre, r);
+            fits = std::all_of(shape.offsets.begin(), shape.offsets.end(),
+                               [&](const Vec3& o) { return grid.free(centre + turned * o, r); });
             if (fits) {
-                grains.add(body_id, r, density, centre, body.rotation);
-                grains.velocity.back() = body.velocity;
-                grid.insert(grains.size() - 1);
+                add_grain(body, body_id, shape, centre, turned, grains, spheres);
+                spheres.place(grains);
+                for (std::size_t k = 0; k < shape.offsets.size(); ++k) {
+                    grid.insert(spheres.size() - 1 - static_cast<Index>(k));
+                }
                 ++placed;
             }
         }

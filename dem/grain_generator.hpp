@@ -3,18 +3,36 @@
 
 #include "dem/dem_case_reader.hpp"
 #include "dem/grain_set.hpp"
+#include "dem/sphere_set.hpp"
+
+#include <vector>
 
 namespace grainload::dem {
 
-/// Append the grains of `body` (id `body_id`, grain density `density`) to `grains`: one at its
-/// centre, or `count` by random sequential addition in its box (Widom 1966): each grain's
-/// radius drawn uniformly in [radius_min, radius_max] as in Lazarevic et al. (2002, eq. 1), its
-/// centre uniformly where it lies wholly inside the box, kept when it overlaps no grain placed
-/// before (of any body), else drawn again (the radius kept, so that the sizes follow their
-/// distribution; ten thousand draws of the centre before the box is called full). A loose packing
-/// (up to about 0.3 of the box by volume) that gravity then settles. The draws follow a 64-bit
-/// Mersenne twister seeded by `seed`: equal seeds give equal packings on every machine. Throws
-/// io::CaseError naming the body when the box cannot hold the count.
-void place_grains(const BodySettings& body, int body_id, double density, GrainSet& grains);
+/// One grain of a body as its spheres make it: `spheres` equal spheres of radius r on the
+/// grain's own x axis, centre to centre sphere_distance x 2r (1: touching, as the paper's
+/// two-sphere particles; Markauskas), the centre of mass at their middle. Mass k m_s; principal
+/// moments k (2/5) m_s r^2 about the axis and sum((2/5) m_s r^2 + m_s x_j^2) across it.
+struct GrainShape {
+    double radius = 0.0;
+    double mass = 0.0;
+    Vec3 inertia = Vec3::Zero();
+    std::vector<Vec3> offsets;
+};
+GrainShape grain_shape(const BodySettings& body, double radius, double density);
+
+/// Append the grains of `body` (id `body_id`, solid density `density`) and their spheres: one
+/// at its centre, its axis along `axis`, or `count` by random sequential addition in its box
+/// (Widom 1966): each grain's radius drawn uniformly in [radius_min, radius_max] as in
+/// Lazarevic et al. (2002, eq. 1), its centre uniformly where every sphere lies wholly inside the
+/// box whatever its orientation, a clump's orientation uniformly at random (a sphere's is the
+/// identity), kept when none of its spheres overlaps a sphere placed before (of any body),
+/// else drawn again (the radius kept, so that the sizes follow their distribution; ten
+/// thousand draws of the centre before the box is called full). A loose packing that gravity
+/// then settles. The draws follow a 64-bit Mersenne twister seeded by `seed`: equal seeds give
+/// equal packings on every machine. Throws io::CaseError naming the body's count when the box
+/// cannot hold it.
+void place_grains(const BodySettings& body, int body_id, double density, GrainSet& grains,
+                  SphereSet& spheres);
 
 } // namespace grainload::dem

@@ -1,5 +1,5 @@
 #pragma once
-// The DEM's particles: spheres as named per-grain fields, each with an identity of its own.
+// The DEM's particles: rigid grains, each one sphere or a clump of spheres, as named fields.
 
 #include "io/types.hpp"
 #include "particles/particle_view.hpp"
@@ -11,38 +11,38 @@
 
 namespace grainload::dem {
 
-/// One tangential spring a grain keeps with a partner: another grain (its id) or a wall
-/// (kWallPartner + the wall's index). Kept by the grain of the lower id of a pair, so that a
-/// grain's contacts travel with it wherever it goes (another rank, a compacted set).
-struct Spring {
-    std::uint64_t partner = 0;
-    Vec3 shear = Vec3::Zero();
-};
-inline constexpr std::uint64_t kWallPartner = std::uint64_t{1} << 63;
-
-/// Spheres in structure-of-arrays form, one entry per grain in every field. `id` is given at
-/// creation and never reused: the key of contact histories, stable when grains leave and the
-/// set is compacted (compaction keeps the order, so index order is id order).
+/// Rigid grains in structure-of-arrays form, one entry per grain in every field: what the
+/// equations of motion integrate. A grain's surface is its spheres (dem/sphere_set.hpp): one
+/// for a spherical grain, several for a clump. `id` is given at creation and never reused
+/// (compaction keeps the order, so index order is id order).
 struct GrainSet {
     std::vector<std::uint64_t> id;
     std::vector<int> body_id;
-    std::vector<double> radius;
     std::vector<double> mass;
-    std::vector<double> inertia; ///< 2/5 m r^2; 0 for a grain whose body does not rotate
-    std::vector<Vec3> position;
+    /// Principal moments of inertia in the grain's own frame; zero for a grain whose body does
+    /// not rotate. A sphere's three are equal, 2/5 m r^2.
+    std::vector<Vec3> inertia;
+    std::vector<Vec3> position; ///< the centre of mass
     std::vector<Vec3> velocity;
     std::vector<Vec3> angular_velocity;
+    /// From the grain's own frame (its principal axes) to the scene's.
     std::vector<Eigen::Quaterniond> orientation;
     std::vector<Vec3> force;  ///< contacts and gravity at the last evaluation
-    std::vector<Vec3> torque; ///< about the centre, at the last evaluation
-    std::vector<int> contacts;
-    /// Each grain's springs, sorted by partner.
-    std::vector<std::vector<Spring>> springs;
+    std::vector<Vec3> torque; ///< about the centre of mass, at the last evaluation
     std::uint64_t next_id = 0;
 
     Index size() const { return static_cast<Index>(id.size()); }
-    /// Append a sphere at rest in its orientation of reference.
-    void add(int body, double grain_radius, double density, const Vec3& at, bool rotates);
+    /// Append a grain at rest; returns its index.
+    Index add(int body, double grain_mass, const Vec3& moments, const Vec3& at,
+              const Eigen::Quaterniond& turned);
+    /// Whether grain i turns as a sphere does: equal principal moments, so that omega follows
+    /// the torque with no gyroscopic term.
+    bool isotropic(Index i) const {
+        const Vec3& m = inertia[static_cast<std::size_t>(i)];
+        return m.x() == m.y() && m.y() == m.z();
+    }
+    /// The inertia tensor of grain i in the scene's frame, R diag(I) R^T.
+    Mat3 world_inertia(Index i) const;
     /// Keep the grains whose `gone` flag is 0, in order, in every field.
     void keep(std::span<const char> gone);
     /// The common fields the scene parts read.

@@ -57,16 +57,17 @@ TEST(DemPlacement, SeedsRepeatAndGrainsNeitherOverlapNorLeaveTheBox) {
     other.replace(other.find("count = 80"), 10, "count = 80\nseed = 9");
     const auto c = dem_model(other);
     EXPECT_FALSE(same_bits(a->grains().position, c->grains().position));
-    const auto& g = c->grains();
-    for (Index i = 0; i < g.size(); ++i) {
-        EXPECT_GE(g.radius[i], 0.004);
-        EXPECT_LE(g.radius[i], 0.005);
+    const auto& s = c->spheres();
+    ASSERT_EQ(s.size(), 80);
+    for (Index i = 0; i < s.size(); ++i) {
+        EXPECT_GE(s.radius[i], 0.004);
+        EXPECT_LE(s.radius[i], 0.005);
         for (int axis = 0; axis < 3; ++axis) {
-            EXPECT_GE(g.position[i][axis] - g.radius[i], 0.0);
+            EXPECT_GE(s.position[i][axis] - s.radius[i], 0.0);
         }
-        EXPECT_LE(g.position[i].x() + g.radius[i], 0.05);
+        EXPECT_LE(s.position[i].x() + s.radius[i], 0.05);
         for (Index j = 0; j < i; ++j) {
-            EXPECT_GE((g.position[i] - g.position[j]).norm(), g.radius[i] + g.radius[j]);
+            EXPECT_GE((s.position[i] - s.position[j]).norm(), s.radius[i] + s.radius[j]);
         }
     }
 }

@@ -76,8 +76,8 @@ Momenta momenta(const dem::GrainSet& g) {
     Momenta p;
     for (Index i = 0; i < g.size(); ++i) {
         p.linear += g.mass[i] * g.velocity[i];
-        p.angular +=
-            g.position[i].cross(g.mass[i] * g.velocity[i]) + g.inertia[i] * g.angular_velocity[i];
+        p.angular += g.position[i].cross(g.mass[i] * g.velocity[i]) +
+                     g.world_inertia(i) * g.angular_velocity[i];
     }
     return p;
 }
