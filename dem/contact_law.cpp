@@ -51,7 +51,9 @@ void contact_force(const ContactLaw& law, const PairProperties& pair, double tim
         const double root = std::sqrt(pair.radius * delta);
         elastic_normal = 4.0 / 3.0 * pair.young * root * delta;
         stiffness_t = 8.0 * pair.shear * root;
-        damping_n = law.gamma_n * pair.mass;
+        damping_n = law.restitution
+                        ? law.hertz_alpha * std::sqrt(pair.mass * 2.0 * pair.young * root)
+                        : law.gamma_n * pair.mass;
         state.elastic_energy = 0.4 * elastic_normal * delta;
     }
     const double normal_force = elastic_normal - damping_n * normal_speed;
@@ -83,6 +85,42 @@ void contact_force(const ContactLaw& law, const PairProperties& pair, double tim
         state.elastic_energy += 0.5 * stiffness_t * spring.squaredNorm();
     }
     state.force = normal_force * n + tangential;
+}
+
+double hertz_restitution(double alpha) {
+    // x = delta / delta_max(elastic), tau = t v / delta_max: x(0) = 0, x'(0) = 1, until the
+    // grains part (x back to 0); e = -x'. The elastic impact lasts tau = 2.94.
+    const double damping = alpha * std::sqrt(15.0 / 8.0);
+    const auto rate = [damping](double x, double v) {
+        const double pressed = std::max(x, 0.0);
+        return -damping * std::pow(pressed, 0.25) * v - 1.25 * std::pow(pressed, 1.5);
+    };
+    constexpr double step = 2.5e-4;
+    double x = 0.0;
+    double v = 1.0;
+    for (int k = 0; k < 1000000 && (x > 0.0 || v > 0.0 || k == 0); ++k) {
+        const double a1 = rate(x, v);
+        const double a2 = rate(x + 0.5 * step * v, v + 0.5 * step * a1);
+        const double a3 = rate(x + 0.5 * step * (v + 0.5 * step * a1), v + 0.5 * step * a2);
+        const double a4 = rate(x + step * (v + 0.5 * step * a2), v + step * a3);
+        x += step * (v + step / 6.0 * (a1 + a2 + a3));
+        v += step / 6.0 * (a1 + 2.0 * a2 + 2.0 * a3 + a4);
+    }
+    return std::max(-v, 0.0);
+}
+
+double hertz_restitution_damping(double restitution) {
+    double low = 0.0;
+    double high = 1.0;
+    while (hertz_restitution(high) > restitution) {
+        high *= 2.0;
+    }
+    // e(alpha) falls from 1 at alpha = 0; 45 halvings leave the root to 1e-13 of it.
+    for (int k = 0; k < 45; ++k) {
+        const double middle = 0.5 * (low + high);
+        (hertz_restitution(middle) > restitution ? low : high) = middle;
+    }
+    return 0.5 * (low + high);
 }
 
 double contact_time(const ContactLaw& law, const PairProperties& pair, double speed) {

@@ -18,8 +18,14 @@ namespace grainload::dem {
 /// with c_n = gamma_n m* (Balevicius et al.'s normal damping coefficient in 1/s), or, for the
 /// linear law given a restitution e, c_n = 2 sqrt(k_n m*) (-ln e) / sqrt(pi^2 + ln^2 e), which
 /// makes the coefficient of restitution of every pair exactly e (the damped oscillator's half
-/// period, Schwager & Poeschel 2007). The dashpot is not cut at zero force: the Kelvin-Voigt
-/// element as the seeds state it, for which that restitution holds.
+/// period, Schwager & Poeschel 2007). For Hertz given e, c_n = alpha sqrt(m* k(delta)) with
+/// k = 2 E* sqrt(R* delta) the contact's tangent stiffness (the form of Tsuji, Tanaka & Ishida
+/// 1992, whose restitution is the same at every impact speed): alpha is the root of e(alpha)
+/// = e, e(alpha) solved once from the impact's dimensionless equation
+/// x'' + alpha sqrt(15/8) x^(1/4) x' + (5/4) x^(3/2) = 0 (hertz_restitution_damping), so that
+/// every pair rebounds with exactly e, not with the linear law's mapping's approximation
+/// (Antypov & Elliott 2011). The dashpot is not cut at zero force: the Kelvin-Voigt element as
+/// the seeds state it, for which these restitutions hold.
 /// Tangent: a spring xi integrated from the tangential relative speed, f_t = -k_t xi -
 /// gamma_t m* v_t, capped at mu max(f_n, 0) (Coulomb); at the cap the spring is reset to the
 /// slip force less the dashpot's part, -(f_t + gamma_t m* v_t) / k_t (Cundall & Strack 1979;
@@ -32,7 +38,8 @@ struct ContactLaw {
     double tangential_stiffness_ratio = 0.0; ///< k_t / k_n of the linear law
     double gamma_n = 0.0;                    ///< [1/s]
     double gamma_t = 0.0;                    ///< [1/s]
-    std::optional<double> restitution;       ///< linear law: e instead of gamma_n
+    std::optional<double> restitution;       ///< e instead of gamma_n
+    double hertz_alpha = 0.0;                ///< Hertz with a restitution: alpha of e
     double friction = 0.0;                   ///< mu between grains
     double wall_friction = 0.0;              ///< mu between a grain and a wall
 };
@@ -72,6 +79,13 @@ struct ContactState {
 /// Evaluate the contact: state.force, state.spring and state.elastic_energy from the rest.
 void contact_force(const ContactLaw& law, const PairProperties& pair, double time_step,
                    ContactState& state);
+
+/// The alpha of a Hertz contact's dashpot alpha sqrt(m* k(delta)) that rebounds with the
+/// coefficient of restitution e (0 < e <= 1): bisection on e(alpha), each e(alpha) from the
+/// impact's dimensionless equation integrated by fourth-order Runge-Kutta.
+double hertz_restitution_damping(double restitution);
+/// The coefficient of restitution of a Hertz impact with the dashpot's alpha.
+double hertz_restitution(double alpha);
 
 /// The duration of a contact of the pair at a normal impact speed `speed`: pi / omega for the
 /// linear law (omega the damped frequency), Hertz's 2.94 delta_max / v for the elastic Hertz

@@ -20,12 +20,8 @@ struct Pass {
     SphereSet& s;
     const ContactScene& scene;
     double dt;
-    std::vector<Vec3> point_velocity; ///< each sphere centre's velocity, v + omega x arm
-    std::vector<Vec3> force;          ///< each sphere's pair forces
-    std::vector<Vec3> torque;         ///< about its centre
-    std::vector<double> energy;
-    std::vector<double> deepest;
-    std::vector<std::vector<Spring>> kept;
+    ContactScratch& x;
+    std::size_t bodies;
 };
 
 /// Sphere i's contacts with the spheres of other grains in its neighbour row.
@@ -53,38 +49,39 @@ int gather_pairs(Pass& p, const particles::NeighbourList& neighbours, Index i) {
         const double arm_a = s.radius[a] - 0.5 * state.overlap;
         const double arm_b = s.radius[b] - 0.5 * state.overlap;
         state.relative_velocity =
-            p.point_velocity[a] - p.point_velocity[b] -
+            p.x.point_velocity[a] - p.x.point_velocity[b] -
             (arm_a * g.angular_velocity[ga] + arm_b * g.angular_velocity[gb]).cross(state.normal);
         state.spring = spring_with(s.springs[a], s.id[b]);
-        PairProperties pair;
+        PairProperties pair =
+            p.scene.body_pairs[static_cast<std::size_t>(g.body_id[ga]) * p.bodies +
+                               static_cast<std::size_t>(g.body_id[gb])];
         pair.mass = g.mass[ga] * g.mass[gb] / (g.mass[ga] + g.mass[gb]);
         pair.radius = s.radius[a] * s.radius[b] / reach;
-        combine_elastic(p.scene.body_elastic[g.body_id[ga]], p.scene.body_elastic[g.body_id[gb]],
-                        pair);
-        pair.friction = p.scene.law.friction;
         contact_force(p.scene.law, pair, p.dt, state);
         // Torque of the force on a at its contact point, -arm_a n from a's centre; b's by the
         // same force reversed at +arm_b n from b's centre: both are -arm n x F.
         const Vec3 turn = state.normal.cross(state.force);
         const auto at = static_cast<std::size_t>(i);
         if (owner) {
-            p.force[at] += state.force;
-            p.torque[at] -= arm_a * turn;
-            p.energy[at] += state.elastic_energy;
-            p.kept[at].push_back({s.id[j], state.spring});
+            p.x.force[at] += state.force;
+            p.x.torque[at] -= arm_a * turn;
+            p.x.energy[at] += state.elastic_energy;
+            p.x.kept[at].push_back({s.id[j], state.spring});
         } else {
-            p.force[at] -= state.force;
-            p.torque[at] -= arm_b * turn;
+            p.x.force[at] -= state.force;
+            p.x.torque[at] -= arm_b * turn;
         }
         ++contacts;
-        p.deepest[at] = std::max(p.deepest[at], state.overlap / std::min(s.radius[i], s.radius[j]));
+        p.x.deepest[at] =
+            std::max(p.x.deepest[at], state.overlap / std::min(s.radius[i], s.radius[j]));
     }
     return contacts;
 }
 
 /// Sphere i's contacts with the walls' faces: force and torque added to its grain's, springs
-/// to its list, the force's opposite to the wall; returns the contacts.
-int gather_walls(Pass& p, std::vector<PlaneWall>& walls, Index i) {
+/// to its list, the force's opposite to its grain's share of each wall's load (`on_walls`, one
+/// per wall); returns the contacts.
+int gather_walls(Pass& p, const std::vector<PlaneWall>& walls, Index i, Vec3* on_walls) {
     GrainSet& g = p.g;
     const SphereSet& s = p.s;
     const auto owner = static_cast<std::size_t>(s.grain[i]);
@@ -102,22 +99,20 @@ int gather_walls(Pass& p, std::vector<PlaneWall>& walls, Index i) {
             }
             const double arm = s.radius[i] - 0.5 * state.overlap;
             state.relative_velocity =
-                p.point_velocity[at] - arm * g.angular_velocity[owner].cross(state.normal);
+                p.x.point_velocity[at] - arm * g.angular_velocity[owner].cross(state.normal);
             const std::uint64_t key = kWallPartner | (w << 8) | f;
             state.spring = spring_with(s.springs[at], key);
-            PairProperties pair;
+            PairProperties pair = p.scene.body_walls[static_cast<std::size_t>(g.body_id[owner])];
             pair.mass = g.mass[owner];
             pair.radius = s.radius[i];
-            combine_elastic(p.scene.body_elastic[g.body_id[owner]], std::nullopt, pair);
-            pair.friction = p.scene.law.wall_friction;
             contact_force(p.scene.law, pair, p.dt, state);
             g.force[owner] += state.force;
             g.torque[owner] -= arm * state.normal.cross(state.force);
             g.torque[owner] += s.arm[at].cross(state.force);
-            walls[w].force -= state.force;
-            p.energy[at] += state.elastic_energy;
-            p.deepest[at] = std::max(p.deepest[at], state.overlap / s.radius[i]);
-            p.kept[at].push_back({key, state.spring});
+            on_walls[w] -= state.force;
+            p.x.energy[at] += state.elastic_energy;
+            p.x.deepest[at] = std::max(p.x.deepest[at], state.overlap / s.radius[i]);
+            p.x.kept[at].push_back({key, state.spring});
             ++contacts;
         }
     }
@@ -129,23 +124,28 @@ int gather_walls(Pass& p, std::vector<PlaneWall>& walls, Index i) {
 ContactBooks evaluate_contacts(GrainSet& g, SphereSet& s,
                                const particles::NeighbourList& neighbours,
                                std::vector<PlaneWall>& walls, const ContactScene& scene,
-                               double time_step) {
+                               double time_step, ContactScratch& scratch) {
     const Index n = s.size();
     const auto count = static_cast<std::size_t>(n);
-    Pass p{g,
-           s,
-           scene,
-           time_step,
-           std::vector<Vec3>(count),
-           std::vector<Vec3>(count, Vec3::Zero()),
-           std::vector<Vec3>(count, Vec3::Zero()),
-           std::vector<double>(count, 0.0),
-           std::vector<double>(count, 0.0),
-           std::vector<std::vector<Spring>>(count)};
+    scratch.point_velocity.resize(count);
+    scratch.force.resize(count);
+    scratch.torque.resize(count);
+    scratch.energy.resize(count);
+    scratch.deepest.resize(count);
+    scratch.kept.resize(count);
+    const std::size_t wall_count = walls.size();
+    scratch.on_walls.assign(static_cast<std::size_t>(g.size()) * wall_count, Vec3::Zero());
+    s.first_of_grains(g.size(), scratch.first);
+    Pass p{g, s, scene, time_step, scratch, scene.body_walls.size()};
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
         const auto owner = static_cast<std::size_t>(s.grain[i]);
-        p.point_velocity[i] = g.velocity[owner] + g.angular_velocity[owner].cross(s.arm[i]);
+        p.x.point_velocity[i] = g.velocity[owner] + g.angular_velocity[owner].cross(s.arm[i]);
+        p.x.force[i] = Vec3::Zero();
+        p.x.torque[i] = Vec3::Zero();
+        p.x.energy[i] = 0.0;
+        p.x.deepest[i] = 0.0;
+        p.x.kept[i].clear();
     }
     Index pair_entries = 0;
 #pragma omp parallel for schedule(static) reduction(+ : pair_entries)
@@ -153,37 +153,50 @@ ContactBooks evaluate_contacts(GrainSet& g, SphereSet& s,
         s.contacts[i] = gather_pairs(p, neighbours, i);
         pair_entries += s.contacts[i];
     }
-    // Each grain sums its spheres in order: eqs. 7 and 8 of Markauskas.
-    const std::vector<Index> first = s.first_of_grains(g.size());
-#pragma omp parallel for schedule(static)
+    // Each grain sums its spheres in order (eqs. 7 and 8 of Markauskas), then its spheres'
+    // contacts with the walls.
+    const std::vector<Index>& first = scratch.first;
+    Index wall_contacts = 0;
+#pragma omp parallel for schedule(static) reduction(+ : wall_contacts)
     for (Index k = 0; k < g.size(); ++k) {
         g.force[k] = g.mass[k] * scene.gravity;
         g.torque[k] = Vec3::Zero();
         for (Index i = first[k]; i < first[k + 1]; ++i) {
-            g.force[k] += p.force[i];
-            g.torque[k] += p.torque[i] + s.arm[i].cross(p.force[i]);
+            g.force[k] += p.x.force[i];
+            g.torque[k] += p.x.torque[i] + s.arm[i].cross(p.x.force[i]);
+        }
+        for (Index i = first[k]; i < first[k + 1]; ++i) {
+            const int touching =
+                gather_walls(p, walls, i, scratch.on_walls.data() + k * wall_count);
+            s.contacts[i] += touching;
+            wall_contacts += touching;
+            auto& kept = p.x.kept[static_cast<std::size_t>(i)];
+            std::sort(kept.begin(), kept.end(),
+                      [](const Spring& x, const Spring& y) { return x.partner < y.partner; });
         }
     }
     ContactBooks books;
     books.pair_contacts = pair_entries / 2;
-    // The walls, sphere by sphere in order: their sums do not depend on the thread count.
-    for (PlaneWall& wall : walls) {
-        wall.force = Vec3::Zero();
+    books.wall_contacts = wall_contacts;
+    // The walls' loads and the books, grain by grain in order: their sums do not depend on the
+    // thread count.
+    for (std::size_t w = 0; w < wall_count; ++w) {
+        walls[w].force = Vec3::Zero();
+        for (Index k = 0; k < g.size(); ++k) {
+            walls[w].force += scratch.on_walls[static_cast<std::size_t>(k) * wall_count + w];
+        }
     }
     for (Index i = 0; i < n; ++i) {
         const auto at = static_cast<std::size_t>(i);
-        const int touching = gather_walls(p, walls, i);
-        s.contacts[i] += touching;
-        books.wall_contacts += touching;
-        std::sort(p.kept[at].begin(), p.kept[at].end(),
-                  [](const Spring& x, const Spring& y) { return x.partner < y.partner; });
-        books.elastic_energy += p.energy[at];
-        if (p.deepest[at] > books.deepest_overlap) {
-            books.deepest_overlap = p.deepest[at];
+        books.elastic_energy += p.x.energy[at];
+        if (p.x.deepest[at] > books.deepest_overlap) {
+            books.deepest_overlap = p.x.deepest[at];
             books.deepest_grain = s.grain[i];
         }
     }
-    s.springs = std::move(p.kept);
+    // The new springs become the set's; the old rows, cleared at the next pass, keep their
+    // memory for it.
+    s.springs.swap(scratch.kept);
     return books;
 }
 

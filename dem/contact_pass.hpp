@@ -24,8 +24,24 @@ struct ContactBooks {
 /// The scene's fixed inputs to the pass.
 struct ContactScene {
     const ContactLaw& law;
-    std::span<const GrainElastic> body_elastic; ///< by body id
+    /// E* and G* of each pair of bodies' grains (bodies x bodies, row-major), and of each
+    /// body's grains on a wall: combined once, not at every contact.
+    std::span<const PairProperties> body_pairs;
+    std::span<const PairProperties> body_walls;
     Vec3 gravity;
+};
+
+/// The pass's per-sphere buffers, kept from one evaluation to the next so that a step
+/// allocates nothing once the scene's size has settled.
+struct ContactScratch {
+    std::vector<Vec3> point_velocity; ///< each sphere centre's velocity, v + omega x arm
+    std::vector<Vec3> force;          ///< each sphere's pair forces
+    std::vector<Vec3> torque;         ///< about its centre
+    std::vector<double> energy;
+    std::vector<double> deepest;
+    std::vector<std::vector<Spring>> kept; ///< the springs the step leaves, becoming the set's
+    std::vector<Vec3> on_walls;            ///< each grain's load on each wall
+    std::vector<Index> first;              ///< SphereSet::first_of_grains
 };
 
 /// Set grains.force and torque, and the spheres' contacts and springs, at the current
@@ -39,6 +55,6 @@ struct ContactScene {
 ContactBooks evaluate_contacts(GrainSet& grains, SphereSet& spheres,
                                const particles::NeighbourList& neighbours,
                                std::vector<PlaneWall>& walls, const ContactScene& scene,
-                               double time_step);
+                               double time_step, ContactScratch& scratch);
 
 } // namespace grainload::dem

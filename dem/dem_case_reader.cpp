@@ -40,10 +40,10 @@ ContactLaw read_contact_law(const io::CaseTable& dem) {
             table.fail("tangential_stiffness_ratio", "expected a number in [0, 1]");
         }
     } else {
-        for (const char* key : {"normal_stiffness", "tangential_stiffness_ratio", "restitution"}) {
+        for (const char* key : {"normal_stiffness", "tangential_stiffness_ratio"}) {
             if (table.has(key)) {
                 table.fail(key, "the hertz_mindlin law takes its stiffness from the grains' E "
-                                "and nu and its damping from gamma_n: expected no " +
+                                "and nu: expected no " +
                                     std::string(key));
             }
         }
@@ -57,6 +57,9 @@ ContactLaw read_contact_law(const io::CaseTable& dem) {
             table.fail("restitution", "expected a coefficient of restitution in (0, 1]");
         }
         law.restitution = e;
+        if (law.model == ContactLaw::Model::hertz_mindlin) {
+            law.hertz_alpha = hertz_restitution_damping(e);
+        }
     }
     return law;
 }

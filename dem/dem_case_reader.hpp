@@ -49,7 +49,7 @@ inline constexpr std::array<io::KeySpec, 8> kDemContactKeys{{
     {"gamma_n", "frequency", "0 1/s", "normal damping per unit effective mass: c_n = gamma_n m*"},
     {"gamma_t", "frequency", "0 1/s", "tangential damping per unit effective mass"},
     {"restitution", "number in (0, 1]", "none",
-     "`linear` only, instead of gamma_n: the coefficient of restitution of every pair"},
+     "instead of gamma_n: the coefficient of restitution of every pair, at any speed"},
     {"friction", "number >= 0", "0", "Coulomb's coefficient between grains"},
     {"wall_friction", "number >= 0", "friction", "Coulomb's coefficient between grain and wall"},
 }};

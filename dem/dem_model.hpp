@@ -97,6 +97,8 @@ class DemModel final : public io::Stepper, public io::Reporter {
     std::vector<std::string> body_names_;
     std::vector<std::string> body_materials_;
     std::vector<GrainElastic> body_elastic_;
+    std::vector<PairProperties> body_pairs_; ///< E*, G*, friction of two bodies' grains
+    std::vector<PairProperties> body_walls_; ///< and of a body's grains on a wall
     std::vector<double> body_density_;
     GrainSet grains_;
     SphereSet spheres_;
@@ -106,6 +108,7 @@ class DemModel final : public io::Stepper, public io::Reporter {
     std::vector<PlaneWall> walls_;
     particles::NeighbourList neighbours_;
     ContactBooks books_;
+    ContactScratch scratch_;
     /// The scene's parts: the sinks and, with them, the mass audit.
     mutable particles::ScenePartList parts_;
     std::shared_ptr<particles::SinkSet> sinks_;

@@ -3,6 +3,7 @@
 
 #include "io/types.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <string>
 #include <vector>
@@ -38,8 +39,28 @@ struct PlaneWall {
 };
 
 /// Whether a sphere at `centre` of `radius` touches `face`; then its overlap and the contact's
-/// unit normal, from the face to the centre.
-bool touches(const PlaneWall::Face& face, const Vec3& centre, double radius, double& overlap,
-             Vec3& normal);
+/// unit normal, from the face to the centre. Inline: the contact pass asks it for every sphere
+/// and face at every step.
+inline bool touches(const PlaneWall::Face& face, const Vec3& centre, double radius, double& overlap,
+                    Vec3& normal) {
+    const Vec3 offset = centre - face.point;
+    if (!face.bounded) {
+        const double gap = offset.dot(face.normal);
+        overlap = radius - gap;
+        normal = face.normal;
+        return gap < radius;
+    }
+    const double s = std::clamp(offset.dot(face.edge_u) / face.edge_u.squaredNorm(), 0.0, 1.0);
+    const double t = std::clamp(offset.dot(face.edge_v) / face.edge_v.squaredNorm(), 0.0, 1.0);
+    const Vec3 away = offset - s * face.edge_u - t * face.edge_v;
+    const double distance = away.norm();
+    if (distance >= radius) {
+        return false;
+    }
+    overlap = radius - distance;
+    // A centre on the plate itself (a grain sliced in two): the face's own normal decides.
+    normal = distance > 0.0 ? Vec3(away / distance) : face.normal;
+    return true;
+}
 
 } // namespace grainload::dem

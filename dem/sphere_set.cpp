@@ -20,6 +20,12 @@ void SphereSet::place(const GrainSet& grains) {
 #pragma omp parallel for schedule(static)
     for (Index s = 0; s < n; ++s) {
         const auto g = static_cast<std::size_t>(grain[s]);
+        // A spherical grain's one sphere sits at its centre: nothing to turn.
+        if (offset[s].isZero(0.0)) {
+            arm[s] = Vec3::Zero();
+            position[s] = grains.position[g];
+            continue;
+        }
         arm[s] = grains.orientation[g] * offset[s];
         position[s] = grains.position[g] + arm[s];
     }
@@ -43,14 +49,13 @@ void SphereSet::keep(std::span<const char> grain_gone, std::span<const Index> ne
     }
 }
 
-std::vector<Index> SphereSet::first_of_grains(Index grains) const {
-    std::vector<Index> first(static_cast<std::size_t>(grains) + 1, size());
+void SphereSet::first_of_grains(Index grains, std::vector<Index>& first) const {
+    first.assign(static_cast<std::size_t>(grains) + 1, size());
     for (Index s = size() - 1; s >= 0; --s) {
         first[static_cast<std::size_t>(grain[s])] = s;
     }
     // A grain always has a sphere; the sentinel closes the last one's range.
     first[static_cast<std::size_t>(grains)] = size();
-    return first;
 }
 
 } // namespace grainload::dem

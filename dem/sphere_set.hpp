@@ -43,7 +43,7 @@ struct SphereSet {
     /// new_index (old grain index -> new).
     void keep(std::span<const char> grain_gone, std::span<const Index> new_index);
     /// first[g] .. first[g + 1]: the spheres of grain g, for `grains` grains.
-    std::vector<Index> first_of_grains(Index grains) const;
+    void first_of_grains(Index grains, std::vector<Index>& first) const;
 };
 
 } // namespace grainload::dem
