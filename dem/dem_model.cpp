@@ -74,20 +74,10 @@ DemModel::DemModel(DemSettings settings, const io::SceneSettings& scene,
     start_position_ = grains_.position;
     sinks_ = settings_.sinks ? settings_.sinks : std::make_shared<particles::SinkSet>();
     if (!sinks_->empty()) {
-        double initial = 0.0;
-        for (const double m : grains_.mass) {
-            initial += m;
-        }
         parts_.add(sinks_);
         parts_.add(std::make_shared<particles::MassAudit>(
-            initial, 3,
-            particles::MassAudit::Books{[this] {
-                                            double mass = 0.0;
-                                            for (const double m : grains_.mass) {
-                                                mass += m;
-                                            }
-                                            return mass;
-                                        },
+            grains_.total_mass(), 3,
+            particles::MassAudit::Books{[this] { return grains_.total_mass(); },
                                         [this] { return sinks_->discharged(); },
                                         [] { return 0.0; }}));
     }
@@ -106,8 +96,7 @@ double DemModel::pair_contact_time(std::size_t a, std::optional<std::size_t> b, 
         return largest ? settings_.bodies[body].radius_max : settings_.bodies[body].radius_min;
     };
     const auto mass = [&](std::size_t body) {
-        const double r = radius(body);
-        return 4.0 / 3.0 * std::numbers::pi * r * r * r * body_density_[body];
+        return sphere_mass(radius(body), body_density_[body]);
     };
     PairProperties pair;
     pair.mass = mass(a);

@@ -89,16 +89,16 @@ void add_grain(const BodySettings& body, int body_id, const GrainShape& shape, c
 GrainShape grain_shape(const BodySettings& body, double radius, double density) {
     GrainShape shape;
     shape.radius = radius;
-    const double sphere_mass = 4.0 / 3.0 * std::numbers::pi * radius * radius * radius * density;
-    const double own = 0.4 * sphere_mass * radius * radius;
+    const double one = sphere_mass(radius, density);
+    const double own = 0.4 * one * radius * radius;
     const double spacing = body.sphere_distance * 2.0 * radius;
     const auto k = static_cast<double>(body.spheres);
-    shape.mass = k * sphere_mass;
+    shape.mass = k * one;
     shape.inertia = Vec3(k * own, 0.0, 0.0);
     for (int j = 0; j < body.spheres; ++j) {
         const double x = (static_cast<double>(j) - 0.5 * (k - 1.0)) * spacing;
         shape.offsets.emplace_back(x, 0.0, 0.0);
-        shape.inertia.y() += own + sphere_mass * x * x;
+        shape.inertia.y() += own + one * x * x;
     }
     shape.inertia.z() = shape.inertia.y();
     return shape;

@@ -5,9 +5,15 @@
 #include "dem/grain_set.hpp"
 #include "dem/sphere_set.hpp"
 
+#include <numbers>
 #include <vector>
 
 namespace grainload::dem {
+
+/// The mass of a sphere of `radius` and `density`, 4/3 pi r^3 rho.
+inline double sphere_mass(double radius, double density) {
+    return 4.0 / 3.0 * std::numbers::pi * radius * radius * radius * density;
+}
 
 /// One grain of a body as its spheres make it: `spheres` equal spheres of radius r on the
 /// grain's own x axis, centre to centre sphere_distance x 2r (1: touching, as the paper's

@@ -24,6 +24,14 @@ Mat3 GrainSet::world_inertia(Index i) const {
     return r * inertia[static_cast<std::size_t>(i)].asDiagonal() * r.transpose();
 }
 
+double GrainSet::total_mass() const {
+    double sum = 0.0;
+    for (const double m : mass) {
+        sum += m;
+    }
+    return sum;
+}
+
 void GrainSet::keep(std::span<const char> gone) {
     particles::compact(id, gone);
     particles::compact(body_id, gone);

@@ -43,6 +43,8 @@ struct GrainSet {
     }
     /// The inertia tensor of grain i in the scene's frame, R diag(I) R^T.
     Mat3 world_inertia(Index i) const;
+    /// The grains' mass, summed in index order.
+    double total_mass() const;
     /// Keep the grains whose `gone` flag is 0, in order, in every field.
     void keep(std::span<const char> gone);
     /// The common fields the scene parts read.
