@@ -3,6 +3,7 @@
 #include "app/checkpoint.hpp"
 #include "app/cost_estimate.hpp"
 #include "app/progress_reporter.hpp"
+#include "app/resources/blas_threads.hpp"
 #include "app/resources/openmp_wait.hpp"
 #include "app/resources/thread_count.hpp"
 #include "app/scene.hpp"
@@ -211,6 +212,7 @@ int run_case(const CommandLine& line) {
     } else if (line.threads) {
         omp_set_num_threads(*line.threads);
     }
+    follow_blas_threads(omp_get_max_threads());
     auto scene = Scene::load(line.input, line.overrides);
     // The estimate `check` prints, kept for summary.json's estimate-against-actual ratios (a
     // restarted run covers only part of the time, so it has none).

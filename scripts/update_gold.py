@@ -63,8 +63,8 @@ def run_case(grainload, case, threads, scratch):
     out = copy / "out"
     command = [str(grainload), "run", str(copy / case.name), "--threads", str(threads),
                "--out", str(out)]
-    # OMP_NUM_THREADS sets the BLAS threads of the shells' factorisation too, which --threads
-    # does not: their count changes its sums' order as the SPH threads do.
+    # --threads sets the BLAS threads of the shells' factorisation too; OMP_NUM_THREADS holds
+    # any library the run does not set.
     env = dict(os.environ, OMP_NUM_THREADS=str(threads))
     result = subprocess.run(command, capture_output=True, text=True, env=env)
     if result.returncode != 0:

@@ -6,6 +6,8 @@
 #include "support/interrupted_run.hpp"
 
 #include <cstdio>
+#include <cstdlib>
+#include <vector>
 #include <vtkCellData.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -405,6 +407,46 @@ TEST(CouplingSmall, RestartOfACoupledRunReproducesTheUninterruptedRun) {
           "fem_newton_iterations_last_step", "fem_steps_solved_by_cholmod"}) {
         EXPECT_EQ(result_value(whole_summary, figure), result_value(split_summary, figure))
             << figure;
+    }
+}
+
+} // namespace
+} // namespace grainload::testing
+
+namespace grainload::testing {
+namespace {
+
+// `--threads 1` is one thread for the shells' factorisation too: the BLAS under CHOLMOD
+// (OpenBLAS) otherwise takes its threads from OPENBLAS_NUM_THREADS or the cores, and its blocked
+// updates sum in an order that depends on them. The Janssen silo's first 50 ms (its steel wall
+// coupled, the floor's reactions near zero, where a last bit shows) under one and under two
+// BLAS threads in the environment write the same wall loads and reactions to the last digit;
+// before the run set the BLAS's threads, the floor reaction differed in its 12th digit and
+// wall_forces.csv in its rows.
+TEST(CouplingSmall, OneThreadIsOneThreadForTheShellsFactorisationToo) {
+    const char* before = std::getenv("OPENBLAS_NUM_THREADS");
+    const std::string kept = before ? before : "";
+    std::vector<CaseRun> runs;
+    for (const char* blas : {"1", "2"}) {
+        ::setenv("OPENBLAS_NUM_THREADS", blas, 1);
+        runs.push_back(run_case_file("cases/silo_janssen/silo_janssen_small.toml",
+                                     std::string("blas_threads_") + blas,
+                                     "--threads 1 --set 'case.end_time=0.05 s'"));
+        ASSERT_EQ(runs.back().cli.exit_code, 0) << runs.back().cli.output;
+    }
+    if (before) {
+        ::setenv("OPENBLAS_NUM_THREADS", kept.c_str(), 1);
+    } else {
+        ::unsetenv("OPENBLAS_NUM_THREADS");
+    }
+    EXPECT_EQ(read_file(runs[0].out + "/wall_forces.csv"),
+              read_file(runs[1].out + "/wall_forces.csv"));
+    EXPECT_EQ(read_file(runs[0].out + "/fem_convergence.csv"),
+              read_file(runs[1].out + "/fem_convergence.csv"));
+    const std::string one = read_file(runs[0].out + "/summary.json");
+    const std::string two = read_file(runs[1].out + "/summary.json");
+    for (const char* figure : {"base_a_z", "support_reaction_z"}) {
+        EXPECT_EQ(result_value(one, figure), result_value(two, figure)) << figure;
     }
 }
 
