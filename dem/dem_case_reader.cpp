@@ -1,6 +1,7 @@
 #include "dem/dem_case_reader.hpp"
 
 #include "io/case_table.hpp"
+#include "io/named_index.hpp"
 #include "io/scene_settings.hpp"
 #include "materials/material_library.hpp"
 
@@ -200,17 +201,6 @@ PlaneWall read_wall(const io::CaseTable& table, int up) {
     return wall;
 }
 
-template <class Named>
-void refuse_repeated(const io::CaseTable& table, const std::vector<Named>& known,
-                     const std::string& name, const char* what) {
-    for (const Named& other : known) {
-        if (other.name == name) {
-            table.fail("name",
-                       std::string("a ") + what + " called \"" + name + "\" is already defined");
-        }
-    }
-}
-
 } // namespace
 
 /// The sinks of [[dem.sink]], each body's grain size the mean diameter of its radii.
@@ -256,7 +246,7 @@ DemSettings read_dem_settings(const io::CaseTable& root,
     settings.damping_where = contact.where(contact.has("gamma_n") ? "gamma_n" : "law");
     for (const io::CaseTable& table : dem.array_of_tables("body")) {
         BodySettings body = read_body(table, materials);
-        refuse_repeated(table, settings.bodies, body.name, "body");
+        io::refuse_repeated_name(table, settings.bodies, body.name, "body", &BodySettings::name);
         settings.bodies.push_back(std::move(body));
     }
     if (settings.bodies.empty()) {
@@ -264,7 +254,7 @@ DemSettings read_dem_settings(const io::CaseTable& root,
     }
     for (const io::CaseTable& table : dem.array_of_tables("wall")) {
         PlaneWall wall = read_wall(table, up);
-        refuse_repeated(table, settings.walls, wall.name, "wall");
+        io::refuse_repeated_name(table, settings.walls, wall.name, "wall", &PlaneWall::name);
         settings.walls.push_back(std::move(wall));
     }
     settings.sinks = read_sinks(dem, settings, materials, scene);

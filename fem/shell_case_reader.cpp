@@ -3,6 +3,7 @@
 #include "fem/imported_shell_mesh.hpp"
 #include "fem/shell_mesh_generators.hpp"
 #include "io/case_table.hpp"
+#include "io/named_index.hpp"
 
 #include <algorithm>
 #include <array>
@@ -155,11 +156,7 @@ read_shell_parts(const io::CaseTable& fem, const std::vector<io::CaseTable>& she
         if (part.name.empty()) {
             shell.fail("name", "a structure of several [[fem.shell]] parts names each of them");
         }
-        for (const ShellPart& other : parts) {
-            if (other.name == part.name) {
-                shell.fail("name", "a shell part called \"" + part.name + "\" is already defined");
-            }
-        }
+        io::refuse_repeated_name(shell, parts, part.name, "shell part", &ShellPart::name);
         part.material = &materials[materials.index_of(shell, "material")];
         const bool elastic = part.material->model() == "linear_elastic";
         part.thickness_points =

@@ -1,9 +1,13 @@
 #pragma once
-// The index of the item a case key names, among items that each have a name.
+// The index of the item a case key names, among items that each have a name, and the refusal
+// of a name given twice.
 
 #include "io/case_table.hpp"
 
+#include <algorithm>
+#include <functional>
 #include <string>
+#include <string_view>
 
 namespace grainload::io {
 
@@ -22,6 +26,20 @@ int index_by_name(const CaseTable& table, const std::string& key, const Named& i
     }
     table.fail(key, std::string("expected the name of a ") + what + " (" +
                         (known.empty() ? std::string("none defined") : known) + ")");
+}
+
+/// Refuses `table`, at its `name` key, when `name` is already the name of one of `known` (read
+/// through `name_of`: a member pointer such as `&Sink::name`, or nothing for a list of names):
+/// "a sink called "below" is already defined". Every reader of named tables ([[material]],
+/// bodies, shells, sinks, sources, phases, wall maps, DEM bodies and walls) refuses this way.
+template <typename Known, typename NameOf = std::identity>
+void refuse_repeated_name(const CaseTable& table, const Known& known, const std::string& name,
+                          std::string_view what, NameOf name_of = {}) {
+    if (std::ranges::any_of(
+            known, [&](const auto& other) { return std::invoke(name_of, other) == name; })) {
+        table.fail("name",
+                   "a " + std::string(what) + " called \"" + name + "\" is already defined");
+    }
 }
 
 } // namespace grainload::io

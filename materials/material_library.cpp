@@ -1,6 +1,7 @@
 #include "materials/material_library.hpp"
 
 #include "io/case_table.hpp"
+#include "io/named_index.hpp"
 #include "materials/material_factory.hpp"
 
 #include <algorithm>
@@ -11,9 +12,7 @@ MaterialLibrary MaterialLibrary::from_case(const io::CaseTable& root) {
     MaterialLibrary library;
     for (const auto& table : root.array_of_tables("material")) {
         std::string name = table.string("name");
-        if (std::find(library.names_.begin(), library.names_.end(), name) != library.names_.end()) {
-            table.fail("name", "a material called \"" + name + "\" is already defined");
-        }
+        io::refuse_repeated_name(table, library.names_, name, "material");
         library.materials_.push_back(make_material(table));
         library.names_.push_back(std::move(name));
         // Read through the model's sub-table, where mu_i may hold its grain size too: one d for

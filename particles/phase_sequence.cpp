@@ -1,6 +1,7 @@
 #include "particles/phase_sequence.hpp"
 
 #include "io/case_table.hpp"
+#include "io/named_index.hpp"
 #include "io/units.hpp"
 
 #include <algorithm>
@@ -107,11 +108,7 @@ PhaseSequence::PhaseSequence(const io::CaseTable& root) {
     double previous_end = 0.0;
     for (std::size_t k = 0; k < tables.size(); ++k) {
         Phase phase = read_phase(tables[k], previous_end);
-        for (const Phase& other : phases_) {
-            if (other.name == phase.name) {
-                tables[k].fail("name", "a phase called \"" + phase.name + "\" is already defined");
-            }
-        }
+        io::refuse_repeated_name(tables[k], phases_, phase.name, "phase", &Phase::name);
         if (phase.end == End::run && k + 1 < tables.size()) {
             tables[k].fail("", "only the last phase may run to the end of the run: expected "
                                "end = a time, \"settled\" or \"discharged\"");

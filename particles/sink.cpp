@@ -2,6 +2,7 @@
 
 #include "io/binary_stream.hpp"
 #include "io/case_table.hpp"
+#include "io/named_index.hpp"
 #include "io/output_streams.hpp"
 #include "io/steady_rate.hpp"
 
@@ -124,11 +125,7 @@ SinkSet::SinkSet(const io::CaseTable& scene, const BodyNames& bodies, int dimens
     for (const auto& table : scene.array_of_tables("sink")) {
         Sink sink;
         sink.name = table.string("name");
-        for (const Sink& other : sinks_) {
-            if (other.name == sink.name) {
-                table.fail("name", "a sink called \"" + sink.name + "\" is already defined");
-            }
-        }
+        io::refuse_repeated_name(table, sinks_, sink.name, "sink", &Sink::name);
         sink.region = read_region(table, dimension);
         if (table.has("body")) {
             sink.body = bodies.index(table, "body");

@@ -2,6 +2,7 @@
 
 #include "io/binary_stream.hpp"
 #include "io/case_table.hpp"
+#include "io/named_index.hpp"
 #include "sph/body_generator.hpp"
 #include "sph/sph_case_reader.hpp"
 
@@ -69,11 +70,7 @@ SourceSet::SourceSet(const io::CaseTable& sph, const std::vector<std::string>& b
     for (const auto& table : sph.array_of_tables("source")) {
         Source source;
         source.name = table.string("name");
-        for (const Source& other : sources_) {
-            if (other.name == source.name) {
-                table.fail("name", "a source called \"" + source.name + "\" is already defined");
-            }
-        }
+        io::refuse_repeated_name(table, sources_, source.name, "source", &Source::name);
         source.body = body_index(table, "body", body_names);
         const auto b = static_cast<std::size_t>(source.body);
         source.material = body_material[b];

@@ -1,6 +1,7 @@
 #include "sph/sph_model.hpp"
 
 #include "io/case_table.hpp"
+#include "io/named_index.hpp"
 #include "sph/body_generator.hpp"
 #include "sph/outlet_reach.hpp"
 #include "sph/probes.hpp"
@@ -262,11 +263,7 @@ void SphModel::set_output(io::OutputStreams& output) {
 
 void SphModel::add_body(const io::CaseTable& body, int dimension) {
     std::string name = body.string("name");
-    for (const auto& existing : body_names_) {
-        if (existing == name) {
-            body.fail("name", "a body called \"" + name + "\" is already defined");
-        }
-    }
+    io::refuse_repeated_name(body, body_names_, name, "body");
     const int material = materials_->index_of(body, "material");
     const double spacing = body.positive_quantity("spacing", dim::kLength);
     if (spacing_ > 0.0 && std::abs(spacing - spacing_) > 1e-9 * spacing_) {

@@ -1,5 +1,6 @@
 // Reading the [[sph.wall_map]] tables (keys: kWallMapKeys in sph/wall_map.hpp).
 #include "io/case_table.hpp"
+#include "io/named_index.hpp"
 #include "sph/wall_map.hpp"
 
 #include <Eigen/Geometry>
@@ -126,11 +127,7 @@ WallMapSet::WallMapSet(const io::CaseTable& sph, const ParticleSet& particles,
     for (const auto& table : sph.array_of_tables("wall_map")) {
         Map map;
         map.name = table.string("name");
-        for (const Map& other : maps_) {
-            if (other.name == map.name) {
-                table.fail("name", "a wall map called \"" + map.name + "\" is already defined");
-            }
-        }
+        io::refuse_repeated_name(table, maps_, map.name, "wall map", &Map::name);
         map.walls = read_walls(table, walls);
         for (const int w : map.walls) {
             // add_wall gives a wall particle the mass density x spacing^dimension.

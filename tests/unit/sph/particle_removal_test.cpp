@@ -153,8 +153,8 @@ TEST(SinkSet, TakesMaterialParticlesInItsRegionAndBooksTheirMass) {
     }
     remove_particles(scene.particles, gone, scene.walls);
     const double initial = 0.25 * 15;
-    const auto audit = [&set, initial](double scene, double created) {
-        return particles::MassAudit::error(scene, set.discharged(), initial, created);
+    const auto audit = [&set, initial](double in_scene, double created) {
+        return particles::MassAudit::error(in_scene, set.discharged(), initial, created);
     };
     EXPECT_EQ(audit(0.0, 0.0), 0.0);
     EXPECT_EQ(audit(0.25, 0.0), 0.25 / 3.75);
