@@ -30,6 +30,53 @@ double linear_damping(const ContactLaw& law, const PairProperties& pair) {
            std::sqrt(std::numbers::pi * std::numbers::pi + log_e * log_e);
 }
 
+/// The part of `v` in the plane normal to `n`, turned back to its length: a spring carried
+/// along as the contact turns (Luding 2008).
+Vec3 turned_into_plane(const Vec3& v, const Vec3& n) {
+    const double length = v.norm();
+    Vec3 in_plane = v - v.dot(n) * n;
+    const double turned = in_plane.norm();
+    if (turned > 0.0) {
+        in_plane *= length / turned;
+    }
+    return in_plane;
+}
+
+/// Ai, Chen, Rotter & Ooi 2011, model C: the rolling spring's torque, capped at full
+/// mobilisation, with its dashpot below the cap; the torque on a, the spring and its energy
+/// into `state`. `stiffness_n` is the normal law's tangent stiffness.
+void rolling_resistance(const ContactLaw& law, const PairProperties& pair, double stiffness_n,
+                        double normal_force, double time_step, ContactState& state) {
+    const Vec3& n = state.normal;
+    // Rolling only: the relative turn about the normal (twisting) meets no resistance here.
+    const Vec3 rolling_rate = state.relative_rotation - state.relative_rotation.dot(n) * n;
+    const double stiffness_r = 2.25 * stiffness_n * pair.rolling_friction * pair.rolling_friction *
+                               pair.radius * pair.radius;
+    Vec3 spring = turned_into_plane(state.rolling, n) - stiffness_r * time_step * rolling_rate;
+    const double limit = pair.rolling_friction * pair.radius * std::max(normal_force, 0.0);
+    const double magnitude = spring.norm();
+    Vec3 torque = spring;
+    if (magnitude > limit) {
+        spring *= magnitude > 0.0 ? limit / magnitude : 0.0;
+        torque = spring; // fully mobilised: no dashpot (Ai et al.'s f = 0)
+    } else {
+        torque -= law.rolling_damping * 2.0 * std::sqrt(pair.rolling_inertia * stiffness_r) *
+                  rolling_rate;
+        // Nor does the dashpot's torque with the spring's pass full mobilisation: a contact
+        // that forms on a fast-spinning grain would otherwise brake it at C_r omega, tens of
+        // times the torque the contact can carry.
+        const double total = torque.norm();
+        if (total > limit) {
+            torque *= limit / total;
+        }
+    }
+    state.rolling = spring;
+    state.torque = torque;
+    if (stiffness_r > 0.0) {
+        state.elastic_energy += 0.5 * spring.squaredNorm() / stiffness_r;
+    }
+}
+
 } // namespace
 
 void contact_force(const ContactLaw& law, const PairProperties& pair, double time_step,
@@ -40,16 +87,19 @@ void contact_force(const ContactLaw& law, const PairProperties& pair, double tim
     const Vec3 tangential_velocity = state.relative_velocity - normal_speed * n;
 
     double elastic_normal = 0.0;
+    double stiffness_n = 0.0; // tangent
     double stiffness_t = 0.0;
     double damping_n = 0.0;
     if (law.model == ContactLaw::Model::linear) {
         elastic_normal = law.normal_stiffness * delta;
+        stiffness_n = law.normal_stiffness;
         stiffness_t = law.tangential_stiffness_ratio * law.normal_stiffness;
         damping_n = linear_damping(law, pair);
         state.elastic_energy = 0.5 * elastic_normal * delta;
     } else {
         const double root = std::sqrt(pair.radius * delta);
         elastic_normal = 4.0 / 3.0 * pair.young * root * delta;
+        stiffness_n = 2.0 * pair.young * root;
         stiffness_t = 8.0 * pair.shear * root;
         damping_n = law.restitution
                         ? law.hertz_alpha * std::sqrt(pair.mass * 2.0 * pair.young * root)
@@ -58,16 +108,9 @@ void contact_force(const ContactLaw& law, const PairProperties& pair, double tim
     }
     const double normal_force = elastic_normal - damping_n * normal_speed;
 
-    // The spring lives in the tangent plane: turn it with the contact by removing the part
-    // along the new normal and restoring its length (Luding 2008), then add this step's slip.
-    Vec3 spring = state.spring;
-    const double length = spring.norm();
-    spring -= spring.dot(n) * n;
-    const double turned = spring.norm();
-    if (turned > 0.0) {
-        spring *= length / turned;
-    }
-    spring += tangential_velocity * time_step;
+    // The spring lives in the tangent plane: turn it with the contact, then add this step's
+    // slip.
+    Vec3 spring = turned_into_plane(state.spring, n) + tangential_velocity * time_step;
     const Vec3 damping_t = law.gamma_t * pair.mass * tangential_velocity;
     Vec3 tangential = -stiffness_t * spring - damping_t;
     // Friction needs the grains pressed together: where the dashpot pulls at the end of a
@@ -85,6 +128,12 @@ void contact_force(const ContactLaw& law, const PairProperties& pair, double tim
         state.elastic_energy += 0.5 * stiffness_t * spring.squaredNorm();
     }
     state.force = normal_force * n + tangential;
+    if (pair.rolling_friction > 0.0) {
+        rolling_resistance(law, pair, stiffness_n, normal_force, time_step, state);
+    } else {
+        state.torque = Vec3::Zero();
+        state.rolling = Vec3::Zero();
+    }
 }
 
 double hertz_restitution(double alpha) {

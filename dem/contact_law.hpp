@@ -31,6 +31,12 @@ namespace grainload::dem {
 /// slip force less the dashpot's part, -(f_t + gamma_t m* v_t) / k_t (Cundall & Strack 1979;
 /// Luding 2008). k_t = ratio k_n (linear; 2/7 makes the normal and
 /// tangential periods of a sphere equal, Silbert et al. 2001) or 8 G* sqrt(R* delta) (Mindlin).
+/// Rolling resistance (optional): the elastic-plastic spring-dashpot of Ai, Chen, Rotter & Ooi
+/// 2011 (their model C): a torque spring M_k integrated from the relative rolling rotation
+/// (omega_a - omega_b without its part along n), stiffness k_r = 2.25 k_n mu_r^2 R*^2 (k_n the
+/// normal law's tangent stiffness), capped at mu_r R* max(f_n, 0) (full mobilisation: a grain
+/// rolls against a constant torque); below the cap a dashpot -C_r omega_r with
+/// C_r = eta_r 2 sqrt(I_r k_r) quiets a grain rocking at rest.
 struct ContactLaw {
     enum class Model { linear, hertz_mindlin };
     Model model = Model::linear;
@@ -42,6 +48,9 @@ struct ContactLaw {
     double hertz_alpha = 0.0;                ///< Hertz with a restitution: alpha of e
     double friction = 0.0;                   ///< mu between grains
     double wall_friction = 0.0;              ///< mu between a grain and a wall
+    double rolling_friction = 0.0;           ///< mu_r between grains
+    double wall_rolling_friction = 0.0;      ///< mu_r between a grain and a wall
+    double rolling_damping = 0.0;            ///< eta_r, the rolling dashpot's damping ratio
 };
 
 /// The pair's effective properties: m*, R*, E*, G* (a wall: infinite mass and radius, rigid).
@@ -51,6 +60,11 @@ struct PairProperties {
     double young = 0.0;  ///< E* = 1 / ((1 - nu_a^2)/E_a + (1 - nu_b^2)/E_b)
     double shear = 0.0;  ///< G* = 1 / ((2 - nu_a)/G_a + (2 - nu_b)/G_b)
     double friction = 0.0;
+    double rolling_friction = 0.0;
+    /// I_r = 1 / (1/(I_a + m_a r_a^2) + 1/(I_b + m_b r_b^2)) of the rolling dashpot, each side
+    /// (7/5) m r^2, a sphere of its grain's mass rolling on its contact point; I_a + m_a r_a^2
+    /// at a wall.
+    double rolling_inertia = 0.0;
 };
 
 /// The elastic constants of one side of a contact.
@@ -64,19 +78,25 @@ void combine_elastic(const GrainElastic& a, const std::optional<GrainElastic>& b
                      PairProperties& pair);
 
 /// One contact's state and result. In: overlap, normal n (from b to a), the relative velocity
-/// of the contact points (a's less b's), the time step, and the tangential spring as the last
-/// step left it. Out: the force on a (b gets its opposite) and the spring for the next step.
+/// of the contact points (a's less b's), the relative angular velocity (a's less b's), the time
+/// step, and the tangential and rolling springs as the last step left them. Out: the force on
+/// a (b gets its opposite), the rolling torque on a (b gets its opposite), the springs for the
+/// next step.
 struct ContactState {
     double overlap = 0.0;
     Vec3 normal = Vec3::Zero();
     Vec3 relative_velocity = Vec3::Zero();
+    Vec3 relative_rotation = Vec3::Zero();
     Vec3 spring = Vec3::Zero();
+    Vec3 rolling = Vec3::Zero();
     Vec3 force = Vec3::Zero();
+    Vec3 torque = Vec3::Zero();
     /// The elastic energy the contact holds (normal and tangential springs), for the books.
     double elastic_energy = 0.0;
 };
 
-/// Evaluate the contact: state.force, state.spring and state.elastic_energy from the rest.
+/// Evaluate the contact: state.force, state.torque, the springs and state.elastic_energy from
+/// the rest.
 void contact_force(const ContactLaw& law, const PairProperties& pair, double time_step,
                    ContactState& state);
 

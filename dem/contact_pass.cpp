@@ -7,11 +7,20 @@ namespace grainload::dem {
 
 namespace {
 
-Vec3 spring_with(const std::vector<Spring>& springs, std::uint64_t partner) {
+/// The springs kept with `partner`, or unstretched ones for a new contact.
+void springs_with(const std::vector<Spring>& springs, std::uint64_t partner, ContactState& state) {
     const auto found =
         std::lower_bound(springs.begin(), springs.end(), partner,
                          [](const Spring& s, std::uint64_t key) { return s.partner < key; });
-    return found != springs.end() && found->partner == partner ? found->shear : Vec3::Zero();
+    const bool kept = found != springs.end() && found->partner == partner;
+    state.spring = kept ? found->shear : Vec3::Zero();
+    state.rolling = kept ? found->rolling : Vec3::Zero();
+}
+
+/// The rolling dashpot's I + m r^2 of one side: a sphere of its grain's mass rolling on its
+/// contact point.
+double rolling_inertia(double mass, double radius) {
+    return 1.4 * mass * radius * radius;
 }
 
 /// The pass's inputs and per-sphere results.
@@ -51,12 +60,18 @@ int gather_pairs(Pass& p, const particles::NeighbourList& neighbours, Index i) {
         state.relative_velocity =
             p.x.point_velocity[a] - p.x.point_velocity[b] -
             (arm_a * g.angular_velocity[ga] + arm_b * g.angular_velocity[gb]).cross(state.normal);
-        state.spring = spring_with(s.springs[a], s.id[b]);
+        state.relative_rotation = g.angular_velocity[ga] - g.angular_velocity[gb];
+        springs_with(s.springs[a], s.id[b], state);
         PairProperties pair =
             p.scene.body_pairs[static_cast<std::size_t>(g.body_id[ga]) * p.bodies +
                                static_cast<std::size_t>(g.body_id[gb])];
         pair.mass = g.mass[ga] * g.mass[gb] / (g.mass[ga] + g.mass[gb]);
         pair.radius = s.radius[a] * s.radius[b] / reach;
+        if (pair.rolling_friction > 0.0) {
+            const double ia = rolling_inertia(g.mass[ga], s.radius[a]);
+            const double ib = rolling_inertia(g.mass[gb], s.radius[b]);
+            pair.rolling_inertia = ia * ib / (ia + ib);
+        }
         contact_force(p.scene.law, pair, p.dt, state);
         // Torque of the force on a at its contact point, -arm_a n from a's centre; b's by the
         // same force reversed at +arm_b n from b's centre: both are -arm n x F.
@@ -64,12 +79,12 @@ int gather_pairs(Pass& p, const particles::NeighbourList& neighbours, Index i) {
         const auto at = static_cast<std::size_t>(i);
         if (owner) {
             p.x.force[at] += state.force;
-            p.x.torque[at] -= arm_a * turn;
+            p.x.torque[at] += state.torque - arm_a * turn;
             p.x.energy[at] += state.elastic_energy;
-            p.x.kept[at].push_back({s.id[j], state.spring});
+            p.x.kept[at].push_back({s.id[j], state.spring, state.rolling});
         } else {
             p.x.force[at] -= state.force;
-            p.x.torque[at] -= arm_b * turn;
+            p.x.torque[at] -= state.torque + arm_b * turn;
         }
         ++contacts;
         p.x.deepest[at] =
@@ -100,19 +115,21 @@ int gather_walls(Pass& p, const std::vector<PlaneWall>& walls, Index i, Vec3* on
             const double arm = s.radius[i] - 0.5 * state.overlap;
             state.relative_velocity =
                 p.x.point_velocity[at] - arm * g.angular_velocity[owner].cross(state.normal);
+            state.relative_rotation = g.angular_velocity[owner];
             const std::uint64_t key = kWallPartner | (w << 8) | f;
-            state.spring = spring_with(s.springs[at], key);
+            springs_with(s.springs[at], key, state);
             PairProperties pair = p.scene.body_walls[static_cast<std::size_t>(g.body_id[owner])];
             pair.mass = g.mass[owner];
             pair.radius = s.radius[i];
+            pair.rolling_inertia = rolling_inertia(g.mass[owner], s.radius[i]);
             contact_force(p.scene.law, pair, p.dt, state);
             g.force[owner] += state.force;
-            g.torque[owner] -= arm * state.normal.cross(state.force);
+            g.torque[owner] += state.torque - arm * state.normal.cross(state.force);
             g.torque[owner] += s.arm[at].cross(state.force);
             on_walls[w] -= state.force;
             p.x.energy[at] += state.elastic_energy;
             p.x.deepest[at] = std::max(p.x.deepest[at], state.overlap / s.radius[i]);
-            p.x.kept[at].push_back({key, state.spring});
+            p.x.kept[at].push_back({key, state.spring, state.rolling});
             ++contacts;
         }
     }

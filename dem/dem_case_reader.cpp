@@ -32,6 +32,13 @@ ContactLaw read_contact_law(const io::CaseTable& dem) {
     law.gamma_t = table.positive_quantity_or("gamma_t", dim::kFrequency, 0.0, true);
     law.friction = coefficient(table, "friction", 0.0);
     law.wall_friction = coefficient(table, "wall_friction", law.friction);
+    law.rolling_friction = coefficient(table, "rolling_friction", 0.0);
+    law.wall_rolling_friction = coefficient(table, "wall_rolling_friction", law.rolling_friction);
+    law.rolling_damping =
+        table.number_or("rolling_damping", io::default_value(kDemContactKeys, "rolling_damping"));
+    if (!(law.rolling_damping >= 0.0 && law.rolling_damping <= 1.0)) {
+        table.fail("rolling_damping", "expected a damping ratio in [0, 1]");
+    }
     if (law.model == ContactLaw::Model::linear) {
         law.normal_stiffness = table.positive_quantity("normal_stiffness", dim::kForcePerLength);
         law.tangential_stiffness_ratio =

@@ -39,7 +39,7 @@ inline constexpr std::array<io::KeySpec, 4> kDemKeys{{
 }};
 
 /// The keys of [dem.contact].
-inline constexpr std::array<io::KeySpec, 8> kDemContactKeys{{
+inline constexpr std::array<io::KeySpec, 11> kDemContactKeys{{
     {"law", "`linear` or `hertz_mindlin`", "",
      "linear: a Kelvin-Voigt spring and dashpot; hertz_mindlin: Hertz's normal and Mindlin's "
      "tangential stiffness from the grains' E and nu"},
@@ -52,6 +52,11 @@ inline constexpr std::array<io::KeySpec, 8> kDemContactKeys{{
      "instead of gamma_n: the coefficient of restitution of every pair, at any speed"},
     {"friction", "number >= 0", "0", "Coulomb's coefficient between grains"},
     {"wall_friction", "number >= 0", "friction", "Coulomb's coefficient between grain and wall"},
+    {"rolling_friction", "number >= 0", "0",
+     "mu_r between grains: a rolling grain meets the torque mu_r R* f_n (Ai et al. 2011, model C)"},
+    {"wall_rolling_friction", "number >= 0", "rolling_friction", "mu_r between grain and wall"},
+    {"rolling_damping", "number in [0, 1]", "0.3",
+     "the rolling dashpot's damping ratio below full mobilisation", 0.3},
 }};
 
 /// The keys of each [[dem.body]].

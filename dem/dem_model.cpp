@@ -63,11 +63,13 @@ DemModel::DemModel(DemSettings settings, const io::SceneSettings& scene,
             PairProperties pair;
             combine_elastic(body_elastic_[a], b, pair);
             pair.friction = settings_.law.friction;
+            pair.rolling_friction = settings_.law.rolling_friction;
             body_pairs_.push_back(pair);
         }
         PairProperties wall;
         combine_elastic(body_elastic_[a], std::nullopt, wall);
         wall.friction = settings_.law.wall_friction;
+        wall.rolling_friction = settings_.law.wall_rolling_friction;
         body_walls_.push_back(wall);
     }
     walls_ = settings_.walls;

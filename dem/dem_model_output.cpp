@@ -80,6 +80,18 @@ void DemModel::write_part_rows(double time) const {
 void DemModel::append_results(double /*t*/, std::vector<io::ResultFigure>& results) const {
     const GrainSet& g = grains_;
     results.push_back({"grains", static_cast<double>(g.size()), "", std::nullopt, ""});
+    // Where the grains' mass stands: a deposit's spread, a rolling grain's stop.
+    if (g.size() > 0) {
+        Vec3 moment = Vec3::Zero();
+        for (Index i = 0; i < g.size(); ++i) {
+            moment += g.mass[i] * g.position[i];
+        }
+        const Vec3 centre = moment / g.total_mass();
+        for (int a = 0; a < 3; ++a) {
+            results.push_back({std::string("grains_centre_of_mass_") + static_cast<char>('x' + a),
+                               centre[a], "m", std::nullopt, ""});
+        }
+    }
     parts_.append_results(results);
     const DemEnergy e = energy();
     results.push_back({"kinetic_energy", e.translational + e.rotational, "J", std::nullopt, ""});
@@ -119,6 +131,10 @@ void DemModel::append_results(double /*t*/, std::vector<io::ResultFigure>& resul
 void DemModel::describe_model(std::vector<io::ModelChoice>& choices) const {
     const bool linear = settings_.law.model == ContactLaw::Model::linear;
     choices.push_back({"dem contact", linear ? "linear spring-dashpot" : "hertz_mindlin"});
+    if (settings_.law.rolling_friction > 0.0 || settings_.law.wall_rolling_friction > 0.0) {
+        choices.push_back(
+            {"dem rolling resistance", "elastic-plastic spring-dashpot (Ai et al. 2011, model C)"});
+    }
     for (std::size_t b = 0; b < body_names_.size(); ++b) {
         choices.push_back(
             {"dem body " + body_names_[b], "spheres of material " + body_materials_[b]});

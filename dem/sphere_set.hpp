@@ -9,12 +9,14 @@
 
 namespace grainload::dem {
 
-/// One tangential spring a sphere keeps with a partner: another sphere (its id) or a wall face
-/// (kWallPartner + 256 wall + face). Kept by the sphere of the lower id of a pair, so that a
-/// grain's contacts travel with it wherever it goes (another rank, a compacted set).
+/// The springs a sphere keeps with a partner: another sphere (its id) or a wall face
+/// (kWallPartner + 256 wall + face): the tangential spring's stretch and the rolling spring's
+/// torque. Kept by the sphere of the lower id of a pair, so that a grain's contacts travel with
+/// it wherever it goes (another rank, a compacted set).
 struct Spring {
     std::uint64_t partner = 0;
     Vec3 shear = Vec3::Zero();
+    Vec3 rolling = Vec3::Zero();
 };
 inline constexpr std::uint64_t kWallPartner = std::uint64_t{1} << 63;
 

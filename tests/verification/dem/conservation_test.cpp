@@ -54,11 +54,12 @@ TEST(Conservation, EnergyIsKeptToTheIntegratorsOrder) {
 }
 
 /// Two clouds of 60 grains each closing at 2 m/s in free space, with friction and damping: no
-/// force but the contacts', which come in opposite pairs.
-std::string two_clouds() {
+/// force but the contacts', which come in opposite pairs. `contact` adds keys to [dem.contact].
+std::string two_clouds(const std::string& contact = "") {
     return "[case]\nend_time = \"1 s\"\ngravity = \"0 0 0 m/s^2\"\n" + glass() +
            "[dem]\n[dem.contact]\nlaw = \"hertz_mindlin\"\ngamma_n = \"50 1/s\"\n"
-           "gamma_t = \"20 1/s\"\nfriction = 0.5\n"
+           "gamma_t = \"20 1/s\"\nfriction = 0.5\n" +
+           contact +
            "[[dem.body]]\nname = \"left\"\nmaterial = \"glass\"\nradius_min = \"4 mm\"\n"
            "radius_max = \"5 mm\"\ncount = 60\nmin = \"-0.06 0 0 m\"\nmax = \"0 0.05 0.05 m\"\n"
            "velocity = \"1 0.1 0 m/s\"\nseed = 3\n"
@@ -82,12 +83,10 @@ Momenta momenta(const dem::GrainSet& g) {
     return p;
 }
 
-// The pair forces are exact opposites and their torques balance the moment of the pair about
-// any point, so linear and angular momentum stay at their start to round-off through friction
-// and damping: bound 1e-12 of the scale m v (and m v L) of the scene, some thousand steps of
-// sums of ~1e-16 each.
-TEST(Conservation, LinearAndAngularMomentumAreKeptToRoundOff) {
-    auto model = dem_model(two_clouds());
+/// Steps the clouds until 0.05 s and checks that linear and angular momentum kept their start
+/// to 1e-12 of the scene's scale m v (and m v L), some thousand steps of sums of ~1e-16 each.
+void expect_momenta_kept(const std::string& scene) {
+    auto model = dem_model(scene);
     const Momenta start = momenta(model->grains());
     double mass = 0.0;
     for (const double m : model->grains().mass) {
@@ -108,6 +107,19 @@ TEST(Conservation, LinearAndAngularMomentumAreKeptToRoundOff) {
         spin = std::max(spin, w.norm());
     }
     EXPECT_GT(spin, 1.0) << "friction must have turned grains";
+}
+
+// The pair forces are exact opposites and their torques balance the moment of the pair about
+// any point, so linear and angular momentum stay at their start to round-off through friction
+// and damping.
+TEST(Conservation, LinearAndAngularMomentumAreKeptToRoundOff) {
+    expect_momenta_kept(two_clouds());
+}
+
+// Rolling resistance adds a couple to each pair, equal and opposite on its two grains: the
+// momenta stay as they were, to the same round-off.
+TEST(Conservation, RollingResistanceKeepsTheAngularMomentum) {
+    expect_momenta_kept(two_clouds("rolling_friction = 0.2\n"));
 }
 
 } // namespace
