@@ -136,6 +136,21 @@ void contact_force(const ContactLaw& law, const PairProperties& pair, double tim
     }
 }
 
+void cohesive_force(const ContactLaw& law, double pull, ContactState& state) {
+    state.torque = Vec3::Zero();
+    state.spring = Vec3::Zero();
+    state.rolling = Vec3::Zero();
+    const bool separating = state.relative_velocity.dot(state.normal) > 0.0;
+    const double delta = state.overlap;
+    if (separating && delta >= -pull / law.normal_stiffness) {
+        state.force = law.normal_stiffness * delta * state.normal;
+        state.elastic_energy = 0.5 * law.normal_stiffness * delta * delta;
+    } else {
+        state.force = Vec3::Zero();
+        state.elastic_energy = 0.0;
+    }
+}
+
 double hertz_restitution(double alpha) {
     // x = delta / delta_max(elastic), tau = t v / delta_max: x(0) = 0, x'(0) = 1, until the
     // grains part (x back to 0); e = -x'. The elastic impact lasts tau = 2.94.

@@ -37,6 +37,12 @@ namespace grainload::dem {
 /// normal law's tangent stiffness), capped at mu_r R* max(f_n, 0) (full mobilisation: a grain
 /// rolls against a constant torque); below the cap a dashpot -C_r omega_r with
 /// C_r = eta_r 2 sqrt(I_r k_r) quiets a grain rocking at rest.
+/// Cohesion (optional, the linear law only): Lazarevic, Dvornik & Fresl 2002 (eqs. 4 and 10)
+/// let the linear spring pull a pair that separates within the reach -N_c / k_n <= delta <= 0,
+/// f_n = k_n delta, capped so at N_c = p_N g min(m_a, m_b), a share p_N of the lighter grain's
+/// weight (0.1 in their silo): grains cling but none hangs from another, as real dry grains
+/// carry load by pressing. No dashpot, no tangential or rolling force in that reach; a pair
+/// that approaches there feels nothing, so each parting costs N_c^2 / (2 k_n).
 struct ContactLaw {
     enum class Model { linear, hertz_mindlin };
     Model model = Model::linear;
@@ -51,6 +57,8 @@ struct ContactLaw {
     double rolling_friction = 0.0;           ///< mu_r between grains
     double wall_rolling_friction = 0.0;      ///< mu_r between a grain and a wall
     double rolling_damping = 0.0;            ///< eta_r, the rolling dashpot's damping ratio
+    double cohesion_pull = 0.0;              ///< p_N g between grains: N_c per kg [N/kg]
+    double wall_cohesion_pull = 0.0;         ///< p_N g between a grain and a wall [N/kg]
 };
 
 /// The pair's effective properties: m*, R*, E*, G* (a wall: infinite mass and radius, rigid).
@@ -99,6 +107,16 @@ struct ContactState {
 /// the rest.
 void contact_force(const ContactLaw& law, const PairProperties& pair, double time_step,
                    ContactState& state);
+
+/// The cohesive pull of a pair within reach (state.overlap <= 0): state.force, zero torque and
+/// springs, the spring's energy. `pull` is the pair's N_c [N].
+void cohesive_force(const ContactLaw& law, double pull, ContactState& state);
+
+/// How far apart (a negative overlap's size) a pair whose lighter grain has `mass` still
+/// pulls: N_c / k_n with N_c = `pull_per_mass` times the mass; 0 without cohesion.
+inline double cohesion_reach(const ContactLaw& law, double pull_per_mass, double mass) {
+    return pull_per_mass > 0.0 ? pull_per_mass * mass / law.normal_stiffness : 0.0;
+}
 
 /// The alpha of a Hertz contact's dashpot alpha sqrt(m* k(delta)) that rebounds with the
 /// coefficient of restitution e (0 < e <= 1): bisection on e(alpha), each e(alpha) from the

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace grainload::dem {
 
@@ -33,64 +34,125 @@ struct Pass {
     std::size_t bodies;
 };
 
-/// Sphere i's contacts with the spheres of other grains in its neighbour row.
+/// The contact of spheres a (of the lower id) and b, `offset` = x_a - x_b apart, evaluated:
+/// the force on a, its rolling torque and springs; `arm_a`, `arm_b` the contact point's
+/// distances from their centres. Apart (overlap <= 0) they are within cohesion's reach.
+ContactState pair_contact(const Pass& p, Index a, Index b, const Vec3& offset, double& arm_a,
+                          double& arm_b) {
+    const GrainSet& g = p.g;
+    const SphereSet& s = p.s;
+    const auto ga = static_cast<std::size_t>(s.grain[a]);
+    const auto gb = static_cast<std::size_t>(s.grain[b]);
+    const double touch = s.radius[a] + s.radius[b];
+    const double distance = offset.norm();
+    ContactState state;
+    state.normal = offset / distance;
+    state.overlap = touch - distance;
+    arm_a = s.radius[a] - 0.5 * state.overlap;
+    arm_b = s.radius[b] - 0.5 * state.overlap;
+    state.relative_velocity =
+        p.x.point_velocity[a] - p.x.point_velocity[b] -
+        (arm_a * g.angular_velocity[ga] + arm_b * g.angular_velocity[gb]).cross(state.normal);
+    if (state.overlap <= 0.0) {
+        cohesive_force(p.scene.law, p.scene.law.cohesion_pull * std::min(g.mass[ga], g.mass[gb]),
+                       state);
+        return state;
+    }
+    state.relative_rotation = g.angular_velocity[ga] - g.angular_velocity[gb];
+    springs_with(s.springs[a], s.id[b], state);
+    PairProperties pair = p.scene.body_pairs[static_cast<std::size_t>(g.body_id[ga]) * p.bodies +
+                                             static_cast<std::size_t>(g.body_id[gb])];
+    pair.mass = g.mass[ga] * g.mass[gb] / (g.mass[ga] + g.mass[gb]);
+    pair.radius = s.radius[a] * s.radius[b] / touch;
+    if (pair.rolling_friction > 0.0) {
+        const double ia = rolling_inertia(g.mass[ga], s.radius[a]);
+        const double ib = rolling_inertia(g.mass[gb], s.radius[b]);
+        pair.rolling_inertia = ia * ib / (ia + ib);
+    }
+    contact_force(p.scene.law, pair, p.dt, state);
+    return state;
+}
+
+/// Sphere i's contacts with the spheres of other grains in its neighbour row (and the pairs
+/// within cohesion's reach); returns the contacts.
 int gather_pairs(Pass& p, const particles::NeighbourList& neighbours, Index i) {
     const GrainSet& g = p.g;
     const SphereSet& s = p.s;
+    const ContactLaw& law = p.scene.law;
     int contacts = 0;
     for (const std::int32_t jj : neighbours.neighbours(i)) {
         const auto j = static_cast<Index>(jj);
-        const double reach = s.radius[i] + s.radius[j];
-        if (s.grain[i] == s.grain[j] ||
-            (s.position[i] - s.position[j]).squaredNorm() >= reach * reach) {
+        if (s.grain[i] == s.grain[j]) {
+            continue;
+        }
+        const Vec3 offset = s.position[i] - s.position[j];
+        double range = s.radius[i] + s.radius[j];
+        if (law.cohesion_pull > 0.0) {
+            range += cohesion_reach(law, law.cohesion_pull,
+                                    std::min(g.mass[static_cast<std::size_t>(s.grain[i])],
+                                             g.mass[static_cast<std::size_t>(s.grain[j])]));
+        }
+        if (offset.squaredNorm() >= range * range) {
             continue;
         }
         const bool owner = s.id[i] < s.id[j];
-        const Index a = owner ? i : j;
-        const Index b = owner ? j : i;
-        const auto ga = static_cast<std::size_t>(s.grain[a]);
-        const auto gb = static_cast<std::size_t>(s.grain[b]);
-        const Vec3 offset = s.position[a] - s.position[b];
-        const double distance = offset.norm();
-        ContactState state;
-        state.normal = offset / distance;
-        state.overlap = reach - distance;
-        const double arm_a = s.radius[a] - 0.5 * state.overlap;
-        const double arm_b = s.radius[b] - 0.5 * state.overlap;
-        state.relative_velocity =
-            p.x.point_velocity[a] - p.x.point_velocity[b] -
-            (arm_a * g.angular_velocity[ga] + arm_b * g.angular_velocity[gb]).cross(state.normal);
-        state.relative_rotation = g.angular_velocity[ga] - g.angular_velocity[gb];
-        springs_with(s.springs[a], s.id[b], state);
-        PairProperties pair =
-            p.scene.body_pairs[static_cast<std::size_t>(g.body_id[ga]) * p.bodies +
-                               static_cast<std::size_t>(g.body_id[gb])];
-        pair.mass = g.mass[ga] * g.mass[gb] / (g.mass[ga] + g.mass[gb]);
-        pair.radius = s.radius[a] * s.radius[b] / reach;
-        if (pair.rolling_friction > 0.0) {
-            const double ia = rolling_inertia(g.mass[ga], s.radius[a]);
-            const double ib = rolling_inertia(g.mass[gb], s.radius[b]);
-            pair.rolling_inertia = ia * ib / (ia + ib);
-        }
-        contact_force(p.scene.law, pair, p.dt, state);
+        double arm_a = 0.0;
+        double arm_b = 0.0;
+        const ContactState state = pair_contact(p, owner ? i : j, owner ? j : i,
+                                                owner ? offset : Vec3(-offset), arm_a, arm_b);
         // Torque of the force on a at its contact point, -arm_a n from a's centre; b's by the
         // same force reversed at +arm_b n from b's centre: both are -arm n x F.
         const Vec3 turn = state.normal.cross(state.force);
         const auto at = static_cast<std::size_t>(i);
+        const bool touching = state.overlap > 0.0;
         if (owner) {
             p.x.force[at] += state.force;
             p.x.torque[at] += state.torque - arm_a * turn;
             p.x.energy[at] += state.elastic_energy;
-            p.x.kept[at].push_back({s.id[j], state.spring, state.rolling});
+            if (touching) {
+                p.x.kept[at].push_back({s.id[j], state.spring, state.rolling});
+            }
         } else {
             p.x.force[at] -= state.force;
             p.x.torque[at] -= state.torque + arm_b * turn;
         }
-        ++contacts;
-        p.x.deepest[at] =
-            std::max(p.x.deepest[at], state.overlap / std::min(s.radius[i], s.radius[j]));
+        if (touching) {
+            ++contacts;
+            p.x.deepest[at] =
+                std::max(p.x.deepest[at], state.overlap / std::min(s.radius[i], s.radius[j]));
+        }
     }
     return contacts;
+}
+
+/// Sphere i's contact with face f of wall w, evaluated, when it touches the face or lies within
+/// cohesion's reach of it (`reach`); `arm` the contact point's distance from its centre.
+std::optional<ContactState> wall_contact(const Pass& p, const PlaneWall::Face& face,
+                                         std::uint64_t key, Index i, double reach, double& arm) {
+    const GrainSet& g = p.g;
+    const SphereSet& s = p.s;
+    const auto owner = static_cast<std::size_t>(s.grain[i]);
+    const auto at = static_cast<std::size_t>(i);
+    ContactState state;
+    if (!touches(face, s.position[i], s.radius[i] + reach, state.overlap, state.normal)) {
+        return std::nullopt;
+    }
+    state.overlap -= reach;
+    arm = s.radius[i] - 0.5 * state.overlap;
+    state.relative_velocity =
+        p.x.point_velocity[at] - arm * g.angular_velocity[owner].cross(state.normal);
+    if (state.overlap <= 0.0) {
+        cohesive_force(p.scene.law, p.scene.law.wall_cohesion_pull * g.mass[owner], state);
+        return state;
+    }
+    state.relative_rotation = g.angular_velocity[owner];
+    springs_with(s.springs[at], key, state);
+    PairProperties pair = p.scene.body_walls[static_cast<std::size_t>(g.body_id[owner])];
+    pair.mass = g.mass[owner];
+    pair.radius = s.radius[i];
+    pair.rolling_inertia = rolling_inertia(g.mass[owner], s.radius[i]);
+    contact_force(p.scene.law, pair, p.dt, state);
+    return state;
 }
 
 /// Sphere i's contacts with the walls' faces: force and torque added to its grain's, springs
@@ -101,36 +163,29 @@ int gather_walls(Pass& p, const std::vector<PlaneWall>& walls, Index i, Vec3* on
     const SphereSet& s = p.s;
     const auto owner = static_cast<std::size_t>(s.grain[i]);
     const auto at = static_cast<std::size_t>(i);
+    const double reach = cohesion_reach(p.scene.law, p.scene.law.wall_cohesion_pull, g.mass[owner]);
     int contacts = 0;
     for (std::size_t w = 0; w < walls.size(); ++w) {
         if (walls[w].removed) {
             continue;
         }
         for (std::size_t f = 0; f < walls[w].faces.size(); ++f) {
-            ContactState state;
-            if (!touches(walls[w].faces[f], s.position[i], s.radius[i], state.overlap,
-                         state.normal)) {
+            const std::uint64_t key = kWallPartner | (w << 8) | f;
+            double arm = 0.0;
+            const auto state = wall_contact(p, walls[w].faces[f], key, i, reach, arm);
+            if (!state) {
                 continue;
             }
-            const double arm = s.radius[i] - 0.5 * state.overlap;
-            state.relative_velocity =
-                p.x.point_velocity[at] - arm * g.angular_velocity[owner].cross(state.normal);
-            state.relative_rotation = g.angular_velocity[owner];
-            const std::uint64_t key = kWallPartner | (w << 8) | f;
-            springs_with(s.springs[at], key, state);
-            PairProperties pair = p.scene.body_walls[static_cast<std::size_t>(g.body_id[owner])];
-            pair.mass = g.mass[owner];
-            pair.radius = s.radius[i];
-            pair.rolling_inertia = rolling_inertia(g.mass[owner], s.radius[i]);
-            contact_force(p.scene.law, pair, p.dt, state);
-            g.force[owner] += state.force;
-            g.torque[owner] += state.torque - arm * state.normal.cross(state.force);
-            g.torque[owner] += s.arm[at].cross(state.force);
-            on_walls[w] -= state.force;
-            p.x.energy[at] += state.elastic_energy;
-            p.x.deepest[at] = std::max(p.x.deepest[at], state.overlap / s.radius[i]);
-            p.x.kept[at].push_back({key, state.spring, state.rolling});
-            ++contacts;
+            g.force[owner] += state->force;
+            g.torque[owner] += state->torque - arm * state->normal.cross(state->force);
+            g.torque[owner] += s.arm[at].cross(state->force);
+            on_walls[w] -= state->force;
+            p.x.energy[at] += state->elastic_energy;
+            if (state->overlap > 0.0) {
+                p.x.deepest[at] = std::max(p.x.deepest[at], state->overlap / s.radius[i]);
+                p.x.kept[at].push_back({key, state->spring, state->rolling});
+                ++contacts;
+            }
         }
     }
     return contacts;

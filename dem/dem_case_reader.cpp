@@ -23,7 +23,36 @@ double coefficient(const io::CaseTable& table, std::string_view key, double fall
     return value;
 }
 
-ContactLaw read_contact_law(const io::CaseTable& dem) {
+/// Lazarevic, Dvornik & Fresl's capped cohesive spring: N_c per kilogram of the lighter grain,
+/// p_N g, between grains and with walls; the linear law only (the cap is a reach N_c / k_n).
+void read_cohesion(const io::CaseTable& table, double gravity, ContactLaw& law) {
+    const auto share = [&table](std::string_view key, double fallback) {
+        const double value = coefficient(table, key, fallback);
+        if (value > 1.0) {
+            table.fail(key, "expected a share of the lighter grain's weight in [0, 1]: a grain "
+                            "could hang from another");
+        }
+        return value;
+    };
+    const double grains = share("cohesion_share", 0.0);
+    const double walls = share("wall_cohesion_share", grains);
+    if (grains > 0.0 || walls > 0.0) {
+        const std::string_view key =
+            table.has("cohesion_share") ? "cohesion_share" : "wall_cohesion_share";
+        if (law.model != ContactLaw::Model::linear) {
+            table.fail(key, "the capped cohesive spring is the linear law's: expected law = "
+                            "\"linear\"");
+        }
+        if (!(gravity > 0.0)) {
+            table.fail(key, "the cohesive pull is a share of the grains' weight: expected "
+                            "gravity in [case]");
+        }
+    }
+    law.cohesion_pull = grains * gravity;
+    law.wall_cohesion_pull = walls * gravity;
+}
+
+ContactLaw read_contact_law(const io::CaseTable& dem, double gravity) {
     const io::CaseTable table = dem.table("contact");
     ContactLaw law;
     const std::string model = table.choice("law", {"linear", "hertz_mindlin"});
@@ -69,6 +98,7 @@ ContactLaw read_contact_law(const io::CaseTable& dem) {
             law.hertz_alpha = hertz_restitution_damping(e);
         }
     }
+    read_cohesion(table, gravity, law);
     return law;
 }
 
@@ -248,7 +278,7 @@ DemSettings read_dem_settings(const io::CaseTable& root,
     if (dem.has("skin")) {
         settings.skin = dem.positive_quantity("skin", dim::kLength);
     }
-    settings.law = read_contact_law(dem);
+    settings.law = read_contact_law(dem, scene.gravity.norm());
     const io::CaseTable contact = dem.table("contact");
     settings.damping_where = contact.where(contact.has("gamma_n") ? "gamma_n" : "law");
     for (const io::CaseTable& table : dem.array_of_tables("body")) {

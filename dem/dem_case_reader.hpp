@@ -39,7 +39,7 @@ inline constexpr std::array<io::KeySpec, 4> kDemKeys{{
 }};
 
 /// The keys of [dem.contact].
-inline constexpr std::array<io::KeySpec, 11> kDemContactKeys{{
+inline constexpr std::array<io::KeySpec, 13> kDemContactKeys{{
     {"law", "`linear` or `hertz_mindlin`", "",
      "linear: a Kelvin-Voigt spring and dashpot; hertz_mindlin: Hertz's normal and Mindlin's "
      "tangential stiffness from the grains' E and nu"},
@@ -57,6 +57,11 @@ inline constexpr std::array<io::KeySpec, 11> kDemContactKeys{{
     {"wall_rolling_friction", "number >= 0", "rolling_friction", "mu_r between grain and wall"},
     {"rolling_damping", "number in [0, 1]", "0.3",
      "the rolling dashpot's damping ratio below full mobilisation", 0.3},
+    {"cohesion_share", "number in [0, 1]", "0",
+     "`linear` only: grains parting pull up to this share of the lighter one's weight "
+     "(Lazarevic et al. 2002)"},
+    {"wall_cohesion_share", "number in [0, 1]", "cohesion_share",
+     "the same between a grain and a wall, of the grain's weight"},
 }};
 
 /// The keys of each [[dem.body]].

@@ -30,12 +30,25 @@ double largest_radius(const DemSettings& settings) {
     return largest;
 }
 
+/// The pairs' neighbour range: two of the largest radii, and the reach of cohesion between the
+/// heaviest grains (its pull grows with the lighter grain's mass).
+double pair_range(const DemSettings& settings, const materials::MaterialLibrary& materials) {
+    double heaviest = 0.0;
+    for (const BodySettings& body : settings.bodies) {
+        heaviest = std::max(heaviest,
+                            body.spheres * sphere_mass(body.radius_max,
+                                                       materials[body.material].elastic().density));
+    }
+    return 2.0 * largest_radius(settings) +
+           cohesion_reach(settings.law, settings.law.cohesion_pull, heaviest);
+}
+
 } // namespace
 
 DemModel::DemModel(DemSettings settings, const io::SceneSettings& scene,
                    const materials::MaterialLibrary& materials)
     : settings_(std::move(settings)), gravity_(scene.gravity),
-      neighbours_(2.0 * largest_radius(settings_), skin_of(settings_, largest_radius(settings_)),
+      neighbours_(pair_range(settings_, materials), skin_of(settings_, largest_radius(settings_)),
                   3) {
     for (std::size_t b = 0; b < settings_.bodies.size(); ++b) {
         const BodySettings& body = settings_.bodies[b];
@@ -84,6 +97,7 @@ DemModel::DemModel(DemSettings settings, const io::SceneSettings& scene,
                                         [] { return 0.0; }}));
     }
     evaluate();
+    start_energy_ = energy().total();
 }
 
 std::unique_ptr<DemModel> DemModel::from_case(const io::CaseTable& root,

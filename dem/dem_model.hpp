@@ -105,6 +105,7 @@ class DemModel final : public io::Stepper, public io::Reporter {
     /// The clumps' angular momentum between a step's two half kicks.
     std::vector<Vec3> momentum_;
     std::vector<Vec3> start_position_; ///< by grain id, for the potential of gravity
+    double start_energy_ = 0.0;        ///< DemEnergy::total() at the start
     std::vector<PlaneWall> walls_;
     particles::NeighbourList neighbours_;
     ContactBooks books_;
