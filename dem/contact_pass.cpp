@@ -112,6 +112,10 @@ int gather_pairs(Pass& p, const particles::NeighbourList& neighbours, Index i) {
             if (touching) {
                 p.x.kept[at].push_back({s.id[j], state.spring, state.rolling});
             }
+            if (p.x.record && (touching || state.force != Vec3::Zero())) {
+                p.x.records[at].push_back({s.position[i], s.position[j], state.force, state.normal,
+                                           state.overlap, false});
+            }
         } else {
             p.x.force[at] -= state.force;
             p.x.torque[at] -= state.torque + arm_b * turn;
@@ -181,6 +185,10 @@ int gather_walls(Pass& p, const std::vector<PlaneWall>& walls, Index i, Vec3* on
             g.torque[owner] += s.arm[at].cross(state->force);
             on_walls[w] -= state->force;
             p.x.energy[at] += state->elastic_energy;
+            if (p.x.record && (state->overlap > 0.0 || state->force != Vec3::Zero())) {
+                p.x.records[at].push_back({s.position[i], s.position[i] - arm * state->normal,
+                                           state->force, state->normal, state->overlap, true});
+            }
             if (state->overlap > 0.0) {
                 p.x.deepest[at] = std::max(p.x.deepest[at], state->overlap / s.radius[i]);
                 p.x.kept[at].push_back({key, state->spring, state->rolling});
@@ -205,6 +213,7 @@ ContactBooks evaluate_contacts(GrainSet& g, SphereSet& s,
     scratch.energy.resize(count);
     scratch.deepest.resize(count);
     scratch.kept.resize(count);
+    scratch.records.resize(scratch.record ? count : 0);
     const std::size_t wall_count = walls.size();
     scratch.on_walls.assign(static_cast<std::size_t>(g.size()) * wall_count, Vec3::Zero());
     s.first_of_grains(g.size(), scratch.first);
@@ -218,6 +227,9 @@ ContactBooks evaluate_contacts(GrainSet& g, SphereSet& s,
         p.x.energy[i] = 0.0;
         p.x.deepest[i] = 0.0;
         p.x.kept[i].clear();
+        if (p.x.record) {
+            p.x.records[i].clear();
+        }
     }
     Index pair_entries = 0;
 #pragma omp parallel for schedule(static) reduction(+ : pair_entries)

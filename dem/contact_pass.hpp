@@ -31,9 +31,25 @@ struct ContactScene {
     Vec3 gravity;
 };
 
+/// One contact as the frames draw it: a line from the centre of the sphere it acts on to its
+/// partner's centre (a wall's: the contact point), the force on that sphere, the normal from
+/// the partner to it, and the overlap (negative: a cohesive pull across a gap).
+struct ContactRecord {
+    Vec3 from = Vec3::Zero();
+    Vec3 to = Vec3::Zero();
+    Vec3 force = Vec3::Zero();
+    Vec3 normal = Vec3::Zero();
+    double overlap = 0.0;
+    bool wall = false;
+};
+
 /// The pass's per-sphere buffers, kept from one evaluation to the next so that a step
 /// allocates nothing once the scene's size has settled.
 struct ContactScratch {
+    /// Whether the pass keeps `records`: each sphere's contacts (a pair in the row of its
+    /// lower id), for the frames' contacts block.
+    bool record = false;
+    std::vector<std::vector<ContactRecord>> records;
     std::vector<Vec3> point_velocity; ///< each sphere centre's velocity, v + omega x arm
     std::vector<Vec3> force;          ///< each sphere's pair forces
     std::vector<Vec3> torque;         ///< about its centre

@@ -275,6 +275,7 @@ DemSettings read_dem_settings(const io::CaseTable& root,
     }
     settings.impact_velocity = dem.positive_quantity_or(
         "impact_velocity", dim::kVelocity, io::default_value(kDemKeys, "impact_velocity"));
+    settings.contact_forces = dem.boolean_or("contact_forces", false);
     if (dem.has("skin")) {
         settings.skin = dem.positive_quantity("skin", dim::kLength);
     }
@@ -284,6 +285,10 @@ DemSettings read_dem_settings(const io::CaseTable& root,
     for (const io::CaseTable& table : dem.array_of_tables("body")) {
         BodySettings body = read_body(table, materials);
         io::refuse_repeated_name(table, settings.bodies, body.name, "body", &BodySettings::name);
+        if (settings.contact_forces && body.name == "contacts") {
+            table.fail("name", "with contact_forces the frames' contacts block is called "
+                               "\"contacts\": expected another name");
+        }
         settings.bodies.push_back(std::move(body));
     }
     if (settings.bodies.empty()) {

@@ -25,7 +25,7 @@ class MaterialLibrary;
 namespace grainload::dem {
 
 /// The keys of [dem] (docs/user-guide/dem.md).
-inline constexpr std::array<io::KeySpec, 4> kDemKeys{{
+inline constexpr std::array<io::KeySpec, 5> kDemKeys{{
     {"time_step", "time", "the contact time / steps_per_contact",
      "a fixed step instead of the one from the contact time"},
     {"steps_per_contact", "number in [10, 10000]", "100",
@@ -36,6 +36,8 @@ inline constexpr std::array<io::KeySpec, 4> kDemKeys{{
      1.0},
     {"skin", "length", "0.4 × the largest radius",
      "the neighbour list's Verlet skin, rebuilt when a grain has moved half of it"},
+    {"contact_forces", "boolean", "false",
+     "frames carry a `contacts` block: a line per contact with its force (force chains)"},
 }};
 
 /// The keys of [dem.contact].
@@ -136,6 +138,7 @@ struct DemSettings {
     double steps_per_contact = 0.0;
     double impact_velocity = 0.0;
     std::optional<double> skin;
+    bool contact_forces = false;
     ContactLaw law;
     std::vector<BodySettings> bodies;
     std::vector<PlaneWall> walls;

@@ -50,6 +50,7 @@ DemModel::DemModel(DemSettings settings, const io::SceneSettings& scene,
     : settings_(std::move(settings)), gravity_(scene.gravity),
       neighbours_(pair_range(settings_, materials), skin_of(settings_, largest_radius(settings_)),
                   3) {
+    scratch_.record = settings_.contact_forces;
     for (std::size_t b = 0; b < settings_.bodies.size(); ++b) {
         const BodySettings& body = settings_.bodies[b];
         const auto& elastic = materials[body.material].elastic();

@@ -22,6 +22,32 @@ void append3(io::FieldArray& array, const Vec3& v) {
     array.values.insert(array.values.end(), v.data(), v.data() + 3);
 }
 
+/// The contacts as lines, sphere by sphere in order: force chains to colour by normal_force.
+io::Block contact_block(const std::vector<std::vector<ContactRecord>>& records) {
+    io::Block block;
+    block.name = "contacts";
+    block.kind = io::Block::Kind::lines;
+    io::FieldArray force{"force", 3, {}}, normal{"normal_force", 1, {}};
+    io::FieldArray tangential{"tangential_force", 1, {}}, overlap{"overlap", 1, {}};
+    io::FieldArray wall{"wall", 1, {}};
+    for (const auto& row : records) {
+        for (const ContactRecord& contact : row) {
+            const auto first = static_cast<Index>(block.points.size());
+            block.points.push_back(contact.from);
+            block.points.push_back(contact.to);
+            block.cells.push_back({first, first + 1, -1, -1});
+            const double pressing = contact.force.dot(contact.normal);
+            append3(force, contact.force);
+            normal.values.push_back(pressing);
+            tangential.values.push_back((contact.force - pressing * contact.normal).norm());
+            overlap.values.push_back(contact.overlap);
+            wall.values.push_back(contact.wall ? 1.0 : 0.0);
+        }
+    }
+    block.cell_arrays = {force, normal, tangential, overlap, wall};
+    return block;
+}
+
 } // namespace
 
 void DemModel::append_blocks(io::Frame& frame) const {
@@ -51,6 +77,9 @@ void DemModel::append_blocks(io::Frame& frame) const {
         }
         block.point_arrays = {radius, velocity, spin, orientation, contacts, body, grain};
         frame.blocks.push_back(std::move(block));
+    }
+    if (settings_.contact_forces) {
+        frame.blocks.push_back(contact_block(scratch_.records));
     }
     write_wall_rows(frame.time);
     write_part_rows(frame.time);

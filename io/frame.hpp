@@ -18,14 +18,16 @@ struct FieldArray {
     std::vector<double> values; ///< size = components * count
 };
 
-/// One block of an output frame: an SPH body (points only) or a shell mesh (quads/triangles).
-/// The writers know nothing of sph/ or fem/: each module fills blocks of its own.
+/// One block of an output frame: an SPH body or DEM grains (points only), a shell mesh
+/// (quads/triangles), or lines between points (a DEM scene's contacts, one line per contact).
+/// The writers know nothing of sph/, dem/ or fem/: each module fills blocks of its own.
 struct Block {
-    enum class Kind { particles, shell };
+    enum class Kind { particles, shell, lines };
     std::string name;
     Kind kind = Kind::particles;
     std::vector<Vec3> points;
-    /// Shell cells; a triangle repeats no node and has cell[3] == -1.
+    /// Shell cells (a triangle repeats no node and has cell[3] == -1), or lines (cell[0] to
+    /// cell[1], cell[2] == cell[3] == -1).
     std::vector<std::array<Index, 4>> cells;
     std::vector<FieldArray> point_arrays;
     std::vector<FieldArray> cell_arrays;

@@ -76,6 +76,34 @@ void add_arrays(vtkDataSetAttributes* attributes, const std::vector<FieldArray>&
     }
 }
 
+/// Points (each a vertex) and lines are poly data (.vtp); shells an unstructured grid (.vtu).
+const char* extension(const Block& block) {
+    return block.kind == Block::Kind::shell ? ".vtu" : ".vtp";
+}
+
+void write_poly_block(const Block& block, const std::string& path) {
+    vtkNew<vtkPolyData> poly;
+    poly->SetPoints(to_vtk_points(block.points));
+    vtkNew<vtkCellArray> cells;
+    if (block.kind == Block::Kind::lines) {
+        for (const auto& cell : block.cells) {
+            const vtkIdType ends[2] = {cell[0], cell[1]};
+            cells->InsertNextCell(2, ends);
+        }
+        poly->SetLines(cells);
+    } else {
+        for (vtkIdType i = 0; i < static_cast<vtkIdType>(block.points.size()); ++i) {
+            cells->InsertNextCell(1, &i);
+        }
+        poly->SetVerts(cells);
+    }
+    add_arrays(poly->GetPointData(), block.point_arrays);
+    add_arrays(poly->GetCellData(), block.cell_arrays);
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    writer->SetInputData(poly);
+    configure_and_write(writer, path);
+}
+
 } // namespace
 
 VtkFrameWriter::VtkFrameWriter(std::string directory, std::string case_name)
@@ -90,18 +118,8 @@ std::string VtkFrameWriter::frame_stem(std::size_t index) const {
 }
 
 void VtkFrameWriter::write_block(const Block& block, const std::string& path) const {
-    if (block.kind == Block::Kind::particles) {
-        vtkNew<vtkPolyData> poly;
-        poly->SetPoints(to_vtk_points(block.points));
-        vtkNew<vtkCellArray> vertices;
-        for (vtkIdType i = 0; i < static_cast<vtkIdType>(block.points.size()); ++i) {
-            vertices->InsertNextCell(1, &i);
-        }
-        poly->SetVerts(vertices);
-        add_arrays(poly->GetPointData(), block.point_arrays);
-        vtkNew<vtkXMLPolyDataWriter> writer;
-        writer->SetInputData(poly);
-        configure_and_write(writer, path);
+    if (block.kind != Block::Kind::shell) {
+        write_poly_block(block, path);
     } else {
         vtkNew<vtkUnstructuredGrid> grid;
         grid->SetPoints(to_vtk_points(block.points));
@@ -128,9 +146,8 @@ void VtkFrameWriter::write_multiblock_index(const Frame& frame, std::size_t inde
                "  <vtkMultiBlockDataSet>\n";
         for (std::size_t b = 0; b < frame.blocks.size(); ++b) {
             const auto& block = frame.blocks[b];
-            const char* extension = block.kind == Block::Kind::particles ? ".vtp" : ".vtu";
             out << "    <DataSet index=\"" << b << "\" name=\"" << block.name << "\" file=\""
-                << stem << '/' << block.name << extension << "\"/>\n";
+                << stem << '/' << block.name << extension(block) << "\"/>\n";
         }
         out << "  </vtkMultiBlockDataSet>\n</VTKFile>\n";
     });
@@ -163,8 +180,7 @@ std::string VtkFrameWriter::write(const Frame& frame) {
     const std::string piece_directory = directory_ + "/frames/" + stem;
     std::filesystem::create_directories(piece_directory);
     for (const auto& block : frame.blocks) {
-        const char* extension = block.kind == Block::Kind::particles ? ".vtp" : ".vtu";
-        write_block(block, piece_directory + "/" + block.name + extension);
+        write_block(block, piece_directory + "/" + block.name + extension(block));
     }
     write_multiblock_index(frame, index);
     times_.push_back(frame.time);

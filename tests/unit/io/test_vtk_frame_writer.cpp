@@ -6,8 +6,10 @@
 #include <gtest/gtest.h>
 #include <sstream>
 #include <vtkCellData.h>
+#include <vtkCellType.h>
 #include <vtkDataArray.h>
 #include <vtkDataSet.h>
+#include <vtkIdList.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkPointData.h>
 #include <vtkSmartPointer.h>
@@ -33,7 +35,11 @@ Frame sample_frame(double time) {
     wall.cells = {{0, 1, 2, 3}, {1, 4, 2, -1}};
     wall.point_arrays.push_back({"displacement", 3, std::vector<double>(15, time)});
     wall.cell_arrays.push_back({"thickness", 1, {0.01, 0.02}});
-    return Frame{time, {sand, wall}};
+    Block contacts{"contacts", Block::Kind::lines, {}, {}, {}, {}};
+    contacts.points = {Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(1, 0, 1), Vec3(1, 1, 1)};
+    contacts.cells = {{0, 1, -1, -1}, {2, 3, -1, -1}};
+    contacts.cell_arrays.push_back({"force", 3, {0, 0, time, 1, 2, 3}});
+    return Frame{time, {sand, wall, contacts}};
 }
 
 std::string read_text(const std::string& path) {
@@ -70,8 +76,8 @@ TEST(VtkFrameWriter, FramesReadBackWithVtkReadersUnchanged) {
     reader->Update();
     auto* blocks = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
     ASSERT_NE(blocks, nullptr);
-    ASSERT_EQ(blocks->GetNumberOfBlocks(), 2u);
-    for (unsigned b = 0; b < 2; ++b) {
+    ASSERT_EQ(blocks->GetNumberOfBlocks(), 3u);
+    for (unsigned b = 0; b < 3; ++b) {
         auto* data = vtkDataSet::SafeDownCast(blocks->GetBlock(b));
         ASSERT_NE(data, nullptr);
         const Block& block = expected.blocks[b];
@@ -89,6 +95,17 @@ TEST(VtkFrameWriter, FramesReadBackWithVtkReadersUnchanged) {
         }
     }
     EXPECT_EQ(vtkDataSet::SafeDownCast(blocks->GetBlock(1))->GetNumberOfCells(), 2);
+    // The contacts' block holds two lines, each between its two points.
+    auto* lines = vtkDataSet::SafeDownCast(blocks->GetBlock(2));
+    ASSERT_EQ(lines->GetNumberOfCells(), 2);
+    for (vtkIdType c = 0; c < 2; ++c) {
+        EXPECT_EQ(lines->GetCellType(c), VTK_LINE);
+        vtkNew<vtkIdList> ends;
+        lines->GetCellPoints(c, ends);
+        ASSERT_EQ(ends->GetNumberOfIds(), 2);
+        EXPECT_EQ(ends->GetId(0), 2 * c);
+        EXPECT_EQ(ends->GetId(1), 2 * c + 1);
+    }
 
     const std::string pvd = read_text(directory + "/demo.pvd");
     EXPECT_NE(pvd.find("timestep=\"0\" file=\"frames/demo_000000.vtm\""), std::string::npos);
