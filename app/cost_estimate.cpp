@@ -270,9 +270,9 @@ CostEstimate estimate_cost(const Scene& scene, int threads, const Calibration& c
     }
     for (const auto& stepper : scene.steppers) {
         if (const auto* dem = dynamic_cast<const dem::DemModel*>(stepper.get())) {
-            e.dem_grains += dem->point_count();
+            e.dem_grains += dem->most_grains(scene.settings.end_time);
             e.dem_grain_steps +=
-                static_cast<double>(dem->point_count()) * static_cast<double>(plan.steps);
+                dem->grain_steps(static_cast<double>(plan.steps), scene.settings.end_time);
         }
     }
     add_output(plan, calibration, e);

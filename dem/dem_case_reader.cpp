@@ -1,11 +1,13 @@
 #include "dem/dem_case_reader.hpp"
 
+#include "io/case_error.hpp"
 #include "io/case_table.hpp"
 #include "io/named_index.hpp"
 #include "io/scene_settings.hpp"
 #include "materials/material_library.hpp"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -137,6 +139,13 @@ void read_placement(const io::CaseTable& table, BodySettings& body) {
         body.where = table.where("centre");
         return;
     }
+    if (!table.has("min") && !table.has("max") && !table.has("count")) {
+        // No grains at the start: a [[dem.source]] must rain them in (checked once the
+        // sources are read).
+        body.count = 0;
+        body.where = table.where("name");
+        return;
+    }
     body.min = table.vector("min", dim::kLength);
     body.max = table.vector("max", dim::kLength);
     body.count = table.integer("count");
@@ -238,6 +247,63 @@ PlaneWall read_wall(const io::CaseTable& table, int up) {
     return wall;
 }
 
+SourceSettings read_source(const io::CaseTable& table, const std::vector<BodySettings>& bodies) {
+    SourceSettings source;
+    source.name = table.string("name");
+    source.body = io::index_by_name(
+        table, "body", bodies, [](const BodySettings& b) { return b.name; }, "[[dem.body]]");
+    const BodySettings& body = bodies[static_cast<std::size_t>(source.body)];
+    if (body.spheres != 1) {
+        table.fail("body", "a source rains spherical grains: expected a body of spheres = 1");
+    }
+    source.min = table.vector("min", dim::kLength);
+    source.max = table.vector("max", dim::kLength);
+    if (!((source.max - source.min).array() >= 2.0 * body.radius_max).all()) {
+        table.fail("max", "the box must hold a grain of the body's largest radius: expected max "
+                          "- min >= 2 radius_max on every axis");
+    }
+    source.rate = table.positive_quantity("rate", dim::kFrequency);
+    if (table.has("count")) {
+        source.count = table.integer("count");
+        if (*source.count < 1) {
+            table.fail("count", "expected at least one grain");
+        }
+    }
+    source.start = table.positive_quantity_or("start", dim::kTime, 0.0, true);
+    source.end =
+        table.positive_quantity_or("end", dim::kTime, std::numeric_limits<double>::infinity());
+    if (!(source.end > source.start)) {
+        table.fail("end", "expected an end after the start");
+    }
+    source.velocity = table.vector_or("velocity", dim::kVelocity, Vec3::Zero());
+    const std::int64_t seed = table.integer_or("seed", 1);
+    if (seed < 0) {
+        table.fail("seed", "expected an integer >= 0");
+    }
+    source.seed = static_cast<std::uint64_t>(seed);
+    return source;
+}
+
+/// The sources of [[dem.source]]; a body with no grains at the start needs one.
+void read_sources(const io::CaseTable& dem, DemSettings& settings) {
+    for (const io::CaseTable& table : dem.array_of_tables("source")) {
+        SourceSettings source = read_source(table, settings.bodies);
+        io::refuse_repeated_name(table, settings.sources, source.name, "source",
+                                 &SourceSettings::name);
+        settings.sources.push_back(std::move(source));
+    }
+    for (std::size_t b = 0; b < settings.bodies.size(); ++b) {
+        const bool filled = std::any_of(
+            settings.sources.begin(), settings.sources.end(),
+            [b](const SourceSettings& source) { return source.body == static_cast<int>(b); });
+        if (settings.bodies[b].count == 0 && !settings.bodies[b].centre && !filled) {
+            throw io::CaseError(settings.bodies[b].where +
+                                ": a body without grains at the start: expected a centre, or "
+                                "min, max and count, or a [[dem.source]] that fills it");
+        }
+    }
+}
+
 } // namespace
 
 /// The sinks of [[dem.sink]], each body's grain size the mean diameter of its radii.
@@ -299,6 +365,7 @@ DemSettings read_dem_settings(const io::CaseTable& root,
         io::refuse_repeated_name(table, settings.walls, wall.name, "wall", &PlaneWall::name);
         settings.walls.push_back(std::move(wall));
     }
+    read_sources(dem, settings);
     settings.sinks = read_sinks(dem, settings, materials, scene);
     return settings;
 }

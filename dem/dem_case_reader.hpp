@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -76,8 +77,9 @@ inline constexpr std::array<io::KeySpec, 16> kDemBodyKeys{{
      "radii drawn uniformly in [radius_min, radius_max]"},
     {"radius_max", "length", "required unless radius", "with radius_min"},
     {"count", "integer >= 1", "required with min and max", "grains placed at random in the box"},
-    {"min", "length vector", "required unless centre", "the lower corner of the box they fill"},
-    {"max", "length vector", "required unless centre", "the upper corner"},
+    {"min", "length vector", "required unless centre or a source",
+     "the lower corner of the box they fill"},
+    {"max", "length vector", "required unless centre or a source", "the upper corner"},
     {"centre", "length vector", "none", "instead of a box: one grain with its centre here"},
     {"spheres", "integer in [1, 16]", "1",
      "spheres per grain: 2 or more make a rigid clump of equal spheres on one axis", 1.0},
@@ -110,6 +112,20 @@ inline constexpr std::array<io::KeySpec, 11> kDemWallKeys{{
     {"remove_at", "time", "never", "the wall leaves the scene at this time (a gate that opens)"},
 }};
 
+/// The keys of each [[dem.source]].
+inline constexpr std::array<io::KeySpec, 10> kDemSourceKeys{{
+    {"name", "string", "", "names the source in summary.json and the log"},
+    {"body", "string", "", "the [[dem.body]] whose grains it rains in (spheres = 1)"},
+    {"min", "length vector", "", "the lower corner of the box grains appear in"},
+    {"max", "length vector", "", "the upper corner"},
+    {"rate", "frequency", "", "grains per second"},
+    {"count", "integer >= 1", "none: until end", "grains in all"},
+    {"start", "time", "0 s", "when it begins"},
+    {"end", "time", "never", "when it stops"},
+    {"velocity", "velocity vector", "0 m/s", "each grain's velocity as it appears"},
+    {"seed", "integer >= 0", "1", "the draws' seed: equal seeds, equal arrivals", 1.0},
+}};
+
 /// One [[dem.body]] as read.
 struct BodySettings {
     std::string name;
@@ -132,6 +148,21 @@ struct BodySettings {
     std::string where;
 };
 
+/// One [[dem.source]] as read: grains of `body` appear at `rate` per second in the box
+/// [min, max] from `start` to `end`, `count` in all.
+struct SourceSettings {
+    std::string name;
+    int body = -1;
+    Vec3 min = Vec3::Zero();
+    Vec3 max = Vec3::Zero();
+    double rate = 0.0;
+    std::optional<Index> count;
+    double start = 0.0;
+    double end = std::numeric_limits<double>::infinity();
+    Vec3 velocity = Vec3::Zero();
+    std::uint64_t seed = 1;
+};
+
 /// The [dem] tables as read: what DemModel is built from.
 struct DemSettings {
     std::optional<double> time_step;
@@ -142,6 +173,7 @@ struct DemSettings {
     ContactLaw law;
     std::vector<BodySettings> bodies;
     std::vector<PlaneWall> walls;
+    std::vector<SourceSettings> sources;
     /// [[dem.sink]]: the regions grains leave the scene through.
     std::shared_ptr<particles::SinkSet> sinks;
     /// Where the case gives time_step: a step too long for the contacts is refused there.

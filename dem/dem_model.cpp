@@ -89,13 +89,20 @@ DemModel::DemModel(DemSettings settings, const io::SceneSettings& scene,
     walls_ = settings_.walls;
     start_position_ = grains_.position;
     sinks_ = settings_.sinks ? settings_.sinks : std::make_shared<particles::SinkSet>();
+    sources_ = std::make_shared<GrainSources>(settings_.sources, settings_.bodies, body_density_,
+                                              spheres_, walls_);
     if (!sinks_->empty()) {
         parts_.add(sinks_);
+    }
+    if (!sources_->empty()) {
+        parts_.add(sources_);
+    }
+    if (!sinks_->empty() || !sources_->empty()) {
         parts_.add(std::make_shared<particles::MassAudit>(
             grains_.total_mass(), 3,
             particles::MassAudit::Books{[this] { return grains_.total_mass(); },
                                         [this] { return sinks_->discharged(); },
-                                        [] { return 0.0; }}));
+                                        [this] { return sources_->created_mass(); }}));
     }
     evaluate();
     start_energy_ = energy().total();
@@ -156,6 +163,35 @@ bool DemModel::over_damped() const {
         }
     }
     return false;
+}
+
+namespace {
+
+/// The grains `source` makes by `end_time`.
+double made_by(const SourceSettings& source, double end_time) {
+    const double open = std::max(std::min(source.end, end_time) - source.start, 0.0);
+    const double made = std::floor(source.rate * open);
+    return source.count ? std::min(made, static_cast<double>(*source.count)) : made;
+}
+
+} // namespace
+
+Index DemModel::most_grains(double end_time) const {
+    double grains = static_cast<double>(grains_.size());
+    for (const SourceSettings& source : settings_.sources) {
+        grains += made_by(source, end_time);
+    }
+    return static_cast<Index>(grains);
+}
+
+double DemModel::grain_steps(double steps, double end_time) const {
+    double sum = static_cast<double>(grains_.size()) * steps;
+    for (const SourceSettings& source : settings_.sources) {
+        const double made = made_by(source, end_time);
+        const double mean_arrival = source.start + 0.5 * made / source.rate;
+        sum += made * steps * std::max(end_time - mean_arrival, 0.0) / end_time;
+    }
+    return sum;
 }
 
 double DemModel::stable_time_step() const {
@@ -260,10 +296,11 @@ void DemModel::advance(double t, double dt) {
                 spin_of(g.orientation[i], g.inertia[i], momentum_[i] + half * g.torque[i]);
         }
     }
-    exchange(t + dt);
+    exchange(t, dt);
 }
 
-void DemModel::exchange(double time) {
+void DemModel::exchange(double t, double dt) {
+    const double time = t + dt;
     for (PlaneWall& wall : walls_) {
         if (!wall.removed && time >= wall.remove_at) {
             wall.removed = true;
@@ -280,7 +317,33 @@ void DemModel::exchange(double time) {
     if (parts_.collect_departures(grains_.view(), time, gone) > 0) {
         remove_grains(gone);
     }
+    const std::vector<particles::Arrival> arrivals = parts_.collect_arrivals(grains_.view(), t, dt);
+    if (!arrivals.empty()) {
+        add_arrivals(arrivals);
+    }
     parts_.end_step(time);
+}
+
+void DemModel::add_arrivals(const std::vector<particles::Arrival>& arrivals) {
+    for (const particles::Arrival& arrival : arrivals) {
+        const auto body = static_cast<std::size_t>(arrival.body);
+        const GrainShape shape =
+            grain_shape(settings_.bodies[body], arrival.radius, body_density_[body]);
+        const Index g = grains_.add(arrival.body, shape.mass,
+                                    settings_.bodies[body].rotation ? shape.inertia : Vec3::Zero(),
+                                    arrival.position, Eigen::Quaterniond::Identity());
+        const auto k = static_cast<std::size_t>(g);
+        grains_.velocity[k] = arrival.velocity;
+        // Placed clear of every sphere and wall: gravity alone acts on it until the next step's
+        // evaluation.
+        grains_.force[k] = shape.mass * gravity_;
+        for (const Vec3& offset : shape.offsets) {
+            spheres_.add(g, shape.radius, offset);
+        }
+        start_position_.push_back(arrival.position);
+    }
+    spheres_.place(grains_);
+    neighbours_.update(spheres_.position, {}, true);
 }
 
 void DemModel::remove_grains(const std::vector<char>& gone) {

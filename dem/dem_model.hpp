@@ -4,6 +4,7 @@
 #include "dem/contact_pass.hpp"
 #include "dem/dem_case_reader.hpp"
 #include "dem/grain_set.hpp"
+#include "dem/grain_source.hpp"
 #include "dem/sphere_set.hpp"
 #include "io/reporter.hpp"
 #include "io/scene_settings.hpp"
@@ -59,6 +60,12 @@ class DemModel final : public io::Stepper, public io::Reporter {
     double stable_time_step() const override;
     void advance(double t, double dt) override;
     Index point_count() const override { return grains_.size(); }
+    /// The grains a run to `end_time` holds at most: those at the start and all its sources
+    /// make by then (sinks not counted).
+    Index most_grains(double end_time) const;
+    /// Grains times steps over a run of `steps` steps to `end_time`: a source's grains counted
+    /// from their mean arrival.
+    double grain_steps(double steps, double end_time) const;
     std::optional<std::string> diagnose() const override;
     void write_checkpoint(std::ostream& out) const override;
     void read_checkpoint(std::istream& in) override;
@@ -86,8 +93,10 @@ class DemModel final : public io::Stepper, public io::Reporter {
     /// Whether the linear law's dashpot stops some pair before it rebounds.
     bool over_damped() const;
     void evaluate();
-    /// Walls whose remove_at the step reached leave, and grains that reached a sink.
-    void exchange(double time);
+    /// After the step [t, t + dt]: walls whose remove_at it reached leave, grains that reached
+    /// a sink leave, and the sources' grains enter.
+    void exchange(double t, double dt);
+    void add_arrivals(const std::vector<particles::Arrival>& arrivals);
     void remove_grains(const std::vector<char>& gone);
     void write_wall_rows(double time) const;
     void write_part_rows(double time) const;
@@ -110,9 +119,10 @@ class DemModel final : public io::Stepper, public io::Reporter {
     particles::NeighbourList neighbours_;
     ContactBooks books_;
     ContactScratch scratch_;
-    /// The scene's parts: the sinks and, with them, the mass audit.
+    /// The scene's parts: the sinks, the sources and, with either, the mass audit.
     mutable particles::ScenePartList parts_;
     std::shared_ptr<particles::SinkSet> sinks_;
+    std::shared_ptr<GrainSources> sources_;
     std::vector<std::string> events_;
     double step_ = 0.0; ///< the step the last evaluation's springs advanced by
     io::OutputStreams* output_ = nullptr;

@@ -117,6 +117,8 @@ void read_spheres(std::istream& in, SphereSet& s, Index grains) {
 
 void DemModel::write_checkpoint(std::ostream& out) const {
     write_grains(out, grains_);
+    // By grain id, those the sources made included.
+    io::write_array(out, start_position_);
     write_spheres(out, spheres_);
     std::vector<Vec3> wall_forces;
     std::vector<char> removed;
@@ -135,6 +137,8 @@ void DemModel::write_checkpoint(std::ostream& out) const {
 
 void DemModel::read_checkpoint(std::istream& in) {
     read_grains(in, grains_, static_cast<int>(body_names_.size()));
+    io::read_array(in, start_position_, static_cast<std::size_t>(grains_.next_id),
+                   "grain start positions");
     read_spheres(in, spheres_, grains_.size());
     if (spheres_.size() > 0 && spheres_.grain.back() != grains_.size() - 1) {
         throw std::runtime_error("checkpoint: a grain has no sphere");

@@ -127,8 +127,8 @@ void DemModel::append_results(double /*t*/, std::vector<io::ResultFigure>& resul
     results.push_back({"contact_energy", e.elastic, "J", std::nullopt, ""});
     results.push_back({"gravity_work", -e.gravity, "J", std::nullopt, ""});
     // What the dashpots, the sliders and cohesion's partings took: the books' balance, where
-    // no sink carries energy out of the scene.
-    if (sinks_->empty()) {
+    // no sink carries energy out of the scene and no source brings it in.
+    if (sinks_->empty() && sources_->empty()) {
         results.push_back({"dissipated_energy", start_energy_ - e.total(), "J", std::nullopt, ""});
     }
     results.push_back(

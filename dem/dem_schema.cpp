@@ -10,7 +10,7 @@ namespace {
 
 constexpr std::string_view kGuide = "docs/user-guide/dem.md";
 
-const std::array<io::KeyTable, 5> kTables{{
+const std::array<io::KeyTable, 6> kTables{{
     {"dem", false, "the discrete element method: its step and neighbour search", kDemKeys, kGuide,
      "### `[dem]`"},
     {"dem.contact", false, "the contact law between grains and with walls", kDemContactKeys, kGuide,
@@ -21,6 +21,8 @@ const std::array<io::KeyTable, 5> kTables{{
      kGuide, "### `[[dem.wall]]`"},
     {"dem.sink", true, "a region grains leave the scene through", particles::kSinkKeys, kGuide,
      "### `[[dem.sink]]`"},
+    {"dem.source", true, "a box grains of a body rain in through", kDemSourceKeys, kGuide,
+     "### `[[dem.source]]`"},
 }};
 
 } // namespace

@@ -1,0 +1,186 @@
+#include "dem/grain_source.hpp"
+
+#include "dem/grain_generator.hpp"
+#include "io/binary_stream.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace grainload::dem {
+
+namespace {
+
+/// Uniform in [0, 1) from 53 bits of the generator, the same on every standard library.
+double uniform(std::mt19937_64& generator) {
+    return static_cast<double>(generator() >> 11) * 0x1.0p-53;
+}
+
+/// Draws of a grain's centre before its source's box counts as full for the step.
+constexpr int kDraws = 100;
+
+} // namespace
+
+GrainSources::GrainSources(std::vector<SourceSettings> sources,
+                           const std::vector<BodySettings>& bodies,
+                           std::vector<double> body_density, const SphereSet& spheres,
+                           const std::vector<PlaneWall>& walls)
+    : bodies_(bodies), body_density_(std::move(body_density)), spheres_(spheres), walls_(walls) {
+    for (SourceSettings& settings : sources) {
+        Source source;
+        source.generator.seed(settings.seed);
+        source.settings = std::move(settings);
+        sources_.push_back(std::move(source));
+    }
+}
+
+double GrainSources::created_mass() const {
+    double sum = 0.0;
+    for (const Source& source : sources_) {
+        sum += source.created_mass;
+    }
+    return sum;
+}
+
+void GrainSources::find_near(const SourceSettings& source) {
+    // A sphere that can touch a grain in the box lies within the largest radius of the scene
+    // and the grain's of it.
+    const double largest = bodies_[static_cast<std::size_t>(source.body)].radius_max;
+    near_.clear();
+    for (Index i = 0; i < spheres_.size(); ++i) {
+        const Vec3 reach = Vec3::Constant(largest + spheres_.radius[i]);
+        const Vec3& x = spheres_.position[i];
+        if ((x.array() > (source.min - reach).array()).all() &&
+            (x.array() < (source.max + reach).array()).all()) {
+            near_.push_back(i);
+        }
+    }
+}
+
+bool GrainSources::free(const Vec3& centre, double radius,
+                        const std::vector<particles::Arrival>& placed) const {
+    for (const Index i : near_) {
+        const double reach = radius + spheres_.radius[i];
+        if ((spheres_.position[i] - centre).squaredNorm() < reach * reach) {
+            return false;
+        }
+    }
+    for (const particles::Arrival& other : placed) {
+        const double reach = radius + other.radius;
+        if ((other.position - centre).squaredNorm() < reach * reach) {
+            return false;
+        }
+    }
+    double overlap = 0.0;
+    Vec3 normal;
+    for (const PlaneWall& wall : walls_) {
+        for (const PlaneWall::Face& face : wall.faces) {
+            if (!wall.removed && touches(face, centre, radius, overlap, normal)) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+std::optional<particles::Arrival>
+GrainSources::draw(Source& source, const std::vector<particles::Arrival>& placed) {
+    const SourceSettings& s = source.settings;
+    const BodySettings& body = bodies_[static_cast<std::size_t>(s.body)];
+    const double r =
+        body.radius_min + (body.radius_max - body.radius_min) * uniform(source.generator);
+    for (int attempt = 0; attempt < kDraws; ++attempt) {
+        Vec3 centre;
+        for (int a = 0; a < 3; ++a) {
+            centre[a] = s.min[a] + r + (s.max[a] - s.min[a] - 2.0 * r) * uniform(source.generator);
+        }
+        if (free(centre, r, placed)) {
+            particles::Arrival arrival;
+            arrival.position = centre;
+            arrival.velocity = s.velocity;
+            arrival.mass = sphere_mass(r, body_density_[static_cast<std::size_t>(s.body)]);
+            arrival.body = s.body;
+            arrival.material = body.material;
+            arrival.radius = r;
+            return arrival;
+        }
+    }
+    return std::nullopt;
+}
+
+void GrainSources::collect_arrivals(const particles::ParticleView& /*particles*/, double t,
+                                    double dt, std::vector<particles::Arrival>& arrivals) {
+    for (Source& source : sources_) {
+        const SourceSettings& s = source.settings;
+        // The share of the step inside [start, end].
+        const double open = std::min(t + dt, s.end) - std::max(t, s.start);
+        if (open > 0.0) {
+            source.due += s.rate * open;
+        }
+        if (source.due >= 1.0) {
+            find_near(s);
+        }
+        while (source.due >= 1.0 && (!s.count || source.created < *s.count)) {
+            const auto arrival = draw(source, arrivals);
+            if (!arrival) {
+                if (!source.waited) {
+                    std::ostringstream text;
+                    text << "source " << s.name << ": its box is full at t = " << t + dt
+                         << " s; its grains wait for room";
+                    events_.push_back(text.str());
+                    source.waited = true;
+                }
+                break;
+            }
+            arrivals.push_back(*arrival);
+            source.due -= 1.0;
+            ++source.created;
+            source.created_mass += arrival->mass;
+        }
+    }
+}
+
+void GrainSources::append_results(std::vector<io::ResultFigure>& results) const {
+    for (const Source& source : sources_) {
+        const std::string prefix = "source_" + source.settings.name;
+        results.push_back(
+            {prefix + "_created", static_cast<double>(source.created), "", std::nullopt, ""});
+        results.push_back({prefix + "_created_mass", source.created_mass, "kg", std::nullopt, ""});
+    }
+}
+
+void GrainSources::take_events(std::vector<std::string>& events) {
+    events.insert(events.end(), events_.begin(), events_.end());
+    events_.clear();
+}
+
+void GrainSources::write_checkpoint(std::ostream& out) const {
+    for (const Source& source : sources_) {
+        std::ostringstream state;
+        state << source.generator;
+        io::write_string(out, state.str());
+        io::write_value(out, source.due);
+        io::write_value(out, static_cast<std::int64_t>(source.created));
+        io::write_value(out, source.created_mass);
+        io::write_value(out, static_cast<std::uint8_t>(source.waited ? 1 : 0));
+    }
+}
+
+void GrainSources::read_checkpoint(std::istream& in) {
+    for (Source& source : sources_) {
+        std::istringstream state(io::read_string(in));
+        state >> source.generator;
+        if (!state) {
+            throw std::runtime_error("checkpoint: source '" + source.settings.name +
+                                     "' holds no generator state");
+        }
+        source.due = io::read_value<double>(in);
+        source.created = static_cast<Index>(io::read_value<std::int64_t>(in));
+        source.created_mass = io::read_value<double>(in);
+        source.waited = io::read_value<std::uint8_t>(in) != 0;
+    }
+    events_.clear();
+}
+
+} // namespace grainload::dem
