@@ -73,16 +73,21 @@ ContactState pair_contact(const Pass& p, Index a, Index b, const Vec3& offset, d
     return state;
 }
 
-/// Sphere i's contacts with the spheres of other grains in its neighbour row (and the pairs
-/// within cohesion's reach); returns the contacts.
-int gather_pairs(Pass& p, const particles::NeighbourList& neighbours, Index i) {
+/// The pairs of sphere i's row that i owns (the lower id), evaluated where they act (touching,
+/// or within cohesion's reach): their results in x.pairs, flagged in x.active; the owner's
+/// springs kept and contacts recorded.
+void solve_pairs(Pass& p, const particles::NeighbourList& neighbours, Index i) {
     const GrainSet& g = p.g;
     const SphereSet& s = p.s;
     const ContactLaw& law = p.scene.law;
-    int contacts = 0;
-    for (const std::int32_t jj : neighbours.neighbours(i)) {
-        const auto j = static_cast<Index>(jj);
-        if (s.grain[i] == s.grain[j]) {
+    const auto at = static_cast<std::size_t>(i);
+    const Index first = neighbours.first_entry(i);
+    const auto row = neighbours.neighbours(i);
+    for (std::size_t k = 0; k < row.size(); ++k) {
+        const auto e = static_cast<std::size_t>(first) + k;
+        p.x.active[e] = 0;
+        const auto j = static_cast<Index>(row[k]);
+        if (s.grain[i] == s.grain[j] || s.id[j] < s.id[i]) {
             continue;
         }
         const Vec3 offset = s.position[i] - s.position[j];
@@ -95,38 +100,81 @@ int gather_pairs(Pass& p, const particles::NeighbourList& neighbours, Index i) {
         if (offset.squaredNorm() >= range * range) {
             continue;
         }
-        const bool owner = s.id[i] < s.id[j];
         double arm_a = 0.0;
         double arm_b = 0.0;
-        const ContactState state = pair_contact(p, owner ? i : j, owner ? j : i,
-                                                owner ? offset : Vec3(-offset), arm_a, arm_b);
+        const ContactState state = pair_contact(p, i, j, offset, arm_a, arm_b);
         // Torque of the force on a at its contact point, -arm_a n from a's centre; b's by the
         // same force reversed at +arm_b n from b's centre: both are -arm n x F.
         const Vec3 turn = state.normal.cross(state.force);
-        const auto at = static_cast<std::size_t>(i);
-        const bool touching = state.overlap > 0.0;
-        if (owner) {
-            p.x.force[at] += state.force;
-            p.x.torque[at] += state.torque - arm_a * turn;
-            p.x.energy[at] += state.elastic_energy;
-            if (touching) {
-                p.x.kept[at].push_back({s.id[j], state.spring, state.rolling});
-            }
-            if (p.x.record && (touching || state.force != Vec3::Zero())) {
-                p.x.records[at].push_back({s.position[i], s.position[j], state.force, state.normal,
-                                           state.overlap, false});
-            }
-        } else {
-            p.x.force[at] -= state.force;
-            p.x.torque[at] -= state.torque + arm_b * turn;
+        PairResult& result = p.x.pairs[e];
+        result.force = state.force;
+        result.torque_a = state.torque - arm_a * turn;
+        result.torque_b = state.torque + arm_b * turn;
+        result.energy = state.elastic_energy;
+        result.touching = state.overlap > 0.0;
+        result.depth = state.overlap / std::min(s.radius[i], s.radius[j]);
+        p.x.active[e] = 1;
+        if (result.touching) {
+            p.x.kept[at].push_back({s.id[j], state.spring, state.rolling});
         }
-        if (touching) {
+        if (p.x.record && (result.touching || state.force != Vec3::Zero())) {
+            p.x.records[at].push_back(
+                {s.position[i], s.position[j], state.force, state.normal, state.overlap, false});
+        }
+    }
+}
+
+/// Sphere i's pairs with the spheres of other grains, summed in its row's order: its own
+/// results and, through the mirror map, its partners'; returns the contacts.
+int gather_pairs(Pass& p, const particles::NeighbourList& neighbours, Index i) {
+    const SphereSet& s = p.s;
+    const auto at = static_cast<std::size_t>(i);
+    const Index first = neighbours.first_entry(i);
+    const auto row = neighbours.neighbours(i);
+    int contacts = 0;
+    for (std::size_t k = 0; k < row.size(); ++k) {
+        const auto j = static_cast<Index>(row[k]);
+        if (s.grain[i] == s.grain[j]) {
+            continue;
+        }
+        const bool owner = s.id[i] < s.id[j];
+        const auto e =
+            owner ? static_cast<std::size_t>(first) + k
+                  : static_cast<std::size_t>(p.x.mirror[static_cast<std::size_t>(first) + k]);
+        if (!p.x.active[e]) {
+            continue;
+        }
+        const PairResult& result = p.x.pairs[e];
+        if (owner) {
+            p.x.force[at] += result.force;
+            p.x.torque[at] += result.torque_a;
+            p.x.energy[at] += result.energy;
+        } else {
+            p.x.force[at] -= result.force;
+            p.x.torque[at] -= result.torque_b;
+        }
+        if (result.touching) {
             ++contacts;
-            p.x.deepest[at] =
-                std::max(p.x.deepest[at], state.overlap / std::min(s.radius[i], s.radius[j]));
+            p.x.deepest[at] = std::max(p.x.deepest[at], result.depth);
         }
     }
     return contacts;
+}
+
+/// For each entry (i, j) of the list, the entry (j, i): the list holds each pair in both rows.
+void build_mirror(const particles::NeighbourList& neighbours, Index n, std::vector<Index>& mirror) {
+    mirror.assign(static_cast<std::size_t>(neighbours.pair_entries()), -1);
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+        const auto row = neighbours.neighbours(i);
+        for (std::size_t k = 0; k < row.size(); ++k) {
+            const auto partner = neighbours.neighbours(row[k]);
+            const auto found =
+                std::find(partner.begin(), partner.end(), static_cast<std::int32_t>(i));
+            mirror[static_cast<std::size_t>(neighbours.first_entry(i)) + k] =
+                neighbours.first_entry(row[k]) + (found - partner.begin());
+        }
+    }
 }
 
 /// Sphere i's contact with face f of wall w, evaluated, when it touches the face or lies within
@@ -230,6 +278,17 @@ ContactBooks evaluate_contacts(GrainSet& g, SphereSet& s,
         if (p.x.record) {
             p.x.records[i].clear();
         }
+    }
+    if (scratch.mirror_generation != neighbours.generation() ||
+        scratch.mirror.size() != static_cast<std::size_t>(neighbours.pair_entries())) {
+        build_mirror(neighbours, n, scratch.mirror);
+        scratch.mirror_generation = neighbours.generation();
+    }
+    scratch.active.resize(static_cast<std::size_t>(neighbours.pair_entries()));
+    scratch.pairs.resize(static_cast<std::size_t>(neighbours.pair_entries()));
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+        solve_pairs(p, neighbours, i);
     }
     Index pair_entries = 0;
 #pragma omp parallel for schedule(static) reduction(+ : pair_entries)

@@ -43,6 +43,17 @@ struct ContactRecord {
     bool wall = false;
 };
 
+/// A pair's contact as its sphere of the lower id evaluated it: what each of the two rows adds
+/// (the force on a, or its opposite on b; each one's torque), for the other row to read.
+struct PairResult {
+    Vec3 force = Vec3::Zero();
+    Vec3 torque_a = Vec3::Zero(); ///< added to a's torque
+    Vec3 torque_b = Vec3::Zero(); ///< taken from b's torque
+    double energy = 0.0;          ///< the contact's springs, booked by a
+    double depth = 0.0;           ///< overlap over the smaller radius
+    bool touching = false;        ///< else a cohesive pull across a gap
+};
+
 /// The pass's per-sphere buffers, kept from one evaluation to the next so that a step
 /// allocates nothing once the scene's size has settled.
 struct ContactScratch {
@@ -58,16 +69,23 @@ struct ContactScratch {
     std::vector<std::vector<Spring>> kept; ///< the springs the step leaves, becoming the set's
     std::vector<Vec3> on_walls;            ///< each grain's load on each wall
     std::vector<Index> first;              ///< SphereSet::first_of_grains
+    /// Per neighbour entry: whether the pair acts (set in the row of its lower id) and its
+    /// result there; for each entry, the position of the same pair in the partner's row.
+    std::vector<char> active;
+    std::vector<PairResult> pairs;
+    std::vector<Index> mirror;
+    Index mirror_generation = -1; ///< the list's generation `mirror` was built for
 };
 
 /// Set grains.force and torque, and the spheres' contacts and springs, at the current
-/// positions and velocities. Each pair of spheres of two grains is evaluated in both spheres'
-/// rows, oriented from the sphere of the lower id, so that the rows run in parallel with no
-/// shared writes and the two forces are exact opposites (momentum kept to round-off); the
-/// spring is kept by the lower id. A grain's force is gravity plus its spheres' forces, its
-/// torque their torques about its centre of mass (Markauskas, eqs. 7 and 8). Then the walls,
-/// grain by grain, with walls[w].force their sum. `neighbours` holds the spheres' pairs, current
-/// for their positions.
+/// positions and velocities. Each pair of spheres of two grains is evaluated once, in the row
+/// of its sphere of the lower id, oriented from it, which keeps the spring; then every row sums
+/// its pairs in its own order, reading the other row's result through the list's mirror map,
+/// so that the rows run in parallel with no shared writes, the two forces are exact opposites
+/// (momentum kept to round-off) and no sum depends on the thread count. A grain's force is gravity
+/// plus its spheres' forces, its torque their torques about its centre of mass (Markauskas, eqs. 7
+/// and 8). Then the walls, grain by grain, with walls[w].force their sum. `neighbours` holds the
+/// spheres' pairs, current for their positions.
 ContactBooks evaluate_contacts(GrainSet& grains, SphereSet& spheres,
                                const particles::NeighbourList& neighbours,
                                std::vector<PlaneWall>& walls, const ContactScene& scene,
