@@ -206,6 +206,129 @@ int check_case(const CommandLine& line) {
     return kExitOk;
 }
 
+namespace {
+
+/// What one run of a case works with, from its start (or checkpoint) to its end.
+struct CaseRun {
+    const CommandLine& line;
+    Scene& scene;
+    const std::optional<CostEstimate>& estimate;
+    std::string out;
+    io::OutputStreams& streams;
+    io::VtkFrameWriter& writer;
+    RunClock& clock;
+    ProgressReporter& progress;
+    /// An end time within round-off of an output instant is that instant: "0.15 s" is 2e-17 s
+    /// short of 3 * 0.05, and a run stopped there and restarted would otherwise take other
+    /// steps.
+    double end_tolerance = 0.0;
+};
+
+/// The log's first lines: the build, the case, its threads and output, and a restart's point.
+void announce(CaseRun& run) {
+    run.progress.message("grainload " + std::string(kVersion) + " (" + kGitHash + "): case " +
+                         run.scene.settings.name + ", " + std::to_string(run.scene.point_count()) +
+                         " points, " + std::to_string(omp_get_max_threads()) + " threads" +
+                         (run.line.auto_threads ? " (auto: the cores free at start)" : "") +
+                         ", output " + run.out);
+    if (run.line.restart) {
+        std::ostringstream restarted;
+        restarted.precision(9);
+        restarted << "restarted from " << *run.line.restart << " at t = " << run.clock.t
+                  << " s (step " << run.clock.step << "); every streamed file continues from it";
+        run.progress.message(restarted.str());
+    }
+}
+
+/// A frame, then the modules' logs, then the checkpoint, which records where every streamed
+/// file then stands: a restart cuts the files back to exactly that.
+void write_output(CaseRun& run) {
+    run.writer.write(collect_frame(run.scene, run.clock.t));
+    run.clock.frame_times = run.writer.times();
+    for (const io::Reporter* reporter : run.scene.reporters) {
+        reporter->write_logs();
+    }
+    run.clock.streams = run.streams.marks();
+    write_checkpoint(run.scene, run.clock, run.out + "/checkpoint.bin");
+}
+
+/// Output instants are k * interval, computed afresh rather than accumulated, so that a
+/// restarted run steps through exactly the same instants (and time steps) as a whole run.
+double next_output_time(const CaseRun& run) {
+    const io::SceneSettings& settings = run.scene.settings;
+    const double instant =
+        settings.output_interval * static_cast<double>(run.clock.frame_times.size());
+    return instant < settings.end_time + run.end_tolerance ? instant : settings.end_time;
+}
+
+/// The time loop to the end time; the watchdog's exit code when a step fails or the step
+/// collapses, else std::nullopt. `dt` holds the last step.
+std::optional<int> step_to_the_end(CaseRun& run, double& dt) {
+    Scene& scene = run.scene;
+    RunClock& clock = run.clock;
+    io::StepCollapseWatch step_watch;
+    while (clock.t < scene.settings.end_time - run.end_tolerance) {
+        const double next_output = next_output_time(run);
+        const double stable = stable_step(scene);
+        if (auto collapse = step_watch.record(stable, clock.t)) {
+            return stop_unstable(scene, run.line, clock, *collapse, run.writer.last_frame_path(),
+                                 run.estimate, run.progress);
+        }
+        dt = std::min(stable, next_output - clock.t);
+        const auto points = static_cast<double>(scene.material_point_count());
+        const long long inner_before = scene.inner_steps();
+        std::optional<std::string> failure = advance(scene, clock.t, dt);
+        // A coupled window holds many SPH steps: count those, not the window.
+        const long long inner = scene.inner_steps() - inner_before;
+        clock.material_point_steps += points * static_cast<double>(inner > 0 ? inner : 1);
+        clock.shell_node_steps += static_cast<double>(scene.shell_node_count());
+        clock.t += dt;
+        ++clock.step;
+        for (io::Reporter* reporter : scene.reporters) {
+            for (const std::string& event : reporter->take_events()) {
+                run.progress.message(event);
+            }
+        }
+        if (auto problem = failure ? failure : diagnose(scene)) {
+            return stop_unstable(scene, run.line, clock, *problem, run.writer.last_frame_path(),
+                                 run.estimate, run.progress);
+        }
+        if (clock.t >= next_output - run.end_tolerance) {
+            clock.t = next_output;
+            write_output(run);
+        }
+        run.progress.update(clock.t, clock.step, dt, clock.material_point_steps);
+    }
+    return std::nullopt;
+}
+
+/// summary.json, the hints, and the closing lines with the estimate against the run.
+void finish(CaseRun& run, double cpu_start) {
+    auto summary = make_summary(run.scene, run.line, run.clock, run.progress.elapsed_seconds());
+    summary.cpu_time = process_cpu_seconds() - cpu_start;
+    attach(summary, run.estimate);
+    io::write_run_summary(summary, run.out + "/summary.json");
+    for (const std::string& hint : summary.hints) {
+        run.progress.message("hint: " + hint);
+    }
+    run.progress.message("done: " + std::to_string(run.clock.step) + " steps, " +
+                         std::to_string(summary.wall_time) + " s wall time; " + run.out +
+                         "/summary.json, " + run.out + "/" + run.scene.settings.name + ".pvd");
+    if (const auto& estimate = run.estimate) {
+        run.progress.message(
+            "estimate before the run: " + std::to_string(estimate->steps) + " steps, " +
+            std::to_string(estimate->wall_time_s) + " s (actual / estimate: steps " +
+            std::to_string(static_cast<double>(run.clock.step) /
+                           static_cast<double>(estimate->steps)) +
+            ", wall time " +
+            (estimate->wall_time_s > 0.0 ? std::to_string(summary.wall_time / estimate->wall_time_s)
+                                         : std::string("not estimated")) +
+            ")");
+    }
+}
+
+} // namespace
+
 int run_case(const CommandLine& line) {
     if (line.auto_threads) {
         omp_set_num_threads(auto_threads());
@@ -233,99 +356,19 @@ int run_case(const CommandLine& line) {
     }
     ProgressReporter progress(streams.open("log.txt"), scene->settings.end_time);
     const double cpu_start = process_cpu_seconds();
-    progress.message("grainload " + std::string(kVersion) + " (" + kGitHash + "): case " +
-                     scene->settings.name + ", " + std::to_string(scene->point_count()) +
-                     " points, " + std::to_string(omp_get_max_threads()) + " threads" +
-                     (line.auto_threads ? " (auto: the cores free at start)" : "") + ", output " +
-                     out);
-    if (line.restart) {
-        std::ostringstream restarted;
-        restarted.precision(9);
-        restarted << "restarted from " << *line.restart << " at t = " << clock.t << " s (step "
-                  << clock.step << "); every streamed file continues from it";
-        progress.message(restarted.str());
-    }
-    const std::string checkpoint = out + "/checkpoint.bin";
-    // The frame's rows and the modules' logs go out before the checkpoint, which records where
-    // every streamed file then stands: a restart cuts the files back to exactly that.
-    auto write_output = [&] {
-        writer.write(collect_frame(*scene, clock.t));
-        clock.frame_times = writer.times();
-        for (const io::Reporter* reporter : scene->reporters) {
-            reporter->write_logs();
-        }
-        clock.streams = streams.marks();
-        write_checkpoint(*scene, clock, checkpoint);
-    };
+    CaseRun run{line,  *scene,   estimate,
+                out,   streams,  writer,
+                clock, progress, 1e-12 * scene->settings.end_time};
+    announce(run);
     if (clock.frame_times.empty()) {
-        write_output();
+        write_output(run);
     }
-    // Output instants are k * interval, computed afresh rather than accumulated, so that a
-    // restarted run steps through exactly the same instants (and time steps) as a whole run.
-    // An end time within round-off of an instant is that instant: "0.15 s" is 2e-17 s short of
-    // 3 * 0.05, and a run stopped there and restarted would otherwise take different steps.
-    const double end_tolerance = 1e-12 * scene->settings.end_time;
-    auto next_output_time = [&] {
-        const double instant =
-            scene->settings.output_interval * static_cast<double>(clock.frame_times.size());
-        return instant < scene->settings.end_time + end_tolerance ? instant
-                                                                  : scene->settings.end_time;
-    };
     double dt = 0.0;
-    io::StepCollapseWatch step_watch;
-    while (clock.t < scene->settings.end_time - end_tolerance) {
-        const double next_output = next_output_time();
-        const double stable = stable_step(*scene);
-        if (auto collapse = step_watch.record(stable, clock.t)) {
-            return stop_unstable(*scene, line, clock, *collapse, writer.last_frame_path(), estimate,
-                                 progress);
-        }
-        dt = std::min(stable, next_output - clock.t);
-        const auto points = static_cast<double>(scene->material_point_count());
-        const long long inner_before = scene->inner_steps();
-        std::optional<std::string> failure = advance(*scene, clock.t, dt);
-        // A coupled window holds many SPH steps: count those, not the window.
-        const long long inner = scene->inner_steps() - inner_before;
-        clock.material_point_steps += points * static_cast<double>(inner > 0 ? inner : 1);
-        clock.shell_node_steps += static_cast<double>(scene->shell_node_count());
-        clock.t += dt;
-        ++clock.step;
-        for (io::Reporter* reporter : scene->reporters) {
-            for (const std::string& event : reporter->take_events()) {
-                progress.message(event);
-            }
-        }
-        if (auto problem = failure ? failure : diagnose(*scene)) {
-            return stop_unstable(*scene, line, clock, *problem, writer.last_frame_path(), estimate,
-                                 progress);
-        }
-        if (clock.t >= next_output - end_tolerance) {
-            clock.t = next_output;
-            write_output();
-        }
-        progress.update(clock.t, clock.step, dt, clock.material_point_steps);
+    if (const auto stopped = step_to_the_end(run, dt)) {
+        return *stopped;
     }
     progress.update(clock.t, clock.step, dt, clock.material_point_steps, true);
-    auto summary = make_summary(*scene, line, clock, progress.elapsed_seconds());
-    summary.cpu_time = process_cpu_seconds() - cpu_start;
-    attach(summary, estimate);
-    io::write_run_summary(summary, out + "/summary.json");
-    for (const std::string& hint : summary.hints) {
-        progress.message("hint: " + hint);
-    }
-    progress.message("done: " + std::to_string(clock.step) + " steps, " +
-                     std::to_string(summary.wall_time) + " s wall time; " + out +
-                     "/summary.json, " + out + "/" + scene->settings.name + ".pvd");
-    if (estimate) {
-        progress.message(
-            "estimate before the run: " + std::to_string(estimate->steps) + " steps, " +
-            std::to_string(estimate->wall_time_s) + " s (actual / estimate: steps " +
-            std::to_string(static_cast<double>(clock.step) / static_cast<double>(estimate->steps)) +
-            ", wall time " +
-            (estimate->wall_time_s > 0.0 ? std::to_string(summary.wall_time / estimate->wall_time_s)
-                                         : std::string("not estimated")) +
-            ")");
-    }
+    finish(run, cpu_start);
     return kExitOk;
 }
 
