@@ -329,17 +329,12 @@ void DemModel::add_arrivals(const std::vector<particles::Arrival>& arrivals) {
         const auto body = static_cast<std::size_t>(arrival.body);
         const GrainShape shape =
             grain_shape(settings_.bodies[body], arrival.radius, body_density_[body]);
-        const Index g = grains_.add(arrival.body, shape.mass,
-                                    settings_.bodies[body].rotation ? shape.inertia : Vec3::Zero(),
-                                    arrival.position, Eigen::Quaterniond::Identity());
-        const auto k = static_cast<std::size_t>(g);
-        grains_.velocity[k] = arrival.velocity;
+        const Index g = add_grain(settings_.bodies[body], arrival.body, shape, arrival.position,
+                                  Eigen::Quaterniond::Identity(), arrival.velocity, Vec3::Zero(),
+                                  grains_, spheres_);
         // Placed clear of every sphere and wall: gravity alone acts on it until the next step's
         // evaluation.
-        grains_.force[k] = shape.mass * gravity_;
-        for (const Vec3& offset : shape.offsets) {
-            spheres_.add(g, shape.radius, offset);
-        }
+        grains_.force[static_cast<std::size_t>(g)] = shape.mass * gravity_;
         start_position_.push_back(arrival.position);
     }
     spheres_.place(grains_);

@@ -12,11 +12,6 @@ namespace grainload::dem {
 
 namespace {
 
-/// Uniform in [0, 1) from 53 bits of the generator, the same on every standard library.
-double uniform(std::mt19937_64& generator) {
-    return static_cast<double>(generator() >> 11) * 0x1.0p-53;
-}
-
 /// The spheres placed so far, hashed by cell, for the overlap test of each new draw.
 class PlacementGrid {
   public:
@@ -71,20 +66,29 @@ Eigen::Quaterniond random_orientation(std::mt19937_64& generator) {
                               b * std::sin(u3));
 }
 
-/// Append one grain of `shape` at `centre`, turned by `turned`, with the body's velocities.
-void add_grain(const BodySettings& body, int body_id, const GrainShape& shape, const Vec3& centre,
-               const Eigen::Quaterniond& turned, GrainSet& grains, SphereSet& spheres) {
+} // namespace
+
+double uniform(std::mt19937_64& generator) {
+    return static_cast<double>(generator() >> 11) * 0x1.0p-53;
+}
+
+double draw_radius(const BodySettings& body, std::mt19937_64& generator) {
+    return body.radius_min + (body.radius_max - body.radius_min) * uniform(generator);
+}
+
+Index add_grain(const BodySettings& body, int body_id, const GrainShape& shape, const Vec3& centre,
+                const Eigen::Quaterniond& turned, const Vec3& velocity,
+                const Vec3& angular_velocity, GrainSet& grains, SphereSet& spheres) {
     const Index g = grains.add(body_id, shape.mass, body.rotation ? shape.inertia : Vec3::Zero(),
                                centre, turned);
-    grains.velocity[static_cast<std::size_t>(g)] = body.velocity;
+    grains.velocity[static_cast<std::size_t>(g)] = velocity;
     grains.angular_velocity[static_cast<std::size_t>(g)] =
-        body.rotation ? body.angular_velocity : Vec3::Zero();
+        body.rotation ? angular_velocity : Vec3::Zero();
     for (const Vec3& offset : shape.offsets) {
         spheres.add(g, shape.radius, offset);
     }
+    return g;
 }
-
-} // namespace
 
 GrainShape grain_shape(const BodySettings& body, double radius, double density) {
     GrainShape shape;
@@ -109,7 +113,8 @@ void place_grains(const BodySettings& body, int body_id, double density, GrainSe
     if (body.centre) {
         const Vec3 axis = body.axis.normalized();
         add_grain(body, body_id, grain_shape(body, body.radius_min, density), *body.centre,
-                  Eigen::Quaterniond::FromTwoVectors(Vec3::UnitX(), axis), grains, spheres);
+                  Eigen::Quaterniond::FromTwoVectors(Vec3::UnitX(), axis), body.velocity,
+                  body.angular_velocity, grains, spheres);
         spheres.place(grains);
         return;
     }
@@ -127,7 +132,7 @@ void place_grains(const BodySettings& body, int body_id, double density, GrainSe
     const Index most_draws = 10000;
     Index placed = 0;
     for (bool fits = true; fits && placed < body.count;) {
-        const double r = body.radius_min + (body.radius_max - body.radius_min) * uniform(generator);
+        const double r = draw_radius(body, generator);
         const GrainShape shape = grain_shape(body, r, density);
         fits = false;
         for (Index draw = 0; draw < most_draws && !fits; ++draw) {
@@ -147,7 +152,8 @@ void place_grains(const BodySettings& body, int body_id, double density, GrainSe
             fits = std::all_of(shape.offsets.begin(), shape.offsets.end(),
                                [&](const Vec3& o) { return grid.free(centre + turned * o, r); });
             if (fits) {
-                add_grain(body, body_id, shape, centre, turned, grains, spheres);
+                add_grain(body, body_id, shape, centre, turned, body.velocity,
+                          body.angular_velocity, grains, spheres);
                 spheres.place(grains);
                 for (std::size_t k = 0; k < shape.offsets.size(); ++k) {
                     grid.insert(spheres.size() - 1 - static_cast<Index>(k));

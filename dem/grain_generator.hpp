@@ -6,6 +6,7 @@
 #include "dem/sphere_set.hpp"
 
 #include <numbers>
+#include <random>
 #include <vector>
 
 namespace grainload::dem {
@@ -26,6 +27,18 @@ struct GrainShape {
     std::vector<Vec3> offsets;
 };
 GrainShape grain_shape(const BodySettings& body, double radius, double density);
+
+/// Uniform in [0, 1) from 53 bits of the generator, the same on every standard library.
+double uniform(std::mt19937_64& generator);
+/// A grain's radius, uniform in [radius_min, radius_max] (Lazarevic et al. 2002, eq. 1).
+double draw_radius(const BodySettings& body, std::mt19937_64& generator);
+
+/// Append one grain of `body` (id `body_id`) of `shape` at `centre`, turned by `turned`, with
+/// its velocities (none turning where the body does not rotate), and its spheres; returns its
+/// index. The spheres' positions follow at the next SphereSet::place.
+Index add_grain(const BodySettings& body, int body_id, const GrainShape& shape, const Vec3& centre,
+                const Eigen::Quaterniond& turned, const Vec3& velocity,
+                const Vec3& angular_velocity, GrainSet& grains, SphereSet& spheres);
 
 /// Append the grains of `body` (id `body_id`, solid density `density`) and their spheres: one
 /// at its centre, its axis along `axis`, or `count` by random sequential addition in its box

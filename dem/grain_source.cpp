@@ -12,11 +12,6 @@ namespace grainload::dem {
 
 namespace {
 
-/// Uniform in [0, 1) from 53 bits of the generator, the same on every standard library.
-double uniform(std::mt19937_64& generator) {
-    return static_cast<double>(generator() >> 11) * 0x1.0p-53;
-}
-
 /// Draws of a grain's centre before its source's box counts as full for the step.
 constexpr int kDraws = 100;
 
@@ -88,8 +83,7 @@ std::optional<particles::Arrival>
 GrainSources::draw(Source& source, const std::vector<particles::Arrival>& placed) {
     const SourceSettings& s = source.settings;
     const BodySettings& body = bodies_[static_cast<std::size_t>(s.body)];
-    const double r =
-        body.radius_min + (body.radius_max - body.radius_min) * uniform(source.generator);
+    const double r = draw_radius(body, source.generator);
     for (int attempt = 0; attempt < kDraws; ++attempt) {
         Vec3 centre;
         for (int a = 0; a < 3; ++a) {
