@@ -271,12 +271,17 @@ CostEstimate estimate_cost(const Scene& scene, int threads, const Calibration& c
     for (const auto& stepper : scene.steppers) {
         if (const auto* dem = dynamic_cast<const dem::DemModel*>(stepper.get())) {
             e.dem_grains += dem->most_grains(scene.settings.end_time);
-            e.dem_grain_steps +=
+            const double grain_steps =
                 dem->grain_steps(static_cast<double>(plan.steps), scene.settings.end_time);
+            e.dem_grain_steps += grain_steps;
+            // As the SPH step: the per-grain work shared by the threads, the fixed part whole.
+            e.dem_seconds += grain_steps * calibration.dem_seconds_per_grain_step /
+                                 speedup_of(e.threads, calibration) +
+                             static_cast<double>(plan.steps) * calibration.dem_seconds_per_step;
         }
     }
     add_output(plan, calibration, e);
-    e.wall_time_s = e.sph_seconds + e.shell_seconds + e.output_seconds;
+    e.wall_time_s = e.sph_seconds + e.shell_seconds + e.dem_seconds + e.output_seconds;
     e.memory_bytes = bytes;
     return e;
 }
@@ -355,10 +360,9 @@ std::string describe_cost(const CostEstimate& e) {
              static_cast<long long>(e.sph_particles), static_cast<long long>(e.wall_particles),
              static_cast<long long>(e.shell_nodes), static_cast<long long>(e.shell_dofs));
     if (e.dem_grains > 0) {
-        add_line(out,
-                 "      DEM: %lld grains, %.3g grain-steps; not timed (the calibration measures "
-                 "the SPH and shell kernels): the estimated wall time leaves them out\n",
-                 static_cast<long long>(e.dem_grains), e.dem_grain_steps);
+        add_line(out, "      DEM: %lld grains, %.3g grain-steps, %s\n",
+                 static_cast<long long>(e.dem_grains), e.dem_grain_steps,
+                 duration(e.dem_seconds).c_str());
     }
     describe_sources_and_sinks(out, e);
     add_line(out,

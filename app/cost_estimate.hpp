@@ -16,10 +16,11 @@ struct CostEstimate {
     Index sph_particles = 0;  ///< bodies and walls
     Index wall_particles = 0; ///< of which walls
     Index shell_nodes = 0;
-    /// DEM grains and their grain-steps: counted, not timed (the calibration measures the SPH
-    /// and shell kernels only).
+    /// DEM grains, their grain-steps and the steps' time (the calibration's fixed cost per step
+    /// and cost per grain-step).
     Index dem_grains = 0;
     double dem_grain_steps = 0.0;
+    double dem_seconds = 0.0;
     Index shell_dofs = 0;   ///< free DOFs
     double time_step = 0.0; ///< the time loop's step at t = 0 (CFL, window or fixed)
     long long steps = 0;    ///< time-loop steps to end_time (at that step, but for `flow`)

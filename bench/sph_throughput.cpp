@@ -478,6 +478,7 @@ int calibrate(const std::string& path) {
         bench::frame_costs(granular_case(1000, kCap), granular_case(8000, kCap), 0.01);
     const bench::StepCosts steps =
         bench::step_costs(tiny_case(2, kDruckerPrager), tiny_case(3, kDruckerPrager), 1e-5);
+    const bench::DemCosts dem = bench::dem_costs();
     const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     double speedup = cores > 1 ? measure_speedup(cores, sand) : 1.0;
     for (int retry = 0; retry < 2 && speedup < 1.0; ++retry) {
@@ -488,8 +489,8 @@ int calibrate(const std::string& path) {
     }
     const double others = meter.others_cores();
     const bool quiet = before < app::kQuietLoad && others < app::kQuietLoad;
-    bench::write_calibration(path,
-                             {c2, c3, shell, output, steps, cores, speedup, before, others, quiet});
+    bench::write_calibration(
+        path, {c2, c3, shell, output, steps, dem, cores, speedup, before, others, quiet});
     std::printf("calibration: %d threads %.2fx one; other processes used %.2f cores before and "
                 "%.2f while it measured (%s) -> %s\n",
                 cores, speedup, before, others, quiet ? "quiet" : "NOT quiet", path.c_str());

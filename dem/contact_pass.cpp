@@ -2,20 +2,25 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
+#include <span>
 
 namespace grainload::dem {
 
 namespace {
 
-/// The springs kept with `partner`, or unstretched ones for a new contact.
-void springs_with(const std::vector<Spring>& springs, std::uint64_t partner, ContactState& state) {
+/// Neighbouring mesh triangles whose normals' cosine reaches this lie on one surface for the
+/// springs: 30 degrees, beyond a cylinder's facets (7.5 degrees at 48 around), short of a fold.
+constexpr double kSameSurface = 0.8660254037844386;
+
+/// The springs kept with `partner`, or unstretched ones for a new contact; whether kept.
+bool springs_with(const std::vector<Spring>& springs, std::uint64_t partner, ContactState& state) {
     const auto found =
         std::lower_bound(springs.begin(), springs.end(), partner,
                          [](const Spring& s, std::uint64_t key) { return s.partner < key; });
     const bool kept = found != springs.end() && found->partner == partner;
     state.spring = kept ? found->shear : Vec3::Zero();
     state.rolling = kept ? found->rolling : Vec3::Zero();
+    return kept;
 }
 
 /// The rolling dashpot's I + m r^2 of one side: a sphere of its grain's mass rolling on its
@@ -177,28 +182,59 @@ void build_mirror(const particles::NeighbourList& neighbours, Index n, std::vect
     }
 }
 
-/// Sphere i's contact with face f of wall w, evaluated, when it touches the face or lies within
-/// cohesion's reach of it (`reach`); `arm` the contact point's distance from its centre.
-std::optional<ContactState> wall_contact(const Pass& p, const PlaneWall::Face& face,
-                                         std::uint64_t key, Index i, double reach, double& arm) {
+/// The spring key of face f of wall w.
+std::uint64_t wall_key(std::size_t w, std::int32_t f) {
+    return kWallPartner | (std::uint64_t{w} << 32) | static_cast<std::uint32_t>(f);
+}
+
+/// The springs sphere i keeps with face `touch.face` of wall w. A contact new to a mesh's
+/// triangle takes over the springs of a neighbouring triangle it no longer touches whose plane
+/// lies within 30 degrees of its own: a grain sliding over a tessellated surface keeps its
+/// friction and rolling springs across the triangles' edges, as on one face.
+void wall_springs(const Pass& p, const PlaneWall& wall, std::size_t w, Index i,
+                  std::span<const PlaneWall::Touch> touched, std::int32_t face,
+                  ContactState& state) {
+    const auto& springs = p.s.springs[static_cast<std::size_t>(i)];
+    if (springs_with(springs, wall_key(w, face), state) || !wall.mesh()) {
+        return;
+    }
+    const Vec3& normal = wall.faces[static_cast<std::size_t>(face)].normal;
+    for (const std::int32_t next : wall.adjacent[static_cast<std::size_t>(face)]) {
+        const bool touched_too = std::any_of(touched.begin(), touched.end(),
+                                             [next](const auto& t) { return t.face == next; });
+        if (next < 0 || touched_too ||
+            std::abs(normal.dot(wall.faces[static_cast<std::size_t>(next)].normal)) <
+                kSameSurface) {
+            continue;
+        }
+        if (springs_with(springs, wall_key(w, next), state)) {
+            return;
+        }
+    }
+}
+
+/// Sphere i's contact with a face of wall w it touches or lies within cohesion's reach of
+/// (`reach`; `touch` as PlaneWall::touching_faces gives it for radius + reach), evaluated;
+/// `arm` the contact point's distance from its centre.
+ContactState wall_contact(const Pass& p, const PlaneWall& wall, std::size_t w,
+                          std::span<const PlaneWall::Touch> touched, const PlaneWall::Touch& touch,
+                          Index i, double reach, double& arm) {
     const GrainSet& g = p.g;
     const SphereSet& s = p.s;
     const auto owner = static_cast<std::size_t>(s.grain[i]);
     const auto at = static_cast<std::size_t>(i);
     ContactState state;
-    if (!touches(face, s.position[i], s.radius[i] + reach, state.overlap, state.normal)) {
-        return std::nullopt;
-    }
-    state.overlap -= reach;
+    state.overlap = touch.overlap - reach;
+    state.normal = touch.normal;
     arm = s.radius[i] - 0.5 * state.overlap;
-    state.relative_velocity =
-        p.x.point_velocity[at] - arm * g.angular_velocity[owner].cross(state.normal);
+    state.relative_velocity = p.x.point_velocity[at] - wall.current_velocity -
+                              arm * g.angular_velocity[owner].cross(state.normal);
     if (state.overlap <= 0.0) {
         cohesive_force(p.scene.law, p.scene.law.wall_cohesion_pull * g.mass[owner], state);
         return state;
     }
     state.relative_rotation = g.angular_velocity[owner];
-    springs_with(s.springs[at], key, state);
+    wall_springs(p, wall, w, i, touched, touch.face, state);
     PairProperties pair = p.scene.body_walls[static_cast<std::size_t>(g.body_id[owner])];
     pair.mass = g.mass[owner];
     pair.radius = s.radius[i];
@@ -210,41 +246,62 @@ std::optional<ContactState> wall_contact(const Pass& p, const PlaneWall::Face& f
 /// Sphere i's contacts with the walls' faces: force and torque added to its grain's, springs
 /// to its list, the force's opposite to its grain's share of each wall's load (`on_walls`, one
 /// per wall); returns the contacts.
-int gather_walls(Pass& p, const std::vector<PlaneWall>& walls, Index i, Vec3* on_walls) {
+int gather_walls(Pass& p, const std::vector<PlaneWall>& walls, Index i, WallShare* on_walls) {
     GrainSet& g = p.g;
     const SphereSet& s = p.s;
     const auto owner = static_cast<std::size_t>(s.grain[i]);
     const auto at = static_cast<std::size_t>(i);
     const double reach = cohesion_reach(p.scene.law, p.scene.law.wall_cohesion_pull, g.mass[owner]);
+    thread_local std::vector<PlaneWall::Touch> touched;
     int contacts = 0;
     for (std::size_t w = 0; w < walls.size(); ++w) {
         if (walls[w].removed) {
             continue;
         }
-        for (std::size_t f = 0; f < walls[w].faces.size(); ++f) {
-            const std::uint64_t key = kWallPartner | (w << 8) | f;
+        walls[w].touching_faces(s.position[i] - walls[w].displacement, s.radius[i] + reach,
+                                touched);
+        for (const PlaneWall::Touch& touch : touched) {
             double arm = 0.0;
-            const auto state = wall_contact(p, walls[w].faces[f], key, i, reach, arm);
-            if (!state) {
-                continue;
+            const ContactState state = wall_contact(p, walls[w], w, touched, touch, i, reach, arm);
+            g.force[owner] += state.force;
+            g.torque[owner] += state.torque - arm * state.normal.cross(state.force);
+            g.torque[owner] += s.arm[at].cross(state.force);
+            on_walls[w].force -= state.force;
+            on_walls[w].normal += state.force.dot(state.normal);
+            p.x.energy[at] += state.elastic_energy;
+            if (p.x.record && (state.overlap > 0.0 || state.force != Vec3::Zero())) {
+                p.x.records[at].push_back({s.position[i], s.position[i] - arm * state.normal,
+                                           state.force, state.normal, state.overlap, true});
             }
-            g.force[owner] += state->force;
-            g.torque[owner] += state->torque - arm * state->normal.cross(state->force);
-            g.torque[owner] += s.arm[at].cross(state->force);
-            on_walls[w] -= state->force;
-            p.x.energy[at] += state->elastic_energy;
-            if (p.x.record && (state->overlap > 0.0 || state->force != Vec3::Zero())) {
-                p.x.records[at].push_back({s.position[i], s.position[i] - arm * state->normal,
-                                           state->force, state->normal, state->overlap, true});
-            }
-            if (state->overlap > 0.0) {
-                p.x.deepest[at] = std::max(p.x.deepest[at], state->overlap / s.radius[i]);
-                p.x.kept[at].push_back({key, state->spring, state->rolling});
+            if (state.overlap > 0.0) {
+                p.x.deepest[at] = std::max(p.x.deepest[at], state.overlap / s.radius[i]);
+                p.x.kept[at].push_back({wall_key(w, touch.face), state.spring, state.rolling});
                 ++contacts;
             }
         }
     }
     return contacts;
+}
+
+/// Bins the faces of the mesh walls for the farthest reach of any sphere (its radius and
+/// cohesion's reach), a quarter more to spare rebuilding as grains arrive; rebuilt only when a
+/// sphere reaches farther. The grid selects faces only: no result depends on when it was built.
+void index_mesh_walls(const GrainSet& g, const SphereSet& s, std::vector<PlaneWall>& walls,
+                      const ContactLaw& law) {
+    if (std::none_of(walls.begin(), walls.end(), [](const PlaneWall& w) { return w.mesh(); })) {
+        return;
+    }
+    double farthest = 0.0;
+    for (Index i = 0; i < s.size(); ++i) {
+        const double mass = g.mass[static_cast<std::size_t>(s.grain[i])];
+        farthest =
+            std::max(farthest, s.radius[i] + cohesion_reach(law, law.wall_cohesion_pull, mass));
+    }
+    for (PlaneWall& wall : walls) {
+        if (wall.mesh() && wall.grid.reach() < farthest) {
+            wall.index_faces(1.25 * farthest);
+        }
+    }
 }
 
 } // namespace
@@ -262,8 +319,9 @@ ContactBooks evaluate_contacts(GrainSet& g, SphereSet& s,
     scratch.deepest.resize(count);
     scratch.kept.resize(count);
     scratch.records.resize(scratch.record ? count : 0);
+    index_mesh_walls(g, s, walls, scene.law);
     const std::size_t wall_count = walls.size();
-    scratch.on_walls.assign(static_cast<std::size_t>(g.size()) * wall_count, Vec3::Zero());
+    scratch.on_walls.assign(static_cast<std::size_t>(g.size()) * wall_count, WallShare{});
     s.first_of_grains(g.size(), scratch.first);
     Pass p{g, s, scene, time_step, scratch, scene.body_walls.size()};
 #pragma omp parallel for schedule(static)
@@ -325,8 +383,11 @@ ContactBooks evaluate_contacts(GrainSet& g, SphereSet& s,
     // thread count.
     for (std::size_t w = 0; w < wall_count; ++w) {
         walls[w].force = Vec3::Zero();
+        walls[w].normal_force = 0.0;
         for (Index k = 0; k < g.size(); ++k) {
-            walls[w].force += scratch.on_walls[static_cast<std::size_t>(k) * wall_count + w];
+            const WallShare& share = scratch.on_walls[static_cast<std::size_t>(k) * wall_count + w];
+            walls[w].force += share.force;
+            walls[w].normal_force += share.normal;
         }
     }
     for (Index i = 0; i < n; ++i) {

@@ -54,6 +54,13 @@ struct PairResult {
     bool touching = false;        ///< else a cohesive pull across a gap
 };
 
+/// A grain's load on a wall: the force, and the sum of its contacts' normal forces (pushing
+/// positive, a cohesive pull negative).
+struct WallShare {
+    Vec3 force = Vec3::Zero();
+    double normal = 0.0;
+};
+
 /// The pass's per-sphere buffers, kept from one evaluation to the next so that a step
 /// allocates nothing once the scene's size has settled.
 struct ContactScratch {
@@ -67,7 +74,7 @@ struct ContactScratch {
     std::vector<double> energy;
     std::vector<double> deepest;
     std::vector<std::vector<Spring>> kept; ///< the springs the step leaves, becoming the set's
-    std::vector<Vec3> on_walls;            ///< each grain's load on each wall
+    std::vector<WallShare> on_walls;       ///< each grain's load on each wall
     std::vector<Index> first;              ///< SphereSet::first_of_grains
     /// Per neighbour entry: whether the pair acts (set in the row of its lower id) and its
     /// result there; for each entry, the position of the same pair in the partner's row.

@@ -4,6 +4,7 @@
 #include "io/case_table.hpp"
 #include "io/named_index.hpp"
 #include "io/scene_settings.hpp"
+#include "io/surface_mesh_reader.hpp"
 #include "materials/material_library.hpp"
 
 #include <Eigen/Geometry>
@@ -202,7 +203,7 @@ BodySettings read_body(const io::CaseTable& table, const materials::MaterialLibr
 
 PlaneWall::Face read_rectangle(const io::CaseTable& table) {
     PlaneWall::Face face;
-    face.bounded = true;
+    face.shape = PlaneWall::Shape::rectangle;
     face.point = table.vector("origin", dim::kLength);
     face.edge_u = table.vector("edge_u", dim::kLength);
     face.edge_v = table.vector("edge_v", dim::kLength);
@@ -219,13 +220,39 @@ PlaneWall::Face read_rectangle(const io::CaseTable& table) {
     return face;
 }
 
+/// A wall's prescribed translation: velocity, move_start, move_end.
+void read_motion(const io::CaseTable& table, PlaneWall& wall) {
+    wall.velocity = table.vector_or("velocity", dim::kVelocity, Vec3::Zero());
+    if (table.has("move_start")) {
+        wall.move_start = table.quantity("move_start", dim::kTime);
+        if (!(wall.move_start >= 0.0)) {
+            table.fail("move_start", "expected a time >= 0 s");
+        }
+    }
+    if (table.has("move_end")) {
+        wall.move_end = table.quantity("move_end", dim::kTime);
+        if (!(wall.move_end > wall.move_start)) {
+            table.fail("move_end", "expected a time after move_start");
+        }
+    }
+}
+
 PlaneWall read_wall(const io::CaseTable& table, int up) {
     PlaneWall wall;
     wall.name = table.string("name");
     if (table.has("remove_at")) {
         wall.remove_at = table.positive_quantity("remove_at", dim::kTime, true);
     }
-    const std::string type = table.choice("type", {"plane", "rectangle", "box"});
+    read_motion(table, wall);
+    const std::string type = table.choice("type", {"plane", "rectangle", "box", "mesh"});
+    if (type == "mesh") {
+        const io::SurfaceMesh mesh = io::read_surface_mesh(table);
+        if (mesh.triangles.empty() && mesh.quads.empty()) {
+            table.fail("file", "expected a surface mesh of triangles or quads");
+        }
+        wall.set_mesh(mesh);
+        return wall;
+    }
     if (type == "rectangle") {
         wall.faces.push_back(read_rectangle(table));
         return wall;

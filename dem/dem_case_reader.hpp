@@ -96,10 +96,10 @@ inline constexpr std::array<io::KeySpec, 16> kDemBodyKeys{{
 }};
 
 /// The keys of each [[dem.wall]].
-inline constexpr std::array<io::KeySpec, 11> kDemWallKeys{{
+inline constexpr std::array<io::KeySpec, 14> kDemWallKeys{{
     {"name", "string", "", "names the wall in wall_forces.csv and summary.json"},
-    {"type", "`plane`, `rectangle` or `box`", "",
-     "an unbounded plane, a rectangular plate, or the inside of a box"},
+    {"type", "`plane`, `rectangle`, `box` or `mesh`", "",
+     "an unbounded plane, a rectangular plate, the inside of a box, or a surface mesh"},
     {"point", "length vector", "required for a plane", "a point of the plane"},
     {"normal", "vector", "required for a plane", "points into the material"},
     {"origin", "length vector", "required for a rectangle", "a corner of the rectangle"},
@@ -110,6 +110,10 @@ inline constexpr std::array<io::KeySpec, 11> kDemWallKeys{{
     {"max", "length vector", "required for a box", "the box's inner upper corner"},
     {"open_top", "boolean", "true", "a box without its top face", 1.0},
     {"remove_at", "time", "never", "the wall leaves the scene at this time (a gate that opens)"},
+    {"velocity", "velocity vector", "0 m/s",
+     "the wall translates at this velocity from move_start to move_end"},
+    {"move_start", "time", "0 s", "when the wall starts to move"},
+    {"move_end", "time", "never", "when it stops, after move_start"},
 }};
 
 /// The keys of each [[dem.source]].

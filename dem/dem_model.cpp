@@ -104,7 +104,7 @@ DemModel::DemModel(DemSettings settings, const io::SceneSettings& scene,
                                         [this] { return sinks_->discharged(); },
                                         [this] { return sources_->created_mass(); }}));
     }
-    evaluate();
+    evaluate(0.0);
     start_energy_ = energy().total();
 }
 
@@ -207,7 +207,10 @@ double DemModel::stable_time_step() const {
     return shortest_contact_time(speed) / settings_.steps_per_contact;
 }
 
-void DemModel::evaluate() {
+void DemModel::evaluate(double time) {
+    for (PlaneWall& wall : walls_) {
+        wall.move_to(time);
+    }
     neighbours_.update(spheres_.position, {});
     books_ =
         evaluate_contacts(grains_, spheres_, neighbours_, walls_,
@@ -282,7 +285,7 @@ void DemModel::advance(double t, double dt) {
     }
     spheres_.place(g);
     step_ = dt;
-    evaluate();
+    evaluate(t + dt);
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
         g.velocity[i] += half / g.mass[i] * g.force[i];
@@ -305,6 +308,7 @@ void DemModel::exchange(double t, double dt) {
         if (!wall.removed && time >= wall.remove_at) {
             wall.removed = true;
             wall.force = Vec3::Zero();
+            wall.normal_force = 0.0;
             std::ostringstream text;
             text << "wall " << wall.name << " removed at t = " << time << " s";
             events_.push_back(text.str());

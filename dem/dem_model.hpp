@@ -92,7 +92,8 @@ class DemModel final : public io::Stepper, public io::Reporter {
                              double speed) const;
     /// Whether the linear law's dashpot stops some pair before it rebounds.
     bool over_damped() const;
-    void evaluate();
+    /// The forces at the grains' positions and the walls' places at `time`.
+    void evaluate(double time);
     /// After the step [t, t + dt]: walls whose remove_at it reached leave, grains that reached
     /// a sink leave, and the sources' grains enter.
     void exchange(double t, double dt);

@@ -121,12 +121,15 @@ void DemModel::write_checkpoint(std::ostream& out) const {
     io::write_array(out, start_position_);
     write_spheres(out, spheres_);
     std::vector<Vec3> wall_forces;
+    std::vector<double> normal_forces;
     std::vector<char> removed;
     for (const PlaneWall& wall : walls_) {
         wall_forces.push_back(wall.force);
+        normal_forces.push_back(wall.normal_force);
         removed.push_back(wall.removed ? 1 : 0);
     }
     io::write_array(out, wall_forces);
+    io::write_array(out, normal_forces);
     io::write_array(out, removed);
     io::write_value(out, books_);
     io::write_value(out, step_);
@@ -145,11 +148,14 @@ void DemModel::read_checkpoint(std::istream& in) {
     }
     spheres_.place(grains_);
     std::vector<Vec3> wall_forces;
+    std::vector<double> normal_forces;
     std::vector<char> removed;
     io::read_array(in, wall_forces, walls_.size(), "wall forces");
+    io::read_array(in, normal_forces, walls_.size(), "walls' normal forces");
     io::read_array(in, removed, walls_.size(), "walls removed");
     for (std::size_t w = 0; w < walls_.size(); ++w) {
         walls_[w].force = wall_forces[w];
+        walls_[w].normal_force = normal_forces[w];
         walls_[w].removed = removed[w] != 0;
     }
     books_ = io::read_value<ContactBooks>(in);

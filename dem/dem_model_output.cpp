@@ -1,6 +1,7 @@
 #include "dem/dem_model.hpp"
 #include "io/output_streams.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 // DemModel's output: the frames' grain blocks, wall_forces.csv and the summary's figures.
@@ -127,8 +128,9 @@ void DemModel::append_results(double /*t*/, std::vector<io::ResultFigure>& resul
     results.push_back({"contact_energy", e.elastic, "J", std::nullopt, ""});
     results.push_back({"gravity_work", -e.gravity, "J", std::nullopt, ""});
     // What the dashpots, the sliders and cohesion's partings took: the books' balance, where
-    // no sink carries energy out of the scene and no source brings it in.
-    if (sinks_->empty() && sources_->empty()) {
+    // no sink carries energy out of the scene, no source brings it in and no wall moves.
+    if (sinks_->empty() && sources_->empty() &&
+        std::none_of(walls_.begin(), walls_.end(), [](const PlaneWall& w) { return w.moves(); })) {
         results.push_back({"dissipated_energy", start_energy_ - e.total(), "J", std::nullopt, ""});
     }
     results.push_back(
@@ -149,6 +151,8 @@ void DemModel::append_results(double /*t*/, std::vector<io::ResultFigure>& resul
             results.push_back(
                 {"wall_" + wall.name + "_force_" + axis, wall.force[a], "N", std::nullopt, ""});
         }
+        results.push_back(
+            {"wall_" + wall.name + "_normal_force", wall.normal_force, "N", std::nullopt, ""});
     }
     const double g_norm = gravity_.norm();
     if (!walls_.empty() && g_norm > 0.0) {
@@ -174,7 +178,10 @@ void DemModel::describe_model(std::vector<io::ModelChoice>& choices) const {
             {"dem body " + body_names_[b], "spheres of material " + body_materials_[b]});
     }
     for (const PlaneWall& wall : walls_) {
-        choices.push_back({"dem wall " + wall.name, "rigid plane faces"});
+        choices.push_back({"dem wall " + wall.name,
+                           wall.mesh()
+                               ? "rigid mesh of " + std::to_string(wall.faces.size()) + " triangles"
+                               : std::string("rigid plane faces")});
     }
 }
 

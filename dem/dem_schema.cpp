@@ -1,6 +1,7 @@
 #include "dem/dem_schema.hpp"
 
 #include "dem/dem_case_reader.hpp"
+#include "io/surface_mesh_reader.hpp"
 
 #include <array>
 
@@ -10,7 +11,7 @@ namespace {
 
 constexpr std::string_view kGuide = "docs/user-guide/dem.md";
 
-const std::array<io::KeyTable, 6> kTables{{
+const std::array<io::KeyTable, 7> kTables{{
     {"dem", false, "the discrete element method: its step and neighbour search", kDemKeys, kGuide,
      "### `[dem]`"},
     {"dem.contact", false, "the contact law between grains and with walls", kDemContactKeys, kGuide,
@@ -19,6 +20,8 @@ const std::array<io::KeyTable, 6> kTables{{
      kGuide, "### `[[dem.body]]`"},
     {"dem.wall", true, "a rigid wall of flat faces: a plane, a rectangle or a box", kDemWallKeys,
      kGuide, "### `[[dem.wall]]`"},
+    {"dem.wall", true, "a mesh wall's surface", io::kSurfaceMeshKeys, kGuide,
+     "### Mesh walls: `[[dem.wall]]` type = \"mesh\""},
     {"dem.sink", true, "a region grains leave the scene through", particles::kSinkKeys, kGuide,
      "### `[[dem.sink]]`"},
     {"dem.source", true, "a box grains of a body rain in through", kDemSourceKeys, kGuide,

@@ -67,16 +67,9 @@ bool GrainSources::free(const Vec3& centre, double radius,
             return false;
         }
     }
-    double overlap = 0.0;
-    Vec3 normal;
-    for (const PlaneWall& wall : walls_) {
-        for (const PlaneWall::Face& face : wall.faces) {
-            if (!wall.removed && touches(face, centre, radius, overlap, normal)) {
-                return false;
-            }
-        }
-    }
-    return true;
+    return std::none_of(walls_.begin(), walls_.end(), [&](const PlaneWall& wall) {
+        return !wall.removed && wall.touched_by(centre, radius);
+    });
 }
 
 std::optional<particles::Arrival>

@@ -10,7 +10,7 @@
 namespace grainload::dem {
 
 /// The springs a sphere keeps with a partner: another sphere (its id) or a wall face
-/// (kWallPartner + 256 wall + face): the tangential spring's stretch and the rolling spring's
+/// (kWallPartner + 2^32 wall + face): the tangential spring's stretch and the rolling spring's
 /// torque. Kept by the sphere of the lower id of a pair, so that a grain's contacts travel with
 /// it wherever it goes (another rank, a compacted set).
 struct Spring {

@@ -47,6 +47,8 @@ void read_costs(const io::JsonValue& file, Calibration& c) {
     get("shell_seconds_per_dof_settled_step", c.shell_seconds_per_dof_settled_step);
     get("shell_seconds_per_element_assembly", c.shell_seconds_per_element_assembly);
     get("shell_seconds_per_dof_back_substitution", c.shell_seconds_per_dof_back_substitution);
+    get("dem_seconds_per_step", c.dem_seconds_per_step);
+    get("dem_seconds_per_grain_step", c.dem_seconds_per_grain_step);
     get("seconds_per_frame", c.seconds_per_frame);
     get("seconds_per_frame_point", c.seconds_per_frame_point);
 }

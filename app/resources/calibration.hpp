@@ -51,6 +51,13 @@ struct Calibration {
     /// its team's futex).
     double seconds_per_step_2d = 3.7e-5;
     double seconds_per_step_3d = 3.8e-5;
+    /// A DEM step's fixed cost and its cost per grain (the neighbour list, the contacts, the
+    /// integration): `grainload run` of a lone grain, 10 000 steps against 2000, and of 1000
+    /// glass beads thrown into a box, 15 000 steps against 12 000, piled on its floor
+    /// (bench/support/output_calibration.hpp). Built-in: bench/sph_throughput --calibrate on the
+    /// 2-core development machine, quiet, 2026-12-06 (6.8e-6 s and 2.26e-7 s).
+    double dem_seconds_per_step = 6.8e-6;
+    double dem_seconds_per_grain_step = 2.3e-7;
     /// Speed-up of `threads_measured` threads over one on the SPH step, measured the same way
     /// (best of alternated runs). One below 1 contradicts itself (more threads cannot be slower
     /// on an idle machine: the measurement met a busy one) and is discarded on reading:

@@ -40,6 +40,8 @@ void write_calibration(const std::string& path, const CalibrationFile& c) {
         put("shell_seconds_per_dof_settled_step", c.shell.per_dof_settled_step);
         put("shell_seconds_per_element_assembly", c.shell.per_element_assembly);
         put("shell_seconds_per_dof_back_substitution", c.shell.per_dof_back_substitution);
+        put("dem_seconds_per_step", c.dem.per_step);
+        put("dem_seconds_per_grain_step", c.dem.per_grain_step);
         put("seconds_per_frame", c.output.per_frame);
         put("seconds_per_frame_point", c.output.per_point);
         put("threads_measured", c.threads);

@@ -28,6 +28,7 @@ struct CalibrationFile {
     ShellCosts shell;
     FrameCosts output;
     StepCosts steps;
+    DemCosts dem;
     int threads = 1;
     double speedup = 1.0;
     double load_before = 0.0; ///< other processes' use of the machine before it measured [cores]

@@ -23,9 +23,10 @@ struct FrameRun {
 };
 
 /// `grainload run` of `text` with `frames` - 1 output intervals over `end` at steps of `step`
-/// (default: 500 steps); its summary's CPU time and points; zeros when it failed.
+/// (default: 500 steps; `method`.time_step); its summary's CPU time and points; zeros when it
+/// failed.
 FrameRun run_frames(const fs::path& grainload, const std::string& text, double end, int frames,
-                    double step = 0.0) {
+                    double step = 0.0, const char* method = "sph") {
     const fs::path dir =
         fs::temp_directory_path() / ("grainload_bench_frames_" + std::to_string(getpid()));
     fs::remove_all(dir);
@@ -35,8 +36,8 @@ FrameRun run_frames(const fs::path& grainload, const std::string& text, double e
     char settings[256];
     std::snprintf(settings, sizeof settings,
                   " --set 'case.end_time=%.9g s' --set 'case.output_interval=%.9g s' "
-                  "--set 'sph.time_step=%.9g s'",
-                  end, end / (frames - 1), step > 0.0 ? step : end / 500.0);
+                  "--set '%s.time_step=%.9g s'",
+                  end, end / (frames - 1), method, step > 0.0 ? step : end / 500.0);
     const std::string command = grainload.string() + " run '" + file.string() + "' --out '" +
                                 (dir / "out").string() + "' --threads 1" + settings +
                                 " > /dev/null 2>&1";
@@ -88,12 +89,14 @@ fs::path grainload_executable() {
     return grainload;
 }
 
-/// CPU seconds of one step of `text` beyond what its start and two frames cost.
-double step_of(const fs::path& grainload, const std::string& text, double step) {
+/// CPU seconds of one step of `text` beyond what its start and two frames cost, from `from` to
+/// `to` steps; the run's points.
+FrameRun step_of(const fs::path& grainload, const std::string& text, double step,
+                 const char* method = "sph", double from = 2000.0, double to = 10000.0) {
     const auto [few, many] =
-        least_of_three([&] { return run_frames(grainload, text, 2000.0 * step, 2, step); },
-                       [&] { return run_frames(grainload, text, 10000.0 * step, 2, step); });
-    return std::max(0.0, (many.cpu_seconds - few.cpu_seconds) / 8000.0);
+        least_of_three([&] { return run_frames(grainload, text, from * step, 2, step, method); },
+                       [&] { return run_frames(grainload, text, to * step, 2, step, method); });
+    return {std::max(0.0, (many.cpu_seconds - few.cpu_seconds) / (to - from)), many.points};
 }
 
 } // namespace
@@ -104,10 +107,50 @@ StepCosts step_costs(const std::string& tiny_2d, const std::string& tiny_3d, dou
     if (grainload.empty()) {
         return c;
     }
-    c.per_step_2d = step_of(grainload, tiny_2d, time_step);
-    c.per_step_3d = step_of(grainload, tiny_3d, time_step);
+    c.per_step_2d = step_of(grainload, tiny_2d, time_step).cpu_seconds;
+    c.per_step_3d = step_of(grainload, tiny_3d, time_step).cpu_seconds;
     std::printf("steps: %.3e s per 2D step, %.3e per 3D step beyond their particles' work\n",
                 c.per_step_2d, c.per_step_3d);
+    return c;
+}
+
+namespace {
+
+/// A DEM case of glass beads of radius 2.5 mm (Hertz-Mindlin, E = 10 MPa, friction 0.5) in a
+/// 0.1 m square box: `body` is its [[dem.body]] table's placement. Damped (gamma_n = 3000 1/s)
+/// so that beads thrown down pile within 60 ms (a mean of 2.5-2.8 contacts per bead from 60 to
+/// 75 ms, where gamma_n = 200 1/s leaves them bouncing, 0.3 contacts a bead).
+std::string dem_case(const std::string& body) {
+    return "[case]\nend_time = \"1 s\"\n[[material]]\nname = \"glass\"\nmodel = "
+           "\"linear_elastic\"\ndensity = \"2500 kg/m^3\"\nyoungs_modulus = \"10 MPa\"\n"
+           "poisson_ratio = 0.3\n[dem]\n[dem.contact]\nlaw = \"hertz_mindlin\"\n"
+           "gamma_n = \"3000 1/s\"\ngamma_t = \"500 1/s\"\nfriction = 0.5\n[[dem.body]]\n"
+           "name = \"beads\"\nmaterial = \"glass\"\nradius = \"2.5 mm\"\n" +
+           body +
+           "[[dem.wall]]\nname = \"box\"\ntype = \"box\"\nmin = \"0 0 0 m\"\n"
+           "max = \"0.1 0.1 10 m\"\n";
+}
+
+} // namespace
+
+DemCosts dem_costs() {
+    const std::string tiny = dem_case("centre = \"0.05 0.05 5 m\"\n");
+    // 1000 beads at solid fraction 0.25: a layer 26 mm deep.
+    const std::string packed = dem_case("count = 1000\nmin = \"0 0 0 m\"\n"
+                                        "max = \"0.1 0.1 0.0262 m\"\nvelocity = \"0 0 -1 m/s\"\n");
+    const double time_step = 5e-6;
+    DemCosts c;
+    const fs::path grainload = grainload_executable();
+    if (grainload.empty()) {
+        return c;
+    }
+    c.per_step = step_of(grainload, tiny, time_step, "dem").cpu_seconds;
+    const FrameRun step = step_of(grainload, packed, time_step, "dem", 12000.0, 15000.0);
+    if (step.points > 0.0) {
+        c.per_grain_step = std::max(0.0, (step.cpu_seconds - c.per_step) / step.points);
+    }
+    std::printf("dem: %.3e s per step and %.3e per grain-step (%.0f grains: %.3e s a step)\n",
+                c.per_step, c.per_grain_step, step.points, step.cpu_seconds);
     return c;
 }
 

@@ -35,4 +35,23 @@ struct StepCosts {
 /// the executable cannot be run.
 StepCosts step_costs(const std::string& tiny_2d, const std::string& tiny_3d, double time_step);
 
+/// A DEM step's cost: a fixed part, whatever its grains (its passes' loops, the books), and a
+/// part per grain (the neighbour list, the contact laws, the integration)
+/// [CPU s of one thread] (app/resources/calibration.hpp, dem_seconds_per_step and
+/// dem_seconds_per_grain_step).
+struct DemCosts {
+    double per_step = 0.0;
+    double per_grain_step = 0.0;
+};
+
+/// Measured as `grainload run` pays them, on one thread with 2 output instants, at a fixed step
+/// of 5 us: a grain falling alone (its own work negligible) for 2000 and for 10 000 steps, the
+/// difference over 8000 steps the fixed part; 1000 glass beads of radius 2.5 mm thrown down at
+/// 1 m/s into a 0.1 m square box from a layer at solid fraction 0.25 (Hertz-Mindlin with
+/// friction, damped), for 12 000 and 15 000 steps, when they have piled on the floor (from
+/// 60 ms: 2.5-2.8 contacts a bead, the regime of a silo or a hopper):
+/// the difference over the grains and 3000 steps, less the fixed part, the part per grain.
+/// Zeros when the executable cannot be run.
+DemCosts dem_costs();
+
 } // namespace grainload::bench

@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
@@ -227,6 +228,30 @@ TEST(CostEstimate, ADynamicShellIsFactorisedAgainAtEveryChangeOfItsStep) {
         rows += 1.0;
     }
     EXPECT_EQ(result(summary, "fem_back_substitutions"), rows);
+}
+
+// A DEM run costs its grain-steps at the calibration's cost per grain-step (shared by the
+// threads) and each step its fixed cost: with a calibration of 1e-6 s per grain-step, 2e-5 s
+// per step, free frames and one thread, the one-grain rolling sphere's estimate is its steps x
+// 2.1e-5 s (to the 12 digits summary.json prints; the steps counted exactly: a fixed step
+// from the contact time).
+TEST(CostEstimate, ADemRunCostsItsGrainStepsAndItsSteps) {
+    const std::string calibration = test_folder("cost_dem_calibration.json");
+    std::ofstream(calibration) << "{\n  \"date\": \"2026-12-06 19:00\",\n"
+                               << "  \"dem_seconds_per_step\": 2e-5,\n"
+                               << "  \"dem_seconds_per_grain_step\": 1e-6,\n"
+                               << "  \"seconds_per_frame\": 0,\n"
+                               << "  \"seconds_per_frame_point\": 0,\n"
+                               << "  \"threads_measured\": 1,\n  \"speedup\": 1\n}\n";
+    setenv("GRAINLOAD_CALIBRATION", calibration.c_str(), 1);
+    const auto summary = run_and_read(
+        "'" + source_path("cases/rolling_resistance/rolling_sphere.toml") + "'", "cost_dem");
+    unsetenv("GRAINLOAD_CALIBRATION");
+    const auto* estimate = summary.find("estimate");
+    ASSERT_NE(estimate, nullptr);
+    const double steps = *summary.number_at("steps");
+    EXPECT_EQ(estimate->number_at("steps"), steps);
+    EXPECT_NEAR(*estimate->number_at("wall_time_s"), steps * 2.1e-5, 1e-9 * steps * 2.1e-5);
 }
 
 } // namespace
