@@ -10,7 +10,8 @@ namespace grainload::dem {
 
 namespace {
 
-constexpr std::string_view kWallForcesHeader = "time_s,wall,force_x_N,force_y_N,force_z_N\n";
+constexpr std::string_view kWallForcesHeader =
+    "time_s,wall,force_x_N,force_y_N,force_z_N,normal_N\n";
 
 /// A grain's orientation as its rotation vector (axis times angle in radians, |angle| <= pi):
 /// three components, as ParaView's glyphs take them.
@@ -95,7 +96,7 @@ void DemModel::write_wall_rows(double time) const {
     rows.precision(17);
     for (const PlaneWall& wall : walls_) {
         rows << time << ',' << wall.name << ',' << wall.force.x() << ',' << wall.force.y() << ','
-             << wall.force.z() << '\n';
+             << wall.force.z() << ',' << wall.normal_force << '\n';
     }
     output_->open("wall_forces.csv", kWallForcesHeader).append(rows.str());
 }
