@@ -223,17 +223,10 @@ PlaneWall::Face read_rectangle(const io::CaseTable& table) {
 /// A wall's prescribed translation: velocity, move_start, move_end.
 void read_motion(const io::CaseTable& table, PlaneWall& wall) {
     wall.velocity = table.vector_or("velocity", dim::kVelocity, Vec3::Zero());
-    if (table.has("move_start")) {
-        wall.move_start = table.quantity("move_start", dim::kTime);
-        if (!(wall.move_start >= 0.0)) {
-            table.fail("move_start", "expected a time >= 0 s");
-        }
-    }
-    if (table.has("move_end")) {
-        wall.move_end = table.quantity("move_end", dim::kTime);
-        if (!(wall.move_end > wall.move_start)) {
-            table.fail("move_end", "expected a time after move_start");
-        }
+    wall.move_start = table.positive_quantity_or("move_start", dim::kTime, 0.0, true);
+    wall.move_end = table.quantity_or("move_end", dim::kTime, wall.move_end);
+    if (!(wall.move_end > wall.move_start)) {
+        table.fail("move_end", "expected a time after move_start");
     }
 }
 

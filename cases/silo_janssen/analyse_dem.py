@@ -79,7 +79,8 @@ def main():
     floor = -results["wall_floor_force_z"]["value"]
     loads = [-results["wall_%s_force_z" % b]["value"] for b in bands]
     normals = [results["wall_%s_normal_force" % b]["value"] for b in bands]
-    z, r = grains(out)[0][:, 2], grains(out)[1]
+    centres, r = grains(out)
+    z = centres[:, 2]
     weight = DENSITY * G * np.sum(4.0 / 3.0 * math.pi * r**3)
     low, high = 2.0 * r.max(), 8.0 * r.max()
     rho_b = DENSITY * slab_volume(z, r, low, high) / (area * (high - low))
