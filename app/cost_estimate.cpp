@@ -6,6 +6,7 @@
 #include "app/scene.hpp"
 #include "app/trade/trade_table.hpp"
 #include "coupling/coupled_model.hpp"
+#include "coupling/dem_coupled_model.hpp"
 #include "dem/dem_model.hpp"
 #include "fem/shell_model.hpp"
 #include "io/json_value.hpp"
@@ -198,6 +199,18 @@ double add_sph_counts(const sph::SphModel& sph, const Discharge& discharge, doub
     return sph_seconds_per_step(sph, sources - discharge.average, calibration, e);
 }
 
+/// The DEM's grains and their cost over `steps` steps into `e`.
+void add_dem(const dem::DemModel& dem, double steps, double end, const Calibration& calibration,
+             CostEstimate& e) {
+    e.dem_grains += dem.most_grains(end);
+    const double grain_steps = dem.grain_steps(steps, end);
+    e.dem_grain_steps += grain_steps;
+    // As the SPH step: the per-grain work shared by the threads, the fixed part whole.
+    e.dem_seconds +=
+        grain_steps * calibration.dem_seconds_per_grain_step / speedup_of(e.threads, calibration) +
+        steps * calibration.dem_seconds_per_step;
+}
+
 /// Every output instant writes a frame, the checkpoint and the logs (t = 0 included).
 void add_output(const StepPlan& plan, const Calibration& calibration, CostEstimate& e) {
     e.frames = static_cast<double>(plan.segments.size()) + 1.0;
@@ -264,20 +277,24 @@ CostEstimate estimate_cost(const Scene& scene, int threads, const Calibration& c
         if (const auto* model = dynamic_cast<const coupling::CoupledModel*>(stepper.get())) {
             add_shell(model->fem(), true, model->loads_shell());
             add_window_limit(*model, e);
+        } else if (const auto* grains =
+                       dynamic_cast<const coupling::DemCoupledModel*>(stepper.get())) {
+            add_shell(grains->fem(), true, grains->loads_shell());
         } else if (const auto* fem = dynamic_cast<const fem::ShellModel*>(stepper.get())) {
             add_shell(*fem, false, false);
         }
     }
     for (const auto& stepper : scene.steppers) {
-        if (const auto* dem = dynamic_cast<const dem::DemModel*>(stepper.get())) {
-            e.dem_grains += dem->most_grains(scene.settings.end_time);
-            const double grain_steps =
-                dem->grain_steps(static_cast<double>(plan.steps), scene.settings.end_time);
-            e.dem_grain_steps += grain_steps;
-            // As the SPH step: the per-grain work shared by the threads, the fixed part whole.
-            e.dem_seconds += grain_steps * calibration.dem_seconds_per_grain_step /
-                                 speedup_of(e.threads, calibration) +
-                             static_cast<double>(plan.steps) * calibration.dem_seconds_per_step;
+        const dem::DemModel* dem = dynamic_cast<const dem::DemModel*>(stepper.get());
+        double dem_steps = static_cast<double>(plan.steps);
+        if (const auto* grains = dynamic_cast<const coupling::DemCoupledModel*>(stepper.get())) {
+            // Each window sub-cycled in uniform DEM steps (DemCoupledModel::subcycle).
+            dem = &grains->dem();
+            dem_steps *= std::max(1.0, std::ceil(grains->stable_time_step() /
+                                                 dem->stable_time_step() * (1.0 - 1e-12)));
+        }
+        if (dem != nullptr) {
+            add_dem(*dem, dem_steps, scene.settings.end_time, calibration, e);
         }
     }
     add_output(plan, calibration, e);

@@ -4,6 +4,7 @@
 #include "app/resources/memory_guard.hpp"
 #include "coupling/coupled_model.hpp"
 #include "coupling/coupling_case_reader.hpp"
+#include "coupling/dem_coupled_model.hpp"
 #include "dem/dem_model.hpp"
 #include "fem/shell_model.hpp"
 #include "io/deck_ledger.hpp"
@@ -20,18 +21,19 @@ namespace dim = io::dimension;
 
 namespace {
 
-/// A [dem] scene's grains touch only its own walls: SPH or shells in the same file would be
-/// passed through unseen.
+/// A [dem] scene's grains touch its own walls and the coupled shells: SPH in the same file, or
+/// shells with no [coupling], would be passed through unseen.
 void refuse_beside_dem(const io::CaseTable& root) {
     if (!root.has("dem")) {
         return;
     }
-    for (const char* other : {"sph", "fem", "coupling"}) {
-        if (root.has(other)) {
-            root.fail(other, "a [dem] scene's grains touch only its [[dem.wall]] walls: expected "
-                             "no [" +
-                                 std::string(other) + "] beside [dem]");
-        }
+    if (root.has("sph")) {
+        root.fail("sph", "a [dem] scene's grains touch only its [[dem.wall]] walls and coupled "
+                         "shells: expected no [sph] beside [dem]");
+    }
+    if (root.has("fem") && !root.has("coupling")) {
+        root.fail("fem", "a [dem] scene's grains touch a shell through a [coupling] with its "
+                         "[[coupling.interface]]: expected [coupling] beside [dem] and [fem]");
     }
 }
 
@@ -59,13 +61,15 @@ std::unique_ptr<Scene> Scene::from_document(std::unique_ptr<io::CaseDocument> do
         const std::optional<double> spare_particles =
             refuse_oversized_scene(root, scene->settings.dimension, memory);
         refuse_beside_dem(root);
-        if (root.has("coupling")) {
+        if (root.has("coupling") && root.has("dem")) {
+            scene->add(coupling::read_dem_coupled_model(root, scene->settings, scene->materials));
+        } else if (root.has("coupling")) {
             scene->add(coupling::read_coupled_model(root, scene->settings, scene->materials,
                                                     spare_particles));
         } else if (root.has("sph")) {
             scene->add(sph::SphModel::from_case(root, scene->settings, scene->materials));
         }
-        if (root.has("dem")) {
+        if (root.has("dem") && !root.has("coupling")) {
             scene->add(dem::DemModel::from_case(root, scene->settings, scene->materials));
         }
         if (root.has("fem") && !root.has("coupling")) {
@@ -134,6 +138,9 @@ Index Scene::material_point_count() const {
             count += material_particles(coupled->sph());
         } else if (const auto* dem = dynamic_cast<const dem::DemModel*>(stepper.get())) {
             count += dem->point_count();
+        } else if (const auto* grains =
+                       dynamic_cast<const coupling::DemCoupledModel*>(stepper.get())) {
+            count += grains->dem().point_count();
         }
     }
     return count;
@@ -147,6 +154,9 @@ Index Scene::shell_node_count() const {
         } else if (const auto* coupled =
                        dynamic_cast<const coupling::CoupledModel*>(stepper.get())) {
             count += coupled->fem().point_count();
+        } else if (const auto* grains =
+                       dynamic_cast<const coupling::DemCoupledModel*>(stepper.get())) {
+            count += grains->fem().point_count();
         }
     }
     return count;

@@ -119,10 +119,10 @@ void run(int n, double spacing, bool dynamic, int ratio, int windows) {
         after.factorization - before.factorization + after.analysis - before.analysis;
     const double solve = after.solve - before.solve;
     const double assembly = m.fem_seconds() - factor - solve;
-    const double share = (m.map_seconds() + m.fem_seconds()) / m.sph_seconds();
+    const double share = (m.map_seconds() + m.fem_seconds()) / m.sand_seconds();
     std::printf("%-8s %4d x %-4d %6lld %4d %10.3f %8.3f %9.3f %8.3f %8.3f %8.1f %%\n",
                 dynamic ? "dynamic" : "static", n, n,
-                static_cast<long long>(model->sph().point_count()), ratio, m.sph_seconds(),
+                static_cast<long long>(model->sph().point_count()), ratio, m.sand_seconds(),
                 m.map_seconds(), assembly, factor, solve, 100.0 * share);
 }
 

@@ -18,75 +18,24 @@ double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-/// Relative size of a load change; zero when both loads vanish.
-double relative_change(const Eigen::VectorXd& next, const Eigen::VectorXd& previous) {
-    const double scale = next.norm();
-    return scale > 0.0 ? (next - previous).norm() / scale : (previous.norm() > 0.0 ? 1.0 : 0.0);
-}
-
 } // namespace
-
-Vec3 load_resultant(const Eigen::VectorXd& load) {
-    Vec3 sum = Vec3::Zero();
-    for (Eigen::Index n = 0; n + 5 < load.size(); n += 6) {
-        sum += load.segment<3>(n);
-    }
-    return sum;
-}
 
 CoupledModel::CoupledModel(std::unique_ptr<sph::SphModel> sph, std::unique_ptr<fem::ShellModel> fem,
                            std::vector<CoupledPart> parts, CouplingSettings settings)
     : sph_(std::move(sph)), fem_(std::move(fem)), parts_(std::move(parts)), settings_(settings),
       load_(Eigen::VectorXd::Zero(6 * fem_->analysis().mesh().node_count())), start_load_(load_),
-      end_load_(load_) {
+      end_load_(load_), pressure_(fem_->analysis().mesh()) {
     sph_->exchange_particles_per_window();
-    const fem::ShellMesh& mesh = fem_->analysis().mesh();
-    node_area_.assign(static_cast<std::size_t>(mesh.node_count()), 0.0);
-    node_normal_.assign(static_cast<std::size_t>(mesh.node_count()), Vec3::Zero());
     for (const CoupledPart& part : parts_) {
-        for (const Index e : part.elements) {
-            const fem::ShellElement& element = mesh.element(e);
-            const auto& n = element.nodes;
-            const int corners = element.is_triangle() ? 3 : 4;
-            const double area = fem::element_area(mesh, element);
-            // Both sides: the element normals' side counts as compression.
-            const Vec3 normal = normal_sign(part.side) * fem::element_normal(mesh, element);
-            for (int a = 0; a < corners; ++a) {
-                node_area_[static_cast<std::size_t>(n[static_cast<std::size_t>(a)])] +=
-                    area / corners;
-                node_normal_[static_cast<std::size_t>(n[static_cast<std::size_t>(a)])] +=
-                    area * normal;
-            }
-        }
+        pressure_.add_part(fem_->analysis().mesh(), part.elements, part.side);
     }
-    for (Vec3& normal : node_normal_) {
-        if (normal.squaredNorm() > 0.0) {
-            normal.normalize();
-        }
-    }
+    pressure_.finish();
 }
 
 void CoupledModel::set_window_limits(const WindowLimits& limits) {
     stable_window_max_ = limits.dynamic_max;
     stable_window_min_ = limits.static_min;
     added_mass_lag_ = coupling::added_mass_lag(limits, settings_.window, settings_.added_mass);
-}
-
-std::vector<io::FieldArray> CoupledModel::interface_fields() const {
-    io::FieldArray pressure{"contact_pressure", 1, {}}, traction{"friction_traction", 3, {}};
-    for (std::size_t n = 0; n < node_area_.size(); ++n) {
-        Vec3 tangential = Vec3::Zero();
-        double normal_stress = 0.0;
-        if (node_area_[n] > 0.0) {
-            const Vec3 force = load_.segment<3>(static_cast<Eigen::Index>(6 * n));
-            // The sand pushes against its own side's normal: compression is -f . n.
-            normal_stress = -force.dot(node_normal_[n]) / node_area_[n];
-            tangential = (force - force.dot(node_normal_[n]) * node_normal_[n]) / node_area_[n];
-        }
-        pressure.values.push_back(normal_stress);
-        traction.values.insert(traction.values.end(), tangential.begin(), tangential.end());
-    }
-    return {pressure, traction};
 }
 
 double CoupledModel::stable_time_step() const {
@@ -130,7 +79,7 @@ int CoupledModel::subcycle(double t, double dt, WindowRecord& record) {
         const double step = n <= 1 ? remaining : remaining / static_cast<double>(n);
         auto start = Clock::now();
         sph_->advance(time, step);
-        record.sph_seconds += seconds_since(start);
+        record.sand_seconds += seconds_since(start);
         start = Clock::now();
         for (const CoupledPart& part : parts_) {
             const auto& walls = sph_->solver()->walls();
@@ -248,7 +197,7 @@ void CoupledModel::iterate_window(double t, double dt) {
             fem_->read_checkpoint(in);
         }
         run_window(t, dt, applied);
-        pending_.sph_seconds += spent.sph_seconds;
+        pending_.sand_seconds += spent.sand_seconds;
         pending_.fem_seconds += spent.fem_seconds;
         pending_.map_seconds += spent.map_seconds;
         const auto start = Clock::now();

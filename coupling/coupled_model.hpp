@@ -3,7 +3,9 @@
 
 #include "coupling/coupled_part.hpp"
 #include "coupling/coupling_monitor.hpp"
+#include "coupling/coupling_settings.hpp"
 #include "coupling/interface_accelerator.hpp"
+#include "coupling/interface_pressure.hpp"
 #include "coupling/model_hints.hpp"
 #include "coupling/shell_wall.hpp"
 #include "fem/shell_model.hpp"
@@ -20,26 +22,6 @@
 namespace grainload::coupling {
 
 struct WindowLimits;
-
-/// How each window is solved (docs/theory/coupling.md). The case file's defaults are declared
-/// with its keys (coupling_case_reader.hpp, kCouplingKeys); the values here are the same, which
-/// coupling_case_reader.cpp asserts at compile time.
-struct CouplingSettings {
-    double window = 0.0;     ///< FEM step: the coupling window [s]
-    int max_subcycles = 0;   ///< SPH steps a window may take; 0: no limit
-    int max_iterations = 1;  ///< 1: staggered with a one-window lag; > 1: fixed-point iteration
-    double relaxation = 0.5; ///< omega of the iteration's load update
-    Accelerator accelerator = Accelerator::aitken; ///< the iterated window's update
-    double iteration_tolerance = 1e-3; ///< ||F(k+1) - F(k)|| / ||F(k+1)|| that ends the iteration
-    /// Run stopped (exit 3) when |interface energy error| exceeds this fraction of the interface
-    /// work (with an absolute floor, coupling_monitor.hpp).
-    double energy_error_limit = 0.05;
-    /// beta of the added-mass springs on a static shell (coupling/added_mass.hpp); 0: none.
-    double added_mass = 0.0;
-};
-
-/// The resultant force of a nodal load vector of 6 entries per node (3 forces, 3 moments).
-Vec3 load_resultant(const Eigen::VectorXd& load);
 
 /// The SPH-shell coupling as the time loop sees it (thesis sections 5.3 and 9.1): the FEM is
 /// master, SPH its slave. advance(t, dt) is one window:
@@ -118,10 +100,6 @@ class CoupledModel final : public io::Stepper, public io::Reporter {
     void iterate_window(double t, double dt);
     /// The shell's extremes after a window, for the hints.
     void track_extremes();
-    /// Per node of the shell mesh: the interface load as contact pressure (compression
-    /// positive) and friction traction (tangential force per area), from the load over the
-    /// lumped area of the coupled elements around the node.
-    std::vector<io::FieldArray> interface_fields() const;
 
     std::unique_ptr<sph::SphModel> sph_;
     std::unique_ptr<fem::ShellModel> fem_;
@@ -132,6 +110,7 @@ class CoupledModel final : public io::Stepper, public io::Reporter {
     /// The shell's load at the window's start and end (its integrator's view; see run_window).
     Eigen::VectorXd start_load_;
     Eigen::VectorXd end_load_;
+    InterfacePressure pressure_; ///< the load's pressure and traction on the shell, for frames
     CouplingMonitor monitor_;
     /// The SPH step within windows: a collapse ends the window and is the diagnosis.
     io::StepCollapseWatch step_watch_;
@@ -140,8 +119,6 @@ class CoupledModel final : public io::Stepper, public io::Reporter {
     ShellExtremes extremes_;              ///< over the run, for the hints
     io::OutputStreams* output_ = nullptr; ///< the run's, for coupling.csv
     std::size_t windows_before_restart_ = 0;
-    std::vector<double> node_area_;  ///< coupled area around each node (0: not coupled)
-    std::vector<Vec3> node_normal_;  ///< unit normal towards the sand at each coupled node
     double stable_window_max_ = 0.0; ///< dynamic shell: the staggered window's upper limit
     double stable_window_min_ = 0.0; ///< static shell: its lower limit
     double added_mass_lag_ = 0.0;    ///< static shell with the added mass: added_mass_lag [s]

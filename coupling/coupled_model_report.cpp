@@ -8,29 +8,6 @@
 
 namespace grainload::coupling {
 
-namespace {
-
-/// Below this share of the interface impulse's magnitude a component is the residue of sums
-/// that cancel (the x and y of a load along z), not a momentum to compare.
-constexpr double kNegligibleShare = 1e-3;
-
-/// shell_impulse_AXIS, what the shell's nodes received, beside what the sand put into the
-/// coupled walls (`wall`, the SPH side's own sum) as its reference: momentum crosses the
-/// interface unchanged (the staggered exchange lags it by a window's load, an iterated one by
-/// its tolerance). `magnitude`: the interface impulse's.
-io::ResultFigure shell_impulse_figure(const std::string& axis, double shell, double wall,
-                                      double magnitude) {
-    if (std::abs(wall) < kNegligibleShare * magnitude) {
-        return {"shell_impulse_" + axis, shell, "N s", std::nullopt,
-                "its interface_impulse is below 1e-3 of the impulse: not compared"};
-    }
-    return {"shell_impulse_" + axis, shell, "N s", wall,
-            "the sand's impulse on the coupled walls (interface_impulse): momentum conservation "
-            "across the interface"};
-}
-
-} // namespace
-
 void CoupledModel::describe_model(std::vector<io::ModelChoice>& choices) const {
     sph_->describe_model(choices);
     for (const CoupledPart& part : parts_) {
@@ -69,28 +46,7 @@ void CoupledModel::append_blocks(io::Frame& frame) const {
         fem_->append_blocks(frame, {}, {}, "without_sand_");
         return;
     }
-    // The same arrays per element: the mean of its corners', for cell-based filters.
-    const std::vector<io::FieldArray> nodes = interface_fields();
-    std::vector<io::FieldArray> elements;
-    const fem::ShellMesh& mesh = fem_->analysis().mesh();
-    for (const io::FieldArray& field : nodes) {
-        io::FieldArray cell{field.name, field.components, {}};
-        const auto c = static_cast<std::size_t>(field.components);
-        for (const fem::ShellElement& element : mesh.elements()) {
-            const int corners = element.is_triangle() ? 3 : 4;
-            for (std::size_t k = 0; k < c; ++k) {
-                double sum = 0.0;
-                for (int a = 0; a < corners; ++a) {
-                    sum += field.values[c * static_cast<std::size_t>(
-                                                element.nodes[static_cast<std::size_t>(a)]) +
-                                        k];
-                }
-                cell.values.push_back(sum / corners);
-            }
-        }
-        elements.push_back(std::move(cell));
-    }
-    fem_->append_blocks(frame, nodes, elements);
+    pressure_.append_blocks(*fem_, load_, frame);
 }
 
 void CoupledModel::append_results(double t, std::vector<io::ResultFigure>& results) const {

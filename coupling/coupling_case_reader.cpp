@@ -35,107 +35,6 @@ static_assert(kDefaults.iteration_tolerance == declared("iteration_tolerance"));
 static_assert(kDefaults.energy_error_limit == declared("energy_error_limit"));
 static_assert(kDefaults.added_mass == declared("added_mass"));
 
-CouplingSettings read_settings(const io::CaseTable& table, const fem::ShellModel& fem) {
-    CouplingSettings settings;
-    if (table.has("window") || !fem.dynamic()) {
-        settings.window = table.positive_quantity("window", dim::kTime);
-    } else {
-        settings.window = fem.stable_time_step();
-    }
-    const auto fallback = [](std::string_view key) {
-        return io::default_value(kCouplingKeys, key);
-    };
-    const auto subcycles =
-        table.integer_or("max_subcycles", static_cast<std::int64_t>(fallback("max_subcycles")));
-    if (subcycles < 0) {
-        table.fail("max_subcycles", "expected 0 (no limit) or a positive number of SPH steps");
-    }
-    settings.max_subcycles = static_cast<int>(subcycles);
-    const auto iterations =
-        table.integer_or("max_iterations", static_cast<std::int64_t>(fallback("max_iterations")));
-    if (iterations < 1 || iterations > 1000) {
-        table.fail("max_iterations", "expected 1 (staggered) to 1000 passes per window");
-    }
-    settings.max_iterations = static_cast<int>(iterations);
-    settings.relaxation = table.number_or("relaxation", fallback("relaxation"));
-    settings.accelerator =
-        table.choice_or("accelerator", {"aitken", "quasi_newton"}, "aitken") == "quasi_newton"
-            ? Accelerator::quasi_newton
-            : Accelerator::aitken;
-    if (!(settings.relaxation > 0.0 && settings.relaxation <= 1.0)) {
-        table.fail("relaxation", "expected a relaxation factor in (0, 1]");
-    }
-    settings.iteration_tolerance =
-        table.number_or("iteration_tolerance", fallback("iteration_tolerance"));
-    if (!(settings.iteration_tolerance >= 0.0)) {
-        table.fail("iteration_tolerance", "expected a tolerance >= 0");
-    }
-    settings.energy_error_limit =
-        table.number_or("energy_error_limit", fallback("energy_error_limit"));
-    if (!(settings.energy_error_limit > 0.0)) {
-        table.fail("energy_error_limit", "expected a positive fraction of the interface work");
-    }
-    settings.added_mass = table.number_or("added_mass", fallback("added_mass"));
-    if (!(settings.added_mass >= 0.0 && settings.added_mass <= 100.0)) {
-        table.fail("added_mass", "expected an added-mass factor from 0 (none) to 100");
-    }
-    if (settings.added_mass > 0.0 && fem.dynamic()) {
-        table.fail("added_mass", "expected 0 with a dynamic shell: its own inertia answers the "
-                                 "sand's in the window it moves (the added mass is for a static "
-                                 "shell)");
-    }
-    return settings;
-}
-
-int part_index(const io::CaseTable& table, const std::string& key,
-               const std::vector<std::string>& parts) {
-    const std::string name = table.string(key);
-    std::string known;
-    for (std::size_t k = 0; k < parts.size(); ++k) {
-        if (parts[k] == name) {
-            return static_cast<int>(k);
-        }
-        known += (known.empty() ? "\"" : ", \"") + parts[k] + "\"";
-    }
-    table.fail(key, "expected the name of a [[fem.shell]] part (" + known + ")");
-}
-
-/// The elements of one interface: its part's, or those of its `element_sets`; none may
-/// belong to an interface before it (`coupled` flags them).
-std::vector<Index> interface_elements(const io::CaseTable& table, const fem::ShellMesh& mesh,
-                                      int part, std::vector<char>& coupled) {
-    std::vector<Index> elements = mesh.part_elements(part);
-    if (table.has("element_sets")) {
-        std::vector<char> chosen(coupled.size(), 0);
-        for (const std::string& set : table.name_list("element_sets")) {
-            if (!mesh.has_element_set(set)) {
-                std::string known;
-                for (const auto& entry : mesh.element_sets()) {
-                    known += (known.empty() ? "\"" : ", \"") + entry.first + "\"";
-                }
-                table.fail("element_sets",
-                           "no element set \"" + set + "\" in the mesh (" + known + ")");
-            }
-            for (const Index e : mesh.element_set(set)) {
-                chosen[static_cast<std::size_t>(e)] = 1;
-            }
-        }
-        std::erase_if(elements, [&](Index e) { return !chosen[static_cast<std::size_t>(e)]; });
-        if (elements.empty()) {
-            table.fail("element_sets", "the sets hold no element of the part");
-        }
-    }
-    for (const Index e : elements) {
-        if (coupled[static_cast<std::size_t>(e)]) {
-            table.fail(table.has("element_sets") ? "element_sets" : "part",
-                       "element " + std::to_string(e) +
-                           " already belongs to an interface: expected each element in one");
-        }
-        coupled[static_cast<std::size_t>(e)] = 1;
-    }
-    return elements;
-}
-
 /// Refuses an interface whose wall particles (ShellWall::particle_bound) would need more than
 /// the `spare` particles left in memory, before any is laid, at its `spacing` (or `part` when
 /// the bodies' spacing is taken), with the count and a spacing that fits; takes them from
@@ -356,11 +255,19 @@ WindowLimits check_window(const io::CaseTable& coupling, const CouplingSettings&
     return limits;
 }
 
-/// Warns about a ramp of the shell's own loads over more than a few windows, and about an
-/// added mass that makes the wall follow the load late.
-void warn_about_time(const io::CaseTable& coupling, const fem::ShellModel& fem,
-                     const CouplingSettings& settings, const WindowLimits& limits,
-                     double end_time) {
+/// Warns about an added mass that makes the wall follow the load late.
+void warn_about_lag(const io::CaseTable& coupling, const CouplingSettings& settings,
+                    const WindowLimits& limits, double end_time) {
+    if (auto warning =
+            added_mass_lag_warning(limits, settings.window, settings.added_mass, end_time)) {
+        coupling.warn(*warning);
+    }
+}
+
+} // namespace
+
+void warn_about_ramp(const io::CaseTable& coupling, const fem::ShellModel& fem,
+                     const CouplingSettings& settings, double end_time) {
     // Time is physical in a coupled run: the ramp that orders a stand-alone static analysis's
     // load steps would put the structure's own weight on over the run (the wagon's body carried
     // 23 % of it when its load was heaviest with such a ramp; docs/validation/hopper_wagon.md).
@@ -376,13 +283,106 @@ void warn_about_time(const io::CaseTable& coupling, const fem::ShellModel& fem,
                 << settings.window << " s) unless the ramp is meant";
         coupling.warn(warning.str());
     }
-    if (auto warning =
-            added_mass_lag_warning(limits, settings.window, settings.added_mass, end_time)) {
-        coupling.warn(*warning);
-    }
 }
 
-} // namespace
+CouplingSettings read_settings(const io::CaseTable& table, const fem::ShellModel& fem) {
+    CouplingSettings settings;
+    if (table.has("window") || !fem.dynamic()) {
+        settings.window = table.positive_quantity("window", dim::kTime);
+    } else {
+        settings.window = fem.stable_time_step();
+    }
+    const auto fallback = [](std::string_view key) {
+        return io::default_value(kCouplingKeys, key);
+    };
+    const auto subcycles =
+        table.integer_or("max_subcycles", static_cast<std::int64_t>(fallback("max_subcycles")));
+    if (subcycles < 0) {
+        table.fail("max_subcycles", "expected 0 (no limit) or a positive number of SPH steps");
+    }
+    settings.max_subcycles = static_cast<int>(subcycles);
+    const auto iterations =
+        table.integer_or("max_iterations", static_cast<std::int64_t>(fallback("max_iterations")));
+    if (iterations < 1 || iterations > 1000) {
+        table.fail("max_iterations", "expected 1 (staggered) to 1000 passes per window");
+    }
+    settings.max_iterations = static_cast<int>(iterations);
+    settings.relaxation = table.number_or("relaxation", fallback("relaxation"));
+    settings.accelerator =
+        table.choice_or("accelerator", {"aitken", "quasi_newton"}, "aitken") == "quasi_newton"
+            ? Accelerator::quasi_newton
+            : Accelerator::aitken;
+    if (!(settings.relaxation > 0.0 && settings.relaxation <= 1.0)) {
+        table.fail("relaxation", "expected a relaxation factor in (0, 1]");
+    }
+    settings.iteration_tolerance =
+        table.number_or("iteration_tolerance", fallback("iteration_tolerance"));
+    if (!(settings.iteration_tolerance >= 0.0)) {
+        table.fail("iteration_tolerance", "expected a tolerance >= 0");
+    }
+    settings.energy_error_limit =
+        table.number_or("energy_error_limit", fallback("energy_error_limit"));
+    if (!(settings.energy_error_limit > 0.0)) {
+        table.fail("energy_error_limit", "expected a positive fraction of the interface work");
+    }
+    settings.added_mass = table.number_or("added_mass", fallback("added_mass"));
+    if (!(settings.added_mass >= 0.0 && settings.added_mass <= 100.0)) {
+        table.fail("added_mass", "expected an added-mass factor from 0 (none) to 100");
+    }
+    if (settings.added_mass > 0.0 && fem.dynamic()) {
+        table.fail("added_mass", "expected 0 with a dynamic shell: its own inertia answers the "
+                                 "sand's in the window it moves (the added mass is for a static "
+                                 "shell)");
+    }
+    return settings;
+}
+
+int part_index(const io::CaseTable& table, const std::string& key,
+               const std::vector<std::string>& parts) {
+    const std::string name = table.string(key);
+    std::string known;
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+        if (parts[k] == name) {
+            return static_cast<int>(k);
+        }
+        known += (known.empty() ? "\"" : ", \"") + parts[k] + "\"";
+    }
+    table.fail(key, "expected the name of a [[fem.shell]] part (" + known + ")");
+}
+
+std::vector<Index> interface_elements(const io::CaseTable& table, const fem::ShellMesh& mesh,
+                                      int part, std::vector<char>& coupled) {
+    std::vector<Index> elements = mesh.part_elements(part);
+    if (table.has("element_sets")) {
+        std::vector<char> chosen(coupled.size(), 0);
+        for (const std::string& set : table.name_list("element_sets")) {
+            if (!mesh.has_element_set(set)) {
+                std::string known;
+                for (const auto& entry : mesh.element_sets()) {
+                    known += (known.empty() ? "\"" : ", \"") + entry.first + "\"";
+                }
+                table.fail("element_sets",
+                           "no element set \"" + set + "\" in the mesh (" + known + ")");
+            }
+            for (const Index e : mesh.element_set(set)) {
+                chosen[static_cast<std::size_t>(e)] = 1;
+            }
+        }
+        std::erase_if(elements, [&](Index e) { return !chosen[static_cast<std::size_t>(e)]; });
+        if (elements.empty()) {
+            table.fail("element_sets", "the sets hold no element of the part");
+        }
+    }
+    for (const Index e : elements) {
+        if (coupled[static_cast<std::size_t>(e)]) {
+            table.fail(table.has("element_sets") ? "element_sets" : "part",
+                       "element " + std::to_string(e) +
+                           " already belongs to an interface: expected each element in one");
+        }
+        coupled[static_cast<std::size_t>(e)] = 1;
+    }
+    return elements;
+}
 
 std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
                                                  const io::SceneSettings& scene,
@@ -401,7 +401,8 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
     build_walls(root, *sph, read);
     const WindowLimits limits =
         check_window(coupling, settings, *sph, *fem, read.parts, scene.end_time);
-    warn_about_time(coupling, *fem, settings, limits, scene.end_time);
+    warn_about_ramp(coupling, *fem, settings, scene.end_time);
+    warn_about_lag(coupling, settings, limits, scene.end_time);
     if (settings.added_mass > 0.0) {
         fem->analysis().set_node_springs(added_mass_springs(fem->analysis().mesh(), read.parts,
                                                             limits.sand_mass, settings.window,

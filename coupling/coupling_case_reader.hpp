@@ -2,6 +2,7 @@
 // The reader of a coupled scene: [sph], [fem] and [coupling] joined in one CoupledModel.
 
 #include "coupling/coupled_model.hpp"
+#include "coupling/dem_coupled_model.hpp"
 #include "io/key_spec.hpp"
 #include "io/scene_settings.hpp"
 #include "materials/material_library.hpp"
@@ -9,6 +10,8 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace grainload::io {
 class CaseTable;
@@ -83,6 +86,21 @@ inline constexpr std::array<io::KeySpec, 4> kFrictionKeys{{
     {"mu_kinetic", "number", "`mu_static`", "μ_k, the sliding friction coefficient, 0 ≤ μ_k ≤ μ_s"},
 }};
 
+/// The [coupling] table's settings for the shell `fem` (its window required for a static
+/// shell, the dynamic shell's step by default).
+CouplingSettings read_settings(const io::CaseTable& table, const fem::ShellModel& fem);
+/// The index among `parts` of the [[fem.shell]] part named by `key`.
+int part_index(const io::CaseTable& table, const std::string& key,
+               const std::vector<std::string>& parts);
+/// The elements of one interface: its part's, or those of its `element_sets`; none may
+/// belong to an interface before it (`coupled` flags them).
+std::vector<Index> interface_elements(const io::CaseTable& table, const fem::ShellMesh& mesh,
+                                      int part, std::vector<char>& coupled);
+/// Warns about a ramp of the shell's own loads over more than a few windows: in a coupled run
+/// time is physical.
+void warn_about_ramp(const io::CaseTable& coupling, const fem::ShellModel& fem,
+                     const CouplingSettings& settings, double end_time);
+
 /// A scene with [sph], [fem] and [coupling]: the bodies, the shell parts, one wall per
 /// [[coupling.interface]] on the shell (named after its part or its `name`), friction from
 /// [[coupling.friction]] (body, interface name as `part`, mu_static, mu_kinetic), joined in one
@@ -93,5 +111,12 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
                                                  const io::SceneSettings& scene,
                                                  const materials::MaterialLibrary& materials,
                                                  std::optional<double> spare_particles = {});
+
+/// A scene with [dem], [fem] and [coupling]: the grains, the shell parts, one DEM wall per
+/// [[coupling.interface]] on the shell's mid-surface (named after its part or its `name`),
+/// joined in one DemCoupledModel.
+std::unique_ptr<DemCoupledModel>
+read_dem_coupled_model(const io::CaseTable& root, const io::SceneSettings& scene,
+                       const materials::MaterialLibrary& materials);
 
 } // namespace grainload::coupling

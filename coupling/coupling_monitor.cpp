@@ -9,6 +9,38 @@
 
 namespace grainload::coupling {
 
+namespace {
+
+/// Below this share of the interface impulse's magnitude a component is the residue of sums
+/// that cancel (the x and y of a load along z), not a momentum to compare.
+constexpr double kNegligibleShare = 1e-3;
+
+} // namespace
+
+Vec3 load_resultant(const Eigen::VectorXd& load) {
+    Vec3 sum = Vec3::Zero();
+    for (Eigen::Index n = 0; n + 5 < load.size(); n += 6) {
+        sum += load.segment<3>(n);
+    }
+    return sum;
+}
+
+double relative_change(const Eigen::VectorXd& next, const Eigen::VectorXd& previous) {
+    const double scale = next.norm();
+    return scale > 0.0 ? (next - previous).norm() / scale : (previous.norm() > 0.0 ? 1.0 : 0.0);
+}
+
+io::ResultFigure shell_impulse_figure(const std::string& axis, double shell, double wall,
+                                      double magnitude) {
+    if (std::abs(wall) < kNegligibleShare * magnitude) {
+        return {"shell_impulse_" + axis, shell, "N s", std::nullopt,
+                "its interface_impulse is below 1e-3 of the impulse: not compared"};
+    }
+    return {"shell_impulse_" + axis, shell, "N s", wall,
+            "the sand's impulse on the coupled walls (interface_impulse): momentum conservation "
+            "across the interface"};
+}
+
 void CouplingMonitor::add(const WindowRecord& record) {
     windows_.push_back(record);
     const double before = created_energy();
@@ -24,7 +56,7 @@ void CouplingMonitor::add(const WindowRecord& record) {
     shell_impulse_ += record.shell_impulse;
     subcycles_ += record.subcycles * record.iterations;
     largest_subcycles_ = std::max(largest_subcycles_, record.subcycles);
-    sph_seconds_ += record.sph_seconds;
+    sand_seconds_ += record.sand_seconds;
     fem_seconds_ += record.fem_seconds;
     map_seconds_ += record.map_seconds;
 }
@@ -75,14 +107,14 @@ void CouplingMonitor::write_csv(io::OutputStreams& output) const {
             << w.load_change << ',' << w.sand_work << ',' << w.shell_work << ',' << sand - shell
             << ',' << w.wall_impulse.x() << ',' << w.wall_impulse.y() << ',' << w.wall_impulse.z()
             << ',' << w.shell_impulse.x() << ',' << w.shell_impulse.y() << ','
-            << w.shell_impulse.z() << ',' << w.sph_seconds << ',' << w.fem_seconds << ','
+            << w.shell_impulse.z() << ',' << w.sand_seconds << ',' << w.fem_seconds << ','
             << w.map_seconds << '\n';
     }
     output
         .open("coupling.csv",
               "time_s,window_s,subcycles,iterations,load_change,sand_work_J,shell_work_J,"
               "energy_error_J,wall_impulse_x_Ns,wall_impulse_y_Ns,wall_impulse_z_Ns,"
-              "shell_impulse_x_Ns,shell_impulse_y_Ns,shell_impulse_z_Ns,sph_s,fem_s,map_s\n")
+              "shell_impulse_x_Ns,shell_impulse_y_Ns,shell_impulse_z_Ns,sand_s,fem_s,map_s\n")
         .append(csv.str());
 }
 
@@ -125,7 +157,7 @@ void CouplingMonitor::set_state(const std::vector<double>& state) {
         static_cast<int>(io::state_count(state[13], kMostInt, "the most sub-cycles of a window"));
     // The wall-clock seconds are not state: a restarted run times its own windows, and two
     // runs of one case write the same checkpoint (so `cmp` can compare them).
-    sph_seconds_ = 0.0;
+    sand_seconds_ = 0.0;
     fem_seconds_ = 0.0;
     map_seconds_ = 0.0;
     windows_.clear();

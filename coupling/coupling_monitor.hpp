@@ -2,13 +2,28 @@
 // The coupling's books: interface energy error, momentum balance, sub-cycles, solve time.
 
 #include "io/output_streams.hpp"
+#include "io/reporter.hpp"
 #include "io/types.hpp"
 
+#include <Eigen/Core>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace grainload::coupling {
+
+/// The resultant force of a nodal load vector of 6 entries per node (3 forces, 3 moments).
+Vec3 load_resultant(const Eigen::VectorXd& load);
+
+/// Relative size of a load change, ||next - previous|| / ||next||; zero when both loads vanish.
+double relative_change(const Eigen::VectorXd& next, const Eigen::VectorXd& previous);
+
+/// shell_impulse_AXIS, what the shell's nodes received, beside what the sand put into the
+/// coupled walls (`wall`, the particle side's own sum) as its reference: momentum crosses the
+/// interface unchanged (the staggered exchange lags it by a window's load, an iterated one by
+/// its tolerance). `magnitude`: the interface impulse's.
+io::ResultFigure shell_impulse_figure(const std::string& axis, double shell, double wall,
+                                      double magnitude);
 
 /// One coupling window as the monitor books it.
 struct WindowRecord {
@@ -21,7 +36,7 @@ struct WindowRecord {
     double shell_work = 0.0;          ///< work of the applied interface load on the shell [J]
     Vec3 wall_impulse = Vec3::Zero(); ///< impulse of the sand on the coupled walls [N s]
     Vec3 shell_impulse = Vec3::Zero(); ///< impulse of the interface load on the shell [N s]
-    double sph_seconds = 0.0;          ///< wall time of the SPH sub-steps (of every pass)
+    double sand_seconds = 0.0;         ///< wall time of the SPH or DEM sub-steps (of every pass)
     /// Wall time of the shell solve(s) and of the element stresses the extremes read.
     double fem_seconds = 0.0;
     double map_seconds = 0.0; ///< wall time of interpolation and force mapping (every pass)
@@ -55,7 +70,7 @@ class CouplingMonitor {
     const Vec3& shell_impulse() const { return shell_impulse_; }
     long long subcycles() const { return subcycles_; }
     int largest_subcycles() const { return largest_subcycles_; }
-    double sph_seconds() const { return sph_seconds_; }
+    double sand_seconds() const { return sand_seconds_; }
     double fem_seconds() const { return fem_seconds_; }
     double map_seconds() const { return map_seconds_; }
 
@@ -91,7 +106,7 @@ class CouplingMonitor {
     Vec3 shell_impulse_ = Vec3::Zero();
     long long subcycles_ = 0;
     int largest_subcycles_ = 0;
-    double sph_seconds_ = 0.0;
+    double sand_seconds_ = 0.0;
     double fem_seconds_ = 0.0;
     double map_seconds_ = 0.0;
     mutable std::size_t written_ = 0;

@@ -214,11 +214,12 @@ void wall_springs(const Pass& p, const PlaneWall& wall, std::size_t w, Index i,
 }
 
 /// Sphere i's contact with a face of wall w it touches or lies within cohesion's reach of
-/// (`reach`; `touch` as PlaneWall::touching_faces gives it for radius + reach), evaluated;
-/// `arm` the contact point's distance from its centre.
+/// (`reach`; `touch` as PlaneWall::touching_faces gives it for radius + reach + the wall's half
+/// thickness), evaluated; `face_velocity` that of a following wall's face where the sphere meets
+/// it; `arm` the contact point's distance from its centre.
 ContactState wall_contact(const Pass& p, const PlaneWall& wall, std::size_t w,
                           std::span<const PlaneWall::Touch> touched, const PlaneWall::Touch& touch,
-                          Index i, double reach, double& arm) {
+                          Index i, double reach, const Vec3& face_velocity, double& arm) {
     const GrainSet& g = p.g;
     const SphereSet& s = p.s;
     const auto owner = static_cast<std::size_t>(s.grain[i]);
@@ -227,7 +228,7 @@ ContactState wall_contact(const Pass& p, const PlaneWall& wall, std::size_t w,
     state.overlap = touch.overlap - reach;
     state.normal = touch.normal;
     arm = s.radius[i] - 0.5 * state.overlap;
-    state.relative_velocity = p.x.point_velocity[at] - wall.current_velocity -
+    state.relative_velocity = p.x.point_velocity[at] - wall.current_velocity - face_velocity -
                               arm * g.angular_velocity[owner].cross(state.normal);
     if (state.overlap <= 0.0) {
         cohesive_force(p.scene.law, p.scene.law.wall_cohesion_pull * g.mass[owner], state);
@@ -255,19 +256,32 @@ int gather_walls(Pass& p, const std::vector<PlaneWall>& walls, Index i, WallShar
     thread_local std::vector<PlaneWall::Touch> touched;
     int contacts = 0;
     for (std::size_t w = 0; w < walls.size(); ++w) {
-        if (walls[w].removed) {
+        const PlaneWall& wall = walls[w];
+        if (wall.removed) {
             continue;
         }
-        walls[w].touching_faces(s.position[i] - walls[w].displacement, s.radius[i] + reach,
-                                touched);
+        const Vec3 centre = s.position[i] - wall.displacement;
+        const double reaches = s.radius[i] + reach + wall.half_thickness;
+        wall.touching_faces(centre, reaches, touched);
         for (const PlaneWall::Touch& touch : touched) {
+            // A following wall: where on its face's mid-surface the sphere meets it.
+            const Vec3 point = centre - (reaches - touch.overlap) * touch.normal;
+            const Vec3 weights =
+                wall.follows() ? wall.barycentric(touch.face, point) : Vec3::Zero();
             double arm = 0.0;
-            const ContactState state = wall_contact(p, walls[w], w, touched, touch, i, reach, arm);
+            const ContactState state = wall_contact(
+                p, wall, w, touched, touch, i, reach,
+                wall.follows() ? wall.face_velocity(touch.face, point) : Vec3::Zero(), arm);
             g.force[owner] += state.force;
             g.torque[owner] += state.torque - arm * state.normal.cross(state.force);
             g.torque[owner] += s.arm[at].cross(state.force);
             on_walls[w].force -= state.force;
             on_walls[w].normal += state.force.dot(state.normal);
+            if (wall.follows() && state.force != Vec3::Zero()) {
+                p.x.vertex_shares[at].push_back(
+                    {static_cast<std::uint32_t>(w), touch.face, weights, -state.force,
+                     (wall.half_thickness * touch.normal).cross(-state.force)});
+            }
             p.x.energy[at] += state.elastic_energy;
             if (p.x.record && (state.overlap > 0.0 || state.force != Vec3::Zero())) {
                 p.x.records[at].push_back({s.position[i], s.position[i] - arm * state.normal,
@@ -281,6 +295,30 @@ int gather_walls(Pass& p, const std::vector<PlaneWall>& walls, Index i, WallShar
         }
     }
     return contacts;
+}
+
+/// The following walls' vertex loads: each contact's force and moment shared among its face's
+/// corners by its barycentric weights, sphere by sphere in order (no sum depends on the thread
+/// count).
+void share_vertex_loads(const std::vector<std::vector<VertexShare>>& shares,
+                        std::vector<PlaneWall>& walls) {
+    for (PlaneWall& wall : walls) {
+        if (wall.follows()) {
+            std::fill(wall.vertices.force.begin(), wall.vertices.force.end(), Vec3::Zero());
+            std::fill(wall.vertices.moment.begin(), wall.vertices.moment.end(), Vec3::Zero());
+        }
+    }
+    for (const auto& row : shares) {
+        for (const VertexShare& share : row) {
+            PlaneWall::VertexMotion& v = walls[share.wall].vertices;
+            const auto& corners = v.corners[static_cast<std::size_t>(share.face)];
+            for (int k = 0; k < 3; ++k) {
+                const auto at = static_cast<std::size_t>(corners[static_cast<std::size_t>(k)]);
+                v.force[at] += share.weights[k] * share.force;
+                v.moment[at] += share.weights[k] * share.moment;
+            }
+        }
+    }
 }
 
 /// Bins the faces of the mesh walls for the farthest reach of any sphere (its radius and
@@ -298,8 +336,8 @@ void index_mesh_walls(const GrainSet& g, const SphereSet& s, std::vector<PlaneWa
             std::max(farthest, s.radius[i] + cohesion_reach(law, law.wall_cohesion_pull, mass));
     }
     for (PlaneWall& wall : walls) {
-        if (wall.mesh() && wall.grid.reach() < farthest) {
-            wall.index_faces(1.25 * farthest);
+        if (wall.mesh() && wall.grid.reach() < farthest + wall.half_thickness) {
+            wall.index_faces(1.25 * farthest + wall.half_thickness);
         }
     }
 }
@@ -319,6 +357,9 @@ ContactBooks evaluate_contacts(GrainSet& g, SphereSet& s,
     scratch.deepest.resize(count);
     scratch.kept.resize(count);
     scratch.records.resize(scratch.record ? count : 0);
+    const bool following =
+        std::any_of(walls.begin(), walls.end(), [](const PlaneWall& w) { return w.follows(); });
+    scratch.vertex_shares.resize(following ? count : 0);
     index_mesh_walls(g, s, walls, scene.law);
     const std::size_t wall_count = walls.size();
     scratch.on_walls.assign(static_cast<std::size_t>(g.size()) * wall_count, WallShare{});
@@ -333,6 +374,9 @@ ContactBooks evaluate_contacts(GrainSet& g, SphereSet& s,
         p.x.energy[i] = 0.0;
         p.x.deepest[i] = 0.0;
         p.x.kept[i].clear();
+        if (!p.x.vertex_shares.empty()) {
+            p.x.vertex_shares[i].clear();
+        }
         if (p.x.record) {
             p.x.records[i].clear();
         }
@@ -389,6 +433,9 @@ ContactBooks evaluate_contacts(GrainSet& g, SphereSet& s,
             walls[w].force += share.force;
             walls[w].normal_force += share.normal;
         }
+    }
+    if (following) {
+        share_vertex_loads(scratch.vertex_shares, walls);
     }
     for (Index i = 0; i < n; ++i) {
         const auto at = static_cast<std::size_t>(i);

@@ -61,6 +61,17 @@ struct WallShare {
     double normal = 0.0;
 };
 
+/// A contact's load on a following wall (PlaneWall::VertexMotion): its face, the contact
+/// point's barycentric weights on the face's corners, the force on the wall and its moment about
+/// the mid-surface.
+struct VertexShare {
+    std::uint32_t wall = 0;
+    std::int32_t face = 0;
+    Vec3 weights = Vec3::Zero();
+    Vec3 force = Vec3::Zero();
+    Vec3 moment = Vec3::Zero();
+};
+
 /// The pass's per-sphere buffers, kept from one evaluation to the next so that a step
 /// allocates nothing once the scene's size has settled.
 struct ContactScratch {
@@ -75,7 +86,8 @@ struct ContactScratch {
     std::vector<double> deepest;
     std::vector<std::vector<Spring>> kept; ///< the springs the step leaves, becoming the set's
     std::vector<WallShare> on_walls;       ///< each grain's load on each wall
-    std::vector<Index> first;              ///< SphereSet::first_of_grains
+    std::vector<std::vector<VertexShare>> vertex_shares; ///< each sphere's, with following walls
+    std::vector<Index> first;                            ///< SphereSet::first_of_grains
     /// Per neighbour entry: whether the pair acts (set in the row of its lower id) and its
     /// result there; for each entry, the position of the same pair in the partner's row.
     std::vector<char> active;

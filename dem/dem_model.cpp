@@ -210,6 +210,9 @@ double DemModel::stable_time_step() const {
 void DemModel::evaluate(double time) {
     for (PlaneWall& wall : walls_) {
         wall.move_to(time);
+        if (wall.follows()) {
+            wall.follow(time);
+        }
     }
     neighbours_.update(spheres_.position, {});
     books_ =

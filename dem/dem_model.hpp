@@ -79,6 +79,8 @@ class DemModel final : public io::Stepper, public io::Reporter {
     const GrainSet& grains() const { return grains_; }
     const SphereSet& spheres() const { return spheres_; }
     const std::vector<PlaneWall>& walls() const { return walls_; }
+    /// Wall w, for the coupling to set the interval its vertices follow.
+    PlaneWall& wall(std::size_t w) { return walls_[w]; }
     const ContactBooks& books() const { return books_; }
     DemEnergy energy() const;
     /// The shortest contact time of the scene at a normal impact speed `speed`: of the

@@ -129,9 +129,11 @@ void DemModel::append_results(double /*t*/, std::vector<io::ResultFigure>& resul
     results.push_back({"contact_energy", e.elastic, "J", std::nullopt, ""});
     results.push_back({"gravity_work", -e.gravity, "J", std::nullopt, ""});
     // What the dashpots, the sliders and cohesion's partings took: the books' balance, where
-    // no sink carries energy out of the scene, no source brings it in and no wall moves.
+    // no sink carries energy out of the scene, no source brings it in and no wall moves (a
+    // coupled shell's follows the shell).
     if (sinks_->empty() && sources_->empty() &&
-        std::none_of(walls_.begin(), walls_.end(), [](const PlaneWall& w) { return w.moves(); })) {
+        std::none_of(walls_.begin(), walls_.end(),
+                     [](const PlaneWall& w) { return w.moves() || w.follows(); })) {
         results.push_back({"dissipated_energy", start_energy_ - e.total(), "J", std::nullopt, ""});
     }
     results.push_back(
@@ -179,10 +181,11 @@ void DemModel::describe_model(std::vector<io::ModelChoice>& choices) const {
             {"dem body " + body_names_[b], "spheres of material " + body_materials_[b]});
     }
     for (const PlaneWall& wall : walls_) {
+        const std::string triangles = std::to_string(wall.faces.size()) + " triangles";
         choices.push_back({"dem wall " + wall.name,
-                           wall.mesh()
-                               ? "rigid mesh of " + std::to_string(wall.faces.size()) + " triangles"
-                               : std::string("rigid plane faces")});
+                           wall.follows() ? "mesh of " + triangles + " that follows a shell"
+                           : wall.mesh()  ? "rigid mesh of " + triangles
+                                          : std::string("rigid plane faces")});
     }
 }
 

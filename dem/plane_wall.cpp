@@ -26,7 +26,11 @@ void PlaneWall::set_mesh(const io::SurfaceMesh& mesh) {
         triangles.push_back({q[0], q[2], q[3]});
     }
     faces.clear();
+    vertices.corners.clear();
     for (const auto& t : triangles) {
+        vertices.corners.push_back({static_cast<std::int32_t>(t[0]),
+                                    static_cast<std::int32_t>(t[1]),
+                                    static_cast<std::int32_t>(t[2])});
         const Vec3& a = mesh.vertices[static_cast<std::size_t>(t[0])];
         const Vec3 e1 = mesh.vertices[static_cast<std::size_t>(t[1])] - a;
         const Vec3 e2 = mesh.vertices[static_cast<std::size_t>(t[2])] - a;
@@ -115,12 +119,82 @@ bool PlaneWall::touched_by(const Vec3& centre, double radius) const {
 void PlaneWall::index_faces(double reach) {
     std::vector<FaceGrid::Box> boxes;
     boxes.reserve(faces.size());
-    for (const Face& face : faces) {
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+        const Face& face = faces[f];
         const Vec3 b = face.point + face.edge_u;
         const Vec3 c = face.point + face.edge_v;
-        boxes.push_back({face.point.cwiseMin(b).cwiseMin(c), face.point.cwiseMax(b).cwiseMax(c)});
+        FaceGrid::Box box{face.point.cwiseMin(b).cwiseMin(c), face.point.cwiseMax(b).cwiseMax(c)};
+        if (follows()) {
+            for (const std::int32_t k : vertices.corners[f]) {
+                for (const auto* at : {&vertices.start, &vertices.end}) {
+                    box.min = box.min.cwiseMin((*at)[static_cast<std::size_t>(k)]);
+                    box.max = box.max.cwiseMax((*at)[static_cast<std::size_t>(k)]);
+                }
+            }
+        }
+        boxes.push_back(box);
     }
     grid.build(boxes, reach);
+}
+
+void PlaneWall::set_interval(const std::vector<Vec3>& end, double start_time, double end_time) {
+    vertices.start = vertices.end.empty() ? end : vertices.end;
+    vertices.end = end;
+    vertices.start_time = start_time;
+    vertices.end_time = end_time;
+    vertices.force.assign(end.size(), Vec3::Zero());
+    vertices.moment.assign(end.size(), Vec3::Zero());
+    // The faces sweep a new region: the contact pass bins them anew.
+    grid = FaceGrid{};
+}
+
+void PlaneWall::follow(double time) {
+    const double length = vertices.end_time - vertices.start_time;
+    const double theta =
+        length > 0.0 ? std::clamp((time - vertices.start_time) / length, 0.0, 1.0) : 1.0;
+    const auto at = [&](std::int32_t k) {
+        const auto v = static_cast<std::size_t>(k);
+        return Vec3((1.0 - theta) * vertices.start[v] + theta * vertices.end[v]);
+    };
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+        const auto& c = vertices.corners[f];
+        Face& face = faces[f];
+        face.point = at(c[0]);
+        face.edge_u = at(c[1]) - face.point;
+        face.edge_v = at(c[2]) - face.point;
+        face.normal = face.edge_u.cross(face.edge_v).normalized();
+    }
+}
+
+Vec3 PlaneWall::barycentric(std::int32_t face, const Vec3& point) const {
+    // The point's coordinates (s, t) along the edges from the normal equations of
+    // point - a = s e1 + t e2.
+    const Face& f = faces[static_cast<std::size_t>(face)];
+    const Vec3 ap = point - f.point;
+    const double uu = f.edge_u.squaredNorm();
+    const double uv = f.edge_u.dot(f.edge_v);
+    const double vv = f.edge_v.squaredNorm();
+    const double pu = ap.dot(f.edge_u);
+    const double pv = ap.dot(f.edge_v);
+    const double det = uu * vv - uv * uv;
+    const double s = (vv * pu - uv * pv) / det;
+    const double t = (uu * pv - uv * pu) / det;
+    return {1.0 - s - t, s, t};
+}
+
+Vec3 PlaneWall::face_velocity(std::int32_t face, const Vec3& point) const {
+    const double length = vertices.end_time - vertices.start_time;
+    if (!follows() || !(length > 0.0)) {
+        return Vec3::Zero();
+    }
+    const Vec3 weights = barycentric(face, point);
+    Vec3 moving = Vec3::Zero();
+    for (int k = 0; k < 3; ++k) {
+        const auto v = static_cast<std::size_t>(
+            vertices.corners[static_cast<std::size_t>(face)][static_cast<std::size_t>(k)]);
+        moving += weights[k] * (vertices.end[v] - vertices.start[v]);
+    }
+    return moving / length;
 }
 
 } // namespace grainload::dem

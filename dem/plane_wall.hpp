@@ -58,6 +58,27 @@ struct PlaneWall {
     Vec3 displacement = Vec3::Zero();
     Vec3 current_velocity = Vec3::Zero();
 
+    /// A mesh wall whose vertices move (the mid-surface of a coupled shell, set by the
+    /// coupling): their positions at the ends of the interval [start_time, end_time], the faces
+    /// linear in time between. A grain touches the plate of thickness 2 half_thickness about
+    /// the faces, its load shared among its face's corners by the contact point's barycentric
+    /// weights: the virtual work of a force F at y = sum lambda_k x_k + h n is
+    /// sum lambda_k (F . delta x_k) plus the moment h n x F about the mid-surface.
+    struct VertexMotion {
+        std::vector<Vec3> start;
+        std::vector<Vec3> end;
+        double start_time = 0.0;
+        double end_time = 0.0;
+        /// Each face's three vertices (its point, point + edge_u, point + edge_v).
+        std::vector<std::array<std::int32_t, 3>> corners;
+        /// The grains' loads at the last evaluation, per vertex: the forces, and the moments of
+        /// the forces at the plate's faces about the mid-surface.
+        std::vector<Vec3> force;
+        std::vector<Vec3> moment;
+    };
+    VertexMotion vertices;
+    double half_thickness = 0.0;
+
     /// A face a sphere touches (or reaches): its index, overlap and normal as touches() gives.
     struct Touch {
         std::int32_t face = 0;
@@ -66,6 +87,19 @@ struct PlaneWall {
     };
 
     bool mesh() const { return !adjacent.empty(); }
+    /// Whether the wall's faces follow moving vertices.
+    bool follows() const { return !vertices.start.empty(); }
+    /// The vertices' next interval: they start where the last one ended (or at `end` the first
+    /// time) and reach `end` at `end_time`.
+    void set_interval(const std::vector<Vec3>& end, double start_time, double end_time);
+    /// Places the faces of a following wall where its vertices are at `time`.
+    void follow(double time);
+    /// The velocity of a following wall's face `face` at its point `point` (a point of the
+    /// face's plane): the vertices' velocities over the interval, by the point's barycentric
+    /// weights; zero for a wall of fixed faces.
+    Vec3 face_velocity(std::int32_t face, const Vec3& point) const;
+    /// The barycentric weights of `point` (in the plane of triangle `face`) on its corners.
+    Vec3 barycentric(std::int32_t face, const Vec3& point) const;
     bool moves() const { return velocity != Vec3::Zero(); }
     /// Places the wall where its motion has taken it at `time`.
     void move_to(double time) {
@@ -86,10 +120,11 @@ struct PlaneWall {
     /// The faces of the inside of the box [min, max]; without the face at max along `up` when
     /// `open_top`.
     static std::vector<Face> box_faces(const Vec3& min, const Vec3& max, int up, bool open_top);
-    /// Sets the faces and their neighbours from the triangles and quads of `mesh` (each quad
-    /// a-b-c-d as a-b-c and a-c-d); the mesh's faces are of non-zero area.
+    /// Sets the faces, their corners and their neighbours from the triangles and quads of
+    /// `mesh` (each quad a-b-c-d as a-b-c and a-c-d); the mesh's faces are of non-zero area.
     void set_mesh(const io::SurfaceMesh& mesh);
-    /// Bins the faces for spheres reaching `reach` from their centres.
+    /// Bins the faces for spheres reaching `reach` from their centres (a following wall's
+    /// faces over the whole of their interval).
     void index_faces(double reach);
 };
 
