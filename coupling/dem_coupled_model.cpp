@@ -106,7 +106,7 @@ void DemCoupledModel::advance(double t, double dt) {
     start = Clock::now();
     Eigen::VectorXd produced = Eigen::VectorXd::Zero(load_.size());
     for (DemCoupledPart& part : parts_) {
-        part.wall.add_nodal_loads(dt, produced);
+        part.wall.add_nodal_loads(fem_->analysis(), dt, produced);
     }
     record.load_change = relative_change(produced, load_);
     load_ += settings_.relaxation * (produced - load_);
@@ -120,11 +120,9 @@ void DemCoupledModel::advance(double t, double dt) {
     }
     record.fem_seconds += seconds_since(start);
     monitor_.add(record);
-}
-
-double DemCoupledModel::energy_scale() const {
     const dem::DemEnergy energy = dem_->energy();
-    return std::abs(energy.gravity) + energy.translational + energy.rotational + energy.elastic;
+    energy_scale_ = std::max(energy_scale_, std::abs(energy.gravity) + energy.translational +
+                                                energy.rotational + energy.elastic);
 }
 
 std::optional<std::string> DemCoupledModel::diagnose() const {
@@ -140,7 +138,7 @@ std::optional<std::string> DemCoupledModel::diagnose() const {
     if (!load_.allFinite()) {
         return std::string("interface load is not finite");
     }
-    if (auto problem = monitor_.check(settings_.energy_error_limit, energy_scale())) {
+    if (auto problem = monitor_.check(settings_.energy_error_limit, energy_scale_)) {
         std::ostringstream remedy;
         remedy << *problem
                << "; the exchange is unstable: " << (fem_->dynamic() ? "shorten" : "lengthen")
@@ -156,9 +154,10 @@ void DemCoupledModel::write_checkpoint(std::ostream& out) const {
     io::write_array(out, std::vector<double>(load_.begin(), load_.end()));
     io::write_array(out, std::vector<double>(start_load_.begin(), start_load_.end()));
     io::write_array(out, monitor_.state());
-    io::write_array(out, std::vector<double>{static_cast<double>(monitor_.windows().size() +
-                                                                 windows_before_restart_),
-                                             extremes_.deflection, extremes_.von_mises});
+    io::write_array(out,
+                    std::vector<double>{
+                        static_cast<double>(monitor_.windows().size() + windows_before_restart_),
+                        extremes_.deflection, extremes_.von_mises, energy_scale_});
     for (const DemCoupledPart& part : parts_) {
         part.wall.write_state(out, dem_->walls()[part.wall_index]);
     }
@@ -180,11 +179,12 @@ void DemCoupledModel::read_checkpoint(std::istream& in) {
     io::read_array(in, state);
     monitor_.set_state(state);
     std::vector<double> windows;
-    io::read_array(in, windows, 3, "the coupling's window count and extremes");
+    io::read_array(in, windows, 4, "the coupling's window count, extremes and energy scale");
     windows_before_restart_ =
         io::state_count(windows[0], 9007199254740992.0, "the coupling's window count");
     extremes_.deflection = windows[1];
     extremes_.von_mises = windows[2];
+    energy_scale_ = windows[3];
     for (DemCoupledPart& part : parts_) {
         part.wall.read_state(in, dem_->wall(part.wall_index));
     }

@@ -73,8 +73,6 @@ class DemCoupledModel final : public io::Stepper, public io::Reporter {
   private:
     /// DEM sub-steps from t to t + dt, the walls accumulating; returns their number.
     int subcycle(double t, double dt, WindowRecord& record);
-    /// The grains' energy throughput, the scale of the interface energy error.
-    double energy_scale() const;
 
     std::unique_ptr<dem::DemModel> dem_;
     std::unique_ptr<fem::ShellModel> fem_;
@@ -87,6 +85,10 @@ class DemCoupledModel final : public io::Stepper, public io::Reporter {
     CouplingMonitor monitor_;
     ShellExtremes extremes_;
     std::optional<std::string> problem_; ///< a DEM diagnosis within a window
+    /// The scale of the interface energy error: the largest of the grains' energy throughput,
+    /// |gravity's work| + kinetic + elastic, at a window's end so far (grains that leave
+    /// through a sink take theirs with them) [J].
+    double energy_scale_ = 0.0;
     io::OutputStreams* output_ = nullptr;
     std::size_t windows_before_restart_ = 0;
 };

@@ -52,7 +52,7 @@ void DemCoupledModel::append_results(double t, std::vector<io::ResultFigure>& re
     results.push_back({"coupling_sand_work", monitor_.sand_work(), "J", std::nullopt,
                        "the grains' work on the coupled walls"});
     results.push_back({"coupling_shell_work", monitor_.shell_work(), "J", std::nullopt, ""});
-    results.push_back({"coupling_energy_error", monitor_.relative_energy_error(energy_scale()), "",
+    results.push_back({"coupling_energy_error", monitor_.relative_energy_error(energy_scale_), "",
                        std::nullopt, ""});
     results.push_back({"coupling_largest_subcycles",
                        static_cast<double>(monitor_.largest_subcycles()), "", std::nullopt, ""});

@@ -22,6 +22,10 @@ DemShellWall::DemShellWall(const fem::ShellAnalysis& analysis, const std::vector
     for (const Index e : elements) {
         const fem::ShellElement& element = mesh.element(e);
         const auto& n = element.nodes;
+        const int count = element.is_triangle() ? 3 : 4;
+        for (int a = 0; a < count; ++a) {
+            corners_.push_back({e, a, vertex_of(n[static_cast<std::size_t>(a)])});
+        }
         if (element.is_triangle()) {
             surface_.triangles.push_back({vertex_of(n[0]), vertex_of(n[1]), vertex_of(n[2])});
         } else {
@@ -86,11 +90,24 @@ void DemShellWall::accumulate(const dem::PlaneWall& wall, double dt) {
     work_ += work;
 }
 
-void DemShellWall::add_nodal_loads(double window, Eigen::VectorXd& loads) {
+void DemShellWall::add_nodal_loads(const fem::ShellAnalysis& analysis, double window,
+                                   Eigen::VectorXd& loads) {
+    // The directors the shell's rotations turn: the initial ones under linear kinematics (its
+    // drilling spring acts about them), the current ones under large rotations.
+    const bool linear = analysis.kinematics() == fem::Kinematics::linear;
+    std::vector<Vec3> director(nodes_.size(), Vec3::Zero());
+    for (const auto& [element, corner, vertex] : corners_) {
+        const int a = static_cast<int>(corner);
+        director[static_cast<std::size_t>(vertex)] +=
+            (linear ? analysis.initial_director(element, a) : analysis.director(element, a))
+                .normalized();
+    }
     for (std::size_t k = 0; k < nodes_.size(); ++k) {
         const auto node = static_cast<Eigen::Index>(nodes_[k]);
+        const Vec3 d = director[k].normalized();
+        const Vec3 moment = moment_impulse_[k] / window;
         loads.segment<3>(6 * node) += impulse_[k] / window;
-        loads.segment<3>(6 * node + 3) += moment_impulse_[k] / window;
+        loads.segment<3>(6 * node + 3) += moment - moment.dot(d) * d;
         impulse_[k].setZero();
         moment_impulse_[k].setZero();
     }

@@ -6,6 +6,7 @@
 #include "fem/shell_analysis.hpp"
 
 #include <Eigen/Core>
+#include <array>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -18,7 +19,8 @@ namespace grainload::coupling {
 /// radius + t/2. Within a coupling window [t0, t1] the nodes move linearly in time from the
 /// shell's state at t0 to its state at t1 (kinematics in); a contact's force F on the wall at
 /// the barycentric weights lambda_a of its point on a triangle, and its moment (t/2 n) x F about
-/// the mid-surface, go to the triangle's nodes as
+/// the mid-surface (n the triangle's normal on the grain's side, the shell's director: no
+/// moment about the director, which a shell does not resist), go to the triangle's nodes as
 ///   f_a = lambda_a F,  m_a = lambda_a (t/2 n) x F
 /// (forces out): the virtual work of F at y = sum lambda_a x_a + (t/2) n, the transpose of the
 /// interpolation that moves the faces (thesis section 5.3, as for the SPH side's ShellWall).
@@ -41,8 +43,13 @@ class DemShellWall {
     /// it, dt (F(t) + F(t + dt)) / 2, and its work at the vertices' velocities.
     void accumulate(const dem::PlaneWall& wall, double dt);
     /// The window's mean vertex loads mapped to the nodes (6 entries per node), added into
-    /// `loads`; clears the impulses.
-    void add_nodal_loads(double window, Eigen::VectorXd& loads);
+    /// `loads`; clears the impulses. A node's moment loses its component along the node's
+    /// director (the mean of its elements' corner directors, initial under linear kinematics,
+    /// current under large rotations): a turn
+    /// about the director moves no point of the faces, so that component does no work, and a
+    /// shell holds it only by its drilling spring (a triangle's normal, where the grains' moment
+    /// arm lies, leans off the director by the sheet's slope within an element).
+    void add_nodal_loads(const fem::ShellAnalysis& analysis, double window, Eigen::VectorXd& loads);
     /// Work of the grains on this wall since the start (J).
     double work() const { return work_; }
     /// Total impulse received since the start, for the momentum books.
@@ -57,7 +64,9 @@ class DemShellWall {
     std::vector<Vec3> positions(const fem::ShellAnalysis& analysis) const;
 
     std::vector<Index> nodes_; ///< the shell node of each wall vertex
-    io::SurfaceMesh surface_;  ///< the part's triangles and quadrangles over its vertices
+    /// Each element corner of the part: its element, corner and wall vertex.
+    std::vector<std::array<Index, 3>> corners_;
+    io::SurfaceMesh surface_; ///< the part's triangles and quadrangles over its vertices
     double half_thickness_ = 0.0;
     // Per vertex: the loads at the last sub-step's end and the impulses since the window's start.
     std::vector<Vec3> last_force_, last_moment_;

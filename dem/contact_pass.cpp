@@ -244,6 +244,18 @@ ContactState wall_contact(const Pass& p, const PlaneWall& wall, std::size_t w,
     return state;
 }
 
+/// A contact's load `force` on face `touch.face` of the following wall w at its mid-surface
+/// point `point`: its barycentric weights there, and its moment about the mid-surface, the
+/// plate's face half the thickness off along the face's normal on the grain's side (the
+/// shell's director: a moment normal to it, none about it, which a shell does not resist).
+VertexShare vertex_share(const PlaneWall& wall, std::size_t w, const PlaneWall::Touch& touch,
+                         const Vec3& point, const Vec3& force) {
+    const Vec3& normal = wall.faces[static_cast<std::size_t>(touch.face)].normal;
+    const double side = touch.normal.dot(normal) < 0.0 ? -1.0 : 1.0;
+    return {static_cast<std::uint32_t>(w), touch.face, wall.barycentric(touch.face, point), force,
+            (side * wall.half_thickness * normal).cross(force)};
+}
+
 /// Sphere i's contacts with the walls' faces: force and torque added to its grain's, springs
 /// to its list, the force's opposite to its grain's share of each wall's load (`on_walls`, one
 /// per wall); returns the contacts.
@@ -266,8 +278,6 @@ int gather_walls(Pass& p, const std::vector<PlaneWall>& walls, Index i, WallShar
         for (const PlaneWall::Touch& touch : touched) {
             // A following wall: where on its face's mid-surface the sphere meets it.
             const Vec3 point = centre - (reaches - touch.overlap) * touch.normal;
-            const Vec3 weights =
-                wall.follows() ? wall.barycentric(touch.face, point) : Vec3::Zero();
             double arm = 0.0;
             const ContactState state = wall_contact(
                 p, wall, w, touched, touch, i, reach,
@@ -278,9 +288,7 @@ int gather_walls(Pass& p, const std::vector<PlaneWall>& walls, Index i, WallShar
             on_walls[w].force -= state.force;
             on_walls[w].normal += state.force.dot(state.normal);
             if (wall.follows() && state.force != Vec3::Zero()) {
-                p.x.vertex_shares[at].push_back(
-                    {static_cast<std::uint32_t>(w), touch.face, weights, -state.force,
-                     (wall.half_thickness * touch.normal).cross(-state.force)});
+                p.x.vertex_shares[at].push_back(vertex_share(wall, w, touch, point, -state.force));
             }
             p.x.energy[at] += state.elastic_energy;
             if (p.x.record && (state.overlap > 0.0 || state.force != Vec3::Zero())) {

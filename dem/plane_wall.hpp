@@ -62,8 +62,9 @@ struct PlaneWall {
     /// coupling): their positions at the ends of the interval [start_time, end_time], the faces
     /// linear in time between. A grain touches the plate of thickness 2 half_thickness about
     /// the faces, its load shared among its face's corners by the contact point's barycentric
-    /// weights: the virtual work of a force F at y = sum lambda_k x_k + h n is
-    /// sum lambda_k (F . delta x_k) plus the moment h n x F about the mid-surface.
+    /// weights: the virtual work of a force F at y = sum lambda_k x_k + h n (n the face's normal
+    /// on the grain's side, the shell's director) is sum lambda_k (F . delta x_k) plus that of
+    /// the moment h n x F about the mid-surface.
     struct VertexMotion {
         std::vector<Vec3> start;
         std::vector<Vec3> end;
