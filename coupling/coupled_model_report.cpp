@@ -88,16 +88,11 @@ void CoupledModel::append_results(double t, std::vector<io::ResultFigure>& resul
     const Vec3 load = load_resultant(load_);
     const Vec3 momentum = sph_->solver()->linear_momentum();
     for (int a = 0; a < 3; ++a) {
-        const std::string axis(1, static_cast<char>('x' + a));
-        results.push_back({"interface_force_" + axis, load[a], "N", std::nullopt, ""});
         // The impulse balance of the exchange: what the sand put into the coupled walls (SPH
         // side, trapezoidal like the leapfrog's own momentum update) and what the shell
         // received (the applied loads times the windows), with the sand's momentum.
-        results.push_back(
-            {"interface_impulse_" + axis, monitor_.wall_impulse()[a], "N s", std::nullopt, ""});
-        results.push_back(shell_impulse_figure(axis, monitor_.shell_impulse()[a],
-                                               monitor_.wall_impulse()[a],
-                                               monitor_.wall_impulse().norm()));
+        append_interface_figures(a, load, monitor_, results);
+        const std::string axis(1, static_cast<char>('x' + a));
         results.push_back({"sand_momentum_" + axis, momentum[a], "kg m/s", std::nullopt, ""});
     }
     results.push_back({"shell_kinetic_energy", fem_->kinetic_energy(), "J", std::nullopt, ""});

@@ -30,6 +30,17 @@ double relative_change(const Eigen::VectorXd& next, const Eigen::VectorXd& previ
     return scale > 0.0 ? (next - previous).norm() / scale : (previous.norm() > 0.0 ? 1.0 : 0.0);
 }
 
+void append_interface_figures(int a, const Vec3& load, const CouplingMonitor& monitor,
+                              std::vector<io::ResultFigure>& results) {
+    const std::string axis(1, static_cast<char>('x' + a));
+    results.push_back({"interface_force_" + axis, load[a], "N", std::nullopt, ""});
+    results.push_back(
+        {"interface_impulse_" + axis, monitor.wall_impulse()[a], "N s", std::nullopt, ""});
+    results.push_back(shell_impulse_figure(axis, monitor.shell_impulse()[a],
+                                           monitor.wall_impulse()[a],
+                                           monitor.wall_impulse().norm()));
+}
+
 io::ResultFigure shell_impulse_figure(const std::string& axis, double shell, double wall,
                                       double magnitude) {
     if (std::abs(wall) < kNegligibleShare * magnitude) {

@@ -25,6 +25,14 @@ double relative_change(const Eigen::VectorXd& next, const Eigen::VectorXd& previ
 io::ResultFigure shell_impulse_figure(const std::string& axis, double shell, double wall,
                                       double magnitude);
 
+class CouplingMonitor;
+
+/// interface_force_AXIS (the last window's load, `load` its resultant), interface_impulse_AXIS
+/// (what the particles put into the coupled walls) and shell_impulse_AXIS (what the shell's nodes
+/// received, the former its reference) of axis a (0: x) from `monitor`'s books.
+void append_interface_figures(int a, const Vec3& load, const CouplingMonitor& monitor,
+                              std::vector<io::ResultFigure>& results);
+
 /// One coupling window as the monitor books it.
 struct WindowRecord {
     double time = 0.0;                ///< end of the window [s]

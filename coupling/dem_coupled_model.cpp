@@ -1,5 +1,6 @@
 #include "coupling/dem_coupled_model.hpp"
 
+#include "coupling/interface_accelerator.hpp"
 #include "io/binary_stream.hpp"
 
 #include <algorithm>
@@ -69,7 +70,8 @@ int DemCoupledModel::subcycle(double t, double dt, WindowRecord& record) {
     return static_cast<int>(n);
 }
 
-void DemCoupledModel::advance(double t, double dt) {
+WindowRecord DemCoupledModel::run_window(double t, double dt, const Eigen::VectorXd& applied,
+                                         Eigen::VectorXd& end_load) {
     WindowRecord record;
     record.time = t + dt;
     record.length = dt;
@@ -84,8 +86,7 @@ void DemCoupledModel::advance(double t, double dt) {
     // The grains' load is the window's mean: a static shell takes it at the window's end, a
     // dynamic one 2 F - F(start), whose trapezoidal mean is F (as in the SPH coupling,
     // docs/theory/coupling.md).
-    const Eigen::VectorXd end_load =
-        fem_->dynamic() ? Eigen::VectorXd(2.0 * load_ - start_load_) : load_;
+    end_load = fem_->dynamic() ? Eigen::VectorXd(2.0 * applied - start_load_) : applied;
     fem_->advance_with_forces(t, dt, end_load);
     record.fem_seconds = seconds_since(start);
     start = Clock::now();
@@ -101,17 +102,76 @@ void DemCoupledModel::advance(double t, double dt) {
     record.sand_work = grain_work;
     record.wall_impulse = wall_impulse;
     record.shell_work = 0.5 * (start_load_ + end_load).dot(fem_->analysis().dofs() - before);
-    record.shell_impulse = dt * load_resultant(load_);
-    start_load_ = end_load;
-    start = Clock::now();
+    record.shell_impulse = dt * load_resultant(applied);
+    return record;
+}
+
+Eigen::VectorXd DemCoupledModel::collect_load(double dt) {
     Eigen::VectorXd produced = Eigen::VectorXd::Zero(load_.size());
     for (DemCoupledPart& part : parts_) {
         part.wall.add_nodal_loads(fem_->analysis(), dt, produced);
     }
-    record.load_change = relative_change(produced, load_);
-    load_ += settings_.relaxation * (produced - load_);
-    record.map_seconds += seconds_since(start);
-    start = Clock::now();
+    return produced;
+}
+
+WindowRecord DemCoupledModel::iterate_window(double t, double dt) {
+    // Fixed-point iteration on the interface load, as the SPH coupling's (coupled_model.cpp):
+    // every pass starts the window afresh from the state saved here, the grains, the shell and
+    // the walls' books, under the load the accelerator makes of the passes before.
+    std::stringstream saved;
+    dem_->write_checkpoint(saved);
+    fem_->write_checkpoint(saved);
+    for (const DemCoupledPart& part : parts_) {
+        part.wall.write_state(saved, dem_->walls()[part.wall_index]);
+    }
+    const std::string start_state = saved.str();
+    Eigen::VectorXd applied = load_;
+    InterfaceAccelerator accelerator(settings_.accelerator, settings_.relaxation);
+    WindowRecord spent; // the wall times of the passes before, which the window costs too
+    for (int pass = 1;; ++pass) {
+        if (pass > 1) {
+            std::istringstream in(start_state);
+            dem_->read_checkpoint(in);
+            fem_->read_checkpoint(in);
+            for (DemCoupledPart& part : parts_) {
+                part.wall.read_state(in, dem_->wall(part.wall_index));
+            }
+            (void)dem_->take_events(); // the pass before's, said again by this one
+        }
+        Eigen::VectorXd end_load;
+        WindowRecord record = run_window(t, dt, applied, end_load);
+        record.sand_seconds += spent.sand_seconds;
+        record.fem_seconds += spent.fem_seconds;
+        record.map_seconds += spent.map_seconds;
+        const Eigen::VectorXd produced = collect_load(dt);
+        record.iterations = pass;
+        record.load_change = relative_change(produced, applied);
+        if (record.load_change <= settings_.iteration_tolerance ||
+            pass >= settings_.max_iterations) {
+            start_load_ = end_load;
+            load_ = produced;
+            return record;
+        }
+        applied = accelerator.next(applied, produced);
+        spent = record;
+    }
+}
+
+void DemCoupledModel::advance(double t, double dt) {
+    WindowRecord record;
+    if (settings_.max_iterations <= 1) {
+        // Staggered: the next window's load moves from this window's towards the grains' by
+        // the relaxation factor.
+        Eigen::VectorXd end_load;
+        record = run_window(t, dt, load_, end_load);
+        start_load_ = end_load;
+        const Eigen::VectorXd produced = collect_load(dt);
+        record.load_change = relative_change(produced, load_);
+        load_ += settings_.relaxation * (produced - load_);
+    } else {
+        record = iterate_window(t, dt);
+    }
+    const auto start = Clock::now();
     if (!parts_.empty()) {
         for (const DemCoupledPart& part : parts_) {
             extremes_.add_deflection(fem_->analysis(), part.elements);

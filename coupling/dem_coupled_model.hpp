@@ -37,7 +37,9 @@ struct DemCoupledPart {
 ///  3. the DEM sub-cycles through the window in uniform steps no longer than its own stable
 ///     step, adding up the impulse of every wall vertex's load;
 ///  4. the window's mean vertex loads, mapped to the nodes, move the next window's load by the
-///     relaxation factor.
+///     relaxation factor; or, with max_iterations > 1, the window is repeated from its start
+///     under the load it produced, accelerated (Aitken or IQN-ILS), until that load stops
+///     changing.
 class DemCoupledModel final : public io::Stepper, public io::Reporter {
   public:
     DemCoupledModel(std::unique_ptr<dem::DemModel> dem, std::unique_ptr<fem::ShellModel> fem,
@@ -73,6 +75,15 @@ class DemCoupledModel final : public io::Stepper, public io::Reporter {
   private:
     /// DEM sub-steps from t to t + dt, the walls accumulating; returns their number.
     int subcycle(double t, double dt, WindowRecord& record);
+    /// One pass through the window under the load `applied`: the shell solved, the walls moved,
+    /// the DEM sub-cycled; `end_load` the shell's load at the window's end. Its books' record.
+    WindowRecord run_window(double t, double dt, const Eigen::VectorXd& applied,
+                            Eigen::VectorXd& end_load);
+    /// The window's mean load of every coupled part, mapped to the nodes.
+    Eigen::VectorXd collect_load(double dt);
+    /// The window repeated from its start until the load it produces stops changing
+    /// (max_iterations > 1); its last pass's record.
+    WindowRecord iterate_window(double t, double dt);
 
     std::unique_ptr<dem::DemModel> dem_;
     std::unique_ptr<fem::ShellModel> fem_;

@@ -21,7 +21,9 @@ void DemCoupledModel::describe_model(std::vector<io::ModelChoice>& choices) cons
              std::string(part.material->model()) +
                  (parts_.empty() ? ", not loaded by the grains (rigid interfaces)" : "")});
     }
-    choices.push_back({"coupling", "staggered, DEM sub-cycled"});
+    choices.push_back(
+        {"coupling", std::string(settings_.max_iterations > 1 ? "iterated" : "staggered") +
+                         ", DEM sub-cycled"});
 }
 
 void DemCoupledModel::append_hints(std::vector<std::string>& hints) const {
@@ -61,13 +63,7 @@ void DemCoupledModel::append_results(double t, std::vector<io::ResultFigure>& re
         {"coupling_dem_steps", static_cast<double>(monitor_.subcycles()), "", std::nullopt, ""});
     const Vec3 load = load_resultant(load_);
     for (int a = 0; a < 3; ++a) {
-        const std::string axis(1, static_cast<char>('x' + a));
-        results.push_back({"interface_force_" + axis, load[a], "N", std::nullopt, ""});
-        results.push_back(
-            {"interface_impulse_" + axis, monitor_.wall_impulse()[a], "N s", std::nullopt, ""});
-        results.push_back(shell_impulse_figure(axis, monitor_.shell_impulse()[a],
-                                               monitor_.wall_impulse()[a],
-                                               monitor_.wall_impulse().norm()));
+        append_interface_figures(a, load, monitor_, results);
     }
     results.push_back({"shell_kinetic_energy", fem_->kinetic_energy(), "J", std::nullopt, ""});
     results.push_back({"shell_strain_energy", fem_->strain_energy(), "J", std::nullopt, ""});

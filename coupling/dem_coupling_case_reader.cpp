@@ -10,12 +10,9 @@ namespace grainload::coupling {
 
 namespace {
 
-/// The [coupling] settings a DEM scene runs: staggered windows, no added mass.
+/// The [coupling] settings a DEM scene runs: no added mass.
 CouplingSettings read_dem_settings(const io::CaseTable& coupling, const fem::ShellModel& fem) {
     const CouplingSettings settings = read_settings(coupling, fem);
-    if (settings.max_iterations > 1) {
-        coupling.fail("max_iterations", "a DEM scene's coupling is staggered: expected 1");
-    }
     if (settings.added_mass > 0.0) {
         coupling.fail("added_mass", "the added mass is estimated from an SPH scene's sand: "
                                     "expected 0 with [dem]");
