@@ -21,10 +21,11 @@ constexpr double kThickness = 0.01; // the plate's
 
 /// One glass sphere above a 0.1 m steel plate of 2 x 2 elements (clamped at x = 0), coupled
 /// with relaxation 1 (the shell's load is the last window's mean), under gravity tilted by 20
-/// degrees about y; `centre` its position, `coupling` more [coupling] keys. One scene at a
-/// time: the library is shared.
+/// degrees about y; `centre` its position, `coupling` and `interface` more keys of those
+/// tables. One scene at a time: the library is shared.
 std::unique_ptr<DemCoupledModel> sphere_on_plate(const std::string& centre,
-                                                 const std::string& coupling = "") {
+                                                 const std::string& coupling = "",
+                                                 const std::string& interface = "") {
     const double theta = 20.0 * std::numbers::pi / 180.0;
     const std::string text =
         "[case]\nend_time = \"1 s\"\ngravity = \"" + std::to_string(kG * std::sin(theta)) + " 0 " +
@@ -46,7 +47,7 @@ std::unique_ptr<DemCoupledModel> sphere_on_plate(const std::string& centre,
         "2\nelements_y = 2\n"
         "[[fem.shell.boundary]]\nnode_set = \"x0\"\ndofs = \"all\"\n"
         "[coupling]\nwindow = \"2 ms\"\nrelaxation = 1.0\n" +
-        coupling + "\n[[coupling.interface]]\npart = \"plate\"\nside = \"positive\"\n";
+        coupling + "\n[[coupling.interface]]\npart = \"plate\"\nside = \"positive\"\n" + interface;
     auto document = io::CaseDocument::from_string(text, "grain_on_plate.toml");
     const io::SceneSettings settings = io::read_scene_settings(*document, "grain_on_plate");
     const io::CaseTable root = document->root();
@@ -106,6 +107,22 @@ TEST(DemShellWall, NodalLoadsAreStaticallyEquivalentToTheContactForce) {
     const double scale = weight.norm();
     EXPECT_NEAR((force - weight).norm(), 0.0, 1e-6 * scale);
     EXPECT_NEAR((moment - point.cross(weight)).norm(), 0.0, 1e-6 * scale * point.norm());
+}
+
+// A rigid interface (`rigid = true`) is a mesh wall where the shell was built: the grain rests
+// on it, the DEM's wall carries its weight (bound 1e-6, as above) and the shell none of it.
+TEST(DemShellWall, ARigidInterfaceCarriesTheGrainAndLeavesTheShellUnloaded) {
+    auto model = sphere_on_plate("30 60 10 mm", "", "rigid = true\n");
+    run(*model, 0.3);
+    const double mass = 2500.0 * 4.0 / 3.0 * std::numbers::pi * std::pow(kRadius, 3);
+    const double theta = 20.0 * std::numbers::pi / 180.0;
+    const Vec3 weight = mass * kG * Vec3(std::sin(theta), 0.0, -std::cos(theta));
+    ASSERT_EQ(model->dem().walls().size(), 1u);
+    EXPECT_FALSE(model->dem().walls()[0].follows());
+    EXPECT_NEAR((model->dem().walls()[0].force - weight).norm(), 0.0, 1e-6 * weight.norm());
+    EXPECT_FALSE(model->loads_shell());
+    EXPECT_EQ(model->interface_load().norm(), 0.0);
+    EXPECT_EQ(model->fem().analysis().dofs().norm(), 0.0);
 }
 
 // Iterated windows (max_iterations > 1): each window is run again from its start under the load
