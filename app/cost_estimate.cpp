@@ -222,6 +222,75 @@ void add_output(const StepPlan& plan, const Calibration& calibration, CostEstima
 
 } // namespace
 
+namespace {
+
+/// The SPH model's particles, steps and cost into `e` over the run's `plan`; its bytes.
+double add_sph(const sph::SphModel& sph, const Discharge& discharge, const StepPlan& plan,
+               double end, const Calibration& calibration, CostEstimate& e) {
+    const double per_step = add_sph_counts(sph, discharge, end, calibration, e);
+    e.sph_steps = plan.sph_steps;
+    e.particle_steps = (static_cast<double>(sph.point_count() - e.wall_particles) +
+                        e.average_created - e.average_discharged) *
+                       e.sph_steps;
+    // The step's fixed cost is paid whole on every thread count.
+    const double fixed = sph.solver() == nullptr ? 0.0
+                         : sph.dimension() == 2  ? calibration.seconds_per_step_2d
+                                                 : calibration.seconds_per_step_3d;
+    e.sph_seconds = (per_step / speedup_of(e.threads, calibration) + fixed) * e.sph_steps;
+    return sph.solver() ? static_cast<double>(sph.solver()->bytes()) : 0.0;
+}
+
+/// The shells of the scene, alone or coupled, and their cost into `e`; their bytes.
+double add_shells(const Scene& scene, const StepPlan& plan, const Calibration& calibration,
+                  CostEstimate& e) {
+    double bytes = 0.0;
+    auto add_shell = [&](const fem::ShellModel& fem, bool in_coupling, bool loaded) {
+        const ShellCost cost =
+            estimate_shell_cost(fem, plan.segments, in_coupling, loaded, calibration);
+        e.shell_nodes += fem.point_count();
+        e.shell_dofs += fem.analysis().free_dof_count();
+        e.shell_steps += cost.steps;
+        e.shell_solved_steps += cost.solved_steps;
+        e.shell_factorisations += cost.factorisations;
+        e.shell_back_substitutions += cost.back_substitutions;
+        e.shell_seconds += cost.seconds;
+        bytes +=
+            static_cast<double>(fem.analysis().free_dof_count()) * calibration.shell_bytes_per_dof;
+    };
+    for (const auto& stepper : scene.steppers) {
+        if (const auto* model = dynamic_cast<const coupling::CoupledModel*>(stepper.get())) {
+            add_shell(model->fem(), true, model->loads_shell());
+            add_window_limit(*model, e);
+        } else if (const auto* grains =
+                       dynamic_cast<const coupling::DemCoupledModel*>(stepper.get())) {
+            add_shell(grains->fem(), true, grains->loads_shell());
+        } else if (const auto* fem = dynamic_cast<const fem::ShellModel*>(stepper.get())) {
+            add_shell(*fem, false, false);
+        }
+    }
+    return bytes;
+}
+
+/// The scene's DEM grains, alone or on coupled shells, and their cost into `e`.
+void add_grains(const Scene& scene, const StepPlan& plan, const Calibration& calibration,
+                CostEstimate& e) {
+    for (const auto& stepper : scene.steppers) {
+        const dem::DemModel* dem = dynamic_cast<const dem::DemModel*>(stepper.get());
+        double dem_steps = static_cast<double>(plan.steps);
+        if (const auto* grains = dynamic_cast<const coupling::DemCoupledModel*>(stepper.get())) {
+            // Each window sub-cycled in uniform DEM steps (DemCoupledModel::subcycle).
+            dem = &grains->dem();
+            dem_steps *= std::max(1.0, std::ceil(grains->stable_time_step() /
+                                                 dem->stable_time_step() * (1.0 - 1e-12)));
+        }
+        if (dem != nullptr) {
+            add_dem(*dem, dem_steps, scene.settings.end_time, calibration, e);
+        }
+    }
+}
+
+} // namespace
+
 CostEstimate estimate_cost(const Scene& scene, int threads, const Calibration& calibration) {
     CostEstimate e;
     e.threads = std::max(1, threads);
@@ -248,55 +317,10 @@ CostEstimate estimate_cost(const Scene& scene, int threads, const Calibration& c
     e.steps = plan.steps;
     double bytes = calibration.baseline_bytes;
     if (sph != nullptr) {
-        const double per_step = add_sph_counts(*sph, discharge, end, calibration, e);
-        e.sph_steps = plan.sph_steps;
-        e.particle_steps = (static_cast<double>(sph->point_count() - e.wall_particles) +
-                            e.average_created - e.average_discharged) *
-                           e.sph_steps;
-        // The step's fixed cost is paid whole on every thread count.
-        const double fixed = sph->solver() == nullptr ? 0.0
-                             : sph->dimension() == 2  ? calibration.seconds_per_step_2d
-                                                      : calibration.seconds_per_step_3d;
-        e.sph_seconds = (per_step / speedup_of(e.threads, calibration) + fixed) * e.sph_steps;
-        bytes += sph->solver() ? static_cast<double>(sph->solver()->bytes()) : 0.0;
+        bytes += add_sph(*sph, discharge, plan, end, calibration, e);
     }
-    auto add_shell = [&](const fem::ShellModel& fem, bool in_coupling, bool loaded) {
-        const ShellCost cost =
-            estimate_shell_cost(fem, plan.segments, in_coupling, loaded, calibration);
-        e.shell_nodes += fem.point_count();
-        e.shell_dofs += fem.analysis().free_dof_count();
-        e.shell_steps += cost.steps;
-        e.shell_solved_steps += cost.solved_steps;
-        e.shell_factorisations += cost.factorisations;
-        e.shell_back_substitutions += cost.back_substitutions;
-        e.shell_seconds += cost.seconds;
-        bytes +=
-            static_cast<double>(fem.analysis().free_dof_count()) * calibration.shell_bytes_per_dof;
-    };
-    for (const auto& stepper : scene.steppers) {
-        if (const auto* model = dynamic_cast<const coupling::CoupledModel*>(stepper.get())) {
-            add_shell(model->fem(), true, model->loads_shell());
-            add_window_limit(*model, e);
-        } else if (const auto* grains =
-                       dynamic_cast<const coupling::DemCoupledModel*>(stepper.get())) {
-            add_shell(grains->fem(), true, grains->loads_shell());
-        } else if (const auto* fem = dynamic_cast<const fem::ShellModel*>(stepper.get())) {
-            add_shell(*fem, false, false);
-        }
-    }
-    for (const auto& stepper : scene.steppers) {
-        const dem::DemModel* dem = dynamic_cast<const dem::DemModel*>(stepper.get());
-        double dem_steps = static_cast<double>(plan.steps);
-        if (const auto* grains = dynamic_cast<const coupling::DemCoupledModel*>(stepper.get())) {
-            // Each window sub-cycled in uniform DEM steps (DemCoupledModel::subcycle).
-            dem = &grains->dem();
-            dem_steps *= std::max(1.0, std::ceil(grains->stable_time_step() /
-                                                 dem->stable_time_step() * (1.0 - 1e-12)));
-        }
-        if (dem != nullptr) {
-            add_dem(*dem, dem_steps, scene.settings.end_time, calibration, e);
-        }
-    }
+    bytes += add_shells(scene, plan, calibration, e);
+    add_grains(scene, plan, calibration, e);
     add_output(plan, calibration, e);
     e.wall_time_s = e.sph_seconds + e.shell_seconds + e.dem_seconds + e.output_seconds;
     e.memory_bytes = bytes;
