@@ -112,7 +112,7 @@ bool PlaneWall::touched_by(const Vec3& centre, double radius) const {
     Vec3 normal;
     const Vec3 at = centre - displacement;
     return std::any_of(faces.begin(), faces.end(), [&](const Face& face) {
-        return touches(face, at, radius, overlap, normal);
+        return touches(face, at, radius + half_thickness, overlap, normal);
     });
 }
 

@@ -107,7 +107,8 @@ struct PlaneWall {
         displacement = velocity * std::clamp(time - move_start, 0.0, move_end - move_start);
         current_velocity = time > move_start && time < move_end ? velocity : Vec3::Zero();
     }
-    /// Whether a sphere at `centre` of `radius` touches any face of the wall where it is now.
+    /// Whether a sphere at `centre` of `radius` touches any face of the wall where it is now (a
+    /// plate of its thickness about them).
     bool touched_by(const Vec3& centre, double radius) const;
     /// The faces a sphere at `centre` of `radius` touches, in ascending order, into `touched`,
     /// with `centre` in the faces' frame (less the wall's displacement).

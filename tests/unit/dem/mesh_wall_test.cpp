@@ -92,6 +92,37 @@ TEST(MeshWall, ATessellatedPlaneIsTouchedOnceAnywhere) {
     EXPECT_TRUE(wall.grid.near(Vec3(0.5, 0.5, 0.5)).empty());
 }
 
+// A mesh wall that follows moving vertices (a coupled shell's mid-surface) is a plate of its
+// thickness: a sphere of radius 0.05 touches the square z = 0 of half-thickness 0.004 from 0.054
+// above or below it, not from 0.055 (a source's grains are placed clear of it); as its
+// vertices move up by 0.01 over [0, 1] s the faces follow, halfway at 0.5 s, and a point of a
+// face moves at 0.01 m/s.
+TEST(MeshWall, AFollowingWallIsAPlateOfItsThicknessOnItsMovingVertices) {
+    PlaneWall wall;
+    const io::SurfaceMesh mesh = square_mesh(2);
+    wall.set_mesh(mesh);
+    wall.half_thickness = 0.004;
+    wall.set_interval(mesh.vertices, 0.0, 0.0);
+    EXPECT_TRUE(wall.touched_by(Vec3(0.3, 0.6, 0.0539), 0.05));
+    EXPECT_TRUE(wall.touched_by(Vec3(0.3, 0.6, -0.0539), 0.05));
+    EXPECT_FALSE(wall.touched_by(Vec3(0.3, 0.6, 0.055), 0.05));
+    std::vector<Vec3> raised = mesh.vertices;
+    for (Vec3& v : raised) {
+        v.z() += 0.01;
+    }
+    wall.set_interval(raised, 0.0, 1.0);
+    wall.follow(0.5);
+    for (const PlaneWall::Face& face : wall.faces) {
+        EXPECT_NEAR(face.point.z(), 0.005, 1e-15);
+        EXPECT_NEAR((face.point + face.edge_u).z(), 0.005, 1e-15);
+    }
+    const Vec3 point(0.3, 0.6, 0.005);
+    EXPECT_NEAR((wall.face_velocity(0, point) - Vec3(0.0, 0.0, 0.01)).norm(), 0.0, 1e-15);
+    const Vec3 weights = wall.barycentric(0, wall.faces[0].point + 0.25 * wall.faces[0].edge_u +
+                                                 0.5 * wall.faces[0].edge_v);
+    EXPECT_NEAR((weights - Vec3(0.25, 0.25, 0.5)).norm(), 0.0, 1e-15);
+}
+
 // A floor and a wall meeting at a right angle (a concave fold), both tessellated: a sphere in
 // the corner touches each once, with each one's overlap; over the ridge of a roof (a convex
 // fold) it touches once, at the ridge.
