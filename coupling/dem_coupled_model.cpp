@@ -47,27 +47,34 @@ double DemCoupledModel::stable_time_step() const {
 }
 
 int DemCoupledModel::subcycle(double t, double dt, WindowRecord& record) {
-    // Uniform steps that land on the window's end, none longer than the DEM's stable step.
-    const auto n = std::max<long long>(
-        1, static_cast<long long>(std::ceil(dt / dem_->stable_time_step() * (1.0 - 1e-12))));
-    const double step = dt / static_cast<double>(n);
-    for (long long k = 0; k < n; ++k) {
+    // Uniform steps that land on the window's end, none longer than the DEM's stable step;
+    // counted anew when that step drops below them (a Hertz contact's time shortens as the
+    // grains speed up), as the SPH coupling's sub-steps are.
+    const double end = t + dt;
+    double time = t;
+    int steps = 0;
+    while (time < end) {
+        const double remaining = end - time;
+        const auto n =
+            static_cast<long long>(std::ceil(remaining / dem_->stable_time_step() * (1.0 - 1e-12)));
+        const double step = n <= 1 ? remaining : remaining / static_cast<double>(n);
         auto start = Clock::now();
-        dem_->advance(t + static_cast<double>(k) * step, step);
+        dem_->advance(time, step);
         record.sand_seconds += seconds_since(start);
         start = Clock::now();
         for (DemCoupledPart& part : parts_) {
             part.wall.accumulate(dem_->walls()[part.wall_index], step);
         }
         record.map_seconds += seconds_since(start);
-        if ((k + 1) % kWatchEvery == 0) {
+        time = n <= 1 ? end : time + step;
+        if (++steps % kWatchEvery == 0) {
             if (auto problem = dem_->diagnose()) {
                 problem_ = "dem, within a coupling window: " + *problem;
-                return static_cast<int>(k + 1);
+                break;
             }
         }
     }
-    return static_cast<int>(n);
+    return steps;
 }
 
 WindowRecord DemCoupledModel::run_window(double t, double dt, const Eigen::VectorXd& applied,
