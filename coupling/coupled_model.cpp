@@ -1,5 +1,6 @@
 #include "coupling/coupled_model.hpp"
 
+#include "coupling/window_iteration.hpp"
 #include "coupling/window_limits.hpp"
 #include "io/binary_stream.hpp"
 
@@ -180,41 +181,30 @@ void CoupledModel::track_extremes() {
 }
 
 void CoupledModel::iterate_window(double t, double dt) {
-    // Fixed-point iteration on the interface load F: every pass starts the window afresh from
-    // the state saved here, under the load the accelerator makes of the passes before
-    // (coupling/interface_accelerator.hpp), starting from the case's relaxation factor.
+    // Fixed-point iteration on the interface load F (coupling/window_iteration.hpp): every pass
+    // starts the window afresh from the state saved here.
     std::stringstream saved;
     sph_->write_checkpoint(saved);
     fem_->write_checkpoint(saved);
     const std::string start_state = saved.str();
-    Eigen::VectorXd applied = load_;
-    InterfaceAccelerator accelerator(settings_.accelerator, settings_.relaxation);
-    WindowRecord spent; // the wall times of the passes before, which the window costs too
-    for (int pass = 1;; ++pass) {
-        if (pass > 1) {
-            std::istringstream in(start_state);
-            sph_->read_checkpoint(in);
-            fem_->read_checkpoint(in);
-        }
-        run_window(t, dt, applied);
-        pending_.sand_seconds += spent.sand_seconds;
-        pending_.fem_seconds += spent.fem_seconds;
-        pending_.map_seconds += spent.map_seconds;
-        const auto start = Clock::now();
-        const Eigen::VectorXd produced = collect_load(dt);
-        pending_.iterations = pass;
-        pending_.load_change = relative_change(produced, applied);
-        if (pending_.load_change <= settings_.iteration_tolerance ||
-            pass >= settings_.max_iterations) {
-            start_load_ = end_load_;
-            load_ = produced;
+    Eigen::VectorXd produced;
+    pending_ = iterate_passes(
+        settings_, load_,
+        [&](const Eigen::VectorXd& applied, int pass, Eigen::VectorXd& out) {
+            if (pass > 1) {
+                std::istringstream in(start_state);
+                sph_->read_checkpoint(in);
+                fem_->read_checkpoint(in);
+            }
+            run_window(t, dt, applied);
+            const auto start = Clock::now();
+            out = collect_load(dt);
             pending_.map_seconds += seconds_since(start);
-            return;
-        }
-        applied = accelerator.next(applied, produced);
-        pending_.map_seconds += seconds_since(start);
-        spent = pending_;
-    }
+            return pending_;
+        },
+        produced);
+    start_load_ = end_load_;
+    load_ = produced;
 }
 
 std::optional<std::string> CoupledModel::diagnose() const {

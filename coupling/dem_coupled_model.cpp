@@ -1,6 +1,6 @@
 #include "coupling/dem_coupled_model.hpp"
 
-#include "coupling/interface_accelerator.hpp"
+#include "coupling/window_iteration.hpp"
 #include "io/binary_stream.hpp"
 
 #include <algorithm>
@@ -122,9 +122,9 @@ Eigen::VectorXd DemCoupledModel::collect_load(double dt) {
 }
 
 WindowRecord DemCoupledModel::iterate_window(double t, double dt) {
-    // Fixed-point iteration on the interface load, as the SPH coupling's (coupled_model.cpp):
-    // every pass starts the window afresh from the state saved here, the grains, the shell and
-    // the walls' books, under the load the accelerator makes of the passes before.
+    // Fixed-point iteration on the interface load, as the SPH coupling's
+    // (coupling/window_iteration.hpp): every pass starts the window afresh from the state saved
+    // here, the grains, the shell and the walls' books.
     std::stringstream saved;
     dem_->write_checkpoint(saved);
     fem_->write_checkpoint(saved);
@@ -132,36 +132,30 @@ WindowRecord DemCoupledModel::iterate_window(double t, double dt) {
         part.wall.write_state(saved, dem_->walls()[part.wall_index]);
     }
     const std::string start_state = saved.str();
-    Eigen::VectorXd applied = load_;
-    InterfaceAccelerator accelerator(settings_.accelerator, settings_.relaxation);
-    WindowRecord spent; // the wall times of the passes before, which the window costs too
-    for (int pass = 1;; ++pass) {
-        if (pass > 1) {
-            std::istringstream in(start_state);
-            dem_->read_checkpoint(in);
-            fem_->read_checkpoint(in);
-            for (DemCoupledPart& part : parts_) {
-                part.wall.read_state(in, dem_->wall(part.wall_index));
+    Eigen::VectorXd end_load;
+    Eigen::VectorXd produced;
+    const WindowRecord record = iterate_passes(
+        settings_, load_,
+        [&](const Eigen::VectorXd& applied, int pass, Eigen::VectorXd& out) {
+            if (pass > 1) {
+                std::istringstream in(start_state);
+                dem_->read_checkpoint(in);
+                fem_->read_checkpoint(in);
+                for (DemCoupledPart& part : parts_) {
+                    part.wall.read_state(in, dem_->wall(part.wall_index));
+                }
+                (void)dem_->take_events(); // the pass before's, said again by this one
             }
-            (void)dem_->take_events(); // the pass before's, said again by this one
-        }
-        Eigen::VectorXd end_load;
-        WindowRecord record = run_window(t, dt, applied, end_load);
-        record.sand_seconds += spent.sand_seconds;
-        record.fem_seconds += spent.fem_seconds;
-        record.map_seconds += spent.map_seconds;
-        const Eigen::VectorXd produced = collect_load(dt);
-        record.iterations = pass;
-        record.load_change = relative_change(produced, applied);
-        if (record.load_change <= settings_.iteration_tolerance ||
-            pass >= settings_.max_iterations) {
-            start_load_ = end_load;
-            load_ = produced;
-            return record;
-        }
-        applied = accelerator.next(applied, produced);
-        spent = record;
-    }
+            WindowRecord pass_record = run_window(t, dt, applied, end_load);
+            const auto start = Clock::now();
+            out = collect_load(dt);
+            pass_record.map_seconds += seconds_since(start);
+            return pass_record;
+        },
+        produced);
+    start_load_ = end_load;
+    load_ = produced;
+    return record;
 }
 
 void DemCoupledModel::advance(double t, double dt) {
