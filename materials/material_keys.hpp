@@ -12,7 +12,8 @@ namespace grainload::materials {
 inline constexpr std::array<io::KeySpec, 10> kMaterialKeys{{
     {"name", "string", "", "unique name; bodies and shells refer to it"},
     {"model", "string", "required unless `from_lsdyna`",
-     "`linear_elastic`, `von_mises`, `drucker_prager`, `generalized_cap` or `mu_i`"},
+     "`linear_elastic`, `von_mises`, `drucker_prager`, `generalized_cap`, `mu_i` or "
+     "`mohr_coulomb`"},
     {"density", "density", "required unless `from_lsdyna`", "the bulk density, > 0"},
     {"youngs_modulus", "pressure", "one pair required", "E, with `poisson_ratio`"},
     {"poisson_ratio", "number", "one pair required", "ν in (−1, 0.5), with `youngs_modulus`"},

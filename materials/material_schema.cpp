@@ -4,6 +4,7 @@
 #include "materials/generalized_cap.hpp"
 #include "materials/lsdyna_material.hpp"
 #include "materials/material_keys.hpp"
+#include "materials/mohr_coulomb.hpp"
 #include "materials/mu_i_material.hpp"
 #include "materials/von_mises.hpp"
 
@@ -15,7 +16,7 @@ namespace {
 
 constexpr std::string_view kGuide = "docs/user-guide.md";
 
-const std::array<io::KeyTable, 6> kTables{{
+const std::array<io::KeyTable, 7> kTables{{
     {"material", true, "a material: its model, density and elastic constants", kMaterialKeys,
      kGuide, "## `[[material]]`"},
     {"material.von_mises", false, "von Mises plasticity with mixed linear hardening", kVonMisesKeys,
@@ -28,6 +29,8 @@ const std::array<io::KeyTable, 6> kTables{{
      kFromLsDynaKeys, kGuide, "#### A material from an LS-DYNA deck (`from_lsdyna`)"},
     {"material.mu_i", false, "the rate-dependent friction mu(I) of dense granular flow", kMuIKeys,
      kGuide, "### `mu_i`"},
+    {"material.mohr_coulomb", false, "the Mohr-Coulomb hexagon in 3D, corners returned exactly",
+     kMohrCoulombKeys, kGuide, "### `mohr_coulomb`"},
 }};
 
 } // namespace

@@ -122,4 +122,31 @@ TEST(ColumnCollapse3dSmall, TheMaterialModelSwitchesFromTheCommandLine) {
               kParticles);
 }
 
+// One cohesionless, non-dilatant sand of 35 deg on a rough plate (mu = tan 35 deg) under the
+// Mohr-Coulomb hexagon and under the two Drucker-Prager cones that bound it: the cone through
+// its compression corners contains it, the inscribed cone lies inside it. A stronger material
+// spreads less, so the hexagon's run-out lies between the two cones' (measured at this spacing
+// 116, 132 and 158 mm) and its heap is at rest with the weight on the plate; the slope bound as
+// for the cap's cone above, with the hexagon's 35 deg.
+TEST(ColumnCollapse3dSmall, TheMohrCoulombHeapLiesBetweenItsCircumscribedAndInscribedCones) {
+    const std::string name = "column_collapse_mohr_coulomb_small";
+    const std::string file = "cases/column_collapse/" + name + ".toml";
+    const CaseRun hexagon = run_case_file(file, name);
+    ASSERT_EQ(hexagon.cli.exit_code, 0) << hexagon.cli.output;
+    const std::string summary = expect_heap_at_rest(hexagon.out, "plate", 0.5);
+    EXPECT_LT(result_value(summary, "heap_angle"), 35.0 + 10.0);
+    expect_matches_gold(hexagon.out, file);
+    const auto cone_run_out = [&](const std::string& fit) {
+        const CaseRun run = run_case_file(file, name + "_" + fit,
+                                          "--set 'material[0].model=\"drucker_prager\"' --set "
+                                          "'material[0].drucker_prager.cone_fit=\"" +
+                                              fit + "\"'");
+        EXPECT_EQ(run.cli.exit_code, 0) << run.cli.output;
+        return result_value(read_file(run.out + "/summary.json"), "heap_run_out_99");
+    };
+    const double run_out = result_value(summary, "heap_run_out_99");
+    EXPECT_GT(run_out, cone_run_out("compression"));
+    EXPECT_LT(run_out, cone_run_out("inner"));
+}
+
 } // namespace

@@ -153,7 +153,7 @@ TEST(DruckerPragerHydrostatic, CompressionIsElasticAndExtensionStopsAtTheApex) {
 TEST(MatpointCases, ExampleDriversRunAndTriaxialPeakIsMohrCoulomb) {
     const std::string dir = std::string(GRAINLOAD_SOURCE_DIR) + "/cases/matpoint/";
     for (const char* name : {"triaxial_dp", "hydrostatic_dp", "uniaxial_vm_cycle", "triaxial_cap",
-                             "hydrostatic_cap", "oedometer_cap_wagon"}) {
+                             "hydrostatic_cap", "oedometer_cap_wagon", "triaxial_mc"}) {
         std::vector<std::string> notices;
         EXPECT_EQ(run_material_point(dir + name + ".toml",
                                      grainload::testing::process_folder() + name + ".csv", notices),
@@ -168,6 +168,23 @@ TEST(MatpointCases, ExampleDriversRunAndTriaxialPeakIsMohrCoulomb) {
     const double exact =
         (2.0 * kCohesion * std::cos(kPhi) + 2.0 * 100e3 * std::sin(kPhi)) / (1.0 - std::sin(kPhi));
     EXPECT_NEAR(peak, exact, 1e-8 * exact);
+}
+
+// The Mohr-Coulomb driver reaches both of the hexagon's closed-form limits on one path: the
+// compression peak of triaxial_dp.toml's cone and, after it, the extension limit that no
+// compression cone has (1e-8: the driver's Newton tolerance, 1e-10 of the stress, with room).
+TEST(MatpointCases, MohrCoulombDriverReachesTheCompressionAndExtensionLimits) {
+    const auto run = testing::run_driver_file(std::string(GRAINLOAD_SOURCE_DIR) +
+                                              "/cases/matpoint/triaxial_mc.toml");
+    double peak = 0.0;
+    for (const auto& r : run.records) {
+        peak = std::max(peak, r.stress(1) - r.stress(0));
+    }
+    const double s = std::sin(kPhi);
+    const double compression = (2.0 * kCohesion * std::cos(kPhi) + 2.0 * 100e3 * s) / (1.0 - s);
+    EXPECT_NEAR(peak, compression, 1e-8 * compression);
+    const double extension = (-100e3 * (1.0 - s) + 2.0 * kCohesion * std::cos(kPhi)) / (1.0 + s);
+    EXPECT_NEAR(run.records.back().stress(0), extension, 1e-8 * 100e3);
 }
 
 } // namespace
