@@ -4,8 +4,9 @@
 // corner, apex).
 // The sand is the thesis's generalized cap (section 7.2, X0 = 0: every compressed point sits on the
 // cap, as in the 3D column collapse) at the full stiffness and at K/1000, and the Drucker-Prager
-// sand of the 2D collapse and the same sand with mu(I) (whose one-by-one calls are update(), its
-// rest state; the blocks take each increment over kTimeStep, so they read the rate). Each point
+// sand of the 2D collapse, the same sand with mu(I) (whose one-by-one calls are update(), its
+// rest state; the blocks take each increment over kTimeStep, so they read the rate) and with the
+// Mohr-Coulomb hexagon of its friction angle. Each point
 // follows its own random strain path: a compressive volumetric drift plus random strain, scaled so
 // that one increment changes the stress by about `stress_step` (a few per cent of the kPa stresses
 // of a lab-scale column). "Compacting" paths have random parts as large as the drift; "shearing"
@@ -17,6 +18,7 @@
 #include "materials/cone_fit.hpp"
 #include "materials/drucker_prager.hpp"
 #include "materials/generalized_cap.hpp"
+#include "materials/mohr_coulomb.hpp"
 #include "materials/mu_i_material.hpp"
 
 #include <algorithm>
@@ -154,5 +156,13 @@ int main(int argc, char** argv) {
     report("cap, K/1000, shearing", scaled, points, steps, 100.0, 10.0);
     report("Drucker-Prager, 2D collapse sand", sand, points, steps, 100.0, 1.0);
     report("mu(I), 2D collapse sand", bars, points, steps, 100.0, 1.0);
+    // The same sand's Mohr-Coulomb hexagon, of which the cone above is the plane-strain fit.
+    const MohrCoulomb hexagon(ElasticConstants::from_young(2040.0, 5.84e6, 0.3),
+                              {21.9 * std::numbers::pi / 180.0, 0.0, 0.0});
+    report("Mohr-Coulomb, 2D collapse sand", hexagon, points, steps, 100.0, 1.0);
+    // Both shearing, where most trials leave the surface: the hexagon's spectral return against
+    // the cone's closed form.
+    report("Drucker-Prager, shearing", sand, points, steps, 100.0, 10.0);
+    report("Mohr-Coulomb, shearing", hexagon, points, steps, 100.0, 10.0);
     return 0;
 }

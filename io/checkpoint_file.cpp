@@ -22,6 +22,8 @@ constexpr std::uint64_t kSecondFormatMagic = 0x323054504b434c47; // "GLCKPT02"
 /// The format before each scene part's state carried its part's name
 /// (particles/scene_part_list.hpp).
 constexpr std::uint64_t kThirdFormatMagic = 0x333054504b434c47; // "GLCKPT03"
+/// The format before the SPH energy books split the dissipation by mechanism.
+constexpr std::uint64_t kFourthFormatMagic = 0x343054504b434c47; // "GLCKPT04"
 constexpr std::streamoff kMagicBytes = 8;
 constexpr std::streamoff kTrailerBytes = 16; // payload length, hash
 
@@ -71,6 +73,9 @@ void check_framing(std::istream& in, std::uint64_t size) {
             : magic == kThirdFormatMagic
                 ? "written in the third checkpoint format, whose monitors' states (heap, wall "
                   "maps) were not named by their parts; rerun the case from the start"
+            : magic == kFourthFormatMagic
+                ? "written in the fourth checkpoint format, whose energy books did not split "
+                  "the dissipation by mechanism; rerun the case from the start"
                 : "not a grainload checkpoint (wrong magic number)");
     }
     const std::uint64_t payload = size - static_cast<std::uint64_t>(kMagicBytes + kTrailerBytes);

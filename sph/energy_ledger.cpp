@@ -112,14 +112,15 @@ std::optional<std::string> EnergyLedger::check(double held, double fraction) con
 }
 
 std::vector<double> EnergyLedger::state() const {
-    return {open_ ? 1.0 : 0.0, initial_held_,         initial_contact_, initial_scale_,
-            gravity_work_,     largest_gravity_work_, wall_work_,       largest_wall_work_,
-            removed_held_,     removed_contact_,      created_held_,    created_contact_};
+    return {open_ ? 1.0 : 0.0, initial_held_,         initial_contact_,     initial_scale_,
+            gravity_work_,     largest_gravity_work_, wall_work_,           largest_wall_work_,
+            removed_held_,     removed_contact_,      created_held_,        created_contact_,
+            plastic_work_,     viscous_heat_,         contact_damping_heat_};
 }
 
 void EnergyLedger::set_state(const std::vector<double>& state) {
-    if (state.size() != 12) {
-        throw std::runtime_error("checkpoint: expected 12 energy-ledger entries, found " +
+    if (state.size() != 15) {
+        throw std::runtime_error("checkpoint: expected 15 energy-ledger entries, found " +
                                  std::to_string(state.size()));
     }
     open_ = state[0] != 0.0;
@@ -134,6 +135,9 @@ void EnergyLedger::set_state(const std::vector<double>& state) {
     removed_contact_ = state[9];
     created_held_ = state[10];
     created_contact_ = state[11];
+    plastic_work_ = state[12];
+    viscous_heat_ = state[13];
+    contact_damping_heat_ = state[14];
 }
 
 } // namespace grainload::sph

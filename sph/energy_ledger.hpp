@@ -38,7 +38,20 @@ class EnergyLedger {
     /// potential of their pairs with what was there.
     void add_created(double held, double contact);
 
+    /// The dissipation booked inside the internal energy, by mechanism, over a step (J): the
+    /// plastic work (the stress power less the elastic strain energy it stores), the artificial
+    /// viscosity's heat and the heat of the dashpot between bodies. The walls' dashpot and
+    /// friction keep their own books (WallContact). Reported, not part of the balance.
+    void add_dissipation(double plastic, double viscous, double contact_damping) {
+        plastic_work_ += plastic;
+        viscous_heat_ += viscous;
+        contact_damping_heat_ += contact_damping;
+    }
+
     double gravity_work() const { return gravity_work_; }
+    double plastic_work() const { return plastic_work_; }
+    double viscous_heat() const { return viscous_heat_; }
+    double contact_damping_heat() const { return contact_damping_heat_; }
     double wall_work() const { return wall_work_; }
     double removed_held() const { return removed_held_; }
     double removed_contact() const { return removed_contact_; }
@@ -81,6 +94,9 @@ class EnergyLedger {
     double removed_contact_ = 0.0;
     double created_held_ = 0.0;
     double created_contact_ = 0.0;
+    double plastic_work_ = 0.0;
+    double viscous_heat_ = 0.0;
+    double contact_damping_heat_ = 0.0;
 };
 
 } // namespace grainload::sph

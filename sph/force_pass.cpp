@@ -45,10 +45,12 @@ struct ForceSettings {
 };
 
 /// Where the parts of the force pass add: 3 doubles of acceleration and 1 of heating rate per
-/// particle.
+/// particle; and, when not null, the contact dashpot's part of each row's heating rate (row i
+/// writes entry i only, so every part shares one array).
 struct ForceSums {
     double* acceleration;
     double* heating;
+    double* contact_heating;
 };
 
 /// Row i of the force pass in D = 2 or 3 components (plane strain: the z terms are exact zeros
@@ -153,7 +155,7 @@ template <class Shape, int D> struct ForceRow {
 
     /// Contact potential (and the dashpot between bodies) of a pair of different bodies.
     void contact_pair(Index i, Index j, const Vec3& x_ij, double r, bool wall, double volume_i,
-                      double (&a)[3], double& heating) const {
+                      double (&a)[3], double& heating, double& contact_heating) const {
         const double volumes = volume_i * p.mass[j] / p.density[j];
         Vec3 add;
         if (wall || p.wall_id[j] >= 0) {
@@ -166,6 +168,7 @@ template <class Shape, int D> struct ForceRow {
             double dissipation = 0.0;
             add = contact_pair_force(kernel, contact, s.w_reference, pair, dissipation) / p.mass[i];
             heating += 0.5 * dissipation / p.mass[i];
+            contact_heating += 0.5 * dissipation / p.mass[i];
         }
         for (int c = 0; c < 3; ++c) {
             a[c] += add[c];
@@ -174,10 +177,10 @@ template <class Shape, int D> struct ForceRow {
 
     /// A neighbour entry of another body (or a wall particle) at squared distance r2.
     void contact_entry(Index i, Index j, double r2, bool wall, double volume_i, double (&a)[3],
-                       double& heating) const {
+                       double& heating, double& contact_heating) const {
         if (r2 < s.support_squared && r2 != 0.0 && s.use_contact && p.body_id[i] != p.body_id[j]) {
             contact_pair(i, j, p.position[i] - p.position[j], std::sqrt(r2), wall, volume_i, a,
-                         heating);
+                         heating, contact_heating);
         }
     }
 
@@ -188,6 +191,7 @@ template <class Shape, int D> struct ForceRow {
         const bool wall = p.wall_id[i] >= 0;
         double a[3] = {0.0, 0.0, 0.0};
         double heating = 0.0;
+        double contact_heating = 0.0;
         const double volume_i = p.mass[i] / p.density[i];
         const int key_i = key[i];
         const auto list = neighbours.neighbours(i);
@@ -218,7 +222,7 @@ template <class Shape, int D> struct ForceRow {
                 if (key[j] != key_i) {
                     double d[D];
                     contact_entry(i, j, separation(p.position[i], p.position[j], d), wall, volume_i,
-                                  a, heating);
+                                  a, heating, contact_heating);
                     continue;
                 }
                 if (j < i) {
@@ -239,6 +243,9 @@ template <class Shape, int D> struct ForceRow {
             ai[c] += a[c];
         }
         sums.heating[i] += heating;
+        if (sums.contact_heating != nullptr) {
+            sums.contact_heating[i] = contact_heating;
+        }
     }
 
     /// Row i: its contact pairs, and its same-body pairs with the particles after it.
@@ -246,6 +253,7 @@ template <class Shape, int D> struct ForceRow {
         const bool wall = p.wall_id[i] >= 0;
         double a[3] = {0.0, 0.0, 0.0};
         double heating = 0.0;
+        double contact_heating = 0.0;
         const Vec3& xi = p.position[i];
         const double volume_i = p.mass[i] / p.density[i];
         const int key_i = key[i];
@@ -259,7 +267,7 @@ template <class Shape, int D> struct ForceRow {
             const bool same = key[j] == key_i;
             const bool in_support = r2 < s.support_squared && r2 != 0.0;
             if (!same) {
-                contact_entry(i, j, r2, wall, volume_i, a, heating);
+                contact_entry(i, j, r2, wall, volume_i, a, heating, contact_heating);
                 continue;
             }
             if (!s.current_pairs_act || j < i) {
@@ -284,6 +292,9 @@ template <class Shape, int D> struct ForceRow {
             ai[c] += a[c];
         }
         sums.heating[i] += heating;
+        if (sums.contact_heating != nullptr) {
+            sums.contact_heating[i] = contact_heating;
+        }
     }
 };
 
@@ -301,9 +312,15 @@ bool force_pass_uses_lanes(const SmoothingKernel& kernel, const SphOptions& opti
 void compute_accelerations(ParticleSet& p, const particles::NeighbourList& neighbours,
                            const SmoothingKernel& kernel, const SphOptions& options,
                            const ForceInputs& in, std::vector<double>& heating_rate,
-                           PairScratch* scratch, PairArithmetic arithmetic) {
+                           PairScratch* scratch, PairArithmetic arithmetic,
+                           std::vector<double>* contact_heating_rate) {
     const Index n = p.size();
     heating_rate.resize(static_cast<std::size_t>(n));
+    double* contact_heating = nullptr;
+    if (contact_heating_rate != nullptr) {
+        contact_heating_rate->assign(static_cast<std::size_t>(n), 0.0);
+        contact_heating = contact_heating_rate->data();
+    }
     if (n == 0) {
         return;
     }
@@ -324,10 +341,10 @@ void compute_accelerations(ParticleSet& p, const particles::NeighbourList& neigh
     sums.reserve(parts, n, 4);
     auto sums_of = [&](int r) {
         if (r == 0) {
-            return ForceSums{p.acceleration.data()->data(), heating_rate.data()};
+            return ForceSums{p.acceleration.data()->data(), heating_rate.data(), contact_heating};
         }
         double* base = sums.part(r);
-        return ForceSums{base, base + 3 * n};
+        return ForceSums{base, base + 3 * n, contact_heating};
     };
     kernel.visit_shape([&](auto shape) {
         using Shape = decltype(shape);

@@ -126,10 +126,14 @@ bool force_pass_uses_lanes(const SmoothingKernel& kernel, const SphOptions& opti
 /// minus its force on i: momentum is conserved pair by pair); contact pairs from both rows.
 /// `arithmetic` as for compute_velocity_gradient; where force_pass_uses_lanes, the lanes
 /// evaluate W'(r)/r themselves and `inputs.entry_factor` is not read.
+/// `contact_heating_rate`, when given, receives the part of each particle's heating rate that
+/// the dashpot between bodies put there (its share of the pair's dissipation); heating_rate
+/// less it is the artificial viscosity's heating (the energy books' split of the dissipation).
 void compute_accelerations(ParticleSet& particles, const particles::NeighbourList& neighbours,
                            const SmoothingKernel& kernel, const SphOptions& options,
                            const ForceInputs& inputs, std::vector<double>& heating_rate,
                            PairScratch* scratch = nullptr,
-                           PairArithmetic arithmetic = PairArithmetic::lanes_where_available);
+                           PairArithmetic arithmetic = PairArithmetic::lanes_where_available,
+                           std::vector<double>* contact_heating_rate = nullptr);
 
 } // namespace grainload::sph

@@ -185,6 +185,9 @@ class SphModel final : public io::Stepper, public io::Reporter {
     /// Walls' removal times and histories and sources' windows that name a phase get its start.
     void apply_phase_starts();
     /// The first phase ending on `settled`, when no [sph.settle] reports settle_time.
+    /// elastic_strain_energy, plastic_work, viscous_heat, contact_damping_heat and
+    /// viscous_share of summary.json.
+    void append_dissipation(std::vector<io::ResultFigure>& results) const;
     void append_phase_results(std::vector<io::ResultFigure>& results) const;
     /// The creation log, so a restart can rebuild the created particles before the removals.
     void write_created(std::ostream& out) const;

@@ -31,9 +31,9 @@ void SphModel::write_checkpoint(std::ostream& out) const {
                 wall.driver->write_state(out);
             }
         }
-        const std::vector<double> scalars{solver_->last_time_step(),
-                                          solver_->wall_contact().friction_work(),
-                                          solver_->forces_valid() ? 1.0 : 0.0};
+        const std::vector<double> scalars{
+            solver_->last_time_step(), solver_->wall_contact().friction_work(),
+            solver_->forces_valid() ? 1.0 : 0.0, solver_->wall_contact().damping_work()};
         io::write_array(out, scalars);
         const auto reference = solver_->neighbour_reference();
         io::write_array(out, std::vector<Vec3>(reference.begin(), reference.end()));
@@ -84,12 +84,13 @@ void SphModel::read_checkpoint(std::istream& in) {
         }
         std::vector<double> scalars;
         io::read_array(in, scalars);
-        if (scalars.size() != 3) {
-            throw std::runtime_error("checkpoint: expected 3 solver scalars, found " +
+        if (scalars.size() != 4) {
+            throw std::runtime_error("checkpoint: expected 4 solver scalars, found " +
                                      std::to_string(scalars.size()));
         }
         solver_->set_last_time_step(scalars[0]);
         solver_->wall_contact().set_friction_work(scalars[1]);
+        solver_->wall_contact().set_damping_work(scalars[3]);
         std::vector<Vec3> reference;
         io::read_array(in, reference);
         if (!reference.empty() && reference.size() != n) {

@@ -95,6 +95,26 @@ void SphModel::append_wall_blocks(io::Frame& frame) const {
     }
 }
 
+// The energy stored in the stresses and the dissipation by mechanism (docs/theory/sph.md,
+// "Energy account"): what the artificial viscosity takes of the dissipation is what a user reads
+// to judge whether the numerics set the flow.
+void SphModel::append_dissipation(std::vector<io::ResultFigure>& results) const {
+    const EnergyLedger& ledger = solver_->energy_ledger();
+    const WallContact& walls = solver_->wall_contact();
+    const double damping = ledger.contact_damping_heat() + walls.damping_work();
+    const double total =
+        ledger.plastic_work() + ledger.viscous_heat() + damping + walls.friction_work();
+    results.push_back(
+        {"elastic_strain_energy", solver_->elastic_strain_energy(), "J", std::nullopt, ""});
+    results.push_back({"plastic_work", ledger.plastic_work(), "J", std::nullopt, ""});
+    results.push_back({"viscous_heat", ledger.viscous_heat(), "J", std::nullopt, ""});
+    results.push_back({"contact_damping_heat", damping, "J", std::nullopt, ""});
+    // JSON writes the share of no dissipation (0 / 0) as null.
+    results.push_back({"viscous_share", ledger.viscous_heat() / total, "", std::nullopt,
+                       "artificial viscosity's heat / (plastic work + viscous heat + contact "
+                       "damping + wall friction)"});
+}
+
 void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) const {
     results.insert(results.end(), body_sizes_.begin(), body_sizes_.end());
     parts_.append_results(results);
@@ -128,6 +148,7 @@ void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) 
             results.push_back({"wall_friction_work", solver_->wall_contact().friction_work(), "J",
                                std::nullopt, ""});
         }
+        append_dissipation(results);
         for (const Wall& wall : solver_->walls()) {
             for (int a = 0; a < 3; ++a) {
                 const std::string axis(1, static_cast<char>('x' + a));

@@ -284,12 +284,41 @@ void SphSolver::fold_wall_image_loads() {
     }
 }
 
+// Serial sums in the particles' order: the books repeat bit for bit whatever the threads.
+void SphSolver::book_heating_powers() {
+    const ParticleSet& p = particles_;
+    const Index n = images_attached_ ? real_count_ : p.size();
+    double total = 0.0;
+    double contact = 0.0;
+    for (Index i = 0; i < n; ++i) {
+        if (!is_wall_[i]) {
+            total += p.mass[i] * heating_rate_[i];
+            contact += p.mass[i] * contact_heating_rate_[i];
+        }
+    }
+    viscous_power_ = total - contact;
+    contact_damping_power_ = contact;
+}
+
+void SphSolver::book_dissipation(double dt, Index n) {
+    const ParticleSet& p = particles_;
+    double plastic = 0.0;
+    for (Index i = 0; i < n; ++i) {
+        if (!is_wall_[i]) {
+            plastic += p.mass[i] * plastic_work_[static_cast<std::size_t>(i)];
+        }
+    }
+    energy_.add_dissipation(plastic, dt * viscous_power_, dt * contact_damping_power_);
+}
+
 void SphSolver::compute_forces(double dt) {
     if (!total_lagrangian_) { // its stress terms come from its own pass, not from sigma/rho^2
         prepare_force_inputs(particles_, options_.artificial_stress, force_inputs_);
     }
     compute_accelerations(particles_, neighbours_, kernel_, options_, force_inputs_, heating_rate_,
-                          &pair_scratch_);
+                          &pair_scratch_, PairArithmetic::lanes_where_available,
+                          &contact_heating_rate_);
+    book_heating_powers();
     if (total_lagrangian_) {
         total_lagrangian_->add_stress_forces(particles_);
     }
@@ -418,7 +447,8 @@ void SphSolver::step(double dt) {
     if (!total_lagrangian_) { // the total-Lagrangian density is rho0 / det F, already set
         integrate_density(dt, n);
     }
-    update_stresses(p, materials_, dt, n);
+    plastic_work_.assign(static_cast<std::size_t>(n), 0.0);
+    update_stresses(p, materials_, dt, n, plastic_work_);
     attach_images(true);
     compute_forces(dt);
     energy_.add_wall_work(wall_work(dt));
@@ -428,6 +458,7 @@ void SphSolver::step(double dt) {
     for (Index i = 0; i < n; ++i) {
         p.internal_energy[i] += dt * heating_rate_[i];
     }
+    book_dissipation(dt, n);
     time_ += dt;
     last_dt_ = dt;
     ++steps_;
@@ -442,7 +473,8 @@ std::size_t SphSolver::bytes() const {
         held(is_wall_) + held(force_inputs_.stress_over_rho2) + held(force_inputs_.pair_records) +
         held(force_inputs_.artificial_stress) + held(force_inputs_.sound_speed) +
         held(wave_speed_) + held(force_inputs_.gradient_correction) +
-        held(force_inputs_.entry_factor) + held(velocity_gradient_) + held(heating_rate_);
+        held(force_inputs_.entry_factor) + held(velocity_gradient_) + held(heating_rate_) +
+        held(contact_heating_rate_) + held(plastic_work_);
     return particle_bytes + work + pair_scratch_.bytes() + neighbours_.bytes() +
            (total_lagrangian_ ? total_lagrangian_->bytes() : 0);
 }

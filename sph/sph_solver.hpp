@@ -150,6 +150,10 @@ class SphSolver {
     void fold_wall_image_loads();
     void compute_kinematics();
     void compute_forces(double dt);
+    /// viscous_power_ and contact_damping_power_ of the force pass just taken.
+    void book_heating_powers();
+    /// The step's dissipation by mechanism into the energy books (EnergyLedger::add_dissipation).
+    void book_dissipation(double dt, Index n);
     void kick(double half_dt);
     /// Zero velocity and acceleration of clamped particles (ParticleSet::clamped).
     void hold_clamped();
@@ -180,6 +184,14 @@ class SphSolver {
     std::vector<double> density_floor_;
     std::vector<Mat3> velocity_gradient_;
     std::vector<double> heating_rate_;
+    /// The dashpot-between-bodies part of heating_rate_ (compute_accelerations).
+    std::vector<double> contact_heating_rate_;
+    /// The last force pass's heating powers of the material particles before the walls' (W):
+    /// the artificial viscosity's and the dashpot between bodies'.
+    double viscous_power_ = 0.0;
+    double contact_damping_power_ = 0.0;
+    /// Each particle's specific plastic work of the step (update_stresses), J/kg.
+    std::vector<double> plastic_work_;
     /// Mirror images of the symmetry planes (options_.symmetry), selected at each list build.
     std::vector<MirrorImage> images_;
     Index wall_image_count_ = 0; ///< images_ of wall particles, which come first

@@ -40,8 +40,24 @@ void queue(ParticleSet& p, Index i, double dt, PointBatch& b) {
     b.states.push_back(p.state.data() + p.state_offset[i]);
 }
 
+/// sigma_mid . (d eps - D_e^-1 d sigma), engineering shears: the plastic part of the step's
+/// stress work per unit volume (zero to round-off for an elastic step).
+double plastic_work_density(const materials::ElasticConstants& elastic, const Voigt6& before,
+                            const Voigt6& after, const Voigt6& strain_increment) {
+    const Voigt6 change = after - before;
+    const double mean = (change(0) + change(1) + change(2)) / 3.0;
+    Voigt6 elastic_strain;
+    for (int c = 0; c < 3; ++c) {
+        elastic_strain(c) = (change(c) - mean) / (2.0 * elastic.shear_modulus) +
+                            mean / (3.0 * elastic.bulk_modulus);
+        elastic_strain(c + 3) = change(c + 3) / elastic.shear_modulus;
+    }
+    return 0.5 * (before + after).dot(strain_increment - elastic_strain);
+}
+
 /// The queued points' returns and what the particles keep of them.
-void flush(ParticleSet& p, const materials::Material& material, double dt, PointBatch& b) {
+void flush(ParticleSet& p, const materials::Material& material, double dt, PointBatch& b,
+           std::span<double> plastic_work) {
     b.regions.resize(b.particles.size());
     material.update_points(b.increments, dt, b.stresses, b.states, b.regions);
     const auto size = static_cast<std::size_t>(material.state_size());
@@ -55,6 +71,12 @@ void flush(ParticleSet& p, const materials::Material& material, double dt, Point
             0.5 * (b.old_stresses[k] + b.stresses[k]).dot(p.strain_rate[i]) / p.density[i];
         p.energy_rate[i] = power;
         p.internal_energy[i] += power * dt;
+        if (!plastic_work.empty()) {
+            plastic_work[static_cast<std::size_t>(i)] =
+                plastic_work_density(material.elastic(), b.old_stresses[k], b.stresses[k],
+                                     b.increments[k]) /
+                p.density[i];
+        }
     }
     b.clear();
 }
@@ -62,7 +84,7 @@ void flush(ParticleSet& p, const materials::Material& material, double dt, Point
 } // namespace
 
 void update_stresses(ParticleSet& p, std::span<const materials::Material* const> materials,
-                     double dt, Index count) {
+                     double dt, Index count, std::span<double> plastic_work) {
     const Index n = count < 0 ? p.size() : count;
     const Index blocks = (n + kBlock - 1) / kBlock;
     // Dynamic: wall particles are skipped and plastic returns cost more than elastic steps, so
@@ -79,13 +101,14 @@ void update_stresses(ParticleSet& p, std::span<const materials::Material* const>
                     continue;
                 }
                 if (p.material_id[i] != material && material >= 0) {
-                    flush(p, *materials[static_cast<std::size_t>(material)], dt, batch);
+                    flush(p, *materials[static_cast<std::size_t>(material)], dt, batch,
+                          plastic_work);
                 }
                 material = p.material_id[i];
                 queue(p, i, dt, batch);
             }
             if (material >= 0) {
-                flush(p, *materials[static_cast<std::size_t>(material)], dt, batch);
+                flush(p, *materials[static_cast<std::size_t>(material)], dt, batch, plastic_work);
             }
         }
     }

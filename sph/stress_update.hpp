@@ -35,7 +35,11 @@ inline Mat3 jaumann_rotation(const Vec3& spin, double dt) {
 /// form de/dt = sigma : D / rho. Plastic strain and plastic region are stored for output.
 /// Only the first `count` particles (< 0: all): mirror images after them (sph/symmetry.hpp)
 /// share their sources' material state and are copied from them instead.
+/// `plastic_work`, when not empty (one entry per particle), receives each material particle's
+/// specific plastic work of the step, J/kg: sigma_mid : (d eps - D_e^-1 d sigma) / rho, the
+/// stress power less the change of the elastic strain energy (the energy books' dissipation by
+/// plasticity); entries of wall particles are left as they are.
 void update_stresses(ParticleSet& particles, std::span<const materials::Material* const> materials,
-                     double dt, Index count = -1);
+                     double dt, Index count = -1, std::span<double> plastic_work = {});
 
 } // namespace grainload::sph

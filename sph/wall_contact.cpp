@@ -172,6 +172,7 @@ void WallContact::apply(ParticleSet& p, const particles::NeighbourList& neighbou
                 double load = touch.repulsion.dot(normal);
                 Vec3 force = Vec3::Zero();
                 double friction_work = 0.0;
+                double damping_work = 0.0;
                 if (zeta > 0.0) {
                     // k_n = sum_j k_ij (e_ij . n)^2 >= 0, formed as n . K n: when every e_ij is
                     // nearly in the wall's plane (a grain beside a wall's edge) round-off leaves
@@ -183,6 +184,7 @@ void WallContact::apply(ParticleSet& p, const particles::NeighbourList& neighbou
                     force += damper * normal;
                     load += damper;
                     heat -= damper * normal_speed;
+                    damping_work = -damper * normal_speed * dt;
                 }
                 const FrictionPair* pair = pair_of(options, p.body_id[i], wall.body_id);
                 if (pair != nullptr && load > 0.0) {
@@ -199,7 +201,7 @@ void WallContact::apply(ParticleSet& p, const particles::NeighbourList& neighbou
                 if (force.squaredNorm() > 0.0) {
                     p.acceleration[i] += force / p.mass[i];
                     records.push_back({i, touch.wall_index, force, touch.weight_sum, wall_velocity,
-                                       friction_work});
+                                       friction_work, damping_work});
                 }
             }
             heating_rate[static_cast<std::size_t>(i)] += heat / p.mass[i];
@@ -247,8 +249,10 @@ void WallContact::distribute_reactions(ParticleSet& p, const particles::Neighbou
                      [](const Record& a, const Record& b) { return a.particle < b.particle; });
     const double support_squared = kernel.support_radius() * kernel.support_radius();
     double friction_work = 0.0;
+    double damping_work = 0.0;
     for (const Record& record : merged_) {
         friction_work += record.friction_work;
+        damping_work += record.damping_work;
         const Index i = record.particle;
         Vec3 reaction_velocity = Vec3::Zero(); // share-weighted, the shares sum to 1
         for (const Index j : neighbours.neighbours(i)) {
@@ -267,6 +271,7 @@ void WallContact::distribute_reactions(ParticleSet& p, const particles::Neighbou
         reaction_power_correction_ += record.force.dot(record.wall_velocity - reaction_velocity);
     }
     friction_work_ += friction_work;
+    damping_work_ += damping_work;
 }
 
 } // namespace grainload::sph

@@ -62,6 +62,9 @@ class WallContact {
     /// Work done against wall friction so far (J, or J/m in plane strain), positive.
     double friction_work() const { return friction_work_; }
     void set_friction_work(double value) { friction_work_ = value; }
+    /// Heat of the dashpot along the walls' normals so far (J, or J/m), positive.
+    double damping_work() const { return damping_work_; }
+    void set_damping_work(double value) { damping_work_ = value; }
     /// The reactions go to wall particles below the surface, whose velocities differ from the
     /// wall's velocity at the contact point x_i by omega x (x_i - x_j) on a turning wall. The
     /// power the wall puts into the body through the dashpot and friction is
@@ -80,6 +83,7 @@ class WallContact {
         double weight_sum;
         Vec3 wall_velocity;   ///< the wall's velocity at the body particle
         double friction_work; ///< -F_friction . slip dt of this touch [J]
+        double damping_work;  ///< -F_dashpot . v_n dt of this touch [J]
     };
     void distribute_reactions(ParticleSet& p, const particles::NeighbourList& neighbours,
                               const SmoothingKernel& kernel);
@@ -96,6 +100,7 @@ class WallContact {
     const particles::NeighbourList* near_wall_list_ = nullptr;
     Index near_wall_generation_ = -1;
     double friction_work_ = 0.0;
+    double damping_work_ = 0.0;
     double reaction_power_correction_ = 0.0;
     Index sticking_ = 0;
     Index slipping_ = 0;
