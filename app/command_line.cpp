@@ -107,6 +107,27 @@ CommandLine help_line(int argc, const char* const* argv, CommandLine::Command co
     return line;
 }
 
+/// `--threads N` (a positive integer) or `--threads auto` into `line`.
+void set_threads(const std::string& text, CommandLine& line) {
+    if (text == "auto") {
+        line.auto_threads = true;
+        line.threads.reset();
+        return;
+    }
+    line.auto_threads = false;
+    std::size_t used = 0;
+    int threads = 0;
+    try {
+        threads = std::stoi(text, &used);
+    } catch (const std::exception&) {
+    }
+    if (used != text.size() || threads < 1) {
+        throw io::CaseError("command line: --threads expects a positive integer or 'auto', got '" +
+                            text + "'");
+    }
+    line.threads = threads;
+}
+
 } // namespace
 
 const char* usage() {
@@ -172,25 +193,7 @@ CommandLine parse_command_line(int argc, const char* const* argv) {
         if (arg == "--out") {
             line.out = value_of(i, arg);
         } else if (arg == "--threads") {
-            const std::string text = value_of(i, arg);
-            if (text == "auto") {
-                line.auto_threads = true;
-                line.threads.reset();
-                continue;
-            }
-            line.auto_threads = false;
-            std::size_t used = 0;
-            int threads = 0;
-            try {
-                threads = std::stoi(text, &used);
-            } catch (const std::exception&) {
-            }
-            if (used != text.size() || threads < 1) {
-                throw io::CaseError("command line: --threads expects a positive integer or "
-                                    "'auto', got '" +
-                                    text + "'");
-            }
-            line.threads = threads;
+            set_threads(value_of(i, arg), line);
         } else if (arg == "--set") {
             line.overrides.push_back(value_of(i, arg));
         } else if (arg == "--restart") {

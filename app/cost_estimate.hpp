@@ -11,6 +11,12 @@ namespace grainload::app {
 
 struct Scene;
 
+/// Passes an iterated coupling window (max_iterations > 1) is counted with, before the run:
+/// the mean, rounded, of the iterated runs measured in docs/validation/coupling.md and
+/// docs/user-guide/coupling.md (1.6 to 4.2 passes a window; SPH and DEM, Aitken and IQN-ILS),
+/// never more than max_iterations.
+inline constexpr double kIteratedPasses = 3.0;
+
 /// What a run of a loaded scene will cost, before it runs.
 struct CostEstimate {
     Index sph_particles = 0;  ///< bodies and walls
@@ -56,6 +62,10 @@ struct CostEstimate {
     /// Static shell with the added mass: how long it takes to follow a load change [s]
     /// (coupling/window_limits.hpp, added_mass_lag; 0: none).
     double coupling_added_mass_lag = 0.0;
+    /// Iterated windows (max_iterations > 1): the passes a window is counted with (each pass
+    /// reruns the granular sub-steps and solves the shell again) and the most it may take.
+    double coupling_passes = 1.0;
+    int coupling_max_iterations = 1;
     /// The shells' steps (app/resources/shell_cost.hpp), as summary.json's fem_factorisations and
     /// fem_back_substitutions count them.
     double shell_steps = 0.0;

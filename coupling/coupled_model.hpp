@@ -70,6 +70,7 @@ class CoupledModel final : public io::Stepper, public io::Reporter {
     const CouplingMonitor& monitor() const { return monitor_; }
     /// True when some coupled part sends the sand's load to the shell (not every part rigid).
     bool loads_shell() const { return !parts_.empty(); }
+    const CouplingSettings& settings() const { return settings_; }
     /// The estimated stable windows of the staggered exchange, reported in summary.json.
     void set_window_limits(const WindowLimits& limits);
     /// How long the static shell with the added mass takes to follow a load change

@@ -69,6 +69,7 @@ class DemCoupledModel final : public io::Stepper, public io::Reporter {
     const CouplingMonitor& monitor() const { return monitor_; }
     /// True when some coupled part sends the grains' load to the shell (not every part rigid).
     bool loads_shell() const { return !parts_.empty(); }
+    const CouplingSettings& settings() const { return settings_; }
     /// The shell load of the next window (6 per node).
     const Eigen::VectorXd& interface_load() const { return load_; }
 

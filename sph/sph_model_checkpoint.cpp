@@ -43,6 +43,58 @@ void SphModel::write_checkpoint(std::ostream& out) const {
     parts_.write_checkpoint(out);
 }
 
+namespace {
+
+/// Each rigid wall's centre, normals, angular velocities and driver, as write_checkpoint wrote
+/// them.
+void read_wall_states(std::istream& in, std::vector<Wall>& walls) {
+    for (Wall& wall : walls) {
+        std::vector<Vec3> centre;
+        io::read_array(in, centre);
+        if (centre.size() != 1) {
+            throw std::runtime_error("checkpoint: wall '" + wall.name + "' has no centre");
+        }
+        wall.centre = centre.front();
+        const auto normals = wall.normals.size();
+        io::read_array(in, wall.normals, normals, "wall normals");
+        io::read_array(in, wall.angular_velocities);
+        if (!wall.angular_velocities.empty() &&
+            wall.angular_velocities.size() != static_cast<std::size_t>(wall.count)) {
+            throw std::runtime_error("checkpoint: wall '" + wall.name +
+                                     "' has angular velocities of another particle count");
+        }
+        if (wall.driver) {
+            wall.driver->read_state(in);
+        }
+    }
+}
+
+/// The solver's scalars (last step, the walls' friction and dashpot work, whether its forces
+/// were valid), the neighbour list's reference positions of `n` particles and the energy books.
+void read_solver_books(std::istream& in, SphSolver& solver, std::size_t n) {
+    std::vector<double> scalars;
+    io::read_array(in, scalars);
+    if (scalars.size() != 4) {
+        throw std::runtime_error("checkpoint: expected 4 solver scalars, found " +
+                                 std::to_string(scalars.size()));
+    }
+    solver.set_last_time_step(scalars[0]);
+    solver.wall_contact().set_friction_work(scalars[1]);
+    solver.wall_contact().set_damping_work(scalars[3]);
+    std::vector<Vec3> reference;
+    io::read_array(in, reference);
+    if (!reference.empty() && reference.size() != n) {
+        throw std::runtime_error("checkpoint: the neighbour list's reference positions do "
+                                 "not match the particles");
+    }
+    solver.restart(reference, scalars[2] != 0.0);
+    std::vector<double> ledger;
+    io::read_array(in, ledger);
+    solver.energy_ledger().set_state(ledger);
+}
+
+} // namespace
+
 void SphModel::read_checkpoint(std::istream& in) {
     // The driver takes the events after every step, so the state saved had none: the events
     // of a coupling pass that goes back to it did not happen.
@@ -63,44 +115,8 @@ void SphModel::read_checkpoint(std::istream& in) {
     io::read_array(in, p.state, state_size, "material state values");
     io::read_array(in, p.clamped, n, "clamp flags");
     if (solver_) {
-        for (Wall& wall : solver_->walls()) {
-            std::vector<Vec3> centre;
-            io::read_array(in, centre);
-            if (centre.size() != 1) {
-                throw std::runtime_error("checkpoint: wall '" + wall.name + "' has no centre");
-            }
-            wall.centre = centre.front();
-            const auto normals = wall.normals.size();
-            io::read_array(in, wall.normals, normals, "wall normals");
-            io::read_array(in, wall.angular_velocities);
-            if (!wall.angular_velocities.empty() &&
-                wall.angular_velocities.size() != static_cast<std::size_t>(wall.count)) {
-                throw std::runtime_error("checkpoint: wall '" + wall.name +
-                                         "' has angular velocities of another particle count");
-            }
-            if (wall.driver) {
-                wall.driver->read_state(in);
-            }
-        }
-        std::vector<double> scalars;
-        io::read_array(in, scalars);
-        if (scalars.size() != 4) {
-            throw std::runtime_error("checkpoint: expected 4 solver scalars, found " +
-                                     std::to_string(scalars.size()));
-        }
-        solver_->set_last_time_step(scalars[0]);
-        solver_->wall_contact().set_friction_work(scalars[1]);
-        solver_->wall_contact().set_damping_work(scalars[3]);
-        std::vector<Vec3> reference;
-        io::read_array(in, reference);
-        if (!reference.empty() && reference.size() != n) {
-            throw std::runtime_error("checkpoint: the neighbour list's reference positions do "
-                                     "not match the particles");
-        }
-        solver_->restart(reference, scalars[2] != 0.0);
-        std::vector<double> ledger;
-        io::read_array(in, ledger);
-        solver_->energy_ledger().set_state(ledger);
+        read_wall_states(in, solver_->walls());
+        read_solver_books(in, *solver_, n);
     }
     read_outlet_state(in);
     parts_.read_checkpoint(in);

@@ -97,7 +97,7 @@ double factorisation_seconds(double dofs, const Calibration& c) {
 } // namespace
 
 ShellCost estimate_shell_cost(const fem::ShellModel& fem, const std::vector<StepSegment>& steps,
-                              bool coupled, bool loaded, const Calibration& c) {
+                              bool coupled, bool loaded, const Calibration& c, double passes) {
     const fem::ShellAnalysis& analysis = fem.analysis();
     const auto dofs = static_cast<double>(analysis.free_dof_count());
     const auto elements = static_cast<double>(analysis.mesh().element_count());
@@ -117,7 +117,7 @@ ShellCost estimate_shell_cost(const fem::ShellModel& fem, const std::vector<Step
                                   ? segment.count
                                   : steps_changing_loads(analysis, acting, segment);
         cost.steps += segment.count;
-        cost.solved_steps += solved;
+        cost.solved_steps += solved * passes;
         settled += coupled ? segment.count - solved : 0.0;
         if (linear && solved > 0.0) {
             cost.factorisations += factorisations_in(segment, fem.dynamic(), end, factorised_step);

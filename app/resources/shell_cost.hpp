@@ -38,8 +38,10 @@ inline constexpr double kNonlinearCorrections = 3.0;
 ///    element loops per increment.
 /// A coupled shell with `loaded` parts (not all rigid) takes a new load every window; a rigid
 /// one, or a shell alone, only while its loads change (the ramp to load_time, its time
-/// functions); a dynamic shell solves every step.
+/// functions); a dynamic shell solves every step. An iterated window solves the step once per
+/// pass (`passes`, from the window's start each time; a linear shell keeps its factorisation).
 ShellCost estimate_shell_cost(const fem::ShellModel& fem, const std::vector<StepSegment>& steps,
-                              bool coupled, bool loaded, const Calibration& calibration);
+                              bool coupled, bool loaded, const Calibration& calibration,
+                              double passes = 1.0);
 
 } // namespace grainload::app

@@ -351,12 +351,13 @@ TradeOptions parse_trade_options(int argc, const char* const* argv) {
     return o;
 }
 
-int run_trade(const TradeOptions& o) {
-    if (!fs::is_regular_file(o.case_file)) {
-        throw io::CaseError("command line: " + o.case_file + " is not a readable case file");
-    }
-    const std::string case_path = fs::absolute(o.case_file).lexically_normal().string();
-    // The overrides' syntax is checked here, once; what they mean, by each run.
+namespace {
+
+/// The grid of runs, the noise ensemble's members appended (their indices in `members`),
+/// checked against the case: the overrides' syntax once (what they mean, by each run), the keys
+/// without a rule. `best`: the most accurate run.
+std::vector<TradeRun> checked_grid(const TradeOptions& o, const std::string& case_path,
+                                   std::size_t& best, std::vector<std::size_t>& members) {
     auto document = io::CaseDocument::from_file(case_path);
     for (const std::string& assignment : o.overrides) {
         document->set(assignment);
@@ -366,17 +367,21 @@ int run_trade(const TradeOptions& o) {
         document->set(assignment);
     }
     check_unruled_keys(o, case_path, grid.front());
-    const std::size_t best = find_run(grid, most_accurate(o.axes));
-    std::vector<std::size_t> members;
+    best = find_run(grid, most_accurate(o.axes));
     if (o.noise > 1) {
         for (TradeRun& member : ensemble_runs(o, *document, case_path, grid[best])) {
             members.push_back(grid.size());
             grid.push_back(std::move(member));
         }
     }
-    fs::create_directories(o.out);
-    check_manifest(o, case_path);
+    return grid;
+}
 
+/// Runs what the grid has not finished in an earlier call, `o.jobs` at a time, each line
+/// printed as it ends; every run's record.
+std::vector<std::optional<RunRecord>> run_grid(const TradeOptions& o, const std::string& case_path,
+                                               const std::vector<TradeRun>& grid,
+                                               std::size_t best) {
     const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     const int threads = o.threads.value_or(std::max(1, cores / o.jobs));
     std::vector<std::optional<RunRecord>> records(grid.size());
@@ -405,6 +410,22 @@ int run_trade(const TradeOptions& o) {
                     seconds(result.elapsed_s).c_str());
         std::fflush(stdout);
     });
+    return records;
+}
+
+} // namespace
+
+int run_trade(const TradeOptions& o) {
+    if (!fs::is_regular_file(o.case_file)) {
+        throw io::CaseError("command line: " + o.case_file + " is not a readable case file");
+    }
+    const std::string case_path = fs::absolute(o.case_file).lexically_normal().string();
+    std::size_t best = 0;
+    std::vector<std::size_t> members;
+    const std::vector<TradeRun> grid = checked_grid(o, case_path, best, members);
+    fs::create_directories(o.out);
+    check_manifest(o, case_path);
+    const std::vector<std::optional<RunRecord>> records = run_grid(o, case_path, grid, best);
     std::vector<TradeResult> results;
     for (std::size_t r = 0; r < grid.size(); ++r) {
         results.push_back(read_trade_result(o.out + "/" + grid[r].id, records[r]->exit_code,
