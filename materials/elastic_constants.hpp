@@ -40,6 +40,18 @@ struct ElasticConstants {
     double unscaled_p_wave_speed() const;
     /// Isotropic stiffness in the Voigt convention of io/types.hpp (engineering shear strains).
     Matrix6 stiffness() const;
+    /// The engineering strain of a stress, stiffness()^-1 * stress in closed form: the
+    /// deviator over 2G on the normal components (shears over G, engineering) plus the mean
+    /// stress over 3K.
+    Voigt6 strain_from_stress(const Voigt6& stress) const {
+        const double mean = (stress[0] + stress[1] + stress[2]) / 3.0;
+        Voigt6 strain;
+        for (int i = 0; i < 3; ++i) {
+            strain[i] = (stress[i] - mean) / (2.0 * shear_modulus) + mean / (3.0 * bulk_modulus);
+            strain[i + 3] = stress[i + 3] / shear_modulus;
+        }
+        return strain;
+    }
     /// stiffness() * strain without forming the matrix: the same products and sums, in the
     /// order Eigen evaluates the 6x6 product (its zero terms left out), for the stress updates
     /// of every particle and step.

@@ -447,7 +447,7 @@ void SphSolver::step(double dt) {
     if (!total_lagrangian_) { // the total-Lagrangian density is rho0 / det F, already set
         integrate_density(dt, n);
     }
-    plastic_work_.assign(static_cast<std::size_t>(n), 0.0);
+    plastic_work_.resize(static_cast<std::size_t>(n)); // every material particle's entry set
     update_stresses(p, materials_, dt, n, plastic_work_);
     attach_images(true);
     compute_forces(dt);

@@ -121,17 +121,14 @@ double SphSolver::internal_energy() const {
 }
 
 double SphSolver::elastic_strain_energy() const {
-    std::vector<Matrix6> compliance(materials_.size());
-    for (std::size_t k = 0; k < materials_.size(); ++k) {
-        compliance[k] = materials_[k]->elastic().stiffness().inverse();
-    }
     double sum = 0.0;
     for (Index i = 0; i < particles_.size(); ++i) {
         if (!is_wall_[i]) {
             const Voigt6& s = particles_.stress[i];
             const double volume = particles_.mass[i] / particles_.density[i];
-            sum += 0.5 * volume *
-                   s.dot(compliance[static_cast<std::size_t>(particles_.material_id[i])] * s);
+            const auto& elastic =
+                materials_[static_cast<std::size_t>(particles_.material_id[i])]->elastic();
+            sum += 0.5 * volume * s.dot(elastic.strain_from_stress(s));
         }
     }
     return sum;

@@ -44,15 +44,8 @@ void queue(ParticleSet& p, Index i, double dt, PointBatch& b) {
 /// stress work per unit volume (zero to round-off for an elastic step).
 double plastic_work_density(const materials::ElasticConstants& elastic, const Voigt6& before,
                             const Voigt6& after, const Voigt6& strain_increment) {
-    const Voigt6 change = after - before;
-    const double mean = (change(0) + change(1) + change(2)) / 3.0;
-    Voigt6 elastic_strain;
-    for (int c = 0; c < 3; ++c) {
-        elastic_strain(c) = (change(c) - mean) / (2.0 * elastic.shear_modulus) +
-                            mean / (3.0 * elastic.bulk_modulus);
-        elastic_strain(c + 3) = change(c + 3) / elastic.shear_modulus;
-    }
-    return 0.5 * (before + after).dot(strain_increment - elastic_strain);
+    return 0.5 *
+           (before + after).dot(strain_increment - elastic.strain_from_stress(after - before));
 }
 
 /// The queued points' returns and what the particles keep of them.

@@ -28,6 +28,18 @@ double yield_function(const VonMises& m, const Voigt6& stress, const std::vector
            m.current_yield_stress(state);
 }
 
+// The closed-form compliance (the energy books' elastic strain, the plastic work) against the
+// stiffness matrix inverted by Eigen, and back through Hooke's law: round-off, 1e-14 relative.
+TEST(ElasticConstants, StrainFromStressIsTheStiffnessInverted) {
+    Voigt6 stress;
+    stress << -120e6, 35e6, -8e6, 14e6, -60e6, 3e6;
+    const Voigt6 strain = kSteel.strain_from_stress(stress);
+    const Voigt6 reference = kSteel.stiffness().inverse() * stress;
+    EXPECT_LT((strain - reference).cwiseAbs().maxCoeff(), 1e-14 * reference.cwiseAbs().maxCoeff());
+    EXPECT_LT((kSteel.stress_from_strain(strain) - stress).cwiseAbs().maxCoeff(),
+              1e-14 * stress.cwiseAbs().maxCoeff());
+}
+
 TEST(VonMises, ElasticStepIsHookesLaw) {
     const VonMises m = steel(1.0);
     Voigt6 de;
