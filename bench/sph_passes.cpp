@@ -13,10 +13,10 @@
 // usage: sph_passes [--threads N] [--reps R] [--restart CHECKPOINT] [--set KEY=VALUE]...
 //                   [CASE.toml]
 
+#include "app/checkpoint.hpp"
 #include "app/resources/heap_trim.hpp"
 #include "app/resources/openmp_wait.hpp"
 #include "app/scene.hpp"
-#include "io/binary_stream.hpp"
 #include "sph/rates.hpp"
 #include "sph/sph_model.hpp"
 #include "sph/stress_update.hpp"
@@ -27,7 +27,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <omp.h>
 #include <string>
 #include <vector>
@@ -45,19 +44,6 @@ template <class Pass> double best_seconds(Pass&& pass, int reps) {
             best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
     return best;
-}
-
-/// The state of a checkpoint written by `grainload run` (the driver's header, then the models).
-void read_state(app::Scene& scene, const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    io::read_value<std::uint64_t>(in); // magic
-    io::read_value<double>(in);        // time
-    io::read_value<long long>(in);     // step
-    std::vector<double> frame_times;
-    io::read_array(in, frame_times);
-    for (const auto& stepper : scene.steppers) {
-        stepper->read_checkpoint(in);
-    }
 }
 
 } // namespace
@@ -88,7 +74,7 @@ int main(int argc, char** argv) {
     omp_set_num_threads(threads);
     const auto scene = app::Scene::load(kase, overrides);
     if (!checkpoint.empty()) {
-        read_state(*scene, checkpoint);
+        app::read_checkpoint(*scene, checkpoint);
     }
     const auto* model = dynamic_cast<const sph::SphModel*>(scene->steppers.front().get());
     if (model == nullptr || model->solver() == nullptr) {

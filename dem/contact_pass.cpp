@@ -350,14 +350,11 @@ void index_mesh_walls(const GrainSet& g, const SphereSet& s, std::vector<PlaneWa
     }
 }
 
-} // namespace
-
-ContactBooks evaluate_contacts(GrainSet& g, SphereSet& s,
-                               const particles::NeighbourList& neighbours,
-                               std::vector<PlaneWall>& walls, const ContactScene& scene,
-                               double time_step, ContactScratch& scratch) {
-    const Index n = s.size();
-    const auto count = static_cast<std::size_t>(n);
+/// The pass's scratch sized for the spheres, the grains and the walls (and the mesh walls'
+/// faces indexed); whether a wall follows its mesh's vertices (then their loads are shared out).
+bool size_scratch(GrainSet& g, SphereSet& s, std::vector<PlaneWall>& walls,
+                  const ContactScene& scene, ContactScratch& scratch) {
+    const auto count = static_cast<std::size_t>(s.size());
     scratch.point_velocity.resize(count);
     scratch.force.resize(count);
     scratch.torque.resize(count);
@@ -369,14 +366,18 @@ ContactBooks evaluate_contacts(GrainSet& g, SphereSet& s,
         std::any_of(walls.begin(), walls.end(), [](const PlaneWall& w) { return w.follows(); });
     scratch.vertex_shares.resize(following ? count : 0);
     index_mesh_walls(g, s, walls, scene.law);
-    const std::size_t wall_count = walls.size();
-    scratch.on_walls.assign(static_cast<std::size_t>(g.size()) * wall_count, WallShare{});
+    scratch.on_walls.assign(static_cast<std::size_t>(g.size()) * walls.size(), WallShare{});
     s.first_of_grains(g.size(), scratch.first);
-    Pass p{g, s, scene, time_step, scratch, scene.body_walls.size()};
+    return following;
+}
+
+/// Each sphere's contact point velocity from its grain's motion, and its sums cleared.
+void clear_sphere_sums(Pass& p) {
+    const Index n = p.s.size();
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
-        const auto owner = static_cast<std::size_t>(s.grain[i]);
-        p.x.point_velocity[i] = g.velocity[owner] + g.angular_velocity[owner].cross(s.arm[i]);
+        const auto owner = static_cast<std::size_t>(p.s.grain[i]);
+        p.x.point_velocity[i] = p.g.velocity[owner] + p.g.angular_velocity[owner].cross(p.s.arm[i]);
         p.x.force[i] = Vec3::Zero();
         p.x.torque[i] = Vec3::Zero();
         p.x.energy[i] = 0.0;
@@ -389,6 +390,64 @@ ContactBooks evaluate_contacts(GrainSet& g, SphereSet& s,
             p.x.records[i].clear();
         }
     }
+}
+
+/// Each grain's force and torque: gravity, then its spheres' sums in order (eqs. 7 and 8 of
+/// Markauskas), then its spheres' contacts with the walls; returns the wall contacts.
+Index sum_grains(Pass& p, std::vector<PlaneWall>& walls) {
+    GrainSet& g = p.g;
+    SphereSet& s = p.s;
+    const std::vector<Index>& first = p.x.first;
+    const std::size_t wall_count = walls.size();
+    Index wall_contacts = 0;
+#pragma omp parallel for schedule(static) reduction(+ : wall_contacts)
+    for (Index k = 0; k < g.size(); ++k) {
+        g.force[k] = g.mass[k] * p.scene.gravity;
+        g.torque[k] = Vec3::Zero();
+        for (Index i = first[k]; i < first[k + 1]; ++i) {
+            g.force[k] += p.x.force[i];
+            g.torque[k] += p.x.torque[i] + s.arm[i].cross(p.x.force[i]);
+        }
+        for (Index i = first[k]; i < first[k + 1]; ++i) {
+            const int touching = gather_walls(p, walls, i, p.x.on_walls.data() + k * wall_count);
+            s.contacts[i] += touching;
+            wall_contacts += touching;
+            auto& kept = p.x.kept[static_cast<std::size_t>(i)];
+            std::sort(kept.begin(), kept.end(),
+                      [](const Spring& x, const Spring& y) { return x.partner < y.partner; });
+        }
+    }
+    return wall_contacts;
+}
+
+/// The walls' loads, grain by grain in order: their sums do not depend on the thread count.
+void book_walls(const ContactScratch& scratch, Index grains, std::vector<PlaneWall>& walls,
+                bool following) {
+    const std::size_t wall_count = walls.size();
+    for (std::size_t w = 0; w < wall_count; ++w) {
+        walls[w].force = Vec3::Zero();
+        walls[w].normal_force = 0.0;
+        for (Index k = 0; k < grains; ++k) {
+            const WallShare& share = scratch.on_walls[static_cast<std::size_t>(k) * wall_count + w];
+            walls[w].force += share.force;
+            walls[w].normal_force += share.normal;
+        }
+    }
+    if (following) {
+        share_vertex_loads(scratch.vertex_shares, walls);
+    }
+}
+
+} // namespace
+
+ContactBooks evaluate_contacts(GrainSet& g, SphereSet& s,
+                               const particles::NeighbourList& neighbours,
+                               std::vector<PlaneWall>& walls, const ContactScene& scene,
+                               double time_step, ContactScratch& scratch) {
+    const Index n = s.size();
+    const bool following = size_scratch(g, s, walls, scene, scratch);
+    Pass p{g, s, scene, time_step, scratch, scene.body_walls.size()};
+    clear_sphere_sums(p);
     if (scratch.mirror_generation != neighbours.generation() ||
         scratch.mirror.size() != static_cast<std::size_t>(neighbours.pair_entries())) {
         build_mirror(neighbours, n, scratch.mirror);
@@ -406,45 +465,10 @@ ContactBooks evaluate_contacts(GrainSet& g, SphereSet& s,
         s.contacts[i] = gather_pairs(p, neighbours, i);
         pair_entries += s.contacts[i];
     }
-    // Each grain sums its spheres in order (eqs. 7 and 8 of Markauskas), then its spheres'
-    // contacts with the walls.
-    const std::vector<Index>& first = scratch.first;
-    Index wall_contacts = 0;
-#pragma omp parallel for schedule(static) reduction(+ : wall_contacts)
-    for (Index k = 0; k < g.size(); ++k) {
-        g.force[k] = g.mass[k] * scene.gravity;
-        g.torque[k] = Vec3::Zero();
-        for (Index i = first[k]; i < first[k + 1]; ++i) {
-            g.force[k] += p.x.force[i];
-            g.torque[k] += p.x.torque[i] + s.arm[i].cross(p.x.force[i]);
-        }
-        for (Index i = first[k]; i < first[k + 1]; ++i) {
-            const int touching =
-                gather_walls(p, walls, i, scratch.on_walls.data() + k * wall_count);
-            s.contacts[i] += touching;
-            wall_contacts += touching;
-            auto& kept = p.x.kept[static_cast<std::size_t>(i)];
-            std::sort(kept.begin(), kept.end(),
-                      [](const Spring& x, const Spring& y) { return x.partner < y.partner; });
-        }
-    }
     ContactBooks books;
     books.pair_contacts = pair_entries / 2;
-    books.wall_contacts = wall_contacts;
-    // The walls' loads and the books, grain by grain in order: their sums do not depend on the
-    // thread count.
-    for (std::size_t w = 0; w < wall_count; ++w) {
-        walls[w].force = Vec3::Zero();
-        walls[w].normal_force = 0.0;
-        for (Index k = 0; k < g.size(); ++k) {
-            const WallShare& share = scratch.on_walls[static_cast<std::size_t>(k) * wall_count + w];
-            walls[w].force += share.force;
-            walls[w].normal_force += share.normal;
-        }
-    }
-    if (following) {
-        share_vertex_loads(scratch.vertex_shares, walls);
-    }
+    books.wall_contacts = sum_grains(p, walls);
+    book_walls(scratch, g.size(), walls, following);
     for (Index i = 0; i < n; ++i) {
         const auto at = static_cast<std::size_t>(i);
         books.elastic_energy += p.x.energy[at];

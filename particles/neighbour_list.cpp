@@ -38,6 +38,10 @@ bool NeighbourList::update(std::span<const Vec3> positions, std::span<const char
     return rebuild_now;
 }
 
+const CellList& NeighbourList::search_grid(std::span<const char> frozen, Index i) const {
+    return !frozen.empty() && frozen[i] ? free_cells_ : cells_;
+}
+
 void NeighbourList::rebuild(std::span<const Vec3> positions, std::span<const char> frozen,
                             Index rows) {
     const auto n = static_cast<Index>(positions.size());
@@ -45,32 +49,33 @@ void NeighbourList::rebuild(std::span<const Vec3> positions, std::span<const cha
         throw std::length_error("NeighbourList: more than 2^31 particles");
     }
     const double radius = search_radius();
-    const double radius_squared = radius * radius;
     cells_.build(positions, radius, dimension_);
-    const bool use_frozen = !frozen.empty();
     // A frozen particle (a wall's) pairs only with free ones, so it searches a grid of the free
     // particles alone: the same grid, so the same candidate order less the frozen ones, without
     // walking past its own wall's particles (most of the candidates of a wall particle).
-    if (use_frozen) {
+    if (!frozen.empty()) {
         free_cells_.build_subset(positions, cells_, frozen);
     }
-    auto grid_of = [&](Index i) -> const CellList& {
-        return use_frozen && frozen[i] ? free_cells_ : cells_;
-    };
-    // Whether candidate k of `grid` is a neighbour of i: the distance as
-    // (x_i - x_j).squaredNorm() computes it, from the grid's contiguous coordinates. Frozen
-    // pairs never meet (a frozen particle searches the free grid), so no test for them.
-    auto within = [radius_squared](const CellList& grid, const Vec3& x, Index i, Index k) {
-        const double dx = x[0] - grid.sorted_coordinate(0)[k];
-        const double dy = x[1] - grid.sorted_coordinate(1)[k];
-        const double dz = x[2] - grid.sorted_coordinate(2)[k];
-        return (dx * dx + dy * dy + dz * dz < radius_squared) & (grid.sorted()[k] != i);
-    };
-    offset_.assign(static_cast<std::size_t>(n + 1), 0);
     // Two passes (count, then fill) keep the list in one allocation with no per-thread buffers.
+    count_rows(positions, frozen, rows, radius * radius);
+    for (Index i = 0; i < n; ++i) {
+        offset_[i + 1] += offset_[i];
+    }
+    index_.resize(static_cast<std::size_t>(offset_[n]));
+    fill_rows(positions, frozen, rows, radius * radius);
+    reference_.assign(positions.begin(), positions.end());
+    same_key_row_.clear();
+    reach_before_.clear();
+    ++rebuilds_;
+    ++generation_;
+}
+
+void NeighbourList::count_rows(std::span<const Vec3> positions, std::span<const char> frozen,
+                               Index rows, double radius_squared) {
+    offset_.assign(positions.size() + 1, 0);
 #pragma omp parallel for schedule(dynamic, 256)
     for (Index i = 0; i < rows; ++i) {
-        const CellList& grid = grid_of(i);
+        const CellList& grid = search_grid(frozen, i);
         const Vec3 x = positions[i];
         const double* gx = grid.sorted_coordinate(0);
         const double* gy = grid.sorted_coordinate(1);
@@ -99,10 +104,19 @@ void NeighbourList::rebuild(std::span<const Vec3> positions, std::span<const cha
         const bool counted_itself = &grid == &cells_ && (x - x).squaredNorm() < radius_squared;
         offset_[i + 1] = count - (counted_itself ? 1 : 0);
     }
-    for (Index i = 0; i < n; ++i) {
-        offset_[i + 1] += offset_[i];
-    }
-    index_.resize(static_cast<std::size_t>(offset_[n]));
+}
+
+void NeighbourList::fill_rows(std::span<const Vec3> positions, std::span<const char> frozen,
+                              Index rows, double radius_squared) {
+    // Whether candidate k of `grid` is a neighbour of i: the distance as
+    // (x_i - x_j).squaredNorm() computes it, from the grid's contiguous coordinates. Frozen
+    // pairs never meet (a frozen particle searches the free grid), so no test for them.
+    auto within = [radius_squared](const CellList& grid, const Vec3& x, Index i, Index k) {
+        const double dx = x[0] - grid.sorted_coordinate(0)[k];
+        const double dy = x[1] - grid.sorted_coordinate(1)[k];
+        const double dz = x[2] - grid.sorted_coordinate(2)[k];
+        return (dx * dx + dy * dy + dz * dz < radius_squared) & (grid.sorted()[k] != i);
+    };
     // The fill without a branch per candidate (one in six or seven is a neighbour, in no
     // pattern a predictor could learn): every candidate is written to the row's buffer and the
     // end moves on only past the neighbours; the row's neighbours are then copied in order.
@@ -111,7 +125,7 @@ void NeighbourList::rebuild(std::span<const Vec3> positions, std::span<const cha
         std::vector<std::int32_t> buffer;
 #pragma omp for schedule(dynamic, 256)
         for (Index i = 0; i < rows; ++i) {
-            const CellList& grid = grid_of(i);
+            const CellList& grid = search_grid(frozen, i);
             const Vec3 x = positions[i];
             std::size_t count = 0;
             grid.for_each_range(x, [&](Index begin, Index end) {
@@ -128,10 +142,6 @@ void NeighbourList::rebuild(std::span<const Vec3> positions, std::span<const cha
             std::copy_n(buffer.data(), count, index_.data() + offset_[i]);
         }
     }
-    reference_.assign(positions.begin(), positions.end());
-    same_key_row_.clear();
-    ++rebuilds_;
-    ++generation_;
 }
 
 template <class Keep> void NeighbourList::keep_pairs(Keep keep) {
@@ -162,6 +172,7 @@ template <class Keep> void NeighbourList::keep_pairs(Keep keep) {
     offset_ = std::move(offset);
     index_ = std::move(index);
     same_key_row_.clear();
+    reach_before_.clear();
     ++generation_;
 }
 
@@ -177,18 +188,29 @@ void NeighbourList::halve_pairs(std::span<const int> key) {
     keep_pairs([&](Index i, std::int32_t j) { return j > i || key[i] != key[j]; });
     const auto n = static_cast<Index>(offset_.size()) - 1;
     same_key_row_.assign(static_cast<std::size_t>(n), 0);
+    reach_before_.assign(static_cast<std::size_t>(n + 1), 0);
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
-        const auto row = neighbours(i);
-        same_key_row_[static_cast<std::size_t>(i)] = std::all_of(
-            row.begin(), row.end(), [&](std::int32_t j) { return key[i] == key[j] && j > i; });
+        bool all_same = true;
+        std::int32_t reach = 0;
+        for (const std::int32_t j : neighbours(i)) {
+            const bool same = key[i] == key[j]; // then j > i: the pair's other row lost it
+            all_same = all_same && same;
+            reach = same ? std::max(reach, j + 1) : reach;
+        }
+        same_key_row_[static_cast<std::size_t>(i)] = all_same;
+        reach_before_[static_cast<std::size_t>(i) + 1] = reach;
+    }
+    // Prefix maxima, serial: one pass over the rows per rebuild.
+    for (std::size_t row = 1; row <= static_cast<std::size_t>(n); ++row) {
+        reach_before_[row] = std::max(reach_before_[row], reach_before_[row - 1]);
     }
 }
 
 std::size_t NeighbourList::bytes() const {
     return offset_.capacity() * sizeof(Index) + index_.capacity() * sizeof(std::int32_t) +
-           reference_.capacity() * sizeof(Vec3) + same_key_row_.capacity() + cells_.bytes() +
-           free_cells_.bytes();
+           reference_.capacity() * sizeof(Vec3) + same_key_row_.capacity() +
+           reach_before_.capacity() * sizeof(std::int32_t) + cells_.bytes() + free_cells_.bytes();
 }
 
 } // namespace grainload::particles

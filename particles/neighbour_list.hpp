@@ -44,6 +44,15 @@ class NeighbourList {
     bool same_key_row(Index i) const {
         return !same_key_row_.empty() && same_key_row_[static_cast<std::size_t>(i)] != 0;
     }
+    /// Whether halve_pairs left the list as it is (until a rebuild or drop_pairs): only then
+    /// does same_key_reach_before hold.
+    bool halved() const { return !reach_before_.empty(); }
+    /// One past the largest index j of a same-key pair in the rows before row i (i up to the row
+    /// count) of a halved() list, 0 if none: the particles that the passes taking those rows'
+    /// pairs add to lie below it.
+    Index same_key_reach_before(Index i) const {
+        return reach_before_[static_cast<std::size_t>(i)];
+    }
     /// Whether update() would rebuild without `force`.
     bool stale(std::span<const Vec3> positions) const;
 
@@ -69,6 +78,14 @@ class NeighbourList {
   private:
     template <class Keep> void keep_pairs(Keep keep);
     void rebuild(std::span<const Vec3> positions, std::span<const char> frozen, Index rows);
+    /// The grid particle i searches: the free particles' for a frozen one, else all of them.
+    const CellList& search_grid(std::span<const char> frozen, Index i) const;
+    /// offset_[i + 1] = row i's neighbour count, for the first `rows` rows (the rest 0).
+    void count_rows(std::span<const Vec3> positions, std::span<const char> frozen, Index rows,
+                    double radius_squared);
+    /// The neighbours of the first `rows` rows into index_, at the offsets counted.
+    void fill_rows(std::span<const Vec3> positions, std::span<const char> frozen, Index rows,
+                   double radius_squared);
     double max_displacement(std::span<const Vec3> positions) const;
 
     double support_;
@@ -78,8 +95,9 @@ class NeighbourList {
     CellList free_cells_; ///< the same grid holding only the particles that are not frozen
     std::vector<Index> offset_;
     std::vector<std::int32_t> index_;
-    std::vector<Vec3> reference_;    ///< positions at the last build
-    std::vector<char> same_key_row_; ///< per row, set by halve_pairs (same_key_row)
+    std::vector<Vec3> reference_;            ///< positions at the last build
+    std::vector<char> same_key_row_;         ///< per row, set by halve_pairs (same_key_row)
+    std::vector<std::int32_t> reach_before_; ///< prefix maxima of a row's largest same-key j + 1
     Index rebuilds_ = 0;
     Index generation_ = 0;
 };

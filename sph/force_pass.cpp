@@ -44,13 +44,15 @@ struct ForceSettings {
           gravity(options.gravity) {}
 };
 
-/// Where the parts of the force pass add: 3 doubles of acceleration and 1 of heating rate per
-/// particle; and, when not null, the contact dashpot's part of each row's heating rate (row i
-/// writes entry i only, so every part shares one array).
+/// Where a part of the force pass adds: 3 doubles of acceleration and 1 of heating rate of
+/// particle k at 3 (k - origin) and k - origin; and, when not null, the contact dashpot's part
+/// of each row's heating rate (row i writes entry i only, so every part shares one array,
+/// indexed by particle).
 struct ForceSums {
     double* acceleration;
     double* heating;
     double* contact_heating;
+    Index origin;
 };
 
 /// Row i of the force pass in D = 2 or 3 components (plane strain: the z terms are exact zeros
@@ -136,12 +138,12 @@ template <class Shape, int D> struct ForceRow {
             const double pi_ij = viscous ? pi_all : 0.0;
             const double heat = viscous && in_support ? 0.5 * pi_all * power : 0.0;
             heating += mj * heat;
-            sums.heating[j] += mi * heat;
+            sums.heating[j - sums.origin] += mi * heat;
             for (int k = 0; k < D; ++k) {
                 t[k][k] -= pi_ij;
             }
         }
-        double* aj = sums.acceleration + 3 * j;
+        double* aj = sums.acceleration + 3 * (j - sums.origin);
         for (int row = 0; row < D; ++row) {
             double tg = 0.0;
             for (int c = 0; c < D; ++c) {
@@ -207,7 +209,8 @@ template <class Shape, int D> struct ForceRow {
                 double own[4] = {a[0], a[1], a[2], heating};
                 if (count > 0) {
                     continuum_lanes_added(D, records, i, whole ? list.data() + first : picked,
-                                          count, lanes, own, sums.acceleration, sums.heating);
+                                          count, lanes, own, sums.acceleration, sums.heating,
+                                          sums.origin);
                 }
                 std::copy_n(own, 3, a);
                 heating = own[3];
@@ -229,8 +232,8 @@ template <class Shape, int D> struct ForceRow {
                     continue;
                 }
                 heating += terms.term[6][pair];
-                sums.heating[j] += terms.term[7][pair];
-                double* aj = sums.acceleration + 3 * j;
+                sums.heating[j - sums.origin] += terms.term[7][pair];
+                double* aj = sums.acceleration + 3 * (j - sums.origin);
                 for (int row = 0; row < D; ++row) {
                     a[row] += terms.term[row][pair];
                     aj[row] -= terms.term[3 + row][pair];
@@ -238,11 +241,11 @@ template <class Shape, int D> struct ForceRow {
                 ++pair;
             }
         }
-        double* ai = sums.acceleration + 3 * i;
+        double* ai = sums.acceleration + 3 * (i - sums.origin);
         for (int c = 0; c < 3; ++c) {
             ai[c] += a[c];
         }
-        sums.heating[i] += heating;
+        sums.heating[i - sums.origin] += heating;
         if (sums.contact_heating != nullptr) {
             sums.contact_heating[i] = contact_heating;
         }
@@ -287,16 +290,66 @@ template <class Shape, int D> struct ForceRow {
             }
             continuum_pair(i, j, d, r, r2, g, in_support, a, heating, sums);
         }
-        double* ai = sums.acceleration + 3 * i;
+        double* ai = sums.acceleration + 3 * (i - sums.origin);
         for (int c = 0; c < 3; ++c) {
             ai[c] += a[c];
         }
-        sums.heating[i] += heating;
+        sums.heating[i - sums.origin] += heating;
         if (sums.contact_heating != nullptr) {
             sums.contact_heating[i] = contact_heating;
         }
     }
 };
+
+/// What the force pass's vector lanes read of the settings and the kernel's terms.
+template <class Shape>
+LaneSettings force_lane_settings(const ForceSettings& s, const ShapeTerms<Shape>& w) {
+    return {s.support_squared, w.inverse_h, w.alpha_over_h, s.h,
+            s.h2_softening,    s.alpha,     s.beta,         s.viscosity_speed};
+}
+
+/// The first part's sums before the pass (sph/pair_parts.hpp): the accelerations start from
+/// gravity (zero for wall particles), the heating rates and the contact heating from zero; set
+/// on all threads, in the loop that sets the particles' keys.
+void start_force_sums(ParticleSet& p, const Vec3& gravity, std::vector<double>& heating_rate,
+                      double* contact_heating, std::vector<int>& key) {
+    const Index n = p.size();
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+        key[i] = continuum_key(p.wall_id[i] >= 0, p.body_id[i], i);
+        p.acceleration[i] = p.wall_id[i] >= 0 ? Vec3::Zero() : gravity;
+        heating_rate[i] = 0.0;
+        if (contact_heating != nullptr) {
+            contact_heating[i] = 0.0;
+        }
+    }
+}
+
+/// A later part's window in `sums`: the accelerations of its particles, then their heating rates.
+ForceSums later_part_sums(const PairParts& parts, PairScratch& sums, double* contact_heating,
+                          int r) {
+    double* base = sums.part(r);
+    return ForceSums{base, base + 3 * parts.window(r), contact_heating, parts.origin(r)};
+}
+
+/// The later parts' sums added to the first part's, in the parts' order.
+void add_later_force_sums(ParticleSet& p, std::vector<double>& heating_rate, const PairParts& parts,
+                          PairScratch& sums) {
+    if (parts.count() == 1) {
+        return;
+    }
+    const Index n = p.size();
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+        for_later_parts(parts, i, [&](int r, Index k) {
+            const ForceSums part = later_part_sums(parts, sums, nullptr, r);
+            for (int c = 0; c < 3; ++c) {
+                p.acceleration[i][c] += part.acceleration[3 * k + c];
+            }
+            heating_rate[i] += part.heating[k];
+        });
+    }
+}
 
 } // namespace
 
@@ -318,7 +371,7 @@ void compute_accelerations(ParticleSet& p, const particles::NeighbourList& neigh
     heating_rate.resize(static_cast<std::size_t>(n));
     double* contact_heating = nullptr;
     if (contact_heating_rate != nullptr) {
-        contact_heating_rate->assign(static_cast<std::size_t>(n), 0.0);
+        contact_heating_rate->resize(static_cast<std::size_t>(n));
         contact_heating = contact_heating_rate->data();
     }
     if (n == 0) {
@@ -326,25 +379,17 @@ void compute_accelerations(ParticleSet& p, const particles::NeighbourList& neigh
     }
     const ForceSettings settings(kernel, options);
     const bool use_lanes = force_pass_uses_lanes(kernel, options, arithmetic);
-    const std::vector<int> key = continuum_keys(p);
-    // The first part sums into the particles' accelerations, which start from gravity, and
-    // the heating rates, which start from zero (set on all threads).
-#pragma omp parallel for schedule(static)
-    for (Index i = 0; i < n; ++i) {
-        p.acceleration[i] = p.wall_id[i] >= 0 ? Vec3::Zero() : settings.gravity;
-        heating_rate[i] = 0.0;
-    }
-    const int parts = pass_parts();
-    const std::vector<Index> bounds = balanced_rows(neighbours, n, parts);
+    std::vector<int> key(static_cast<std::size_t>(n));
+    start_force_sums(p, settings.gravity, heating_rate, contact_heating, key);
+    const PairParts parts = split_rows(neighbours, n, n, pass_parts());
+    constexpr int width = 4;
     PairScratch own;
     PairScratch& sums = scratch != nullptr ? *scratch : own;
-    sums.reserve(parts, n, 4);
+    sums.reserve(parts, width);
     auto sums_of = [&](int r) {
-        if (r == 0) {
-            return ForceSums{p.acceleration.data()->data(), heating_rate.data(), contact_heating};
-        }
-        double* base = sums.part(r);
-        return ForceSums{base, base + 3 * n, contact_heating};
+        return r == 0 ? ForceSums{p.acceleration.data()->data(), heating_rate.data(),
+                                  contact_heating, 0}
+                      : later_part_sums(parts, sums, contact_heating, r);
     };
     kernel.visit_shape([&](auto shape) {
         using Shape = decltype(shape);
@@ -361,20 +406,12 @@ void compute_accelerations(ParticleSet& p, const particles::NeighbourList& neigh
                 in.entry_factor.empty() ? nullptr : in.entry_factor.data(),
                 in.pair_records.empty() ? nullptr : in.pair_records.data()};
             if (use_lanes && row.records != nullptr) {
-                const LaneSettings lanes{settings.support_squared,
-                                         row.w.inverse_h,
-                                         row.w.alpha_over_h,
-                                         settings.h,
-                                         settings.h2_softening,
-                                         settings.alpha,
-                                         settings.beta,
-                                         settings.viscosity_speed};
-                for_each_part(bounds, sums, static_cast<std::size_t>(4 * n),
+                const LaneSettings lanes = force_lane_settings(settings, row.w);
+                for_each_part(parts, sums, width,
                               [&](Index i, int r) { row.lane_row(i, sums_of(r), lanes); });
                 return;
             }
-            for_each_part(bounds, sums, static_cast<std::size_t>(4 * n),
-                          [&](Index i, int r) { row(i, sums_of(r)); });
+            for_each_part(parts, sums, width, [&](Index i, int r) { row(i, sums_of(r)); });
         };
         if (kernel.dimension() == 2) {
             pass(std::integral_constant<int, 2>{});
@@ -382,19 +419,7 @@ void compute_accelerations(ParticleSet& p, const particles::NeighbourList& neigh
             pass(std::integral_constant<int, 3>{});
         }
     });
-    if (parts == 1) {
-        return;
-    }
-#pragma omp parallel for schedule(static)
-    for (Index i = 0; i < n; ++i) {
-        for (int r = 1; r < parts; ++r) {
-            const ForceSums part = sums_of(r);
-            for (int c = 0; c < 3; ++c) {
-                p.acceleration[i][c] += part.acceleration[3 * i + c];
-            }
-            heating_rate[i] += part.heating[i];
-        }
-    }
+    add_later_force_sums(p, heating_rate, parts, sums);
 }
 
 } // namespace grainload::sph

@@ -203,7 +203,8 @@ __attribute__((target("avx2"))) void terms_stored(const PairRecord* records, Ind
 template <int D>
 __attribute__((target("avx2"))) void
 terms_added(const PairRecord* records, Index i, const std::int32_t* j, int count,
-            const LaneSettings& s, double (&own)[4], double* acceleration, double* heating) {
+            const LaneSettings& s, double (&own)[4], double* acceleration, double* heating,
+            Index origin) {
     const auto* base = reinterpret_cast<const double*>(records);
     std::int32_t lane_j[kLaneBatch + 3];
     pad_lanes(j, count, lane_j);
@@ -222,11 +223,12 @@ terms_added(const PairRecord* records, Index i, const std::int32_t* j, int count
         const int pairs = count - g < 4 ? count - g : 4;
         for (int p = 0; p < pairs; ++p) {
             sum = _mm256_add_pd(sum, mine[p]);
-            double* aj = acceleration + 3 * lane_j[g + p];
+            const Index j_local = lane_j[g + p] - origin;
+            double* aj = acceleration + 3 * j_local;
             _mm_storeu_pd(aj, _mm_sub_pd(_mm_loadu_pd(aj), _mm256_castpd256_pd128(theirs[p])));
             const __m128d z_heat = _mm256_extractf128_pd(theirs[p], 1);
             aj[2] -= _mm_cvtsd_f64(z_heat);
-            heating[lane_j[g + p]] += _mm_cvtsd_f64(_mm_unpackhi_pd(z_heat, z_heat));
+            heating[j_local] += _mm_cvtsd_f64(_mm_unpackhi_pd(z_heat, z_heat));
         }
     }
     _mm256_storeu_pd(own, sum);
@@ -245,11 +247,11 @@ void continuum_lanes(int dimension, const PairRecord* records, Index i, const st
 
 void continuum_lanes_added(int dimension, const PairRecord* records, Index i, const std::int32_t* j,
                            int count, const LaneSettings& settings, double (&own)[4],
-                           double* acceleration, double* heating) {
+                           double* acceleration, double* heating, Index origin) {
     if (dimension == 2) {
-        terms_added<2>(records, i, j, count, settings, own, acceleration, heating);
+        terms_added<2>(records, i, j, count, settings, own, acceleration, heating, origin);
     } else {
-        terms_added<3>(records, i, j, count, settings, own, acceleration, heating);
+        terms_added<3>(records, i, j, count, settings, own, acceleration, heating, origin);
     }
 }
 
@@ -257,10 +259,11 @@ namespace {
 
 /// Four of the nine entries (entries first..first+3, column major) of the pairs' m_j dv g^T
 /// and m_i dv g^T, lane p for pair p, added pair by pair in order: to `acc` and to the four
-/// doubles of particle j[p] at l + 9 j[p] + first.
+/// doubles of particle j[p] at l + 9 (j[p] - origin) + first.
 __attribute__((target("avx2"))) inline void
 add_four_entries(const __m256d (&dv)[3], const __m256d (&grad)[3], __m256d mj, __m256d mi,
-                 int first, const std::int32_t* j, int pairs, double* l, __m256d& acc) {
+                 int first, const std::int32_t* j, int pairs, double* l, Index origin,
+                 __m256d& acc) {
     __m256d own[4], other[4];
     for (int e = 0; e < 4; ++e) {
         const int entry = first + e; // t_rc = dv_r g_c at entry 3c + r
@@ -273,7 +276,7 @@ add_four_entries(const __m256d (&dv)[3], const __m256d (&grad)[3], __m256d mj, _
     transpose(other[0], other[1], other[2], other[3], theirs);
     for (int p = 0; p < pairs; ++p) {
         acc = _mm256_add_pd(acc, mine[p]);
-        double* lj = l + 9 * j[p] + first;
+        double* lj = l + 9 * (j[p] - origin) + first;
         _mm256_storeu_pd(lj, _mm256_add_pd(_mm256_loadu_pd(lj), theirs[p]));
     }
 }
@@ -282,7 +285,7 @@ add_four_entries(const __m256d (&dv)[3], const __m256d (&grad)[3], __m256d mj, _
 
 __attribute__((target("avx2"))) void gradient_lanes(const PairRecord* records, Index i,
                                                     const std::int32_t* j, int count,
-                                                    const LaneSettings& s, double* l,
+                                                    const LaneSettings& s, double* l, Index origin,
                                                     double (&acc)[9]) {
     const auto* base = reinterpret_cast<const double*>(records);
     const PairRecord& ri = records[i];
@@ -330,8 +333,10 @@ __attribute__((target("avx2"))) void gradient_lanes(const PairRecord* records, I
     for (int g = 0; g < count; g += 4) {
         const Group& group = groups[g / 4];
         const int pairs = count - g < 4 ? count - g : 4;
-        add_four_entries(group.dv, group.grad, group.mj, mi, 0, lane_j + g, pairs, l, acc_low);
-        add_four_entries(group.dv, group.grad, group.mj, mi, 4, lane_j + g, pairs, l, acc_high);
+        add_four_entries(group.dv, group.grad, group.mj, mi, 0, lane_j + g, pairs, l, origin,
+                         acc_low);
+        add_four_entries(group.dv, group.grad, group.mj, mi, 4, lane_j + g, pairs, l, origin,
+                         acc_high);
         const __m256d t = _mm256_mul_pd(group.dv[2], group.grad[2]);
         alignas(32) double mine[4];
         alignas(32) double theirs[4];
@@ -339,7 +344,7 @@ __attribute__((target("avx2"))) void gradient_lanes(const PairRecord* records, I
         _mm256_store_pd(theirs, _mm256_mul_pd(mi, t));
         for (int p = 0; p < pairs; ++p) {
             acc_last += mine[p];
-            l[9 * lane_j[g + p] + 8] += theirs[p];
+            l[9 * (lane_j[g + p] - origin) + 8] += theirs[p];
         }
     }
     _mm256_storeu_pd(acc, acc_low);

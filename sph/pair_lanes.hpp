@@ -50,12 +50,12 @@ struct LaneTerms {
 };
 
 /// As continuum_lanes, with the terms added in the pairs' order: m_j T g and m_j times the
-/// heating to own (x, y, z, heating of i); m_i T g taken from acceleration + 3 j[p], m_i times
-/// the heating added to heating[j[p]]. For a batch without entries of other bodies, whose
-/// contact terms would come between.
+/// heating to own (x, y, z, heating of i); m_i T g taken from acceleration + 3 (j[p] - origin),
+/// m_i times the heating added to heating[j[p] - origin]. For a batch without entries of other
+/// bodies, whose contact terms would come between.
 void continuum_lanes_added(int dimension, const PairRecord* records, Index i, const std::int32_t* j,
                            int count, const LaneSettings& settings, double (&own)[4],
-                           double* acceleration, double* heating);
+                           double* acceleration, double* heating, Index origin);
 
 /// Whether this processor runs the lanes (AVX2, checked once).
 bool pair_lanes_available();
@@ -63,12 +63,13 @@ bool pair_lanes_available();
 /// The kinematic pass's pairs (i, j[p]), p < count <= kLaneBatch, of one body in 3D, cubic
 /// spline, from the records' positions, velocities and masses: for the pairs inside the support,
 /// with g = W'(r)/r x_ij (ShapeTerms::gradient_factor_inside) and dv = v_j - v_i, adds m_j dv
-/// g^T to `acc` and m_i dv g^T to particle j's nine doubles at l + 9 j, both column major, pair
+/// g^T to `acc` and m_i dv g^T to particle j's nine doubles at l + 9 (j - origin), both column
+/// major, pair
 /// by pair in order (a pair outside the support adds +0 or -0, which leaves every sum's bits as
 /// skipping it would: a sum that starts at +0 never becomes -0). Only support_squared, inverse_h
 /// and alpha_over_h of `settings` are read. Requires pair_lanes_available().
 void gradient_lanes(const PairRecord* records, Index i, const std::int32_t* j, int count,
-                    const LaneSettings& settings, double* l, double (&acc)[9]);
+                    const LaneSettings& settings, double* l, Index origin, double (&acc)[9]);
 
 /// The terms of the pairs (i, j[p]), p < count <= kLaneBatch, of one body: stress
 /// sigma_i/rho_i^2 + sigma_j/rho_j^2 and Monaghan's viscosity, cubic spline, in `dimension` 3

@@ -15,14 +15,16 @@ std::vector<int> continuum_keys(const ParticleSet& p) {
     return key;
 }
 
-std::vector<Index> balanced_rows(const particles::NeighbourList& list, Index rows, int parts) {
-    std::vector<Index> bounds(static_cast<std::size_t>(parts) + 1, rows);
-    bounds[0] = 0;
+PairParts split_rows(const particles::NeighbourList& list, Index rows, Index particles, int parts) {
+    PairParts split;
+    split.bounds.assign(static_cast<std::size_t>(parts) + 1, rows);
+    split.bounds[0] = 0;
+    const bool halved = list.halved();
     const Index entries = rows > 0 ? list.first_entry(rows) : 0;
     for (int r = 1; r < parts; ++r) {
         const Index target = entries * r / parts;
         // The first row whose entries begin at or after the target: rows are whole.
-        Index low = bounds[static_cast<std::size_t>(r) - 1];
+        Index low = split.bounds[static_cast<std::size_t>(r) - 1];
         Index high = rows;
         while (low < high) {
             const Index middle = low + (high - low) / 2;
@@ -32,17 +34,25 @@ std::vector<Index> balanced_rows(const particles::NeighbourList& list, Index row
                 high = middle;
             }
         }
-        bounds[static_cast<std::size_t>(r)] = low;
+        split.bounds[static_cast<std::size_t>(r)] = low;
     }
-    return bounds;
+    split.reach.resize(static_cast<std::size_t>(parts));
+    for (std::size_t r = 0; r < split.reach.size(); ++r) {
+        // The prefix maximum over all rows before the part's end bounds its own rows' reach.
+        const Index end = split.bounds[r + 1];
+        split.reach[r] = halved ? std::max(end, list.same_key_reach_before(end)) : particles;
+    }
+    return split;
 }
 
-void PairScratch::reserve(int parts, Index n, int width) {
-    parts_.resize(static_cast<std::size_t>(std::max(parts - 1, 0)));
-    const auto size = static_cast<std::size_t>(n) * static_cast<std::size_t>(width);
-    for (auto& part : parts_) {
-        if (part.size() < size) {
-            part.resize(size);
+void PairScratch::reserve(const PairParts& parts, int width) {
+    parts_.resize(static_cast<std::size_t>(std::max(parts.count() - 1, 0)));
+    for (int r = 1; r < parts.count(); ++r) {
+        const auto size =
+            static_cast<std::size_t>(parts.window(r)) * static_cast<std::size_t>(width);
+        auto& window = parts_[static_cast<std::size_t>(r) - 1];
+        if (window.size() < size) {
+            window.resize(size);
         }
     }
 }

@@ -31,16 +31,38 @@ std::vector<int> continuum_keys(const ParticleSet& particles);
 /// parts, so a run repeats itself bit for bit at a given thread count; between thread counts
 /// the sums are ordered differently (round-off).
 ///
-/// Rows [bounds[r], bounds[r + 1]) of part r, for `parts` parts of about equal numbers of list
-/// entries over the first `rows` rows.
-std::vector<Index> balanced_rows(const particles::NeighbourList& list, Index rows, int parts);
+/// Part r's rows are [bounds[r], bounds[r + 1]), of about equal numbers of list entries; its
+/// pair terms go to particles [bounds[r], reach[r]) (a row adds to itself and to the j > i of
+/// its same-key pairs, never to a wall particle), so a later part's accumulators span that
+/// window only, not the wall particles and the rows before it. (More parts than threads, taken
+/// as threads come free, balanced no better on the 2D collapse and the 3D block and cost more:
+/// once grains have flowed, a part's pairs reach far along the particles' order, and each
+/// window is zeroed and summed; docs/performance.md.)
+struct PairParts {
+    std::vector<Index> bounds;
+    std::vector<Index> reach;
+    int count() const { return static_cast<int>(bounds.size()) - 1; }
+    /// Part r's first particle in its accumulators (0 for the first part, which adds into the
+    /// particles' arrays).
+    Index origin(int r) const { return r == 0 ? 0 : bounds[static_cast<std::size_t>(r)]; }
+    /// Particles in part r's window.
+    Index window(int r) const {
+        return reach[static_cast<std::size_t>(r)] - bounds[static_cast<std::size_t>(r)];
+    }
+};
 
-/// Accumulators of the parts after the first: `width` doubles per particle each.
+/// `parts` parts over the first `rows` rows, and their reach among the `particles` particles
+/// (all of them where the list is not halved()).
+PairParts split_rows(const particles::NeighbourList& list, Index rows, Index particles, int parts);
+
+/// Accumulators of the parts after the first: `width` doubles per particle of each part's
+/// window.
 class PairScratch {
   public:
-    /// Make room for `parts` parts (the first needs none) of n particles of `width` doubles.
-    void reserve(int parts, Index n, int width);
-    /// Part r's accumulators (r >= 1), as reserved; zero() them first.
+    /// Make room for the windows of `parts` (the first needs none), `width` doubles a particle.
+    void reserve(const PairParts& parts, int width);
+    /// Part r's accumulators (r >= 1), as reserved: particle k's at part(r) + width (k -
+    /// origin(r)); zero() them first.
     double* part(int r) { return parts_[static_cast<std::size_t>(r - 1)].data(); }
     /// Set part r's first `count` doubles to zero (by the thread that then fills them).
     void zero(int r, std::size_t count);
@@ -86,20 +108,32 @@ inline PickedPairs pick_same_body_pairs(std::span<const std::int32_t> list, std:
 /// Number of parts of a pass: the threads OpenMP would use.
 int pass_parts();
 
-/// Runs row(i, r) for the rows i of each part r of `bounds` (balanced_rows), each part on one
-/// thread and its rows in order; part r > 0's first `doubles` accumulators in `scratch` are
-/// zeroed first, by that thread.
+/// Runs row(i, r) for the rows i of each part r of `parts` (split_rows), each part on one thread
+/// and its rows in order; part r > 0's `width` doubles a particle of its window in `scratch`
+/// are zeroed first, by the thread that runs it.
 template <class Row>
-void for_each_part(const std::vector<Index>& bounds, PairScratch& scratch, std::size_t doubles,
-                   const Row& row) {
-    const int parts = static_cast<int>(bounds.size()) - 1;
-#pragma omp parallel num_threads(parts)
-    for (int r = omp_get_thread_num(); r < parts; r += omp_get_num_threads()) {
+void for_each_part(const PairParts& parts, PairScratch& scratch, int width, const Row& row) {
+    const int count = parts.count();
+#pragma omp parallel for schedule(static, 1)
+    for (int r = 0; r < count; ++r) {
+        const auto part = static_cast<std::size_t>(r);
         if (r > 0) {
-            scratch.zero(r, doubles);
+            scratch.zero(r, static_cast<std::size_t>(width) *
+                                static_cast<std::size_t>(parts.window(r)));
         }
-        for (Index i = bounds[r]; i < bounds[r + 1]; ++i) {
+        for (Index i = parts.bounds[part]; i < parts.bounds[part + 1]; ++i) {
             row(i, r);
+        }
+    }
+}
+
+/// Calls add(r, k) for each part r after the first whose window holds particle i, in the
+/// parts' order, with k = i - origin(r) its place there: the order in which the parts' sums of i
+/// are added to the first part's.
+template <class Add> void for_later_parts(const PairParts& parts, Index i, const Add& add) {
+    for (int r = 1; r < parts.count() && parts.bounds[static_cast<std::size_t>(r)] <= i; ++r) {
+        if (i < parts.reach[static_cast<std::size_t>(r)]) {
+            add(r, i - parts.origin(r));
         }
     }
 }

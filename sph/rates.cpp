@@ -50,11 +50,12 @@ void store_kinematics(ParticleSet& p, Index i, const Mat3& l) {
 
 namespace {
 
-/// Where the parts of the kinematic pass add: L and M of each particle as 9 doubles (column
-/// major, as Mat3 stores them); `moment` is nullptr without the correction.
+/// Where a part of the kinematic pass adds: L and M of particle k as 9 doubles (column major,
+/// as Mat3 stores them) at 9 (k - origin); `moment` is nullptr without the correction.
 struct GradientSums {
     double* l;
     double* moment;
+    Index origin;
 };
 
 /// Row i of the velocity-gradient pass in D = 2 or 3 components (plane-strain particles have
@@ -102,14 +103,14 @@ template <class Shape, int D, bool Corrected> struct GradientRow {
             }
             add_batch(i, b, acc, sums);
         }
-        double* li = sums.l + 9 * i;
+        double* li = sums.l + 9 * (i - sums.origin);
         for (int r = 0; r < D; ++r) {
             for (int c = 0; c < D; ++c) {
                 li[3 * c + r] += acc.l[r][c];
             }
         }
         if constexpr (Corrected) {
-            double* mo_i = sums.moment + 9 * i;
+            double* mo_i = sums.moment + 9 * (i - sums.origin);
             for (int r = 0; r < D; ++r) {
                 for (int c = 0; c < D; ++c) {
                     mo_i[3 * c + r] += acc.moment[r][c];
@@ -137,10 +138,10 @@ template <class Shape, int D, bool Corrected> struct GradientRow {
                                     : pick_same_body_pairs(list, first, end, key, i, picked).count;
             if (count > 0) {
                 gradient_lanes(records, i, whole ? list.data() + first : picked, count, lanes,
-                               sums.l, acc);
+                               sums.l, sums.origin, acc);
             }
         }
-        double* li = sums.l + 9 * i;
+        double* li = sums.l + 9 * (i - sums.origin);
         for (int c = 0; c < 9; ++c) {
             li[c] += acc[c];
         }
@@ -198,7 +199,7 @@ template <class Shape, int D, bool Corrected> struct GradientRow {
             }
             const double mj = p.mass[j];
             const Vec3& vj = p.velocity[j];
-            double* lj = sums.l + 9 * j;
+            double* lj = sums.l + 9 * (j - sums.origin);
             for (int r = 0; r < D; ++r) {
                 const double dv = vj[r] - vi[r];
                 for (int c = 0; c < D; ++c) {
@@ -208,7 +209,7 @@ template <class Shape, int D, bool Corrected> struct GradientRow {
                 }
             }
             if constexpr (Corrected) {
-                double* mo_j = sums.moment + 9 * j;
+                double* mo_j = sums.moment + 9 * (j - sums.origin);
                 for (int r = 0; r < D; ++r) {
                     for (int c = 0; c < D; ++c) {
                         const double term = b.d[r][m] * g[c];
@@ -237,72 +238,17 @@ void write_kinematic_fields(const ParticleSet& p, Index i, PairRecord& record) {
     record.mass = p.mass[i];
 }
 
-/// The kinematic fields of the material particles' records (the rest is
-/// prepare_force_inputs').
-void write_kinematic_records(const ParticleSet& p, std::vector<PairRecord>& records) {
+/// The later parts' sums added to the first part's in the parts' order, then L = sum / rho
+/// (times the correction's inverse, whose transpose is kept for the force pass), stored with its
+/// strain rate and spin.
+template <bool Corrected, class SumsOf>
+void finish_velocity_gradient(ParticleSet& p, const SmoothingKernel& kernel, const PairParts& parts,
+                              const SumsOf& sums_of, std::vector<Mat3>& velocity_gradient,
+                              std::vector<Mat3>& correction) {
     const Index n = p.size();
-    records.resize(static_cast<std::size_t>(n));
-#pragma omp parallel for schedule(static)
-    for (Index i = 0; i < n; ++i) {
-        if (p.wall_id[i] < 0) {
-            write_kinematic_fields(p, i, records[static_cast<std::size_t>(i)]);
-        }
-    }
-}
-
-template <class Shape, int D, bool Corrected>
-void velocity_gradient_pass(ParticleSet& p, const particles::NeighbourList& neighbours,
-                            const SmoothingKernel& kernel, std::vector<Mat3>& velocity_gradient,
-                            std::vector<Mat3>& correction, double* entry_factor,
-                            PairScratch& scratch, PairArithmetic arithmetic,
-                            std::vector<PairRecord>* records) {
-    const std::vector<int> key = continuum_keys(p);
-    const Index n = p.size();
-    const bool lanes = records != nullptr && entry_factor == nullptr &&
-                       arithmetic == PairArithmetic::lanes_where_available && D == 3 &&
-                       !Corrected && std::is_same_v<Shape, CubicSplineKernel> &&
-                       pair_lanes_available();
-    if (lanes) {
-        write_kinematic_records(p, *records);
-    }
-    const GradientRow<Shape, D, Corrected> row{p,
-                                               neighbours,
-                                               ShapeTerms<Shape>(kernel),
-                                               key,
-                                               kernel.support_radius() * kernel.support_radius(),
-                                               entry_factor,
-                                               lanes ? records->data() : nullptr};
-    // The first part sums into velocity_gradient and (the moments) correction themselves.
-    // Zeroed on all threads: a serial fill of 72 bytes a particle had the other thread wait.
-    velocity_gradient.resize(static_cast<std::size_t>(n));
-    if constexpr (Corrected) {
-        correction.resize(static_cast<std::size_t>(n));
-    }
-    if (n == 0) {
-        return;
-    }
-#pragma omp parallel for schedule(static)
-    for (Index i = 0; i < n; ++i) {
-        velocity_gradient[i].setZero();
-        if constexpr (Corrected) {
-            correction[i].setZero();
-        }
-    }
-    const int parts = pass_parts();
-    const std::vector<Index> bounds = balanced_rows(neighbours, n, parts);
-    constexpr int width = Corrected ? 18 : 9;
-    scratch.reserve(parts, n, width);
-    auto sums_of = [&](int r) {
-        if (r == 0) {
-            return GradientSums{velocity_gradient.data()->data(),
-                                Corrected ? correction.data()->data() : nullptr};
-        }
-        double* base = scratch.part(r);
-        return GradientSums{base, Corrected ? base + 9 * n : nullptr};
-    };
-    for_each_part(bounds, scratch, static_cast<std::size_t>(width * n),
-                  [&](Index i, int r) { row(i, sums_of(r)); });
-#pragma omp parallel for schedule(static)
+    // Dynamic: the material particles, whose sums are finished here, and the walls, which
+    // have none, lie in blocks.
+#pragma omp parallel for schedule(dynamic, 256)
     for (Index i = 0; i < n; ++i) {
         if (p.wall_id[i] >= 0) {
             if constexpr (Corrected) {
@@ -310,13 +256,13 @@ void velocity_gradient_pass(ParticleSet& p, const particles::NeighbourList& neig
             }
             continue;
         }
-        for (int r = 1; r < parts; ++r) {
+        for_later_parts(parts, i, [&](int r, Index k) {
             const GradientSums part = sums_of(r);
-            add_nine(velocity_gradient[i].data(), part.l + 9 * i);
+            add_nine(velocity_gradient[i].data(), part.l + 9 * k);
             if constexpr (Corrected) {
-                add_nine(correction[i].data(), part.moment + 9 * i);
+                add_nine(correction[i].data(), part.moment + 9 * k);
             }
-        }
+        });
         Mat3 l = velocity_gradient[i] / p.density[i];
         if constexpr (Corrected) {
             const Mat3 inverse =
@@ -327,6 +273,66 @@ void velocity_gradient_pass(ParticleSet& p, const particles::NeighbourList& neig
         velocity_gradient[i] = l;
         store_kinematics(p, i, l);
     }
+}
+
+template <class Shape, int D, bool Corrected>
+void velocity_gradient_pass(ParticleSet& p, const particles::NeighbourList& neighbours,
+                            const SmoothingKernel& kernel, std::vector<Mat3>& velocity_gradient,
+                            std::vector<Mat3>& correction, double* entry_factor,
+                            PairScratch& scratch, PairArithmetic arithmetic,
+                            std::vector<PairRecord>* records) {
+    const Index n = p.size();
+    const bool lanes = records != nullptr && entry_factor == nullptr &&
+                       arithmetic == PairArithmetic::lanes_where_available && D == 3 &&
+                       !Corrected && std::is_same_v<Shape, CubicSplineKernel> &&
+                       pair_lanes_available();
+    std::vector<int> key(static_cast<std::size_t>(n));
+    if (lanes) {
+        records->resize(static_cast<std::size_t>(n));
+    }
+    const GradientRow<Shape, D, Corrected> row{p,
+                                               neighbours,
+                                               ShapeTerms<Shape>(kernel),
+                                               key,
+                                               kernel.support_radius() * kernel.support_radius(),
+                                               entry_factor,
+                                               lanes ? records->data() : nullptr};
+    // The first part sums into velocity_gradient and (the moments) correction themselves.
+    // Zeroed on all threads (a serial fill of 72 bytes a particle had the other thread wait), in
+    // the loop that sets the particles' keys and the material particles' kinematic records.
+    velocity_gradient.resize(static_cast<std::size_t>(n));
+    if constexpr (Corrected) {
+        correction.resize(static_cast<std::size_t>(n));
+    }
+    if (n == 0) {
+        return;
+    }
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+        key[i] = continuum_key(p.wall_id[i] >= 0, p.body_id[i], i);
+        if (lanes && p.wall_id[i] < 0) {
+            write_kinematic_fields(p, i, (*records)[static_cast<std::size_t>(i)]);
+        }
+        velocity_gradient[i].setZero();
+        if constexpr (Corrected) {
+            correction[i].setZero();
+        }
+    }
+    const PairParts parts = split_rows(neighbours, n, n, pass_parts());
+    constexpr int width = Corrected ? 18 : 9;
+    scratch.reserve(parts, width);
+    // A later part's window: L of its particles, then (corrected) their moments.
+    auto sums_of = [&](int r) {
+        if (r == 0) {
+            return GradientSums{velocity_gradient.data()->data(),
+                                Corrected ? correction.data()->data() : nullptr, 0};
+        }
+        double* base = scratch.part(r);
+        return GradientSums{base, Corrected ? base + 9 * parts.window(r) : nullptr,
+                            parts.origin(r)};
+    };
+    for_each_part(parts, scratch, width, [&](Index i, int r) { row(i, sums_of(r)); });
+    finish_velocity_gradient<Corrected>(p, kernel, parts, sums_of, velocity_gradient, correction);
 }
 
 /// Particle i's record of the force pass, written in place: sigma/rho^2 entries, each product

@@ -1,5 +1,6 @@
 #include "sph/sph_solver.hpp"
 
+#include "particles/ordered_sum.hpp"
 #include "sph/contact_force.hpp"
 #include "sph/particle_removal.hpp"
 #include "sph/stress_update.hpp"
@@ -7,6 +8,7 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -32,6 +34,8 @@ SphSolver::SphSolver(ParticleSet particles, MaterialList materials, SphOptions o
     is_wall_.resize(static_cast<std::size_t>(n));
     force_inputs_.sound_speed.resize(static_cast<std::size_t>(n));
     wave_speed_.resize(static_cast<std::size_t>(n));
+    any_clamped_ = std::any_of(particles_.clamped.begin(), particles_.clamped.end(),
+                               [](char c) { return c != 0; });
     for (Index i = 0; i < n; ++i) {
         is_wall_[i] = particles_.is_wall(i) ? 1 : 0;
         const int m = particles_.material_id[i];
@@ -219,6 +223,7 @@ void SphSolver::filter_pairs(std::span<const int> group, Index real) {
     // source's body, an image of a wall particle a key of its own.
     const auto count = static_cast<Index>(group.size());
     std::vector<int> key(group.size());
+#pragma omp parallel for schedule(static)
     for (Index i = 0; i < count; ++i) {
         const Index source = i < real ? i : images_[i - real].source;
         key[i] = continuum_key(is_wall_[source] != 0, group[i], i);
@@ -284,30 +289,27 @@ void SphSolver::fold_wall_image_loads() {
     }
 }
 
-// Serial sums in the particles' order: the books repeat bit for bit whatever the threads.
+// Sums in fixed blocks (particles/ordered_sum.hpp): the books repeat bit for bit whatever the
+// threads.
 void SphSolver::book_heating_powers() {
     const ParticleSet& p = particles_;
     const Index n = images_attached_ ? real_count_ : p.size();
-    double total = 0.0;
-    double contact = 0.0;
-    for (Index i = 0; i < n; ++i) {
-        if (!is_wall_[i]) {
-            total += p.mass[i] * heating_rate_[i];
-            contact += p.mass[i] * contact_heating_rate_[i];
-        }
-    }
+    const auto [total, contact] =
+        particles::ordered_sums<2>(n, [&](Index i, std::array<double, 2>& sums) {
+            if (!is_wall_[i]) {
+                sums[0] += p.mass[i] * heating_rate_[i];
+                sums[1] += p.mass[i] * contact_heating_rate_[i];
+            }
+        });
     viscous_power_ = total - contact;
     contact_damping_power_ = contact;
 }
 
 void SphSolver::book_dissipation(double dt, Index n) {
     const ParticleSet& p = particles_;
-    double plastic = 0.0;
-    for (Index i = 0; i < n; ++i) {
-        if (!is_wall_[i]) {
-            plastic += p.mass[i] * plastic_work_[static_cast<std::size_t>(i)];
-        }
-    }
+    const double plastic = particles::ordered_sum(n, [&](Index i) {
+        return is_wall_[i] ? 0.0 : p.mass[i] * plastic_work_[static_cast<std::size_t>(i)];
+    });
     energy_.add_dissipation(plastic, dt * viscous_power_, dt * contact_damping_power_);
 }
 
@@ -342,6 +344,9 @@ void SphSolver::hold_clamped() {
     // plate of Gray, Monaghan & Swift 2001): zero acceleration after every force evaluation
     // keeps both kicks and the drift from moving it, while its stress and density still evolve
     // from the velocity gradient of its neighbours and it still pushes on them.
+    if (!any_clamped_) {
+        return;
+    }
     ParticleSet& p = particles_;
     const Index n = p.size();
 #pragma omp parallel for schedule(static)
@@ -349,16 +354,6 @@ void SphSolver::hold_clamped() {
         if (p.clamped[i]) {
             p.velocity[i].setZero();
             p.acceleration[i].setZero();
-        }
-    }
-}
-
-void SphSolver::kick(double half_dt) {
-    const Index n = particles_.size();
-#pragma omp parallel for schedule(static)
-    for (Index i = 0; i < n; ++i) {
-        if (!is_wall_[i]) {
-            particles_.velocity[i] += half_dt * particles_.acceleration[i];
         }
     }
 }
@@ -419,18 +414,21 @@ void SphSolver::step(double dt) {
     }
     ParticleSet& p = particles_;
     const Index n = p.size();
-    kick(0.5 * dt);
-    // The drift moves each particle by dt v(n+1/2), so gravity's work over the step is exactly
-    // sum m g . dt v(n+1/2).
+    // The first half kick, then the drift by dt v(n+1/2), so gravity's work over the step is
+    // exactly sum m g . dt v(n+1/2); one loop, its sum in fixed blocks (the same bits on any
+    // number of threads).
     const Vec3 gravity = options_.gravity;
-    double gravity_power = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : gravity_power)
-    for (Index i = 0; i < n; ++i) {
-        if (!is_wall_[i]) {
+    const double gravity_power = particles::ordered_sum(
+        n,
+        [&](Index i) {
+            if (is_wall_[i]) {
+                return 0.0;
+            }
+            p.velocity[i] += 0.5 * dt * p.acceleration[i];
             p.position[i] += dt * p.velocity[i];
-            gravity_power += p.mass[i] * gravity.dot(p.velocity[i]);
-        }
-    }
+            return p.mass[i] * gravity.dot(p.velocity[i]);
+        },
+        0);
     energy_.add_gravity_work(dt * gravity_power);
     for (Wall& wall : walls_) {
         if (wall.moves()) {
@@ -453,9 +451,12 @@ void SphSolver::step(double dt) {
     compute_forces(dt);
     energy_.add_wall_work(wall_work(dt));
     detach_images();
-    kick(0.5 * dt);
+    // The second half kick and the step's heating, in one loop.
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
+        if (!is_wall_[i]) {
+            p.velocity[i] += 0.5 * dt * p.acceleration[i];
+        }
         p.internal_energy[i] += dt * heating_rate_[i];
     }
     book_dissipation(dt, n);

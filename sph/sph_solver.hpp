@@ -154,7 +154,6 @@ class SphSolver {
     void book_heating_powers();
     /// The step's dissipation by mechanism into the energy books (EnergyLedger::add_dissipation).
     void book_dissipation(double dt, Index n);
-    void kick(double half_dt);
     /// Zero velocity and acceleration of clamped particles (ParticleSet::clamped).
     void hold_clamped();
     /// Work of the walls on the particles over a step of length dt: minus the reactions the
@@ -176,6 +175,9 @@ class SphSolver {
     /// the solver was built with (a restart rebuilds the solver from the case first).
     std::optional<TotalLagrangian> total_lagrangian_;
     std::vector<char> is_wall_;
+    /// Whether the scene clamps any particle (particles added later never are): the step then
+    /// skips hold_clamped's loop.
+    bool any_clamped_ = false;
     PairScratch pair_scratch_; ///< the pair passes' sums of the threads after the first
     ForceInputs force_inputs_;
     /// P-wave speed of each particle's (scaled) material, for the CFL step; 0 for walls.

@@ -1,3 +1,4 @@
+#include "particles/ordered_sum.hpp"
 #include "sph/contact_force.hpp"
 #include "sph/sph_solver.hpp"
 
@@ -15,9 +16,10 @@ double SphSolver::wall_work(double dt) const {
     // nothing, and a driven wall (a shell) need not say how it moves.
     double power = wall_contact_.reaction_power_correction();
     for (const Wall& wall : walls_) {
-        for (Index k = wall.first; k < wall.first + wall.count; ++k) {
-            power -= particles_.mass[k] * particles_.acceleration[k].dot(particles_.velocity[k]);
-        }
+        power -= particles::ordered_sum(wall.count, [&](Index k) {
+            const Index i = wall.first + k;
+            return particles_.mass[i] * particles_.acceleration[i].dot(particles_.velocity[i]);
+        });
     }
     return dt * power;
 }
@@ -39,14 +41,15 @@ double SphSolver::contact_energy_of(std::span<const char> flagged) const {
     const double support_squared = kernel_.support_radius() * kernel_.support_radius();
     const double w_reference = kernel_.value(options_.particle_spacing);
     const bool all = flagged.empty();
-    double sum = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : sum)
-    for (Index i = 0; i < n; ++i) {
+    // Row by row, the rows in fixed blocks (particles/ordered_sum.hpp): the same bits on any
+    // number of threads.
+    auto row_energy = [&](Index i) {
+        double sum = 0.0;
         const bool i_counts = all || flagged[i];
         // Pairs with images are held by the real particle's row only, so with images every row
         // is visited for them.
         if (!i_counts && images_.empty()) {
-            continue;
+            return sum;
         }
         for (const Index entry : neighbours_.neighbours(i)) {
             // Entries from n on are mirror images (outside a step the particle set holds none).
@@ -76,8 +79,9 @@ double SphSolver::contact_energy_of(std::span<const char> flagged) const {
                                                    std::sqrt(r2));
             }
         }
-    }
-    return sum;
+        return sum;
+    };
+    return particles::ordered_sum(n, row_energy, 0);
 }
 
 Vec3 SphSolver::linear_momentum() const {
@@ -101,37 +105,28 @@ Vec3 SphSolver::angular_momentum() const {
 }
 
 double SphSolver::kinetic_energy() const {
-    double sum = 0.0;
-    for (Index i = 0; i < particles_.size(); ++i) {
-        if (!is_wall_[i]) {
-            sum += 0.5 * particles_.mass[i] * particles_.velocity[i].squaredNorm();
-        }
-    }
-    return sum;
+    return particles::ordered_sum(particles_.size(), [&](Index i) {
+        return is_wall_[i] ? 0.0 : 0.5 * particles_.mass[i] * particles_.velocity[i].squaredNorm();
+    });
 }
 
 double SphSolver::internal_energy() const {
-    double sum = 0.0;
-    for (Index i = 0; i < particles_.size(); ++i) {
-        if (!is_wall_[i]) {
-            sum += particles_.mass[i] * particles_.internal_energy[i];
-        }
-    }
-    return sum;
+    return particles::ordered_sum(particles_.size(), [&](Index i) {
+        return is_wall_[i] ? 0.0 : particles_.mass[i] * particles_.internal_energy[i];
+    });
 }
 
 double SphSolver::elastic_strain_energy() const {
-    double sum = 0.0;
-    for (Index i = 0; i < particles_.size(); ++i) {
-        if (!is_wall_[i]) {
-            const Voigt6& s = particles_.stress[i];
-            const double volume = particles_.mass[i] / particles_.density[i];
-            const auto& elastic =
-                materials_[static_cast<std::size_t>(particles_.material_id[i])]->elastic();
-            sum += 0.5 * volume * s.dot(elastic.strain_from_stress(s));
+    return particles::ordered_sum(particles_.size(), [&](Index i) {
+        if (is_wall_[i]) {
+            return 0.0;
         }
-    }
-    return sum;
+        const Voigt6& s = particles_.stress[i];
+        const double volume = particles_.mass[i] / particles_.density[i];
+        const auto& elastic =
+            materials_[static_cast<std::size_t>(particles_.material_id[i])]->elastic();
+        return 0.5 * volume * s.dot(elastic.strain_from_stress(s));
+    });
 }
 
 } // namespace grainload::sph

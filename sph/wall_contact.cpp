@@ -111,6 +111,63 @@ Vec3 coulomb_force(const FrictionPair& pair, double load, double mass, const Vec
     return stuck ? stick : Vec3((pair.mu_kinetic * load / stick_norm) * stick);
 }
 
+/// What one wall does to particle i in a step of length dt.
+struct TouchForce {
+    Vec3 force = Vec3::Zero();         ///< the damper's and friction's, on the particle
+    Vec3 wall_velocity = Vec3::Zero(); ///< the wall's velocity at the particle
+    double friction_work = 0.0;
+    double damping_work = 0.0;
+    int sticking = 0; ///< 1 where friction held the particle, else 0
+    int slipping = 0; ///< 1 where it slid
+};
+
+/// The contact damper (zeta > 0) and Coulomb friction (`pair`, or none) of one wall touching
+/// particle i; the heat they make is taken off `heat` (the particle's, per unit mass times m).
+TouchForce touch_force(const ParticleSet& p, Index i, const WallTouch& touch,
+                       const FrictionPair* pair, double zeta, double dt, double& heat) {
+    TouchForce out;
+    const Vec3 direction = touch.weighted_normal.squaredNorm() > 0.0 ? touch.weighted_normal
+                                                                     : Vec3(-touch.colour_gradient);
+    const double direction_norm = direction.norm();
+    if (!(direction_norm > 0.0) || !(touch.weight_sum > 0.0)) {
+        return out;
+    }
+    const Vec3 normal = direction / direction_norm;
+    // The wall's velocity at x_i, what a particle stuck to it moves with: the kernel average of
+    // v_j + omega_j x (x_i - x_j) over its particles, exact for a rigid motion. (Their plain
+    // mean would be the velocity below the surface, wrong by omega x (x_i - x_j) on a turning
+    // wall.)
+    out.wall_velocity = touch.weighted_velocity / touch.weight_sum;
+    const Vec3 relative = p.velocity[i] - out.wall_velocity;
+    const double normal_speed = relative.dot(normal);
+    double load = touch.repulsion.dot(normal);
+    if (zeta > 0.0) {
+        // k_n = sum_j k_ij (e_ij . n)^2 >= 0, formed as n . K n: when every e_ij is nearly in
+        // the wall's plane (a grain beside a wall's edge) round-off leaves that form a few ulps
+        // of K below zero, and sqrt would make the damper, and the heat the grain books, NaN
+        // (tests/unit/sph/wall_damper_test.cpp).
+        const double k_n = std::max(normal.dot(touch.stiffness * normal), 0.0);
+        const double damper =
+            std::max(-2.0 * zeta * std::sqrt(k_n * p.mass[i]) * normal_speed, -load);
+        out.force += damper * normal;
+        load += damper;
+        heat -= damper * normal_speed;
+        out.damping_work = -damper * normal_speed * dt;
+    }
+    if (pair != nullptr && load > 0.0) {
+        const Vec3 slip = relative - normal_speed * normal;
+        const Vec3 a = p.acceleration[i] + out.force / p.mass[i];
+        bool stuck = false;
+        const Vec3 friction =
+            coulomb_force(*pair, load, p.mass[i], slip, a - a.dot(normal) * normal, dt, stuck);
+        (stuck ? out.sticking : out.slipping) = 1;
+        out.force += friction;
+        out.friction_work = -friction.dot(slip) * dt;
+        heat -= friction.dot(slip);
+    }
+    return out;
+}
+
 } // namespace
 
 void WallContact::apply(ParticleSet& p, const particles::NeighbourList& neighbours,
@@ -153,55 +210,15 @@ void WallContact::apply(ParticleSet& p, const particles::NeighbourList& neighbou
             double heat = 0.0;
             for (int k = 0; k < count; ++k) {
                 const WallTouch& touch = walls[k];
-                const Vec3 direction = touch.weighted_normal.squaredNorm() > 0.0
-                                           ? touch.weighted_normal
-                                           : Vec3(-touch.colour_gradient);
-                const double direction_norm = direction.norm();
-                if (!(direction_norm > 0.0) || !(touch.weight_sum > 0.0)) {
-                    continue;
-                }
-                const Vec3 normal = direction / direction_norm;
-                // The wall's velocity at x_i, what a particle stuck to it moves with: the kernel
-                // average of v_j + omega_j x (x_i - x_j) over its particles, exact for a rigid
-                // motion. (Their plain mean would be the velocity below the surface, wrong by
-                // omega x (x_i - x_j) on a turning wall.)
                 const Wall& wall = rigid_walls[static_cast<std::size_t>(touch.wall_index)];
-                const Vec3 wall_velocity = touch.weighted_velocity / touch.weight_sum;
-                const Vec3 relative = p.velocity[i] - wall_velocity;
-                const double normal_speed = relative.dot(normal);
-                double load = touch.repulsion.dot(normal);
-                Vec3 force = Vec3::Zero();
-                double friction_work = 0.0;
-                double damping_work = 0.0;
-                if (zeta > 0.0) {
-                    // k_n = sum_j k_ij (e_ij . n)^2 >= 0, formed as n . K n: when every e_ij is
-                    // nearly in the wall's plane (a grain beside a wall's edge) round-off leaves
-                    // that form a few ulps of K below zero, and sqrt would make the damper, and
-                    // the heat the grain books, NaN (tests/unit/sph/wall_damper_test.cpp).
-                    const double k_n = std::max(normal.dot(touch.stiffness * normal), 0.0);
-                    const double damper =
-                        std::max(-2.0 * zeta * std::sqrt(k_n * p.mass[i]) * normal_speed, -load);
-                    force += damper * normal;
-                    load += damper;
-                    heat -= damper * normal_speed;
-                    damping_work = -damper * normal_speed * dt;
-                }
-                const FrictionPair* pair = pair_of(options, p.body_id[i], wall.body_id);
-                if (pair != nullptr && load > 0.0) {
-                    const Vec3 slip = relative - normal_speed * normal;
-                    const Vec3 a = p.acceleration[i] + force / p.mass[i];
-                    bool stuck = false;
-                    const Vec3 friction = coulomb_force(*pair, load, p.mass[i], slip,
-                                                        a - a.dot(normal) * normal, dt, stuck);
-                    (stuck ? sticking : slipping) += 1;
-                    force += friction;
-                    friction_work = -friction.dot(slip) * dt;
-                    heat -= friction.dot(slip);
-                }
-                if (force.squaredNorm() > 0.0) {
-                    p.acceleration[i] += force / p.mass[i];
-                    records.push_back({i, touch.wall_index, force, touch.weight_sum, wall_velocity,
-                                       friction_work, damping_work});
+                const TouchForce t = touch_force(
+                    p, i, touch, pair_of(options, p.body_id[i], wall.body_id), zeta, dt, heat);
+                sticking += t.sticking;
+                slipping += t.slipping;
+                if (t.force.squaredNorm() > 0.0) {
+                    p.acceleration[i] += t.force / p.mass[i];
+                    records.push_back({i, touch.wall_index, t.force, touch.weight_sum,
+                                       t.wall_velocity, t.friction_work, t.damping_work});
                 }
             }
             heating_rate[static_cast<std::size_t>(i)] += heat / p.mass[i];

@@ -74,26 +74,59 @@ TEST(PairParts, HalvedListKeepsEachSameBodyPairOnceAndOtherPairsInBothRows) {
     EXPECT_EQ(static_cast<std::size_t>(s.neighbours.pair_entries()), half.size());
 }
 
-TEST(PairParts, BalancedRowsCoverTheRowsWithEvenEntries) {
+TEST(PairParts, SplitRowsGivesPartsOfEvenEntriesWhoseWindowsHoldEveryPairTheyAdd) {
     Scene s = make_scene(3);
     const Index n = s.particles.size();
-    Index longest = 0;
-    for (Index i = 0; i < n; ++i) {
-        longest = std::max(longest, static_cast<Index>(s.neighbours.neighbours(i).size()));
+    const std::vector<int> key = continuum_keys(s.particles);
+    // The list as built (both rows of each pair): no reach known, every window is the rest of
+    // the particles.
+    const PairParts whole = split_rows(s.neighbours, n, n, 3);
+    for (int r = 0; r < whole.count(); ++r) {
+        EXPECT_EQ(whole.reach[static_cast<std::size_t>(r)], n);
     }
-    for (const int parts : {1, 2, 3, 7}) {
-        const std::vector<Index> bounds = balanced_rows(s.neighbours, n, parts);
-        ASSERT_EQ(bounds.size(), static_cast<std::size_t>(parts) + 1);
-        EXPECT_EQ(bounds.front(), 0);
-        EXPECT_EQ(bounds.back(), n);
-        const double even = static_cast<double>(s.neighbours.pair_entries()) / parts;
-        for (int r = 0; r < parts; ++r) {
-            ASSERT_LE(bounds[r], bounds[r + 1]);
-            const Index part_entries =
-                s.neighbours.first_entry(bounds[r + 1]) - s.neighbours.first_entry(bounds[r]);
+    s.neighbours.halve_pairs(key);
+    ASSERT_TRUE(s.neighbours.halved());
+    auto row_cost = [&](Index i) { return static_cast<Index>(s.neighbours.neighbours(i).size()); };
+    Index total = 0;
+    Index costliest = 0;
+    for (Index i = 0; i < n; ++i) {
+        total += row_cost(i);
+        costliest = std::max(costliest, row_cost(i));
+    }
+    for (const int count : {1, 2, 3, 7, 8}) {
+        const PairParts parts = split_rows(s.neighbours, n, n, count);
+        ASSERT_EQ(parts.count(), count);
+        EXPECT_EQ(parts.bounds.front(), 0);
+        EXPECT_EQ(parts.bounds.back(), n);
+        const double even = static_cast<double>(total) / count;
+        for (int r = 0; r < count; ++r) {
+            const auto part = static_cast<std::size_t>(r);
+            ASSERT_LE(parts.bounds[part], parts.bounds[part + 1]);
+            Index cost = 0;
+            for (Index i = parts.bounds[part]; i < parts.bounds[part + 1]; ++i) {
+                cost += row_cost(i);
+                // The window holds the row itself and every particle its pairs add to.
+                EXPECT_LT(i, parts.reach[part]);
+                for (const auto j : s.neighbours.neighbours(i)) {
+                    if (key[i] == key[j]) {
+                        EXPECT_GE(j, parts.origin(r) == 0 ? 0 : parts.bounds[part]);
+                        EXPECT_LT(j, parts.reach[part]) << count << " parts, row " << i;
+                    }
+                }
+            }
             // Rows are whole: a part misses the even share by less than a row at each end.
-            EXPECT_NEAR(static_cast<double>(part_entries), even, 2.0 * static_cast<double>(longest))
-                << parts << " parts, part " << r;
+            EXPECT_NEAR(static_cast<double>(cost), even, 2.0 * static_cast<double>(costliest))
+                << count << " parts, part " << r;
+            // The window ends where the last pair of the rows up to the part's end reaches (a
+            // prefix maximum over the rows, computed here by brute force), not at the last
+            // particle: later parts zero and sum only that.
+            Index reach = parts.bounds[part + 1];
+            for (Index i = 0; i < parts.bounds[part + 1]; ++i) {
+                for (const auto j : s.neighbours.neighbours(i)) {
+                    reach = key[i] == key[j] ? std::max(reach, static_cast<Index>(j) + 1) : reach;
+                }
+            }
+            EXPECT_EQ(parts.reach[part], reach) << count << " parts, part " << r;
         }
     }
 }
