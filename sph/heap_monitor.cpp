@@ -1,8 +1,5 @@
 #include "sph/heap_monitor.hpp"
 
-#include "io/case_table.hpp"
-#include "sph/sph_case_reader.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -10,30 +7,10 @@
 
 namespace grainload::sph {
 
-namespace dim = io::dimension;
-
-namespace {
-
-double rest_fraction(const io::CaseTable& heap) {
-    const double fraction =
-        heap.number_or("rest_fraction", io::default_value(kHeapKeys, "rest_fraction"));
-    if (!(fraction > 0.0 && fraction < 1.0)) {
-        heap.fail("rest_fraction", "expected a fraction of the peak kinetic energy in (0, 1)");
-    }
-    return fraction;
-}
-
-} // namespace
-
-HeapMonitor::HeapMonitor(const io::CaseTable& heap, const std::vector<std::string>& body_names,
-                         const ParticleSet& particles, double spacing, const Vec3& gravity,
-                         int dimension)
-    : rest_(rest_fraction(heap)) {
-    body_ = body_index(heap, "body", body_names);
-    if (!(gravity.norm() > 0.0)) {
-        heap.fail("", "a heap is measured along gravity: expected a non-zero [case] gravity");
-    }
-    frame_.origin = heap.vector("origin", dim::kLength);
+HeapMonitor::HeapMonitor(const HeapSettings& settings, const ParticleSet& particles, double spacing,
+                         const Vec3& gravity, int dimension)
+    : body_(settings.body), rest_(settings.rest_fraction) {
+    frame_.origin = settings.origin;
     frame_.up = -gravity.normalized();
     frame_.spacing = spacing;
     frame_.dimension = dimension;

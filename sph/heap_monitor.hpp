@@ -11,10 +11,6 @@
 #include <string>
 #include <vector>
 
-namespace grainload::io {
-class CaseTable;
-}
-
 namespace grainload::sph {
 
 /// The keys of [sph.heap]: the heap figures of one body in summary.json.
@@ -26,14 +22,21 @@ inline constexpr std::array<io::KeySpec, 3> kHeapKeys{{
      "at rest: the body's kinetic energy below this fraction of its peak", 1e-4},
 }};
 
+/// [sph.heap] as read (read_heap_settings, sph/sph_case_reader.hpp).
+struct HeapSettings {
+    int body = -1;        ///< index of the [[sph.body]] measured
+    Vec3 origin;          ///< m: a point on the heap's axis (3D) or back face (2D)
+    double rest_fraction; ///< at rest below this fraction of the peak kinetic energy
+};
+
 /// The case's [sph.heap] table at work: follows one body's kinetic energy step by step and, at
 /// the end, measures the heap it formed (sph/heap_measures.hpp) for summary.json.
 class HeapMonitor {
   public:
-    /// Reads `body`, `origin` and `rest_fraction` of [sph.heap]; the floor level is the lowest
-    /// particle bottom of the body as generated. Gravity defines up, so it must not be zero.
-    HeapMonitor(const io::CaseTable& heap, const std::vector<std::string>& body_names,
-                const ParticleSet& particles, double spacing, const Vec3& gravity, int dimension);
+    /// The floor level is the lowest particle bottom of the body as generated; up is against
+    /// `gravity` (not zero: read_heap_settings refuses a heap without it).
+    HeapMonitor(const HeapSettings& settings, const ParticleSet& particles, double spacing,
+                const Vec3& gravity, int dimension);
 
     /// Add the body's kinetic energy at `time` (after a step) to the history.
     void record(double time, const ParticleSet& particles);

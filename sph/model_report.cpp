@@ -81,6 +81,12 @@ void SphModel::describe_model(std::vector<io::ModelChoice>& choices) const {
                       plane.at, plane.side > 0 ? "+" : "-");
         choices.push_back({std::string("symmetry ") + axis, text});
     }
+    for (const PeriodicAxis& periodic : solver_->options().periodic) {
+        const char* axis = periodic.axis == 0 ? "x" : (periodic.axis == 1 ? "y" : "z");
+        char text[96];
+        std::snprintf(text, sizeof text, "repeats from %g to %g m", periodic.min, periodic.max);
+        choices.push_back({std::string("periodic ") + axis, text});
+    }
     for (const particles::SinkSet::Sink& sink : sinks_->sinks()) {
         choices.push_back({"sink " + sink.name, sink.region.kind == io::Region::Kind::half_space
                                                     ? "half-space beyond a plane"

@@ -1,6 +1,5 @@
 #include "sph/probes.hpp"
 
-#include "io/case_table.hpp"
 #include "io/output_streams.hpp"
 #include "sph/stress_measures.hpp"
 
@@ -9,15 +8,15 @@
 
 namespace grainload::sph {
 
-std::unique_ptr<ProbeSet> ProbeSet::read(const io::CaseTable& sph, const ParticleSet& particles) {
-    const auto tables = sph.array_of_tables("probe");
-    if (tables.empty()) {
+std::unique_ptr<ProbeSet> ProbeSet::place(const std::vector<ProbeSettings>& settings,
+                                          const ParticleSet& particles) {
+    if (settings.empty()) {
         return nullptr;
     }
     std::unique_ptr<ProbeSet> set(new ProbeSet(particles));
     const auto& p = particles;
-    for (const auto& table : tables) {
-        const Vec3 x = table.vector("position", io::dimension::kLength);
+    for (const ProbeSettings& probe : settings) {
+        const Vec3& x = probe.position;
         Index nearest = -1;
         double best = std::numeric_limits<double>::infinity();
         for (Index i = 0; i < p.size(); ++i) {
@@ -27,7 +26,7 @@ std::unique_ptr<ProbeSet> ProbeSet::read(const io::CaseTable& sph, const Particl
                 nearest = i;
             }
         }
-        set->probes_.emplace_back(table.string("name"), nearest);
+        set->probes_.emplace_back(probe.name, nearest);
     }
     return set;
 }

@@ -23,14 +23,21 @@ inline constexpr std::array<io::KeySpec, 2> kProbeKeys{{
     {"position", "length vector", "", "the probe follows the particle nearest this point at t = 0"},
 }};
 
+/// One [[sph.probe]] as read (read_probe_settings, sph/sph_case_reader.hpp).
+struct ProbeSettings {
+    std::string name;
+    Vec3 position; ///< m: the probe follows the material particle nearest it at t = 0
+};
+
 /// The [[sph.probe]] tables as one scene part: each probe follows the material particle
 /// nearest its position at t = 0 and writes its stress, von Mises stress, pressure and plastic
 /// strain to probes.csv at every output instant, until that particle leaves through a sink.
 class ProbeSet final : public particles::ScenePart {
   public:
-    /// The probes of `sph` on `particles` (which the part observes from then on); null when the
-    /// case has none.
-    static std::unique_ptr<ProbeSet> read(const io::CaseTable& sph, const ParticleSet& particles);
+    /// The probes `settings` placed on `particles` (which the part observes from then on); null
+    /// when there are none.
+    static std::unique_ptr<ProbeSet> place(const std::vector<ProbeSettings>& settings,
+                                           const ParticleSet& particles);
 
     std::string_view name() const override { return "sph.probe"; }
     void after_removal(std::span<const Index> new_index) override;

@@ -13,6 +13,26 @@ namespace grainload::sph {
 
 namespace dim = io::dimension;
 
+namespace {
+
+/// [sph.artificial_viscosity]: alpha, beta and the sound speed.
+ArtificialViscosity read_artificial_viscosity(const io::CaseTable& table) {
+    ArtificialViscosity viscosity;
+    viscosity.alpha =
+        table.number_or("alpha", io::default_value(kArtificialViscosityKeys, "alpha"));
+    viscosity.beta = table.number_or("beta", io::default_value(kArtificialViscosityKeys, "beta"));
+    if (viscosity.alpha < 0.0 || viscosity.beta < 0.0) {
+        table.fail("", "expected alpha >= 0 and beta >= 0");
+    }
+    viscosity.sound_speed = table.quantity_or("sound_speed", dim::kVelocity, 0.0);
+    if (!(viscosity.sound_speed >= 0.0)) {
+        table.fail("sound_speed", "expected a speed >= 0 (0: the materials' own)");
+    }
+    return viscosity;
+}
+
+} // namespace
+
 SphOptions read_sph_options(const io::CaseTable& sph, int dimension, double spacing,
                             const Vec3& gravity) {
     SphOptions options; // its defaults are the case file's
@@ -55,17 +75,7 @@ SphOptions read_sph_options(const io::CaseTable& sph, int dimension, double spac
         }
     }
     if (const auto viscosity = sph.optional_table("artificial_viscosity")) {
-        options.viscosity.alpha =
-            viscosity->number_or("alpha", io::default_value(kArtificialViscosityKeys, "alpha"));
-        options.viscosity.beta =
-            viscosity->number_or("beta", io::default_value(kArtificialViscosityKeys, "beta"));
-        if (options.viscosity.alpha < 0.0 || options.viscosity.beta < 0.0) {
-            viscosity->fail("", "expected alpha >= 0 and beta >= 0");
-        }
-        options.viscosity.sound_speed = viscosity->quantity_or("sound_speed", dim::kVelocity, 0.0);
-        if (!(options.viscosity.sound_speed >= 0.0)) {
-            viscosity->fail("sound_speed", "expected a speed >= 0 (0: the materials' own)");
-        }
+        options.viscosity = read_artificial_viscosity(*viscosity);
     }
     if (const auto stress = sph.optional_table("artificial_stress")) {
         if (options.formulation == Formulation::total_lagrangian) {
@@ -239,6 +249,30 @@ std::vector<Wall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& partic
         walls.push_back(std::move(wall));
     }
     return walls;
+}
+
+HeapSettings read_heap_settings(const io::CaseTable& heap,
+                                const std::vector<std::string>& body_names, const Vec3& gravity) {
+    HeapSettings settings;
+    settings.body = body_index(heap, "body", body_names);
+    if (!(gravity.norm() > 0.0)) {
+        heap.fail("", "a heap is measured along gravity: expected a non-zero [case] gravity");
+    }
+    settings.origin = heap.vector("origin", dim::kLength);
+    settings.rest_fraction =
+        heap.number_or("rest_fraction", io::default_value(kHeapKeys, "rest_fraction"));
+    if (!(settings.rest_fraction > 0.0 && settings.rest_fraction < 1.0)) {
+        heap.fail("rest_fraction", "expected a fraction of the peak kinetic energy in (0, 1)");
+    }
+    return settings;
+}
+
+std::vector<ProbeSettings> read_probe_settings(const io::CaseTable& sph) {
+    std::vector<ProbeSettings> probes;
+    for (const auto& table : sph.array_of_tables("probe")) {
+        probes.push_back({table.string("name"), table.vector("position", dim::kLength)});
+    }
+    return probes;
 }
 
 int body_index(const io::CaseTable& table, const std::string& key,

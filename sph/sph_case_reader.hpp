@@ -1,9 +1,12 @@
 #pragma once
-// The readers of a case's [sph] tables: solver options, walls, clamps, friction, symmetry.
+// The readers of a case's [sph] tables: solver options, walls, clamps, friction, symmetry,
+// periodic axes.
 
 #include "io/key_spec.hpp"
 #include "particles/phase_sequence.hpp"
+#include "sph/heap_monitor.hpp"
 #include "sph/particle_set.hpp"
+#include "sph/probes.hpp"
 #include "sph/rigid_wall.hpp"
 #include "sph/sph_options.hpp"
 
@@ -148,6 +151,14 @@ void read_initial_stress(const io::CaseTable& body, ParticleSet& particles, Inde
 int body_index(const io::CaseTable& table, const std::string& key,
                const std::vector<std::string>& body_names);
 
+/// [sph.heap]: `body` by name, `origin`, `rest_fraction` in (0, 1); refused without gravity (the
+/// heap is measured along it).
+HeapSettings read_heap_settings(const io::CaseTable& heap,
+                                const std::vector<std::string>& body_names, const Vec3& gravity);
+
+/// The [[sph.probe]] tables: `name` and `position` each.
+std::vector<ProbeSettings> read_probe_settings(const io::CaseTable& sph);
+
 /// The [[sph.friction]] pairs: `body` and `wall` by name, `mu_static` >= `mu_kinetic` >= 0.
 /// Body ids are indices into `body_names`; walls carry their own.
 std::vector<FrictionPair> read_friction_pairs(const io::CaseTable& sph,
@@ -164,5 +175,16 @@ std::vector<SymmetryPlane>
 read_symmetry_planes(const io::CaseTable& sph, const ParticleSet& particles,
                      std::vector<Wall>& walls, const std::vector<std::string>& body_names,
                      int dimension, double spacing, double support_radius);
+
+/// The [[sph.periodic]] axes (`axis` x, y or z, `min`, `max`; at most one per axis, none on an
+/// axis of a symmetry plane, z only in 3D), checked against the scene built so far: the period
+/// longer than twice `search_radius`, every body and wall inside [min, max), and the particles
+/// of a body or wall that reaches both ends at least half its lattice step apart across the
+/// seam.
+std::vector<PeriodicAxis> read_periodic_axes(const io::CaseTable& sph, const ParticleSet& particles,
+                                             const std::vector<Wall>& walls,
+                                             const std::vector<std::string>& body_names,
+                                             const std::vector<SymmetryPlane>& planes,
+                                             int dimension, double search_radius);
 
 } // namespace grainload::sph

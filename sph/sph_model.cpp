@@ -95,9 +95,12 @@ void SphModel::build(const io::CaseTable& root) {
         root.fail("phase", "phases act on the SPH solver's walls, sources and sinks: expected "
                            "interactions = true");
     }
-    if (sph.has("symmetry") && !interactions_) {
-        sph.fail("symmetry", "mirror images act through the particle interactions: expected "
-                             "interactions = true with [[sph.symmetry]]");
+    for (const char* table : {"symmetry", "periodic"}) {
+        if (sph.has(table) && !interactions_) {
+            sph.fail(table, std::string("ghost images act through the particle interactions: "
+                                        "expected interactions = true with [[sph.") +
+                                table + "]]");
+        }
     }
     if (!added_walls_.empty() && !interactions_) {
         sph.fail("interactions", "walls coupled to shells need the SPH solver: expected "
@@ -105,7 +108,7 @@ void SphModel::build(const io::CaseTable& root) {
     }
     if (interactions_) {
         build_solver(sph);
-        if (auto probes = ProbeSet::read(sph, solver_->particles())) {
+        if (auto probes = ProbeSet::place(read_probe_settings(sph), solver_->particles())) {
             parts_.add(std::move(probes));
         }
         check_gravity_strain(root, particles(), *materials_, body_names_, gravity_, spacing_,
@@ -131,9 +134,9 @@ void SphModel::build(const io::CaseTable& root) {
         sph.fail("wall_map", "wall loads come from the SPH solver: expected interactions = true");
     }
     if (const auto heap = sph.optional_table("heap")) {
-        parts_.add(
-            heap_part(HeapMonitor(*heap, body_names_, particles(), spacing_, gravity_, dimension_),
-                      particles()));
+        parts_.add(heap_part(HeapMonitor(read_heap_settings(*heap, body_names_, gravity_),
+                                         particles(), spacing_, gravity_, dimension_),
+                             particles()));
     }
     initial_position_ = particles().position;
     initial_velocity_ = particles().velocity;
@@ -219,13 +222,7 @@ void SphModel::build_solver(const io::CaseTable& sph) {
     for (const FrictionPair& pair : added_wall_friction(walls)) {
         options.friction.push_back(pair);
     }
-    options.symmetry = read_symmetry_planes(sph, particles_, walls, body_names_, dimension_,
-                                            spacing_, kernel.support_radius());
-    if (!options.symmetry.empty() && options.formulation == Formulation::total_lagrangian) {
-        sph.fail("symmetry", "mirror images are found anew as particles move, which the "
-                             "total-Lagrangian reference pairs do not do: expected formulation = "
-                             "\"updated_lagrangian\" with [[sph.symmetry]]");
-    }
+    read_ghost_boundaries(sph, walls, kernel.support_radius(), options);
     if (!options.friction.empty() && !(options.contact.stiffness > 0.0)) {
         sph.fail("friction", "wall friction acts through the contact force: expected an "
                              "[sph.contact] table with a stiffness");
@@ -247,6 +244,24 @@ void SphModel::build_solver(const io::CaseTable& sph) {
             sph.fail("time_step", message.str());
         }
     }
+}
+
+void SphModel::read_ghost_boundaries(const io::CaseTable& sph, std::vector<Wall>& walls,
+                                     double support_radius, SphOptions& options) const {
+    for (const char* table : {"symmetry", "periodic"}) {
+        if (sph.has(table) && options.formulation == Formulation::total_lagrangian) {
+            sph.fail(table, std::string("ghost images are found anew as particles move, which "
+                                        "the total-Lagrangian reference pairs do not do: "
+                                        "expected formulation = \"updated_lagrangian\" with "
+                                        "[[sph.") +
+                                table + "]]");
+        }
+    }
+    options.symmetry = read_symmetry_planes(sph, particles_, walls, body_names_, dimension_,
+                                            spacing_, support_radius);
+    options.periodic =
+        read_periodic_axes(sph, particles_, walls, body_names_, options.symmetry, dimension_,
+                           support_radius + options.verlet_skin_factor * options.smoothing_length);
 }
 
 const std::string& SphModel::body_name(int body_id) const {

@@ -142,6 +142,11 @@ class SphModel final : public io::Stepper, public io::Reporter {
                          const std::vector<RoundedSize>& rounded, double spacing);
     void compute_accelerations();
     void build_solver(const io::CaseTable& sph);
+    /// The ghosts' boundaries of `options`: [[sph.symmetry]] planes and [[sph.periodic]] axes,
+    /// checked against the scene built so far (walls are marked with the planes they are
+    /// mirrored across); refused with the total-Lagrangian formulation.
+    void read_ghost_boundaries(const io::CaseTable& sph, std::vector<Wall>& walls,
+                               double support_radius, SphOptions& options) const;
     const std::string& body_name(int body_id) const;
     void append_wall_blocks(io::Frame& frame) const;
     void write_output_rows(double time) const;

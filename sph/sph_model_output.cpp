@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <span>
 #include <sstream>
 #include <utility>
 
@@ -27,6 +28,9 @@ void SphModel::write_output_rows(double time) const {
 
 void SphModel::append_blocks(io::Frame& frame) const {
     const auto& p = particles();
+    const std::span<const PeriodicAxis> periodic =
+        solver_ ? std::span<const PeriodicAxis>(solver_->options().periodic)
+                : std::span<const PeriodicAxis>();
     for (std::size_t b = 0; b < body_names_.size(); ++b) {
         io::Block block;
         block.name = body_names_[b];
@@ -46,7 +50,7 @@ void SphModel::append_blocks(io::Frame& frame) const {
                 continue;
             }
             block.points.push_back(p.position[i]);
-            const Vec3 u = p.position[i] - initial_position_[i];
+            const Vec3 u = nearest_image(p.position[i] - initial_position_[i], periodic);
             velocity.values.insert(velocity.values.end(), p.velocity[i].begin(),
                                    p.velocity[i].end());
             displacement.values.insert(displacement.values.end(), u.begin(), u.end());

@@ -79,6 +79,9 @@ struct SphOptions {
     double verlet_skin_factor = 0.1; ///< Verlet skin as a fraction of h (0: rebuild each step)
     /// Mirror planes ([[sph.symmetry]]), at most one per axis; empty: none.
     std::vector<SymmetryPlane> symmetry;
+    /// Periodic directions ([[sph.periodic]]), at most one per axis and none on an axis with a
+    /// symmetry plane; empty: none.
+    std::vector<PeriodicAxis> periodic;
 };
 
 } // namespace grainload::sph

@@ -24,7 +24,7 @@ constexpr std::string_view kGuide = "docs/user-guide/sph.md";
 constexpr std::string_view kMeshHeading = "### Surface mesh keys";
 constexpr std::string_view kDeckHeading = "## Particles from an LS-DYNA deck";
 
-const std::array<io::KeyTable, 26> kTables{{
+const std::array<io::KeyTable, 27> kTables{{
     {"sph", false, "the SPH solver: kernel, smoothing length, step", kSphKeys, kGuide,
      "### `[sph]`"},
     {"sph.artificial_viscosity", false, "Monaghan's artificial viscosity", kArtificialViscosityKeys,
@@ -72,6 +72,8 @@ const std::array<io::KeyTable, 26> kTables{{
      particles::kSettleKeys, kGuide, "## Settling: `[sph.settle]`"},
     {"sph.symmetry", true, "a mirror plane: the scene is a half or a quarter of the whole",
      kSymmetryKeys, kGuide, "## Symmetry planes: `[[sph.symmetry]]`"},
+    {"sph.periodic", true, "a periodic direction: the scene repeats along an axis", kPeriodicKeys,
+     kGuide, "## Periodic directions: `[[sph.periodic]]`"},
     {"sph.wall_map", true, "the wall pressure and friction in bins over a wall's surface",
      kWallMapKeys, kGuide, "## `[[sph.wall_map]]`"},
     {"phase", true, "a named stage of the run (fill, settle, discharge) that starts on an event",

@@ -55,13 +55,14 @@ SphSolver::SphSolver(ParticleSet particles, MaterialList materials, SphOptions o
         density_floor_.push_back(kLoosestDensityFraction * material->density());
     }
     if (options_.formulation == Formulation::total_lagrangian) {
-        if (!options_.symmetry.empty()) {
-            throw std::invalid_argument("SphSolver: symmetry planes need the updated-Lagrangian "
-                                        "formulation (its neighbours are found anew)");
+        if (has_images()) {
+            throw std::invalid_argument("SphSolver: symmetry planes and periodic axes need the "
+                                        "updated-Lagrangian formulation (its neighbours are "
+                                        "found anew)");
         }
         total_lagrangian_.emplace(particles_, kernel_);
     }
-    plane_at_ = plane_coordinates(options_.symmetry);
+    frame_ = image_frame(options_.symmetry, options_.periodic);
     wall_filter_ = wall_body_filter(walls_);
     hold_clamped();
     rebuild_neighbours(particles_.position);
@@ -161,7 +162,7 @@ void SphSolver::add_particles(std::span<const NewParticle> arrivals, bool book_e
 }
 
 void SphSolver::refresh_neighbours() {
-    if (options_.symmetry.empty()) {
+    if (!has_images()) {
         if (neighbours_.update(particles_.position, is_wall_)) {
             filter_pairs(particles_.body_id, particles_.size());
         }
@@ -171,27 +172,34 @@ void SphSolver::refresh_neighbours() {
     // is stale the images are selected anew from the particles' current positions.
     if (neighbours_.stale(particles_.position)) {
         detach_images();
+        wrap_periodic(particles_.position, is_wall_, options_.periodic);
         rebuild_neighbours(particles_.position);
         attach_images();
     }
 }
 
 void SphSolver::rebuild_neighbours(std::span<const Vec3> positions) {
-    if (options_.symmetry.empty()) {
+    if (!has_images()) {
         neighbours_.update(positions, is_wall_, true);
         filter_pairs(particles_.body_id, particles_.size());
         return;
     }
-    // An image within the support of a particle is within the support of the plane, and during
-    // the list's life a particle moves less than half the skin: images of the particles within
-    // support + skin of a plane cover every pair the list can need.
+    // An image within the support of a particle is within the support of the plane (or of the
+    // periodic end), and during the list's life a particle moves less than half the skin:
+    // images of the particles within support + skin of a plane or an end cover every pair the
+    // list can need.
     const auto n = static_cast<Index>(positions.size());
     std::vector<MirrorMask> allowed(static_cast<std::size_t>(n), MirrorMask{7});
-    for (const Wall& wall : walls_) {
-        std::fill_n(allowed.begin() + wall.first, wall.count, wall.mirror_planes);
+    MirrorMask periodic_axes = 0;
+    for (const PeriodicAxis& axis : options_.periodic) {
+        periodic_axes = static_cast<MirrorMask>(periodic_axes | (1U << axis.axis));
     }
-    images_ =
-        select_images(options_.symmetry, positions, is_wall_, allowed, neighbours_.search_radius());
+    for (const Wall& wall : walls_) {
+        std::fill_n(allowed.begin() + wall.first, wall.count,
+                    static_cast<MirrorMask>(wall.mirror_planes | periodic_axes));
+    }
+    images_ = select_images(options_.symmetry, options_.periodic, positions, is_wall_, allowed,
+                            neighbours_.search_radius());
     wall_image_count_ = 0;
     while (wall_image_count_ < static_cast<Index>(images_.size()) &&
            is_wall_[images_[wall_image_count_].source]) {
@@ -199,8 +207,8 @@ void SphSolver::rebuild_neighbours(std::span<const Vec3> positions) {
     }
     std::vector<Vec3> all(positions.begin(), positions.end());
     all.reserve(all.size() + images_.size());
-    for (const MirrorImage& image : images_) {
-        all.push_back(mirror_position(positions[image.source], image.mask, plane_at_));
+    for (const GhostImage& image : images_) {
+        all.push_back(image_position(positions[image.source], image, frame_));
     }
     frozen_.assign(is_wall_.begin(), is_wall_.end());
     frozen_.resize(all.size(), char{1});
@@ -209,7 +217,7 @@ void SphSolver::rebuild_neighbours(std::span<const Vec3> positions) {
     neighbours_.update(all, frozen_, true, n + wall_image_count_);
     // An image belongs to its source's body or wall.
     std::vector<int> group(particles_.body_id.begin(), particles_.body_id.begin() + n);
-    for (const MirrorImage& image : images_) {
+    for (const GhostImage& image : images_) {
         group.push_back(particles_.body_id[image.source]);
     }
     filter_pairs(group, n);
@@ -232,19 +240,19 @@ void SphSolver::filter_pairs(std::span<const int> group, Index real) {
 }
 
 void SphSolver::attach_images(bool kinematics) {
-    if (options_.symmetry.empty()) {
+    if (!has_images()) {
         return;
     }
     if (!images_attached_) {
         real_count_ = particles_.size();
         images_attached_ = true;
     }
-    write_images(particles_, real_count_, images_, plane_at_);
+    write_images(particles_, real_count_, images_, frame_);
     wall_images_.first = real_count_;
     wall_images_.normals.resize(static_cast<std::size_t>(wall_image_count_));
     wall_images_.angular_velocities.resize(static_cast<std::size_t>(wall_image_count_));
     for (Index k = 0; k < wall_image_count_; ++k) {
-        const MirrorImage& image = images_[k];
+        const GhostImage& image = images_[k];
         const Wall& wall = walls_[static_cast<std::size_t>(particles_.wall_id[image.source])];
         const auto local = static_cast<std::size_t>(image.source - wall.first);
         wall_images_.normals[k] =
@@ -256,7 +264,7 @@ void SphSolver::attach_images(bool kinematics) {
     }
     auto& speed = force_inputs_.sound_speed;
     speed.resize(static_cast<std::size_t>(real_count_));
-    for (const MirrorImage& image : images_) {
+    for (const GhostImage& image : images_) {
         speed.push_back(speed[static_cast<std::size_t>(image.source)]);
     }
     auto& correction = force_inputs_.gradient_correction;
@@ -284,7 +292,7 @@ void SphSolver::fold_wall_image_loads() {
     // Serial: the images of one source across several planes add to the same particle.
     ParticleSet& p = particles_;
     for (Index k = 0; k < wall_image_count_; ++k) {
-        const MirrorImage& image = images_[k];
+        const GhostImage& image = images_[k];
         p.acceleration[image.source] += mirror_vector(p.acceleration[real_count_ + k], image.mask);
     }
 }
@@ -435,8 +443,8 @@ void SphSolver::step(double dt) {
             wall.driver->move(p, wall, time_, dt);
         }
     }
-    // Mirror images (symmetry planes) join the particle set for the passes of this step: they
-    // take part in every neighbour sum but are never integrated, and are copied from their
+    // Images (symmetry planes, periodic axes) join the particle set for the passes of this step:
+    // they take part in every neighbour sum but are never integrated, and are copied from their
     // sources after each update of the fields the passes read.
     attach_images();
     refresh_neighbours();

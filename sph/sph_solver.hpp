@@ -91,16 +91,16 @@ class SphSolver {
     const ParticleSet& particles() const { return particles_; }
     const SphOptions& options() const { return options_; }
     const SmoothingKernel& kernel() const { return kernel_; }
-    /// With symmetry planes the list's rows beyond particles().size() are empty and its entries
-    /// there name mirror images (mirror_images()), which exist in the particle set only during
-    /// a step.
+    /// With symmetry planes or periodic axes the list's rows beyond particles().size() are empty
+    /// and its entries there name ghost images (ghost_images()), which exist in the particle set
+    /// only during a step.
     const particles::NeighbourList& neighbours() const { return neighbours_; }
-    /// The positions of the particles (mirror images left out) at the last list build, which a
+    /// The positions of the particles (images left out) at the last list build, which a
     /// checkpoint stores: restart() selects the same images from them and rebuilds the same list.
     std::span<const Vec3> neighbour_reference() const;
-    /// The mirror images of the current neighbour list: entry k is particle size() + k of the
-    /// list (sph/symmetry.hpp); empty without symmetry planes.
-    const std::vector<MirrorImage>& mirror_images() const { return images_; }
+    /// The ghost images of the current neighbour list: entry k is particle size() + k of the
+    /// list (sph/symmetry.hpp); empty without symmetry planes and periodic axes.
+    const std::vector<GhostImage>& ghost_images() const { return images_; }
     /// The per-particle inputs of the force pass (sound speeds of the viscosity, ...).
     const ForceInputs& force_inputs() const { return force_inputs_; }
     std::vector<Wall>& walls() { return walls_; }
@@ -130,7 +130,8 @@ class SphSolver {
   private:
     /// rho += dt drho/dt for the material particles, floored at half the material density.
     void integrate_density(double dt, Index n);
-    /// Rebuild the list if stale (mirror images attached, when there are planes).
+    /// Rebuild the list if stale (images attached, when there are planes or periodic axes;
+    /// particles that left a periodic box wrapped back into it first).
     void refresh_neighbours();
     /// After a rebuild over `group` (each position's body or wall; the first `real` are
     /// particles, the others images_): leave out
@@ -138,15 +139,16 @@ class SphSolver {
     /// one row (NeighbourList::halve_pairs).
     void filter_pairs(std::span<const int> group, Index real);
     /// Rebuild the list at `positions` (of the particles without images): with symmetry planes
-    /// the images are selected anew, within the list's search radius of a plane.
+    /// or periodic axes the images are selected anew, within the list's search radius of a
+    /// plane or a periodic end.
     void rebuild_neighbours(std::span<const Vec3> positions);
-    /// Append the mirror images to the particle set (and the sound speeds), copied from their
-    /// sources; with `kinematics` also the gradient correction. No-op without planes.
+    /// Append the ghost images to the particle set (and the sound speeds), copied from their
+    /// sources; with `kinematics` also the gradient correction. No-op without images.
     void attach_images(bool kinematics = false);
-    /// Drop the mirror images again: outside a step the particle set holds no ghosts.
+    /// Drop the images again: outside a step the particle set holds no ghosts.
     void detach_images();
     /// Add the loads on the images of wall particles, mirrored, to their sources: the load a
-    /// real wall particle gets from the images of grains in the full model.
+    /// real wall particle gets from the images of grains in the full (or repeated) model.
     void fold_wall_image_loads();
     void compute_kinematics();
     void compute_forces(double dt);
@@ -194,11 +196,13 @@ class SphSolver {
     double contact_damping_power_ = 0.0;
     /// Each particle's specific plastic work of the step (update_stresses), J/kg.
     std::vector<double> plastic_work_;
-    /// Mirror images of the symmetry planes (options_.symmetry), selected at each list build.
-    std::vector<MirrorImage> images_;
+    bool has_images() const { return !options_.symmetry.empty() || !options_.periodic.empty(); }
+    /// Images of the symmetry planes and periodic axes (options_.symmetry, options_.periodic),
+    /// selected at each list build.
+    std::vector<GhostImage> images_;
     Index wall_image_count_ = 0; ///< images_ of wall particles, which come first
     WallImages wall_images_;     ///< their normals and angular velocities while attached
-    Vec3 plane_at_ = Vec3::Zero();
+    ImageFrame frame_;           ///< where the images stand (planes, periods)
     /// is_wall_ followed by a 1 per image: images pair neither with walls nor with each other;
     /// images of grains have no list row, images of wall particles one (of real grains).
     std::vector<char> frozen_;

@@ -52,10 +52,10 @@ double SphSolver::contact_energy_of(std::span<const char> flagged) const {
             return sum;
         }
         for (const Index entry : neighbours_.neighbours(i)) {
-            // Entries from n on are mirror images (outside a step the particle set holds none).
+            // Entries from n on are images (outside a step the particle set holds none).
             const bool image = entry >= n;
-            const MirrorImage mirror = image ? images_[entry - n] : MirrorImage{entry, 0};
-            const Index j = mirror.source;
+            const GhostImage ghost = image ? images_[entry - n] : GhostImage{entry};
+            const Index j = ghost.source;
             const bool j_counts = all || flagged[j];
             // The list holds each pair of two bodies twice (i in j's list and j in i's; only a
             // pair of one body is halved, sph/pair_parts.hpp): count it once, from a flagged
@@ -70,8 +70,7 @@ double SphSolver::contact_energy_of(std::span<const char> flagged) const {
             // pair of the wall's real particle and the image of i, which no row holds: all of
             // it is this side's.
             const double share = image && !is_wall_[j] ? 0.5 : 1.0;
-            const Vec3 xj =
-                image ? mirror_position(p.position[j], mirror.mask, plane_at_) : p.position[j];
+            const Vec3 xj = image ? image_position(p.position[j], ghost, frame_) : p.position[j];
             const double r2 = (p.position[i] - xj).squaredNorm();
             if (r2 < support_squared && r2 > 0.0) {
                 const double volumes = p.mass[i] / p.density[i] * p.mass[j] / p.density[j];

@@ -1,4 +1,5 @@
-// [[sph.symmetry]]: the mirror planes of half and quarter models.
+// [[sph.symmetry]] and [[sph.periodic]]: the mirror planes of half and quarter models, and the
+// periodic directions of repeated ones.
 #include "io/case_table.hpp"
 #include "sph/sph_case_reader.hpp"
 
@@ -12,6 +13,13 @@ namespace grainload::sph {
 namespace {
 
 constexpr const char* kAxisNames[] = {"x", "y", "z"};
+
+/// The table's `axis`: x, y or (in 3D) z, as 0, 1, 2.
+int read_axis(const io::CaseTable& table, int dimension) {
+    const std::string name =
+        dimension == 3 ? table.choice("axis", {"x", "y", "z"}) : table.choice("axis", {"x", "y"});
+    return name == "x" ? 0 : (name == "y" ? 1 : 2);
+}
 
 std::string plane_text(const SymmetryPlane& plane) {
     std::ostringstream text;
@@ -107,7 +115,116 @@ void check_walls(const io::CaseTable& table, const SymmetryPlane& plane,
     }
 }
 
+/// The particles of one body or one wall along a periodic axis: where they start and end, and
+/// the smallest step between two of their coordinates (0: all at one coordinate).
+struct AxisLattice {
+    Extent extent;
+    double step = 0.0;
+};
+
+AxisLattice axis_lattice(std::vector<double> coordinates) {
+    AxisLattice lattice;
+    std::sort(coordinates.begin(), coordinates.end());
+    for (std::size_t k = 0; k < coordinates.size(); ++k) {
+        lattice.extent.add(coordinates[k]);
+        const double step = k > 0 ? coordinates[k] - coordinates[k - 1] : 0.0;
+        if (step > 1e-9 * std::abs(coordinates[k]) + 1e-15 &&
+            (lattice.step == 0.0 || step < lattice.step)) {
+            lattice.step = step;
+        }
+    }
+    return lattice;
+}
+
+/// Every body and wall inside [min, max) along the axis, and a lattice that reaches both ends
+/// continued across them: its particles at the two ends no closer across the seam than half its
+/// step (closer, they would overlap in the repeated scene).
+void check_periodic_lattices(const io::CaseTable& table, const PeriodicAxis& axis,
+                             const ParticleSet& particles, const std::vector<Wall>& walls,
+                             const std::vector<std::string>& body_names) {
+    std::vector<std::vector<double>> body_x(body_names.size());
+    for (Index i = 0; i < particles.size(); ++i) {
+        if (!particles.is_wall(i)) {
+            body_x[static_cast<std::size_t>(particles.body_id[i])].push_back(
+                particles.position[i][axis.axis]);
+        }
+    }
+    auto check = [&](const std::string& what, std::vector<double> x) {
+        const AxisLattice lattice = axis_lattice(std::move(x));
+        const Extent& e = lattice.extent;
+        if (e.empty()) {
+            return;
+        }
+        std::ostringstream where;
+        where << what << " spans " << kAxisNames[axis.axis] << " from " << e.low << " to " << e.high
+              << " m";
+        if (e.low < axis.min || e.high >= axis.max) {
+            table.fail("min", where.str() + ": expected it inside the period [" +
+                                  std::to_string(axis.min) + ", " + std::to_string(axis.max) +
+                                  ") m");
+        }
+        const double seam = (e.low - axis.min) + (axis.max - e.high);
+        if (lattice.step > 0.0 && seam < 0.5 * lattice.step) {
+            std::ostringstream message;
+            message << where.str() << " in steps of " << lattice.step
+                    << " m: its particles at the two ends are " << seam
+                    << " m apart across the periodic seam; expected at least half a step (draw "
+                       "it from min + step/2 to max - step/2, so that its lattice continues "
+                       "across the seam)";
+            table.fail("max", message.str());
+        }
+    };
+    for (std::size_t b = 0; b < body_names.size(); ++b) {
+        check("body \"" + body_names[b] + "\"", body_x[b]);
+    }
+    for (const Wall& wall : walls) {
+        std::vector<double> x;
+        for (Index k = wall.first; k < wall.first + wall.count; ++k) {
+            x.push_back(particles.position[k][axis.axis]);
+        }
+        check("wall \"" + wall.name + "\"", std::move(x));
+    }
+}
+
 } // namespace
+
+std::vector<PeriodicAxis> read_periodic_axes(const io::CaseTable& sph, const ParticleSet& particles,
+                                             const std::vector<Wall>& walls,
+                                             const std::vector<std::string>& body_names,
+                                             const std::vector<SymmetryPlane>& planes,
+                                             int dimension, double search_radius) {
+    std::vector<PeriodicAxis> periodic;
+    for (const auto& table : sph.array_of_tables("periodic")) {
+        PeriodicAxis axis;
+        axis.axis = read_axis(table, dimension);
+        const std::string name = kAxisNames[axis.axis];
+        for (const PeriodicAxis& other : periodic) {
+            if (other.axis == axis.axis) {
+                table.fail("axis", "a periodic axis " + name +
+                                       " is already declared: expected at most one per axis");
+            }
+        }
+        for (const SymmetryPlane& plane : planes) {
+            if (plane.axis == axis.axis) {
+                table.fail("axis", "a symmetry plane normal to " + name +
+                                       " is declared: expected a periodic axis without one");
+            }
+        }
+        axis.min = table.quantity("min", io::dimension::kLength);
+        axis.max = table.quantity("max", io::dimension::kLength);
+        // No particle may be near both ends, whose images it would need at once.
+        if (!(axis.period() > 2.0 * search_radius)) {
+            std::ostringstream message;
+            message << "the period max - min = " << axis.period()
+                    << " m: expected more than twice the neighbour search radius, "
+                    << 2.0 * search_radius << " m";
+            table.fail("max", message.str());
+        }
+        check_periodic_lattices(table, axis, particles, walls, body_names);
+        periodic.push_back(axis);
+    }
+    return periodic;
+}
 
 std::vector<SymmetryPlane>
 read_symmetry_planes(const io::CaseTable& sph, const ParticleSet& particles,
@@ -117,9 +234,8 @@ read_symmetry_planes(const io::CaseTable& sph, const ParticleSet& particles,
     const auto tables = sph.array_of_tables("symmetry");
     for (const auto& table : tables) {
         SymmetryPlane plane;
-        const std::string axis = dimension == 3 ? table.choice("axis", {"x", "y", "z"})
-                                                : table.choice("axis", {"x", "y"});
-        plane.axis = axis == "x" ? 0 : (axis == "y" ? 1 : 2);
+        plane.axis = read_axis(table, dimension);
+        const std::string axis = kAxisNames[plane.axis];
         for (const SymmetryPlane& other : planes) {
             if (other.axis == plane.axis) {
                 table.fail("axis", "a symmetry plane normal to " + axis +

@@ -82,7 +82,7 @@ int gather_walls(const ParticleSet& p, Index i, const particles::NeighbourList& 
         touch.stiffness.noalias() +=
             contact_stiffness(kernel, options.contact, w_reference, volumes, r) * e * e.transpose();
         const Wall& wall = rigid_walls[static_cast<std::size_t>(p.wall_id[j])];
-        if (j >= images.first) { // a mirror image of a wall particle (symmetry planes)
+        if (j >= images.first) { // an image of a wall particle (symmetry planes, periodic axes)
             const auto k = static_cast<std::size_t>(j - images.first);
             touch.weighted_normal += volume_j * w * images.normals[k]; // zero: none known
             touch.weighted_velocity +=

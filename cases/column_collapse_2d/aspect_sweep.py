@@ -4,14 +4,17 @@
 Usage:
     /usr/bin/python3 cases/column_collapse_2d/aspect_sweep.py GRAINLOAD OUT_DIR
         [--aspects 0.5,1,2,3,4,6] [--spacing-mm 4] [--length-mm 80] [--threads 1]
+        [--case CASE.toml] [--label TEXT] [--beside OTHER_OUT_DIR --beside-label TEXT]
         [--analyse-only]
 
-Runs cases/column_collapse_2d/column_collapse_2d.toml once per aspect ratio a = H0/L0 with the
+Runs cases/column_collapse_2d/column_collapse_2d.toml (or --case: column_collapse_2d_mu_i.toml,
+the same scene with the mu(I) material) once per aspect ratio a = H0/L0 with the
 column length L0 fixed and H0 = a L0 (same material, friction floor and walls; only the box, the
 spacing, the back wall's height and the end time are overridden with --set), then measures the
 final run-out, height and rest state with analyse.py's definitions and writes
 OUT_DIR/aspect_sweep.csv and OUT_DIR/aspect_sweep.svg (normalised run-out (L_inf - L0)/L0 and
-final height H_inf/L0 against a, beside the laws below).
+final height H_inf/L0 against a, beside the laws below; with --beside, also the points of
+another sweep's aspect_sweep.csv, e.g. the Drucker-Prager sweep beside the mu(I) one).
 
 Scaling laws (final deposit of a column released on a horizontal plane; L0 initial length):
   * Lube et al. (2005), quasi-2D channel:  (L_inf - L0)/L0 = 1.2 a for a < 1.8,
@@ -81,9 +84,16 @@ def nguyen_runout(a):
     return 3.25 * a ** 0.96 if a < 1.5 else 3.80 * a ** 0.73
 
 
-def write_svg(path, rows):
-    """Normalised run-out against the aspect ratio: the runs as dots, the laws as lines, each
-    named in the legend (matplotlib)."""
+def read_rows(csv):
+    """(a, normalised run-out) of a sweep's aspect_sweep.csv."""
+    data = np.genfromtxt(csv, delimiter=",", names=True)
+    return [{"a": float(a), "runout": float(r)}
+            for a, r in zip(np.atleast_1d(data["a"]), np.atleast_1d(data["runout_normalised"]))]
+
+
+def write_svg(path, rows, label, beside=None, beside_label=""):
+    """Normalised run-out against the aspect ratio: the runs as dots (another sweep's, `beside`,
+    as open circles), the laws as lines, each named in the legend (matplotlib)."""
     import matplotlib
     matplotlib.use("Agg")
     matplotlib.rcParams["svg.hashsalt"] = "grainload"  # the same runs draw the same file
@@ -91,14 +101,16 @@ def write_svg(path, rows):
     amax = max(6.0, max(r["a"] for r in rows))
     grid = np.linspace(0.05, amax, 400)
     figure, axes = plt.subplots(figsize=(7, 4.6), layout="constrained")
-    for law, colour, style, label in ((lube_runout, "C0", "-", "Lube et al. 2005 (quasi-2D)"),
+    for law, colour, style, name in ((lube_runout, "C0", "-", "Lube et al. 2005 (quasi-2D)"),
                                       (lajeunesse_runout, "C2", "--",
                                        "Lajeunesse et al. 2005 (quasi-2D)"),
                                       (nguyen_runout, "C4", "-.",
                                        "Nguyen et al. 2015 (2D aluminium rods)")):
-        axes.plot(grid, [law(a) for a in grid], color=colour, linestyle=style, label=label)
-    axes.plot([r["a"] for r in rows], [r["runout"] for r in rows], "o", color="C3",
-              label="grainload SPH")
+        axes.plot(grid, [law(a) for a in grid], color=colour, linestyle=style, label=name)
+    if beside:
+        axes.plot([r["a"] for r in beside], [r["runout"] for r in beside], "o", color="C7",
+                  markerfacecolor="none", label=beside_label)
+    axes.plot([r["a"] for r in rows], [r["runout"] for r in rows], "o", color="C3", label=label)
     axes.set_xlim(0, amax)
     axes.set_ylim(0, None)
     axes.set_xlabel("aspect ratio a = H0 / L0")
@@ -117,6 +129,11 @@ def main():
     ap.add_argument("--spacing-mm", type=float, default=4.0)
     ap.add_argument("--length-mm", type=float, default=80.0)
     ap.add_argument("--threads", type=int, default=1)
+    ap.add_argument("--case", default=CASE,
+                    help="the plane-strain collapse to sweep (its walls and body as in the default)")
+    ap.add_argument("--label", default="grainload SPH", help="the legend of this sweep's points")
+    ap.add_argument("--beside", help="another sweep's OUT_DIR whose points the plot also shows")
+    ap.add_argument("--beside-label", default="grainload SPH, other sweep")
     ap.add_argument("--analyse-only", action="store_true", help="measure existing runs only")
     args = ap.parse_args()
     os.makedirs(args.out_dir, exist_ok=True)
@@ -124,7 +141,7 @@ def main():
     for aspect in (float(a) for a in args.aspects.split(",")):
         out = os.path.join(args.out_dir, f"a{aspect:g}")
         if not args.analyse_only:
-            analyse.run_case(args.grainload, CASE, out, args.threads,
+            analyse.run_case(args.grainload, args.case, out, args.threads,
                              overrides(aspect, args.spacing_mm, args.length_mm))
         rows.append(measure(out))
         r = rows[-1]
@@ -142,7 +159,9 @@ def main():
                     f"{r['runout']:.4f},{r['height']:.4f},{lube_runout(r['a']):.4f},"
                     f"{lajeunesse_runout(r['a']):.4f},{nguyen_runout(r['a']):.4f},"
                     f"{r['rest']:.3e},{r['outside']}\n")
-    write_svg(os.path.join(args.out_dir, "aspect_sweep.svg"), rows)
+    beside = read_rows(os.path.join(args.beside, "aspect_sweep.csv")) if args.beside else None
+    write_svg(os.path.join(args.out_dir, "aspect_sweep.svg"), rows, args.label, beside,
+              args.beside_label)
     print(f"written: {csv}, {os.path.join(args.out_dir, 'aspect_sweep.svg')}")
 
 

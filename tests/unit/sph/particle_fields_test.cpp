@@ -181,8 +181,8 @@ template <class T> T expected_x_image(Mirror rule, const T& v) {
 TEST(ParticleFields, ImagesWriteAndDropEveryField) {
     ParticleSet p = tagged_set();
     const ParticleSet before = p;
-    const std::vector<MirrorImage> images{{2, 1}, {5, 1}, {7, 1}};
-    write_images(p, kParticles, images, Vec3(0.5, 0.0, 0.0));
+    const std::vector<GhostImage> images{{2, 1}, {5, 1}, {7, 1}};
+    write_images(p, kParticles, images, ImageFrame{Vec3(0.5, 0.0, 0.0), Vec3::Zero()});
     ASSERT_EQ(p.size(), kParticles + 3);
     p.for_each_field([&](const auto& field, const auto& values) {
         using Field = std::remove_cvref_t<decltype(field)>;

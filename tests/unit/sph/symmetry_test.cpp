@@ -104,7 +104,7 @@ TEST(Symmetry, ParticlesNearAnEdgeGetThreeImagesAndWallsOnlyAcrossTheirPlanes) {
                               {0.02, 0.02, 0.0}, {0.02, 0.02, 0.0}, {0.0, 0.03, 0.0}};
     const std::vector<char> wall{0, 0, 0, 1, 1, 1};
     const std::vector<MirrorMask> allowed{7, 7, 7, 0, 1, 3};
-    const auto images = select_images(planes, x, wall, allowed, cutoff);
+    const auto images = select_images(planes, {}, x, wall, allowed, cutoff);
     ASSERT_EQ(images.size(), 6U);
     // the wall particles' images first: source 4 across x, source 5 across y
     EXPECT_EQ(images[0].source, 4);
@@ -128,8 +128,8 @@ TEST(Symmetry, ImagesCopyScalarsAndMirrorFieldsAndAreDroppedAgain) {
     p.stress[0] << -1.0, -2.0, 0.0, 0.5, 0.0, 0.0;
     p.spin[0] = Vec3(0.0, 0.0, 0.7);
     p.internal_energy[0] = 3.0;
-    const std::vector<MirrorImage> images{{0, 1}};
-    write_images(p, 1, images, Vec3::Zero());
+    const std::vector<GhostImage> images{{0, 1}};
+    write_images(p, 1, images, ImageFrame{});
     ASSERT_EQ(p.size(), 2);
     EXPECT_DOUBLE_EQ(p.position[1].x(), -0.01);
     EXPECT_DOUBLE_EQ(p.velocity[1].x(), 0.3);
