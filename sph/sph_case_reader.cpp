@@ -31,6 +31,40 @@ ArtificialViscosity read_artificial_viscosity(const io::CaseTable& table) {
     return viscosity;
 }
 
+/// [sph.artificial_stress]: epsilon and exponent; refused with the total-Lagrangian formulation.
+ArtificialStress read_artificial_stress(const io::CaseTable& table, Formulation formulation) {
+    if (formulation == Formulation::total_lagrangian) {
+        table.fail("", "artificial stress counters the tensile instability of the "
+                       "updated-Lagrangian kernel, which total_lagrangian does not have: "
+                       "expected no [sph.artificial_stress] table");
+    }
+    ArtificialStress stress;
+    stress.epsilon =
+        table.number_or("epsilon", io::default_value(kArtificialStressKeys, "epsilon"));
+    stress.exponent =
+        table.number_or("exponent", io::default_value(kArtificialStressKeys, "exponent"));
+    if (stress.epsilon < 0.0 || stress.exponent <= 0.0) {
+        table.fail("", "expected epsilon >= 0 and exponent > 0");
+    }
+    return stress;
+}
+
+/// [sph.contact]: stiffness, exponent and damping ratio.
+ContactPotential read_contact_potential(const io::CaseTable& table) {
+    ContactPotential contact;
+    contact.stiffness = table.positive_quantity("stiffness", dim::kPressure);
+    contact.exponent = table.number_or("exponent", io::default_value(kContactKeys, "exponent"));
+    if (!(contact.exponent >= 1.0)) {
+        table.fail("exponent", "expected n >= 1");
+    }
+    contact.damping_ratio =
+        table.number_or("damping_ratio", io::default_value(kContactKeys, "damping_ratio"));
+    if (!(contact.damping_ratio >= 0.0 && contact.damping_ratio <= 10.0)) {
+        table.fail("damping_ratio", "expected a fraction of critical damping zeta in [0, 10]");
+    }
+    return contact;
+}
+
 } // namespace
 
 SphOptions read_sph_options(const io::CaseTable& sph, int dimension, double spacing,
@@ -78,32 +112,10 @@ SphOptions read_sph_options(const io::CaseTable& sph, int dimension, double spac
         options.viscosity = read_artificial_viscosity(*viscosity);
     }
     if (const auto stress = sph.optional_table("artificial_stress")) {
-        if (options.formulation == Formulation::total_lagrangian) {
-            stress->fail("", "artificial stress counters the tensile instability of the "
-                             "updated-Lagrangian kernel, which total_lagrangian does not have: "
-                             "expected no [sph.artificial_stress] table");
-        }
-        options.artificial_stress.epsilon =
-            stress->number_or("epsilon", io::default_value(kArtificialStressKeys, "epsilon"));
-        options.artificial_stress.exponent =
-            stress->number_or("exponent", io::default_value(kArtificialStressKeys, "exponent"));
-        if (options.artificial_stress.epsilon < 0.0 || options.artificial_stress.exponent <= 0.0) {
-            stress->fail("", "expected epsilon >= 0 and exponent > 0");
-        }
+        options.artificial_stress = read_artificial_stress(*stress, options.formulation);
     }
     if (const auto contact = sph.optional_table("contact")) {
-        options.contact.stiffness = contact->positive_quantity("stiffness", dim::kPressure);
-        options.contact.exponent =
-            contact->number_or("exponent", io::default_value(kContactKeys, "exponent"));
-        if (!(options.contact.exponent >= 1.0)) {
-            contact->fail("exponent", "expected n >= 1");
-        }
-        options.contact.damping_ratio =
-            contact->number_or("damping_ratio", io::default_value(kContactKeys, "damping_ratio"));
-        if (!(options.contact.damping_ratio >= 0.0 && options.contact.damping_ratio <= 10.0)) {
-            contact->fail("damping_ratio",
-                          "expected a fraction of critical damping zeta in [0, 10]");
-        }
+        options.contact = read_contact_potential(*contact);
     }
     return options;
 }
