@@ -190,13 +190,8 @@ void SphSolver::rebuild_neighbours(std::span<const Vec3> positions) {
     // list can need.
     const auto n = static_cast<Index>(positions.size());
     std::vector<MirrorMask> allowed(static_cast<std::size_t>(n), MirrorMask{7});
-    MirrorMask periodic_axes = 0;
-    for (const PeriodicAxis& axis : options_.periodic) {
-        periodic_axes = static_cast<MirrorMask>(periodic_axes | (1U << axis.axis));
-    }
     for (const Wall& wall : walls_) {
-        std::fill_n(allowed.begin() + wall.first, wall.count,
-                    static_cast<MirrorMask>(wall.mirror_planes | periodic_axes));
+        std::fill_n(allowed.begin() + wall.first, wall.count, wall.mirror_planes);
     }
     images_ = select_images(options_.symmetry, options_.periodic, positions, is_wall_, allowed,
                             neighbours_.search_radius());

@@ -74,9 +74,8 @@ ImageFrame image_frame(std::span<const SymmetryPlane> planes,
     return frame;
 }
 
-bool wrap_periodic(std::span<Vec3> positions, std::span<const char> is_wall,
+void wrap_periodic(std::span<Vec3> positions, std::span<const char> is_wall,
                    std::span<const PeriodicAxis> periodic) {
-    bool moved = false;
     for (std::size_t i = 0; i < positions.size(); ++i) {
         if (is_wall[i]) {
             continue;
@@ -85,14 +84,11 @@ bool wrap_periodic(std::span<Vec3> positions, std::span<const char> is_wall,
             double& x = positions[i][axis.axis];
             if (x >= axis.max) {
                 x -= axis.period();
-                moved = true;
             } else if (x < axis.min) {
                 x += axis.period();
-                moved = true;
             }
         }
     }
-    return moved;
 }
 
 Vec3 nearest_image(Vec3 d, std::span<const PeriodicAxis> periodic) {
@@ -122,6 +118,7 @@ NearAxes near_axes(const Vec3& x, std::span<const SymmetryPlane> planes,
             near.axes = static_cast<MirrorMask>(near.axes | (1U << plane.axis));
         }
     }
+    near.axes = static_cast<MirrorMask>(near.axes & allowed);
     for (const PeriodicAxis& axis : periodic) {
         const auto bit = static_cast<MirrorMask>(1U << axis.axis);
         if (x[axis.axis] - axis.min < cutoff) {
@@ -132,7 +129,6 @@ NearAxes near_axes(const Vec3& x, std::span<const SymmetryPlane> planes,
             near.down = static_cast<MirrorMask>(near.down | bit);
         }
     }
-    near.axes = static_cast<MirrorMask>(near.axes & allowed);
     return near;
 }
 

@@ -93,10 +93,10 @@ Vec3 image_position(const Vec3& x, const GhostImage& image, const ImageFrame& fr
 /// point, has no image across it, which would coincide with it), and near a periodic axis
 /// within `cutoff` of either end (its image then lies a period beyond the other end; the period
 /// must exceed 2 cutoff, so that no particle is near both). It gets one image for every
-/// non-empty combination of the axes it is near, across the axes in its `allowed` mask only
-/// (material particles: all; walls: the planes they are mirrored across, Wall::mirror_planes,
-/// and every periodic axis). Wall particles' images come first, then sorted by the combination
-/// and the source, so the order depends only on the positions.
+/// non-empty combination of the axes it is near: every periodic axis, and the symmetry planes
+/// in its `allowed` mask only (material particles: all; walls: the planes they are mirrored
+/// across, Wall::mirror_planes). Wall particles' images come first, then sorted by the
+/// combination and the source, so the order depends only on the positions.
 std::vector<GhostImage> select_images(std::span<const SymmetryPlane> planes,
                                       std::span<const PeriodicAxis> periodic,
                                       std::span<const Vec3> positions,
@@ -108,9 +108,8 @@ ImageFrame image_frame(std::span<const SymmetryPlane> planes,
                        std::span<const PeriodicAxis> periodic);
 
 /// Bring the material particles that have left a periodic box back into it (x - period past
-/// max, x + period before min); wall particles stay where their wall puts them. Returns whether
-/// any particle moved.
-bool wrap_periodic(std::span<Vec3> positions, std::span<const char> is_wall,
+/// max, x + period before min); wall particles stay where their wall puts them.
+void wrap_periodic(std::span<Vec3> positions, std::span<const char> is_wall,
                    std::span<const PeriodicAxis> periodic);
 
 /// The nearest image of a separation `d` along the periodic axes (each component within half a
