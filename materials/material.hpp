@@ -10,6 +10,8 @@
 
 namespace grainload::materials {
 
+struct NonlocalFluidity;
+
 /// Which part of the yield surface the last update ended on; written per point for output.
 enum class PlasticRegion : int {
     elastic = 0,
@@ -69,6 +71,9 @@ class Material {
     /// The state entries worth a frame array (the mu(I) material's inertial number); none by
     /// default.
     virtual std::vector<StateField> frame_state() const { return {}; }
+    /// The non-local fluidity whose field a particle method solves before each update
+    /// (materials/nonlocal_fluidity.hpp); none by default.
+    virtual const NonlocalFluidity* nonlocal_fluidity() const { return nullptr; }
 
     const ElasticConstants& elastic() const { return elastic_; }
     double density() const { return elastic_.density; }

@@ -26,6 +26,21 @@ double MuILaw::friction(double inertial_number) const {
     return mu_s + (mu_2 - mu_s) * (inertial_number / (i0 + inertial_number));
 }
 
+double MuILaw::inertial_number_at(double mu) const {
+    if (!(mu > mu_s)) {
+        return 0.0;
+    }
+    if (!(mu < mu_2)) {
+        return std::numeric_limits<double>::infinity();
+    }
+    return i0 * (mu - mu_s) / (mu_2 - mu);
+}
+
+double MuILaw::inertial_number_slope(double mu) const {
+    const double gap = mu_2 - mu;
+    return i0 * (mu_2 - mu_s) / (gap * gap);
+}
+
 double shear_rate(const Voigt6& strain_increment, double time_step) {
     // ||dev(d_eps)|| with tensor shears; sqrt(2 D':D') = sqrt2 ||D'||.
     const Voigt6 deviator = voigt::deviator(voigt::tensor_from_engineering(strain_increment));

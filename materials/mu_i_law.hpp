@@ -27,6 +27,11 @@ struct MuILaw {
     double inertial_number(double shear_rate, double pressure) const;
     /// mu(I), with its limits mu(0) = mu_s exactly and mu(infinity) = mu_2.
     double friction(double inertial_number) const;
+    /// The inverse of friction(): I = I0 (mu - mu_s) / (mu_2 - mu), 0 for mu <= mu_s (no flow
+    /// below the static friction) and infinity for mu >= mu_2 (no rate reaches it).
+    double inertial_number_at(double friction) const;
+    /// dI/dmu of inertial_number_at() for mu_s < mu < mu_2: I0 (mu_2 - mu_s) / (mu_2 - mu)^2.
+    double inertial_number_slope(double friction) const;
 };
 
 /// gamma_dot = sqrt(2 D':D') of a strain increment (Voigt, engineering shears) over time_step:

@@ -14,6 +14,8 @@ namespace {
 
 constexpr int kPlasticStrain = 0;
 constexpr int kInertialNumber = 2;
+constexpr int kFluidity = 3;
+constexpr int kExcess = 4;
 
 /// A friction coefficient given as a number (`number_key`) or as the angle whose tangent it is
 /// (`angle_key`), exactly one of the two.
@@ -66,17 +68,26 @@ MuILaw read_law(const io::CaseTable& table, double bulk_density) {
 
 } // namespace
 
-MuIMaterial::MuIMaterial(ElasticConstants elastic, MuILaw law) : Material(elastic), law_(law) {
+MuIMaterial::MuIMaterial(ElasticConstants elastic, MuILaw law, double nonlocal_amplitude)
+    : Material(elastic), law_(law), fluidity_{law, nonlocal_amplitude, kFluidity, kExcess} {
     if (!(law_.mu_s > 0.0) || !(law_.mu_2 >= law_.mu_s) || !(law_.i0 > 0.0) ||
-        !(law_.grain_diameter > 0.0) || !(law_.grain_density > 0.0)) {
-        throw std::invalid_argument(
-            "MuIMaterial: need mu_2 >= mu_s > 0 and I0, grain size, grain density > 0");
+        !(law_.grain_diameter > 0.0) || !(law_.grain_density > 0.0) ||
+        !(nonlocal_amplitude >= 0.0)) {
+        throw std::invalid_argument("MuIMaterial: need mu_2 >= mu_s > 0, I0, grain size, grain "
+                                    "density > 0 and a non-local amplitude >= 0");
     }
 }
 
 std::unique_ptr<MuIMaterial> MuIMaterial::from_case(const io::CaseTable& table) {
     const ElasticConstants elastic = ElasticConstants::from_case(table);
-    return std::make_unique<MuIMaterial>(elastic, read_law(table, elastic.density));
+    double amplitude = 0.0;
+    if (table.has("nonlocal_amplitude")) {
+        amplitude = table.number("nonlocal_amplitude");
+        if (!(amplitude > 0.0) || !std::isfinite(amplitude)) {
+            table.fail("nonlocal_amplitude", "expected a non-local amplitude A > 0");
+        }
+    }
+    return std::make_unique<MuIMaterial>(elastic, read_law(table, elastic.density), amplitude);
 }
 
 DruckerPragerCone MuIMaterial::cone(double mu) {
@@ -85,11 +96,20 @@ DruckerPragerCone MuIMaterial::cone(double mu) {
 }
 
 std::vector<std::string> MuIMaterial::state_names() const {
-    return {"equivalent_plastic_strain", "plastic_volumetric_strain", "inertial_number"};
+    std::vector<std::string> names{"equivalent_plastic_strain", "plastic_volumetric_strain",
+                                   "inertial_number"};
+    if (nonlocal_fluidity() != nullptr) {
+        names.insert(names.end(), {"fluidity", "fluidity_excess"});
+    }
+    return names;
 }
 
 std::vector<Material::StateField> MuIMaterial::frame_state() const {
-    return {{"inertial_number", kInertialNumber}};
+    std::vector<StateField> fields{{"inertial_number", kInertialNumber}};
+    if (nonlocal_fluidity() != nullptr) {
+        fields.push_back({"fluidity", kFluidity});
+    }
+    return fields;
 }
 
 double MuIMaterial::equivalent_plastic_strain(std::span<const double> state) const {
@@ -106,6 +126,9 @@ PlasticRegion MuIMaterial::update_over(const Voigt6& strain_increment, double ti
                                        Voigt6& stress, std::span<double> state,
                                        Matrix6* tangent) const {
     const DruckerPragerTrial trial = drucker_prager_trial(elastic_, stress, strain_increment);
+    if (nonlocal_fluidity() != nullptr && std::isfinite(time_step)) {
+        return fluidity_return(elastic_, fluidity_, trial, time_step, stress, state, tangent);
+    }
     DruckerPragerCone step_cone = cone(law_.mu_s);
     double inertial = 0.0;
     // Inside the static cone (there I1 <= 0) the step is elastic whatever the rate, as mu(I) >=

@@ -5,6 +5,7 @@
 #include "materials/drucker_prager_return.hpp"
 #include "materials/material.hpp"
 #include "materials/mu_i_law.hpp"
+#include "materials/nonlocal_fluidity.hpp"
 
 #include <array>
 #include <memory>
@@ -17,7 +18,7 @@ namespace grainload::materials {
 
 /// The keys of a [[material]] with model = "mu_i" besides density and the elastic pair
 /// (docs/user-guide.md, "`mu_i`").
-inline constexpr std::array<io::KeySpec, 7> kMuIKeys{{
+inline constexpr std::array<io::KeySpec, 8> kMuIKeys{{
     {"mu_s", "number", "required unless `angle_s`",
      "static friction mu_s = sqrt(J2)/p at rest (I = 0), > 0"},
     {"angle_s", "angle", "required unless `mu_s`", "the static friction as an angle: mu_s = tan"},
@@ -28,6 +29,8 @@ inline constexpr std::array<io::KeySpec, 7> kMuIKeys{{
     {"grain_size", "length", "", "the grain diameter d of the inertial number (> 0)"},
     {"grain_density", "density", "",
      "rho_s, the density of the grains' solid (not the bulk density, which it must exceed)"},
+    {"nonlocal_amplitude", "number", "none (local law)",
+     "A > 0 turns on the non-local fluidity: cooperativity length xi = A d / sqrt|mu - mu_s|"},
 }};
 
 /// Elasto-viscoplastic mu(I) material (Jop, Forterre & Pouliquen 2006): the Drucker-Prager
@@ -45,12 +48,20 @@ inline constexpr std::array<io::KeySpec, 7> kMuIKeys{{
 ///
 /// State per point as DruckerPrager (equivalent plastic strain, plastic volumetric strain), then
 /// the inertial number of the last step: I where the trial stress reached the static cone, 0
-/// where the step stayed inside it (elastic whatever its rate), NaN where p <= 0 (undefined). The frames show it
+/// where the step stayed inside it (elastic whatever its rate), NaN where p <= 0 (undefined). The
+/// frames show it
 /// (`inertial_number`): where the flow is quasi-static (I < 1e-3), dense (1e-3 to 0.1) or
 /// collisional (I > 0.1; GDR MiDi 2004).
+///
+/// With a non-local amplitude A the flow is that of the non-local granular fluidity instead
+/// (materials/nonlocal_fluidity.hpp): the deviatoric stress relaxes at the plastic rate
+/// gamma_dot^p = g mu of the point's fluidity, two more state entries carry the fluidity and
+/// its non-local excess, and the frames show the fluidity too. At rest (g = 0 at every point)
+/// it is the same Drucker-Prager solid.
 class MuIMaterial final : public Material {
   public:
-    MuIMaterial(ElasticConstants elastic, MuILaw law);
+    /// nonlocal_amplitude 0: the local law.
+    MuIMaterial(ElasticConstants elastic, MuILaw law, double nonlocal_amplitude = 0.0);
     /// kMuIKeys plus the elastic keys.
     static std::unique_ptr<MuIMaterial> from_case(const io::CaseTable& table);
 
@@ -58,7 +69,7 @@ class MuIMaterial final : public Material {
     static DruckerPragerCone cone(double mu);
 
     std::string_view model() const override { return "mu_i"; }
-    int state_size() const override { return 3; }
+    int state_size() const override { return fluidity_.amplitude > 0.0 ? 5 : 3; }
     std::vector<std::string> state_names() const override;
     /// The quasi-static limit: update_over() with an infinite time step, I = 0, mu = mu_s.
     PlasticRegion update(const Voigt6& strain_increment, Voigt6& stress, std::span<double> state,
@@ -69,9 +80,13 @@ class MuIMaterial final : public Material {
     std::vector<StateField> frame_state() const override;
 
     const MuILaw& law() const { return law_; }
+    const NonlocalFluidity* nonlocal_fluidity() const override {
+        return fluidity_.amplitude > 0.0 ? &fluidity_ : nullptr;
+    }
 
   private:
     MuILaw law_;
+    NonlocalFluidity fluidity_;
 };
 
 } // namespace grainload::materials

@@ -93,6 +93,11 @@ SphOptions read_sph_options(const io::CaseTable& sph, int dimension, double spac
     if (!(options.verlet_skin_factor >= 0.0 && options.verlet_skin_factor <= 1.0)) {
         sph.fail("verlet_skin", "expected the Verlet skin as a fraction of h in [0, 1]");
     }
+    options.fluidity_interval = sph.quantity_or("fluidity_interval", io::dimension::kTime,
+                                                io::default_value(kSphKeys, "fluidity_interval"));
+    if (!(options.fluidity_interval >= 0.0) || !std::isfinite(options.fluidity_interval)) {
+        sph.fail("fluidity_interval", "expected a time >= 0 (0: solve every step)");
+    }
     options.kernel_gradient_correction =
         sph.boolean_or("kernel_gradient_correction",
                        io::default_value(kSphKeys, "kernel_gradient_correction") != 0.0);

@@ -22,7 +22,7 @@ namespace grainload::sph {
 
 /// The keys of [sph] (docs/user-guide/sph.md, "Key tables"); the defaults are SphOptions' own,
 /// which tests/unit/sph/sph_keys_test.cpp holds equal to these.
-inline constexpr std::array<io::KeySpec, 8> kSphKeys{{
+inline constexpr std::array<io::KeySpec, 9> kSphKeys{{
     {"interactions", "boolean", "true",
      "false: particles fly freely under gravity (needs time_step), a pipeline check", 1.0},
     {"time_step", "time", "the CFL limit",
@@ -38,6 +38,8 @@ inline constexpr std::array<io::KeySpec, 8> kSphKeys{{
      "exact linear gradients, angular momentum conserved (always on in total_lagrangian)", 1.0},
     {"formulation", "`updated_lagrangian` or `total_lagrangian`", "updated_lagrangian",
      "sums over current neighbours, or over each body's initial configuration (solids only)"},
+    {"fluidity_interval", "time >= 0", "1e-4 s",
+     "the non-local fluidity's field is solved once in each such interval; 0: every step", 1e-4},
 }};
 
 /// The keys of [sph.artificial_viscosity] (Monaghan's Pi_ij); without the table: none.

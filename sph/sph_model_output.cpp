@@ -153,6 +153,17 @@ void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) 
                                std::nullopt, ""});
         }
         append_dissipation(results);
+        if (const FluidityUpdate* fluidity = solver_->fluidity()) {
+            // The field's iterations per step (sph/fluidity_field.hpp): how hard it was to
+            // solve, and whether the cap stopped a solve short of the tolerance.
+            results.push_back(
+                {"fluidity_iterations_mean", fluidity->mean_iterations(), "", std::nullopt, ""});
+            results.push_back({"fluidity_iterations_max",
+                               static_cast<double>(fluidity->hardest().iterations), "",
+                               std::nullopt, ""});
+            results.push_back(
+                {"fluidity_residual_max", fluidity->worst_residual(), "", std::nullopt, ""});
+        }
         for (const Wall& wall : solver_->walls()) {
             for (int a = 0; a < 3; ++a) {
                 const std::string axis(1, static_cast<char>('x' + a));

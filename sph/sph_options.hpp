@@ -75,7 +75,11 @@ struct SphOptions {
     /// gradient (thesis section 4.4.1): exact for linear velocity fields also at free surfaces.
     bool kernel_gradient_correction = true;
     Formulation formulation = Formulation::updated_lagrangian;
-    double cfl_safety = 0.3;         ///< dt = safety * h / (c + |v|)
+    double cfl_safety = 0.3; ///< dt = safety * h / (c + |v|)
+    /// The non-local fluidity's field is solved at the first step of each interval of this many
+    /// seconds of the run's clock, its excess held by the particles in between (0: every step).
+    /// The clock, not a step count, decides, so that a restart solves at the same steps.
+    double fluidity_interval = 1e-4;
     double verlet_skin_factor = 0.1; ///< Verlet skin as a fraction of h (0: rebuild each step)
     /// Mirror planes ([[sph.symmetry]]), at most one per axis; empty: none.
     std::vector<SymmetryPlane> symmetry;

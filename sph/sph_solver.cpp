@@ -62,6 +62,13 @@ SphSolver::SphSolver(ParticleSet particles, MaterialList materials, SphOptions o
         }
         total_lagrangian_.emplace(particles_, kernel_);
     }
+    if (FluidityUpdate::needed(materials_)) {
+        if (total_lagrangian_) { // its reference pairs do not follow a flow
+            throw std::invalid_argument("SphSolver: the non-local fluidity needs the "
+                                        "updated-Lagrangian formulation");
+        }
+        fluidity_.emplace();
+    }
     frame_ = image_frame(options_.symmetry, options_.periodic);
     wall_filter_ = wall_body_filter(walls_);
     hold_clamped();
@@ -448,6 +455,10 @@ void SphSolver::step(double dt) {
     if (!total_lagrangian_) { // the total-Lagrangian density is rho0 / det F, already set
         integrate_density(dt, n);
     }
+    // From the stresses of the step's start, at the first step of each fluidity interval.
+    if (fluidity_ && FluidityUpdate::due(time_, dt, options_.fluidity_interval)) {
+        fluidity_->apply(p, n, images_, materials_, neighbours_, kernel_);
+    }
     plastic_work_.resize(static_cast<std::size_t>(n)); // every material particle's entry set
     update_stresses(p, materials_, dt, n, plastic_work_);
     attach_images(true);
@@ -480,7 +491,8 @@ std::size_t SphSolver::bytes() const {
         held(force_inputs_.entry_factor) + held(velocity_gradient_) + held(heating_rate_) +
         held(contact_heating_rate_) + held(plastic_work_);
     return particle_bytes + work + pair_scratch_.bytes() + neighbours_.bytes() +
-           (total_lagrangian_ ? total_lagrangian_->bytes() : 0);
+           (total_lagrangian_ ? total_lagrangian_->bytes() : 0) +
+           (fluidity_ ? fluidity_->bytes() : 0);
 }
 
 } // namespace grainload::sph

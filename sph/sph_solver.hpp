@@ -4,6 +4,7 @@
 #include "materials/material.hpp"
 #include "particles/neighbour_list.hpp"
 #include "sph/energy_ledger.hpp"
+#include "sph/fluidity_update.hpp"
 #include "sph/kernels.hpp"
 #include "sph/particle_set.hpp"
 #include "sph/rates.hpp"
@@ -106,6 +107,8 @@ class SphSolver {
     std::vector<Wall>& walls() { return walls_; }
     const std::vector<Wall>& walls() const { return walls_; }
     const MaterialList& materials() const { return materials_; }
+    /// The non-local fluidity's solve, where a material has one (before each stress update).
+    const FluidityUpdate* fluidity() const { return fluidity_ ? &*fluidity_ : nullptr; }
 
     /// Sums over material particles (walls excluded), for conservation checks.
     Vec3 linear_momentum() const;
@@ -200,6 +203,7 @@ class SphSolver {
     /// Images of the symmetry planes and periodic axes (options_.symmetry, options_.periodic),
     /// selected at each list build.
     std::vector<GhostImage> images_;
+    std::optional<FluidityUpdate> fluidity_;
     Index wall_image_count_ = 0; ///< images_ of wall particles, which come first
     WallImages wall_images_;     ///< their normals and angular velocities while attached
     ImageFrame frame_;           ///< where the images stand (planes, periods)

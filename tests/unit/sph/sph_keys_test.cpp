@@ -27,6 +27,7 @@ TEST(SphKeys, ACaseWithoutTheKeysGetsTheOptionsOwnDefaults) {
     EXPECT_EQ(read.verlet_skin_factor, own.verlet_skin_factor);
     EXPECT_EQ(read.kernel_gradient_correction, own.kernel_gradient_correction);
     EXPECT_EQ(read.formulation, own.formulation);
+    EXPECT_EQ(read.fluidity_interval, own.fluidity_interval);
     EXPECT_EQ(read.viscosity.alpha, own.viscosity.alpha);
     EXPECT_EQ(read.viscosity.beta, own.viscosity.beta);
     EXPECT_EQ(read.viscosity.sound_speed, own.viscosity.sound_speed);
