@@ -19,23 +19,25 @@
 namespace grainload::sph {
 namespace {
 
-// A lattice of spacing dx over x in (-half_width, half_width), periodic in y over `rows` rows,
-// its images attached and the field connected and weighed (h = 1.3 dx, the solver's default).
+// A lattice of spacing dx, `columns` wide from x0 and `rows` high from y = 0, periodic along
+// `periodic_axis` (0: x, 1: y) over its extent, its images attached and the field connected and
+// weighed (h = 1.3 dx, the solver's default).
 struct Lattice {
     Index count = 0;
     std::vector<Vec3> positions; // particles, then images
     FluidityField field;
 
-    Lattice(double dx, double half_width, int rows) {
-        const int columns = static_cast<int>(std::lround(2.0 * half_width / dx));
+    Lattice(double dx, double x0, int columns, int rows, int periodic_axis) {
         for (int r = 0; r < rows; ++r) {
             for (int c = 0; c < columns; ++c) {
-                positions.emplace_back(-half_width + (c + 0.5) * dx, (r + 0.5) * dx, 0.0);
+                positions.emplace_back(x0 + (c + 0.5) * dx, (r + 0.5) * dx, 0.0);
             }
         }
         count = static_cast<Index>(positions.size());
         const SmoothingKernel kernel(KernelType::cubic_spline, 1.3 * dx, 2);
-        const std::array<PeriodicAxis, 1> periodic{PeriodicAxis{1, 0.0, rows * dx}};
+        const std::array<PeriodicAxis, 1> periodic{periodic_axis == 0
+                                                       ? PeriodicAxis{0, x0, x0 + columns * dx}
+                                                       : PeriodicAxis{1, 0.0, rows * dx}};
         const std::vector<char> none(positions.size(), 0);
         const std::vector<MirrorMask> allowed(positions.size(), 0);
         const auto images =
@@ -64,7 +66,7 @@ struct Lattice {
 TEST(FluidityField, TheLaplacianOfAQuadraticIsTwo) {
     constexpr double kSecondMomentTolerance = 1e-3;
     const double dx = 1e-3;
-    Lattice lattice(dx, 20 * dx, 16);
+    Lattice lattice(dx, -20 * dx, 40, 16, 1);
     std::vector<double> g(static_cast<std::size_t>(lattice.count));
     for (Index i = 0; i < lattice.count; ++i) {
         g[i] = lattice.positions[i].x() * lattice.positions[i].x();
@@ -88,7 +90,7 @@ double step_profile(double x, double xi) {
 }
 
 double worst_profile_error(double xi, double dx) {
-    Lattice lattice(dx, 8.0 * xi, 8);
+    Lattice lattice(dx, -8.0 * xi, static_cast<int>(std::lround(16.0 * xi / dx)), 8, 1);
     const auto n = static_cast<std::size_t>(lattice.count);
     std::vector<double> local(n);
     std::vector<double> screening(n, 1.0 / (xi * xi));
@@ -147,36 +149,13 @@ TEST(FluidityField, TheSolveIsDueOnceInEachIntervalOfTheClock) {
 double worst_layer_error(int rows) {
     const double depth = 0.02, xi = 3.441e-3, dx = depth / rows;
     const int columns = 10;
-    std::vector<Vec3> positions;
-    for (int r = 0; r < rows; ++r) {
-        for (int c = 0; c < columns; ++c) {
-            positions.emplace_back((c + 0.5) * dx, (r + 0.5) * dx, 0.0);
-        }
-    }
-    const auto count = static_cast<Index>(positions.size());
-    const SmoothingKernel kernel(KernelType::cubic_spline, 1.3 * dx, 2);
-    const std::array<PeriodicAxis, 1> periodic{PeriodicAxis{0, 0.0, columns * dx}};
-    const std::vector<char> none(positions.size(), 0);
-    const std::vector<MirrorMask> allowed(positions.size(), 0);
-    const auto images =
-        select_images({}, periodic, positions, none, allowed, kernel.support_radius());
-    const ImageFrame frame = image_frame({}, periodic);
-    std::vector<Index> sources;
-    for (const GhostImage& image : images) {
-        positions.push_back(image_position(positions[image.source], image, frame));
-        sources.push_back(image.source);
-    }
-    particles::NeighbourList list(kernel.support_radius(), 0.0, 2);
-    list.update(positions, {}, true, count);
-    FluidityField field;
-    const auto n = static_cast<std::size_t>(count);
-    field.connect(list, count, sources, std::vector<char>(n, 1), std::vector<int>(n, 0));
-    field.weigh(positions, std::vector<double>(n, dx * dx), std::vector<char>(n, 1), kernel);
+    Lattice lattice(dx, 0.0, columns, rows, 0);
+    const auto n = static_cast<std::size_t>(lattice.count);
     std::vector<double> local(n), screening(n, 1.0 / (xi * xi)), g(n, 0.0);
     for (std::size_t i = 0; i < n; ++i) {
-        local[i] = std::sqrt(depth - positions[i].y());
+        local[i] = std::sqrt(depth - lattice.positions[i].y());
     }
-    field.solve(local, screening, g, 20000, 1e-12);
+    lattice.field.solve(local, screening, g, 20000, 1e-12);
 
     const int cells = 800;
     const double h = depth / cells, k = xi * xi / (h * h);
