@@ -69,7 +69,8 @@ MuILaw read_law(const io::CaseTable& table, double bulk_density) {
 } // namespace
 
 MuIMaterial::MuIMaterial(ElasticConstants elastic, MuILaw law, double nonlocal_amplitude)
-    : Material(elastic), law_(law), fluidity_{law, nonlocal_amplitude, kFluidity, kExcess} {
+    : Material(elastic),
+      law_(law), fluidity_{law, nonlocal_amplitude, kInertialNumber, kFluidity, kExcess} {
     if (!(law_.mu_s > 0.0) || !(law_.mu_2 >= law_.mu_s) || !(law_.i0 > 0.0) ||
         !(law_.grain_diameter > 0.0) || !(law_.grain_density > 0.0) ||
         !(nonlocal_amplitude >= 0.0)) {

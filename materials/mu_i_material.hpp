@@ -48,10 +48,9 @@ inline constexpr std::array<io::KeySpec, 8> kMuIKeys{{
 ///
 /// State per point as DruckerPrager (equivalent plastic strain, plastic volumetric strain), then
 /// the inertial number of the last step: I where the trial stress reached the static cone, 0
-/// where the step stayed inside it (elastic whatever its rate), NaN where p <= 0 (undefined). The
-/// frames show it
-/// (`inertial_number`): where the flow is quasi-static (I < 1e-3), dense (1e-3 to 0.1) or
-/// collisional (I > 0.1; GDR MiDi 2004).
+/// where the step stayed inside it (elastic whatever its rate), NaN where p <= 0 (undefined).
+/// The frames show it (`inertial_number`): where the flow is quasi-static (I < 1e-3), dense
+/// (1e-3 to 0.1) or collisional (I > 0.1; GDR MiDi 2004).
 ///
 /// With a non-local amplitude A the flow is that of the non-local granular fluidity instead
 /// (materials/nonlocal_fluidity.hpp): the deviatoric stress relaxes at the plastic rate

@@ -11,7 +11,6 @@ namespace grainload::materials {
 namespace {
 
 constexpr int kPlasticStrain = 0;
-constexpr int kInertialNumber = 2;
 /// The Newton iteration stops when the bracket or the step is below this fraction of tau_tr:
 /// round-off of the stress itself.
 constexpr double kRelativeTolerance = 1e-13;
@@ -97,7 +96,7 @@ PlasticRegion fluidity_return(const ElasticConstants& elastic, const NonlocalFlu
     const double shear = elastic.shear_modulus;
     if (!(pressure > 0.0) || !(trial.sqrt_j2 > 0.0)) {
         // No confinement: the static cone's apex return (cohesionless, the stress goes to 0).
-        state[kInertialNumber] = std::numeric_limits<double>::quiet_NaN();
+        state[fluidity.inertial_index] = std::numeric_limits<double>::quiet_NaN();
         state[fluidity.fluidity_index] = 0.0;
         const DruckerPragerCone apex{fluidity.law.mu_s / 3.0, 0.0, 0.0, 0.0};
         return drucker_prager_return(elastic, apex, trial, stress, state, tangent);
@@ -105,7 +104,7 @@ PlasticRegion fluidity_return(const ElasticConstants& elastic, const NonlocalFlu
     const double tau_trial = trial.sqrt_j2;
     if (plastic_rate(fluidity, tau_trial, pressure, excess).rate == 0.0) {
         stress = trial.stress;
-        state[kInertialNumber] = 0.0;
+        state[fluidity.inertial_index] = 0.0;
         state[fluidity.fluidity_index] = 0.0;
         if (tangent != nullptr) {
             *tangent = elastic.stiffness();
@@ -115,7 +114,7 @@ PlasticRegion fluidity_return(const ElasticConstants& elastic, const NonlocalFlu
     const double upper = std::min(tau_trial, fluidity.law.mu_2 * pressure);
     // A flowing point flows next step at nearly the same stress ratio: Newton starts from the
     // ratio of the inertial number it last flowed at (2 to 3 iterations instead of 6 to 8).
-    const double last = state[kInertialNumber];
+    const double last = state[fluidity.inertial_index];
     const double start = last > 0.0 ? fluidity.law.friction(last) * pressure : 0.0;
     const double tau =
         relaxed_shear(fluidity, tau_trial, upper, pressure, excess, shear * dt, start);
@@ -124,7 +123,7 @@ PlasticRegion fluidity_return(const ElasticConstants& elastic, const NonlocalFlu
     // |s_tr - s| = sqrt2 (tau_tr - tau): the DruckerPrager return's sqrt(2/3) |de^p| convention.
     state[kPlasticStrain] += (tau_trial - tau) / (std::sqrt(3.0) * shear);
     const double mu = tau / pressure;
-    state[kInertialNumber] = fluidity.law.inertial_number_at(mu);
+    state[fluidity.inertial_index] = fluidity.law.inertial_number_at(mu);
     state[fluidity.fluidity_index] =
         mu > 0.0 ? plastic_rate(fluidity, tau, pressure, excess).rate / mu : 0.0;
     if (tangent != nullptr) {

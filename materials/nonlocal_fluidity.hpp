@@ -32,8 +32,10 @@ namespace grainload::materials {
 struct NonlocalFluidity {
     MuILaw law;
     double amplitude = 0.0; ///< A, dimensionless
-    /// The state entries of a point: the fluidity its last update flowed at (1/s; for output and
-    /// as the start of the next solve) and the non-local excess of the coming update (1/s).
+    /// The state entries of a point (the material's layout): the inertial number of its last
+    /// flow, the fluidity its last update flowed at (1/s; for output and as the start of the
+    /// next solve) and the non-local excess of the coming update (1/s).
+    int inertial_index = 0;
     int fluidity_index = 0;
     int excess_index = 0;
 
@@ -59,8 +61,8 @@ inline constexpr double kMaximumInertialNumber = 10.0;
 /// material's), solved for tau by safeguarded Newton (the local part implicit: the explicit
 /// fluidity of the step's start oscillates wherever G dt g / p exceeds 1, which is everywhere in
 /// a flowing SPH body). Where p <= 0 the point returns to the apex of the static cone. Adds
-/// to the DruckerPrager state entries 0 and 1, writes the inertial number of the flow at state
-/// entry 2 and the fluidity flowed at, gamma_dot^p / mu, at fluidity_index. The tangent, on
+/// to the DruckerPrager state entries 0 and 1, writes the inertial number of the flow at
+/// inertial_index and the fluidity flowed at, gamma_dot^p / mu, at fluidity_index. The tangent, on
 /// request, is the elastic one with the deviatoric part scaled by tau / tau_tr.
 PlasticRegion fluidity_return(const ElasticConstants& elastic, const NonlocalFluidity& fluidity,
                               const DruckerPragerTrial& trial, double dt, Voigt6& stress,

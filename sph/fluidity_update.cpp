@@ -33,11 +33,9 @@ void FluidityUpdate::connect(const ParticleSet& particles, Index count,
     field_.connect(list, count, sources, carries_, particles.body_id);
 }
 
-FluiditySolve FluidityUpdate::apply(ParticleSet& particles, Index count,
-                                    std::span<const GhostImage> images,
-                                    std::span<const materials::Material* const> materials,
-                                    const particles::NeighbourList& list,
-                                    const SmoothingKernel& kernel) {
+void FluidityUpdate::apply(ParticleSet& particles, Index count, std::span<const GhostImage> images,
+                           std::span<const materials::Material* const> materials,
+                           const particles::NeighbourList& list, const SmoothingKernel& kernel) {
     if (!field_.connected_to(list.generation())) {
         connect(particles, count, images, materials, list);
     }
@@ -82,10 +80,7 @@ FluiditySolve FluidityUpdate::apply(ParticleSet& particles, Index count,
     ++solves_;
     iterations_ += done.iterations;
     worst_residual_ = std::max(worst_residual_, done.residual);
-    if (done.iterations > hardest_.iterations) {
-        hardest_ = done;
-    }
-    return done;
+    most_iterations_ = std::max(most_iterations_, done.iterations);
 }
 
 std::size_t FluidityUpdate::bytes() const {

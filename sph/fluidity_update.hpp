@@ -33,12 +33,11 @@ class FluidityUpdate {
 
     /// At the step's positions, images attached after the first `count` particles (`images`
     /// names their sources); `list` built over them.
-    FluiditySolve apply(ParticleSet& particles, Index count, std::span<const GhostImage> images,
-                        std::span<const materials::Material* const> materials,
-                        const particles::NeighbourList& list, const SmoothingKernel& kernel);
-    /// The most iterations one step's solve took (since this process started the run), and
-    /// the residual it left.
-    const FluiditySolve& hardest() const { return hardest_; }
+    void apply(ParticleSet& particles, Index count, std::span<const GhostImage> images,
+               std::span<const materials::Material* const> materials,
+               const particles::NeighbourList& list, const SmoothingKernel& kernel);
+    /// The most iterations one solve took, since this process started the run.
+    int most_iterations() const { return most_iterations_; }
     /// Iterations per solve, averaged over the solves since this process started the run.
     double mean_iterations() const {
         return solves_ > 0 ? static_cast<double>(iterations_) / static_cast<double>(solves_) : 0.0;
@@ -59,7 +58,7 @@ class FluidityUpdate {
     std::vector<double> local_;
     std::vector<double> screening_;
     std::vector<double> values_;
-    FluiditySolve hardest_;
+    int most_iterations_ = 0;
     double worst_residual_ = 0.0;
     long long solves_ = 0;
     long long iterations_ = 0;

@@ -159,8 +159,8 @@ void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) 
             results.push_back(
                 {"fluidity_iterations_mean", fluidity->mean_iterations(), "", std::nullopt, ""});
             results.push_back({"fluidity_iterations_max",
-                               static_cast<double>(fluidity->hardest().iterations), "",
-                               std::nullopt, ""});
+                               static_cast<double>(fluidity->most_iterations()), "", std::nullopt,
+                               ""});
             results.push_back(
                 {"fluidity_residual_max", fluidity->worst_residual(), "", std::nullopt, ""});
         }
