@@ -7,7 +7,7 @@
 #include "app/trade/trade_command.hpp"
 #include "io/case_error.hpp"
 #include "io/version.hpp"
-#include "materials/material_point_driver.hpp"
+#include "materials/material_point_reader.hpp"
 
 #include <exception>
 #include <iostream>

@@ -6,8 +6,9 @@
 #include "coupling/coupling_case_reader.hpp"
 #include "coupling/dem_coupled_model.hpp"
 #include "dem/dem_model.hpp"
-#include "fem/shell_model.hpp"
+#include "fem/shell_model_reader.hpp"
 #include "io/deck_ledger.hpp"
+#include "materials/material_case_reader.hpp"
 #include "sph/sph_model.hpp"
 
 #include <algorithm>
@@ -57,7 +58,7 @@ std::unique_ptr<Scene> Scene::from_document(std::unique_ptr<io::CaseDocument> do
     try {
         scene->settings = io::read_scene_settings(*scene->document, name);
         const io::CaseTable root = scene->document->root();
-        scene->materials = materials::MaterialLibrary::from_case(root);
+        scene->materials = materials::read_material_library(root);
         const std::optional<double> spare_particles =
             refuse_oversized_scene(root, scene->settings.dimension, memory);
         refuse_beside_dem(root);
@@ -70,10 +71,12 @@ std::unique_ptr<Scene> Scene::from_document(std::unique_ptr<io::CaseDocument> do
             scene->add(sph::SphModel::from_case(root, scene->settings, scene->materials));
         }
         if (root.has("dem") && !root.has("coupling")) {
-            scene->add(dem::DemModel::from_case(root, scene->settings, scene->materials));
+            scene->add(std::make_unique<dem::DemModel>(
+                dem::read_dem_settings(root, scene->materials, scene->settings), scene->settings,
+                scene->materials));
         }
         if (root.has("fem") && !root.has("coupling")) {
-            scene->add(fem::ShellModel::from_case(root, scene->settings, scene->materials));
+            scene->add(fem::read_shell_model(root, scene->settings, scene->materials));
         }
         if (root.has("phase") && !root.has("sph")) {
             root.fail("phase",

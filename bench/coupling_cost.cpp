@@ -10,6 +10,7 @@
 #include "coupling/coupling_case_reader.hpp"
 #include "fem/sparse_solver.hpp"
 #include "io/case_table.hpp"
+#include "materials/material_case_reader.hpp"
 
 #include <cstdio>
 #include <cstdlib>
@@ -101,7 +102,7 @@ side = "positive"
 void run(int n, double spacing, bool dynamic, int ratio, int windows) {
     auto document = io::CaseDocument::from_string(scene(n, spacing, dynamic), "bench.toml");
     const io::SceneSettings settings = io::read_scene_settings(*document, "bench");
-    const auto materials = materials::MaterialLibrary::from_case(document->root());
+    const auto materials = materials::read_material_library(document->root());
     auto model = coupling::read_coupled_model(document->root(), settings, materials);
     for (const std::string& line : document->take_notices()) {
         std::fprintf(stderr, "%s\n", line.c_str());

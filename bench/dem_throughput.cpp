@@ -14,6 +14,7 @@
 #include "dem/dem_model.hpp"
 #include "io/case_table.hpp"
 #include "io/scene_settings.hpp"
+#include "materials/material_case_reader.hpp"
 #include "materials/material_library.hpp"
 #include "support/machine_load.hpp"
 
@@ -85,8 +86,9 @@ int main(int argc, char** argv) {
     auto document = io::CaseDocument::from_string(scene(o.grains), "dem_throughput.toml");
     const io::SceneSettings settings = io::read_scene_settings(*document, "dem_throughput");
     const io::CaseTable root = document->root();
-    const materials::MaterialLibrary library = materials::MaterialLibrary::from_case(root);
-    auto model = dem::DemModel::from_case(root, settings, library);
+    const materials::MaterialLibrary library = materials::read_material_library(root);
+    auto model = std::make_unique<dem::DemModel>(dem::read_dem_settings(root, library, settings),
+                                                 settings, library);
     const double dt = model->stable_time_step();
     double t = 0.0;
     for (long k = 0; k < o.settle; ++k, t += dt) {

@@ -2,8 +2,9 @@
 
 #include "coupling/added_mass.hpp"
 #include "coupling/window_limits.hpp"
+#include "fem/shell_model_reader.hpp"
 #include "io/case_table.hpp"
-#include "sph/wall_bodies.hpp"
+#include "sph/sph_case_reader.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -394,7 +395,7 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
                           "[[sph.body]] and [fem] with [[fem.shell]] tables");
     }
     auto sph = sph::SphModel::read_bodies(root, scene, materials);
-    auto fem = fem::ShellModel::from_case(root, scene, materials);
+    auto fem = fem::read_shell_model(root, scene, materials);
     const CouplingSettings settings = read_settings(coupling, *fem);
     Interfaces read = read_interfaces(coupling, *sph, *fem, spare_particles);
     read_friction(coupling, *sph, read.walls);

@@ -1,5 +1,6 @@
 // The reader of a DEM-shell scene: [dem], [fem] and [coupling] joined in one DemCoupledModel.
 #include "coupling/coupling_case_reader.hpp"
+#include "fem/shell_model_reader.hpp"
 #include "io/case_table.hpp"
 
 #include <algorithm>
@@ -90,7 +91,7 @@ read_dem_coupled_model(const io::CaseTable& root, const io::SceneSettings& scene
         coupling.fail("", "a coupling joins the grains and shells: expected [fem] with "
                           "[[fem.shell]] tables");
     }
-    auto fem = fem::ShellModel::from_case(root, scene, materials);
+    auto fem = fem::read_shell_model(root, scene, materials);
     const CouplingSettings settings = read_dem_settings(coupling, *fem);
     dem::DemSettings grains = dem::read_dem_settings(root, materials, scene);
     const auto interfaces = coupling.array_of_tables("interface");

@@ -5,7 +5,9 @@
 #include "io/named_index.hpp"
 #include "io/scene_settings.hpp"
 #include "io/surface_mesh_reader.hpp"
+#include "materials/material_case_reader.hpp"
 #include "materials/material_library.hpp"
+#include "particles/particles_case_reader.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -169,7 +171,7 @@ void read_placement(const io::CaseTable& table, BodySettings& body) {
 BodySettings read_body(const io::CaseTable& table, const materials::MaterialLibrary& materials) {
     BodySettings body;
     body.name = table.string("name");
-    body.material = materials.index_of(table, "material");
+    body.material = materials::read_material_index(materials, table, "material");
     if (materials[body.material].model() != "linear_elastic") {
         table.fail("material", "a grain's material is the solid grain's: expected a "
                                "linear_elastic [[material]], got " +
@@ -337,7 +339,8 @@ std::shared_ptr<particles::SinkSet> read_sinks(const io::CaseTable& dem,
         bodies.names.push_back(body.name);
         grains.push_back({materials.name(body.material), body.radius_min + body.radius_max});
     }
-    return std::make_shared<particles::SinkSet>(dem, bodies, 3, scene.gravity.norm(), 1.0, grains);
+    return std::make_shared<particles::SinkSet>(
+        particles::read_sinks(dem, bodies, 3, scene.gravity.norm(), 1.0, grains));
 }
 
 DemSettings read_dem_settings(const io::CaseTable& root,

@@ -108,12 +108,6 @@ DemModel::DemModel(DemSettings settings, const io::SceneSettings& scene,
     start_energy_ = energy().total();
 }
 
-std::unique_ptr<DemModel> DemModel::from_case(const io::CaseTable& root,
-                                              const io::SceneSettings& scene,
-                                              const materials::MaterialLibrary& materials) {
-    return std::make_unique<DemModel>(read_dem_settings(root, materials, scene), scene, materials);
-}
-
 double DemModel::pair_contact_time(std::size_t a, std::optional<std::size_t> b, bool largest,
                                    double speed) const {
     const auto radius = [&](std::size_t body) {

@@ -16,9 +16,6 @@
 #include <string>
 #include <vector>
 
-namespace grainload::io {
-class CaseTable;
-}
 namespace grainload::materials {
 class MaterialLibrary;
 }
@@ -50,9 +47,6 @@ class DemModel final : public io::Stepper, public io::Reporter {
   public:
     DemModel(DemSettings settings, const io::SceneSettings& scene,
              const materials::MaterialLibrary& materials);
-    static std::unique_ptr<DemModel> from_case(const io::CaseTable& root,
-                                               const io::SceneSettings& scene,
-                                               const materials::MaterialLibrary& materials);
 
     std::string_view name() const override { return "dem"; }
     /// The fixed time_step, else the contact time of the scene's fastest contact over

@@ -2,6 +2,7 @@
 
 #include "dem/dem_case_reader.hpp"
 #include "io/surface_mesh_reader.hpp"
+#include "particles/particles_case_reader.hpp"
 
 #include <array>
 

@@ -1,9 +1,7 @@
 #include "fem/fem_schema.hpp"
 
-#include "fem/imported_shell_mesh.hpp"
+#include "fem/imported_shell_mesh_reader.hpp"
 #include "fem/shell_case_reader.hpp"
-#include "fem/shell_model.hpp"
-#include "fem/time_function.hpp"
 
 #include <array>
 

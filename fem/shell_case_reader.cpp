@@ -1,9 +1,10 @@
 #include "fem/shell_case_reader.hpp"
 
-#include "fem/imported_shell_mesh.hpp"
+#include "fem/imported_shell_mesh_reader.hpp"
 #include "fem/shell_mesh_generators.hpp"
 #include "io/case_table.hpp"
 #include "io/named_index.hpp"
+#include "materials/material_case_reader.hpp"
 
 #include <algorithm>
 #include <array>
@@ -157,7 +158,7 @@ read_shell_parts(const io::CaseTable& fem, const std::vector<io::CaseTable>& she
             shell.fail("name", "a structure of several [[fem.shell]] parts names each of them");
         }
         io::refuse_repeated_name(shell, parts, part.name, "shell part", &ShellPart::name);
-        part.material = &materials[materials.index_of(shell, "material")];
+        part.material = &materials[materials::read_material_index(materials, shell, "material")];
         const bool elastic = part.material->model() == "linear_elastic";
         part.thickness_points =
             static_cast<int>(shell.integer_or("thickness_points", elastic ? 2 : 5));
@@ -320,6 +321,26 @@ std::vector<ShellMonitor> read_shell_monitors(const io::CaseTable& shell, const 
         monitors.push_back(std::move(m));
     }
     return monitors;
+}
+
+std::map<std::string, TimeFunction> read_time_functions(const io::CaseTable& fem) {
+    std::map<std::string, TimeFunction> functions;
+    for (const io::CaseTable& table : fem.array_of_tables("time_function")) {
+        const std::string name = table.string("name");
+        if (functions.count(name) != 0) {
+            table.fail("name", "time function '" + name + "' is defined twice");
+        }
+        const std::string type = table.choice_or("type", {"points", "ramp"}, "points");
+        try {
+            functions.emplace(
+                name, type == "ramp"
+                          ? TimeFunction::ramp(table.positive_quantity("ramp_time", dim::kTime))
+                          : TimeFunction(table.quantity_pairs("points", dim::kTime, dim::kNone)));
+        } catch (const std::invalid_argument& e) {
+            table.fail("points", e.what());
+        }
+    }
+    return functions;
 }
 
 } // namespace grainload::fem

@@ -2,6 +2,8 @@
 // The readers of [fem] and [[fem.shell]]: mesh, parts, supports, loads, monitors.
 
 #include "fem/shell_analysis.hpp"
+#include "fem/shell_model.hpp"
+#include "fem/time_function.hpp"
 #include "io/key_spec.hpp"
 #include "materials/material_library.hpp"
 
@@ -150,22 +152,17 @@ inline constexpr std::array<io::KeySpec, 2> kReactionKeys{{
      "a node set of the part (constrained nodes; elsewhere the reaction is zero)"},
 }};
 
-/// A displacement or rotation the case asks to report, with its optional reference.
-struct ShellMonitor {
-    std::string name;
-    Index node = -1;
-    int dof = 0;
-    bool magnitude = false;
-    std::optional<double> reference;
-    std::string source;
-};
+/// The keys of each [[fem.time_function]] table.
+inline constexpr std::array<io::KeySpec, 4> kTimeFunctionKeys{{
+    {"name", "string", "", "referenced by `time_function` in loads and boundary conditions"},
+    {"type", "`points` or `ramp`", "`\"points\"`", "piecewise linear through `points`, or a ramp"},
+    {"points", "list of [time, number] pairs", "required for `points`",
+     "f(t) piecewise linear, times increasing, held at the end values outside them"},
+    {"ramp_time", "time", "required for `ramp`", "f = min(t / ramp_time, 1)"},
+}};
 
-/// A support reaction the case asks to report: the total force of the supports on the nodes of
-/// a set (reaction_force summed), e.g. the vertical load a silo wall carries at its base.
-struct ShellReaction {
-    std::string name;
-    std::vector<Index> nodes;
-};
+/// The case's [[fem.time_function]] tables by name (see docs/user-guide/fem.md).
+std::map<std::string, TimeFunction> read_time_functions(const io::CaseTable& fem);
 
 /// Mesh of one [[fem.shell]] table from its `generator` keys (see docs/user-guide/fem.md).
 ShellMesh read_shell_mesh(const io::CaseTable& shell);

@@ -1,8 +1,6 @@
 #include "fem/shell_model.hpp"
 
-#include "fem/time_function.hpp"
 #include "io/binary_stream.hpp"
-#include "io/case_table.hpp"
 #include "io/output_streams.hpp"
 
 #include <cctype>
@@ -14,49 +12,7 @@
 
 namespace grainload::fem {
 
-namespace dim = io::dimension;
-
 namespace {
-
-/// The declared default of a [fem] key, at compile time.
-constexpr double declared(std::string_view key) {
-    for (const io::KeySpec& spec : kFemKeys) {
-        if (spec.name == key) {
-            return spec.value;
-        }
-    }
-    throw std::logic_error("undeclared [fem] key");
-}
-
-// NewtonSettings' own defaults (for analyses built without a case) are the declared ones.
-constexpr NewtonSettings kNewtonDefaults{};
-static_assert(kNewtonDefaults.displacement_tolerance == declared("displacement_tolerance"));
-static_assert(kNewtonDefaults.force_tolerance == declared("force_tolerance"));
-static_assert(kNewtonDefaults.energy_tolerance == declared("energy_tolerance"));
-static_assert(kNewtonDefaults.max_iterations == declared("max_iterations"));
-static_assert(kNewtonDefaults.max_cutbacks == declared("max_cutbacks"));
-
-/// The declared default of a [fem] key.
-double fallback(std::string_view key) {
-    return io::default_value(kFemKeys, key);
-}
-
-std::int64_t integer_fallback(std::string_view key) {
-    return static_cast<std::int64_t>(fallback(key));
-}
-
-NewtonSettings read_settings(const io::CaseTable& fem) {
-    NewtonSettings s;
-    s.displacement_tolerance =
-        fem.number_or("displacement_tolerance", fallback("displacement_tolerance"));
-    s.force_tolerance = fem.number_or("force_tolerance", fallback("force_tolerance"));
-    s.energy_tolerance = fem.number_or("energy_tolerance", fallback("energy_tolerance"));
-    s.max_iterations =
-        static_cast<int>(fem.integer_or("max_iterations", integer_fallback("max_iterations")));
-    s.max_cutbacks =
-        static_cast<int>(fem.integer_or("max_cutbacks", integer_fallback("max_cutbacks")));
-    return s;
-}
 
 /// Result names are snake_case identifiers, as the SPH side's: a solver is named by the
 /// first word of SparseSolver::name() in lower case ("cholmod", "umfpack").
@@ -70,84 +26,30 @@ std::string solver_identifier(const std::string& solver) {
 
 } // namespace
 
-std::unique_ptr<ShellModel> ShellModel::from_case(const io::CaseTable& root,
-                                                  const io::SceneSettings& scene,
-                                                  const materials::MaterialLibrary& materials) {
-    const io::CaseTable fem = root.table("fem");
-    std::unique_ptr<ShellModel> model(new ShellModel());
-    model->dynamic_ = fem.choice_or("analysis", {"static", "dynamic"}, "static") == "dynamic";
-    if (model->dynamic_) {
-        model->time_step_ = fem.positive_quantity("time_step", dim::kTime);
-    }
-    const std::string kinematics =
-        fem.choice_or("kinematics", {"linear", "total_lagrangian"}, "linear");
-    model->settings_ = read_settings(fem);
-    model->load_time_ = fem.positive_quantity_or("load_time", dim::kTime, scene.end_time);
-    model->increments_per_step_ = static_cast<int>(
-        fem.integer_or("increments_per_step", integer_fallback("increments_per_step")));
-    const std::vector<io::CaseTable> shells = fem.array_of_tables("shell");
-    if (shells.empty()) {
-        fem.fail("shell", "expected at least one [[fem.shell]] table");
-    }
-    auto [mesh, parts] = read_shell_parts(fem, shells, materials);
-    for (const ShellPart& part : parts) {
-        model->part_names_.push_back(part.name);
-    }
-    model->analysis_ = std::make_unique<ShellAnalysis>(
-        std::move(mesh), std::move(parts),
-        kinematics == "linear" ? Kinematics::linear : Kinematics::total_lagrangian);
+ShellModel::ShellModel(const ShellModelSettings& settings, std::unique_ptr<ShellAnalysis> analysis,
+                       std::vector<std::string> part_names, std::vector<ShellMonitor> monitors,
+                       std::vector<ShellReaction> support_reactions)
+    : part_names_(std::move(part_names)), analysis_(std::move(analysis)),
+      monitors_(std::move(monitors)), support_reactions_(std::move(support_reactions)),
+      settings_(settings.newton), load_time_(settings.load_time), dynamic_(settings.dynamic),
+      time_step_(settings.time_step), increments_per_step_(settings.increments_per_step) {
     // Advanced step after step, a linear shell's stiffness is worth keeping: every later step's
     // internal forces come from it (a coupled window's cost was the element loop).
-    model->analysis_->store_stiffness();
+    analysis_->store_stiffness();
     // The analysis' load factor is the time: history 0 (loads without a time_function) ramps
-    // to 1 at load_time and holds; every [[fem.time_function]] becomes a history of its own.
-    const double load_time = model->load_time_;
-    model->analysis_->set_history(0,
-                                  [load_time](double t) { return std::min(t / load_time, 1.0); });
-    std::map<std::string, int> histories;
-    for (auto& [name, function] : read_time_functions(fem)) {
-        histories[name] = model->analysis_->add_history(function);
-    }
-    for (std::size_t k = 0; k < shells.size(); ++k) {
-        const PartScope scope{static_cast<int>(k), model->part_names_[k]};
-        read_shell_boundaries(shells[k], histories, scope, *model->analysis_);
-        read_shell_loads(shells[k], scene.gravity, histories, scope, *model->analysis_);
-        for (ShellMonitor& monitor : read_shell_monitors(shells[k], model->analysis_->mesh())) {
-            model->monitors_.push_back(std::move(monitor));
-        }
-        for (ShellReaction& reaction :
-             read_shell_reactions(shells[k], model->analysis_->mesh(), scope)) {
-            model->support_reactions_.push_back(std::move(reaction));
-        }
-    }
-    model->reactions_ = Eigen::VectorXd::Zero(6 * model->analysis_->mesh().node_count());
-    if (model->dynamic_) {
-        const bool hht = fem.choice_or("integrator", {"newmark", "hht"}, "newmark") == "hht";
-        double alpha = 0.0;
-        double gamma = 0.5;
-        if (hht) {
-            alpha = fem.number_or("hht_alpha", fallback("hht_alpha"));
-            if (alpha < -1.0 / 3.0 || alpha > 0.0) {
-                fem.fail("hht_alpha", "expected -1/3 <= alpha <= 0");
-            }
-            gamma = 0.5 - alpha; // Hilber, Hughes & Taylor 1977: second order
-        } else {
-            gamma = fem.number_or("newmark_gamma", fallback("newmark_gamma"));
-            if (gamma < 0.5) {
-                fem.fail("newmark_gamma", "expected gamma >= 0.5 (unconditional stability)");
-            }
-        }
+    // to 1 at load_time and holds.
+    const double load_time = load_time_;
+    analysis_->set_history(0, [load_time](double t) { return std::min(t / load_time, 1.0); });
+    reactions_ = Eigen::VectorXd::Zero(6 * analysis_->mesh().node_count());
+    if (dynamic_) {
+        const double gamma = settings.integrator_gamma;
         // beta = (gamma + 1/2)^2 / 4: unconditionally stable, the trapezoidal rule at 1/2;
         // for HHT this is (1 - alpha)^2 / 4.
-        const bool consistent =
-            fem.choice_or("mass", {"lumped", "consistent"}, "lumped") == "consistent";
-        model->newmark_ = std::make_unique<NewmarkIntegrator>(
-            *model->analysis_, 0.25 * (gamma + 0.5) * (gamma + 0.5), gamma, alpha,
-            consistent ? MassMatrix::consistent : MassMatrix::lumped);
-        model->newmark_->initialise(
-            Eigen::VectorXd::Zero(6 * model->analysis_->mesh().node_count()));
+        newmark_ =
+            std::make_unique<NewmarkIntegrator>(*analysis_, 0.25 * (gamma + 0.5) * (gamma + 0.5),
+                                                gamma, settings.integrator_alpha, settings.mass);
+        newmark_->initialise(Eigen::VectorXd::Zero(6 * analysis_->mesh().node_count()));
     }
-    return model;
 }
 
 double ShellModel::stable_time_step() const {

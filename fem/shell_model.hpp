@@ -2,20 +2,46 @@
 // The shell FEM side of a scene as the time loop sees it: static or implicit dynamic steps.
 
 #include "fem/newmark_integrator.hpp"
-#include "fem/shell_case_reader.hpp"
 #include "fem/shell_step_totals.hpp"
-#include "io/key_spec.hpp"
 #include "io/reporter.hpp"
-#include "io/scene_settings.hpp"
 #include "io/stepper.hpp"
-#include "materials/material_library.hpp"
 
-#include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace grainload::fem {
+
+/// A displacement or rotation the case asks to report, with its optional reference.
+struct ShellMonitor {
+    std::string name;
+    Index node = -1;
+    int dof = 0;
+    bool magnitude = false;
+    std::optional<double> reference;
+    std::string source;
+};
+
+/// A support reaction the case asks to report: the total force of the supports on the nodes of
+/// a set (reaction_force summed), e.g. the vertical load a silo wall carries at its base.
+struct ShellReaction {
+    std::string name;
+    std::vector<Index> nodes;
+};
+
+/// How a scene's shells are analysed, as [fem] states it (fem/shell_model_reader.hpp reads it).
+struct ShellModelSettings {
+    bool dynamic = false;
+    double time_step = 0.0; ///< dynamic: the largest implicit step [s]
+    NewtonSettings newton;
+    double load_time = 1.0; ///< history 0, the load factor, ramps to 1 at this time [s]
+    int increments_per_step = 1;
+    /// Dynamic: the integrator's alpha (0: Newmark) and gamma; beta = (gamma + 1/2)^2 / 4.
+    double integrator_alpha = 0.0;
+    double integrator_gamma = 0.5;
+    MassMatrix mass = MassMatrix::lumped;
+};
 
 /// Convergence record of one time step: the Newton iterations of its load increments.
 struct ShellStepLog {
@@ -29,13 +55,16 @@ struct ShellStepLog {
 /// min(t / load_time, 1), the others their [[fem.time_function]]. Static analysis: every
 /// advance() solves the incremental-iterative equilibrium problem of thesis Table 5.2.2 at
 /// t + dt (cut-backs halve the time increment), so "time" only orders the load steps. Dynamic
-/// analysis: implicit Newmark or HHT-alpha steps of at most [fem].time_step. Built from the case's
-/// [fem] table and its [[fem.shell]] tables, one per shell part.
+/// analysis: implicit Newmark or HHT-alpha steps of at most [fem].time_step. A case's [fem] table
+/// and its [[fem.shell]] tables, one per shell part, build it (fem/shell_model_reader.hpp).
 class ShellModel final : public io::Stepper, public io::Reporter {
   public:
-    static std::unique_ptr<ShellModel> from_case(const io::CaseTable& root,
-                                                 const io::SceneSettings& scene,
-                                                 const materials::MaterialLibrary& materials);
+    /// The model of `analysis` (its loads, supports and time functions in place): its stiffness
+    /// stored (linear steps reuse it), history 0 the ramp to `settings.load_time`, and a dynamic
+    /// analysis started at rest.
+    ShellModel(const ShellModelSettings& settings, std::unique_ptr<ShellAnalysis> analysis,
+               std::vector<std::string> part_names, std::vector<ShellMonitor> monitors,
+               std::vector<ShellReaction> support_reactions);
 
     std::string_view name() const override { return "fem"; }
     double stable_time_step() const override;
@@ -86,7 +115,6 @@ class ShellModel final : public io::Stepper, public io::Reporter {
     const std::vector<ShellStepLog>& convergence_log() const { return log_; }
 
   private:
-    ShellModel() = default;
     std::string part_list() const;
     void solve_step(double t, double dt);
     std::string part_of_node(Index node) const;

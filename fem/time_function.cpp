@@ -1,12 +1,8 @@
 #include "fem/time_function.hpp"
 
-#include "io/case_table.hpp"
-
 #include <stdexcept>
 
 namespace grainload::fem {
-
-namespace dim = io::dimension;
 
 TimeFunction::TimeFunction(std::vector<std::pair<double, double>> points)
     : points_(std::move(points)) {
@@ -32,26 +28,6 @@ double TimeFunction::operator()(double t) const {
         }
     }
     return points_.back().second;
-}
-
-std::map<std::string, TimeFunction> read_time_functions(const io::CaseTable& fem) {
-    std::map<std::string, TimeFunction> functions;
-    for (const io::CaseTable& table : fem.array_of_tables("time_function")) {
-        const std::string name = table.string("name");
-        if (functions.count(name) != 0) {
-            table.fail("name", "time function '" + name + "' is defined twice");
-        }
-        const std::string type = table.choice_or("type", {"points", "ramp"}, "points");
-        try {
-            functions.emplace(
-                name, type == "ramp"
-                          ? TimeFunction::ramp(table.positive_quantity("ramp_time", dim::kTime))
-                          : TimeFunction(table.quantity_pairs("points", dim::kTime, dim::kNone)));
-        } catch (const std::invalid_argument& e) {
-            table.fail("points", e.what());
-        }
-    }
-    return functions;
 }
 
 } // namespace grainload::fem

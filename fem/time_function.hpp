@@ -1,17 +1,8 @@
 #pragma once
 // Piecewise-linear time functions that scale the shell's loads and prescribed values.
 
-#include "io/key_spec.hpp"
-
-#include <array>
-#include <map>
-#include <string>
 #include <utility>
 #include <vector>
-
-namespace grainload::io {
-class CaseTable;
-}
 
 namespace grainload::fem {
 
@@ -29,17 +20,5 @@ class TimeFunction {
   private:
     std::vector<std::pair<double, double>> points_;
 };
-
-/// The keys of each [[fem.time_function]] table.
-inline constexpr std::array<io::KeySpec, 4> kTimeFunctionKeys{{
-    {"name", "string", "", "referenced by `time_function` in loads and boundary conditions"},
-    {"type", "`points` or `ramp`", "`\"points\"`", "piecewise linear through `points`, or a ramp"},
-    {"points", "list of [time, number] pairs", "required for `points`",
-     "f(t) piecewise linear, times increasing, held at the end values outside them"},
-    {"ramp_time", "time", "required for `ramp`", "f = min(t / ramp_time, 1)"},
-}};
-
-/// The case's [[fem.time_function]] tables by name (see docs/user-guide/fem.md).
-std::map<std::string, TimeFunction> read_time_functions(const io::CaseTable& fem);
 
 } // namespace grainload::fem

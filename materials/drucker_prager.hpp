@@ -1,30 +1,12 @@
 #pragma once
 // The perfectly plastic Drucker-Prager material: non-associated flow and a tension cutoff.
 
-#include "io/key_spec.hpp"
 #include "materials/drucker_prager_return.hpp"
 #include "materials/material.hpp"
 
-#include <array>
 #include <memory>
 
 namespace grainload::materials {
-
-/// The keys of a [[material]] with model = "drucker_prager" besides density and the elastic
-/// pair: one of two forms, the Mohr-Coulomb angles with a cone fit, or the cone's own constants.
-inline constexpr std::array<io::KeySpec, 8> kDruckerPragerKeys{{
-    {"friction_angle", "angle", "required in form 1", "φ, 0 ≤ φ < 90°"},
-    {"cohesion", "pressure", "required in form 1", "c ≥ 0"},
-    {"dilatancy_angle", "angle", "required in form 1", "ψ, 0 ≤ ψ ≤ φ; ψ = φ is associated"},
-    {"cone_fit", "string", "required in form 1",
-     "`plane_strain`, `compression`, `extension` or `inner`: which Mohr-Coulomb angle the cone "
-     "reproduces"},
-    {"dp_k", "pressure", "required in form 2", "k of thesis 4.6.3.1"},
-    {"dp_theta", "number", "required in form 2", "θ of thesis 4.6.3.1"},
-    {"dp_theta_flow", "number", "`dp_theta`", "θ of the plastic potential, 0 ≤ θ_flow ≤ θ"},
-    {"tension_cutoff", "pressure", "the apex k/α",
-     "T: the limit on I1 = σ_xx + σ_yy + σ_zz (not on the mean stress)"},
-}};
 
 /// Perfectly plastic Drucker-Prager model with non-associated flow and a tension cutoff.
 ///
@@ -46,12 +28,6 @@ class DruckerPrager final : public Material {
 
     /// A cutoff above the apex k/alpha is clamped to it; infinity with alpha > 0 means the apex.
     DruckerPrager(ElasticConstants elastic, Parameters parameters);
-    /// Keys, one of two forms plus the elastic keys:
-    ///  - friction_angle, cohesion, dilatancy_angle, cone_fit = plane_strain|compression|
-    ///    extension|inner;
-    ///  - dp_k (pressure), dp_theta (number), optional dp_theta_flow (default dp_theta).
-    /// Optional tension_cutoff (pressure, the limit on I1; default the apex).
-    static std::unique_ptr<DruckerPrager> from_case(const io::CaseTable& table);
 
     std::string_view model() const override { return "drucker_prager"; }
     int state_size() const override { return 2; }

@@ -1,8 +1,5 @@
 #include "materials/elastic_constants.hpp"
 
-#include "io/case_table.hpp"
-#include "materials/material_keys.hpp"
-
 #include <cmath>
 
 namespace grainload::materials {
@@ -15,52 +12,12 @@ ElasticConstants ElasticConstants::from_bulk_shear(double density, double bulk, 
     return {density, bulk, shear};
 }
 
-double ElasticConstants::read_stiffness_scale(const io::CaseTable& table) {
-    const double s =
-        table.number_or("stiffness_scale", io::default_value(kMaterialKeys, "stiffness_scale"));
-    if (!(s > 0.0) || !std::isfinite(s)) {
-        table.fail("stiffness_scale", "expected a factor > 0 on the bulk and shear moduli");
-    }
-    return s;
-}
-
 ElasticConstants ElasticConstants::scaled(double s) const {
     ElasticConstants out = *this;
     out.bulk_modulus *= s;
     out.shear_modulus *= s;
     out.stiffness_scale *= s;
     return out;
-}
-
-namespace {
-
-/// Density and the elastic pair as the table gives them, before stiffness_scale.
-ElasticConstants read_moduli(const io::CaseTable& table) {
-    namespace dim = io::dimension;
-    const double density = table.positive_quantity("density", dim::kDensity);
-    const bool by_young = table.has("youngs_modulus") || table.has("poisson_ratio");
-    const bool by_moduli = table.has("bulk_modulus") || table.has("shear_modulus");
-    if (by_young == by_moduli) {
-        table.fail("", "expected either youngs_modulus and poisson_ratio, or bulk_modulus and "
-                       "shear_modulus (exactly one pair)");
-    }
-    if (by_young) {
-        const double young = table.positive_quantity("youngs_modulus", dim::kPressure);
-        const double poisson = table.number("poisson_ratio");
-        if (!(poisson > -1.0 && poisson < 0.5)) {
-            table.fail("poisson_ratio", "expected a Poisson ratio in (-1, 0.5)");
-        }
-        return ElasticConstants::from_young(density, young, poisson);
-    }
-    return ElasticConstants::from_bulk_shear(
-        density, table.positive_quantity("bulk_modulus", dim::kPressure),
-        table.positive_quantity("shear_modulus", dim::kPressure));
-}
-
-} // namespace
-
-ElasticConstants ElasticConstants::from_case(const io::CaseTable& table) {
-    return read_moduli(table).scaled(read_stiffness_scale(table));
 }
 
 double ElasticConstants::young() const {

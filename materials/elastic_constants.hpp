@@ -3,10 +3,6 @@
 
 #include "io/types.hpp"
 
-namespace grainload::io {
-class CaseTable;
-}
-
 namespace grainload::materials {
 
 /// Isotropic elastic constants and density, SI. Every material carries one.
@@ -20,12 +16,6 @@ struct ElasticConstants {
 
     static ElasticConstants from_young(double density, double young, double poisson);
     static ElasticConstants from_bulk_shear(double density, double bulk, double shear);
-    /// Reads density and either (youngs_modulus, poisson_ratio) or (bulk_modulus,
-    /// shear_modulus) from a [[material]] table; refuses both or neither.
-    /// Then multiplies K and G by the table's stiffness_scale (default 1).
-    static ElasticConstants from_case(const io::CaseTable& table);
-    /// The optional [[material]] key `stiffness_scale`, a number > 0 (default 1).
-    static double read_stiffness_scale(const io::CaseTable& table);
     /// The same material with K and G multiplied by s (on top of any earlier scale).
     ElasticConstants scaled(double s) const;
 

@@ -1,7 +1,5 @@
 #include "materials/generalized_cap.hpp"
 
-#include "io/case_table.hpp"
-
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -97,89 +95,6 @@ std::pair<std::string, std::string> GeneralizedCap::check(const cap::Parameters&
         }
     }
     return {};
-}
-
-namespace {
-
-/// MAT_025 inputs grainload does not implement: giving one is an error, never silently ignored.
-void refuse_unsupported(const io::CaseTable& table) {
-    struct Unsupported {
-        const char* key;
-        const char* message;
-    };
-    static constexpr Unsupported kUnsupported[] = {
-        {"cap_c", "MAT_025's C and N drive kinematic hardening of the failure envelope, which "
-                  "grainload does not implement; remove the key (C = 0 in a deck means none)"},
-        {"cap_n", "MAT_025's C and N drive kinematic hardening of the failure envelope, which "
-                  "grainload does not implement; remove the key (C = 0 in a deck means none)"},
-        {"cap_plot", "MAT_025's PLOT chooses the one history variable LS-DYNA writes; grainload "
-                     "keeps all of them (cap_position, hardening_parameter, "
-                     "plastic_volumetric_strain): remove the key"},
-        {"cap_vec", "MAT_025's VEC chooses a fixed iteration count (0) or a fully iterative "
-                    "return (1); grainload always iterates to convergence: remove the key"},
-        {"cap_ivec", "MAT_025's VEC chooses a fixed iteration count (0) or a fully iterative "
-                     "return (1); grainload always iterates to convergence: remove the key"},
-    };
-    for (const auto& [key, message] : kUnsupported) {
-        if (table.has(key)) {
-            table.fail(key, message);
-        }
-    }
-    if (table.has("cap_ftype") && table.integer("cap_ftype") != 1) {
-        table.fail("cap_ftype", "only FTYPE = 1 (soil/concrete: the cap contracts with "
-                                "dilatancy) is implemented; FTYPE = 2 (rock: the cap never "
-                                "contracts) is not");
-    }
-}
-
-/// Exactly one of two names for one input (grainload's and MAT_025's).
-std::string one_of(const io::CaseTable& table, const char* ours, const char* theirs) {
-    if (table.has(ours) && table.has(theirs)) {
-        table.fail(theirs, std::string("give either '") + ours + "' or '" + theirs +
-                               "' (the same input), not both");
-    }
-    return table.has(theirs) ? theirs : ours;
-}
-
-/// T >= 0 from tension_cutoff, or from MAT_025's TOFF <= 0 (compression positive): T = -TOFF.
-double tension_cutoff(const io::CaseTable& table) {
-    const std::string key = one_of(table, "tension_cutoff", "cap_toff");
-    if (key == "tension_cutoff") {
-        return table.positive_quantity_or(key, io::dimension::kPressure,
-                                          io::default_value(kGeneralizedCapKeys, "tension_cutoff"),
-                                          true);
-    }
-    const double toff = table.quantity(key, io::dimension::kPressure);
-    if (!(toff <= 0.0)) {
-        table.fail(key, "expected TOFF <= 0: MAT_025 gives the tension cutoff as the lowest I1, "
-                        "compression positive (tension_cutoff = -TOFF)");
-    }
-    return -toff;
-}
-
-} // namespace
-
-std::unique_ptr<GeneralizedCap> GeneralizedCap::from_case(const io::CaseTable& table) {
-    namespace dim = io::dimension;
-    refuse_unsupported(table);
-    cap::Parameters p;
-    p.k = table.quantity(one_of(table, "cap_k", "cap_alpha"), dim::kPressure);
-    p.theta = table.number("cap_theta");
-    p.gamma = table.quantity("cap_gamma", dim::kPressure);
-    p.beta = table.quantity("cap_beta", dim::kInversePressure);
-    p.D = table.quantity("cap_D", dim::kInversePressure);
-    p.W = table.number("cap_W");
-    p.X0 = table.quantity("cap_X0", dim::kPressure);
-    p.R = table.number("cap_R");
-    p.tension = tension_cutoff(table);
-    p.semantics = table.choice_or("cap_semantics", {"mat025", "lifted_x0"}, "mat025") == "mat025"
-                      ? cap::Semantics::mat025
-                      : cap::Semantics::lifted_x0;
-    const auto [key, message] = check(p);
-    if (!key.empty()) {
-        table.fail(key, message);
-    }
-    return std::make_unique<GeneralizedCap>(ElasticConstants::from_case(table), p);
 }
 
 std::vector<std::string> GeneralizedCap::state_names() const {

@@ -1,36 +1,14 @@
 #pragma once
 // The generalized cap model (Sandler-DiMaggio-Baladi), integrated fully implicitly.
 
-#include "io/key_spec.hpp"
 #include "materials/cap_return.hpp"
 #include "materials/material.hpp"
 
-#include <array>
 #include <memory>
 #include <string>
 #include <utility>
 
 namespace grainload::materials {
-
-/// The keys of a [[material]] with model = "generalized_cap" besides density and the elastic
-/// pair (MAT_025's names in docs/user-guide.md).
-inline constexpr std::array<io::KeySpec, 13> kGeneralizedCapKeys{{
-    {"cap_k", "pressure", "required unless `cap_alpha`", "k (MAT_025's ALPHA)"},
-    {"cap_alpha", "pressure", "required unless `cap_k`", "MAT_025's ALPHA: k by its LS-DYNA name"},
-    {"cap_theta", "number", "", "θ, the envelope's slope in (I1, sqrt(J2))"},
-    {"cap_gamma", "pressure", "", "γ (GAMMA)"},
-    {"cap_beta", "1/pressure", "", "B1 (BETA)"},
-    {"cap_R", "number", "", "R, the ellipse axis ratio (X − L)/B; 0 is a flat cap"},
-    {"cap_D", "1/pressure", "", "D, the hardening law's exponent"},
-    {"cap_W", "number", "", "W, the maximum plastic volumetric compaction"},
-    {"cap_X0", "pressure", "", "X0, the initial intercept of the cap with the I1 axis"},
-    {"tension_cutoff", "pressure", "0", "T ≥ 0 with I1 ≥ −T", 0.0},
-    {"cap_toff", "pressure", "none", "MAT_025's TOFF ≤ 0 instead of `tension_cutoff`: T = −TOFF"},
-    {"cap_semantics", "string", "`mat025`",
-     "`mat025`: X0 is the initial cap intercept as in LS-DYNA; `lifted_x0`: grainload's first "
-     "cap semantics"},
-    {"cap_ftype", "integer", "1", "FTYPE; 1 (soil/concrete) only", 1.0},
-}};
 
 /// Generalized cap model (Sandler-DiMaggio-Baladi; algorithm after Sandler & Rubin as given
 /// by Kojic & Bathe; thesis section 4.6.3; initial cap and centre as LS-DYNA's MAT_025 unless
@@ -56,11 +34,6 @@ class GeneralizedCap final : public Material {
 
     /// Throws std::invalid_argument when the parameters admit no elastic region.
     GeneralizedCap(ElasticConstants elastic, cap::Parameters parameters);
-    /// Reads the elastic keys and cap_k (or cap_alpha), cap_theta, cap_gamma, cap_beta, cap_D,
-    /// cap_W, cap_X0, cap_R, tension_cutoff (or cap_toff; optional, default 0 MPa) and
-    /// cap_semantics, each dimensional one with explicit units; MAT_025 inputs grainload does
-    /// not support are refused with a message (docs/theory/generalized_cap.md).
-    static std::unique_ptr<GeneralizedCap> from_case(const io::CaseTable& table);
 
     /// Key and message of the first inadmissible parameter; empty key when all are valid.
     static std::pair<std::string, std::string> check(const cap::Parameters& parameters);

@@ -2,10 +2,6 @@
 
 namespace grainload::materials {
 
-std::unique_ptr<LinearElastic> LinearElastic::from_case(const io::CaseTable& table) {
-    return std::make_unique<LinearElastic>(ElasticConstants::from_case(table));
-}
-
 PlasticRegion LinearElastic::update(const Voigt6& strain_increment, Voigt6& stress,
                                     std::span<double>, Matrix6* tangent) const {
     stress += elastic_.stress_from_strain(strain_increment);

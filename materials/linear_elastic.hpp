@@ -11,7 +11,6 @@ namespace grainload::materials {
 class LinearElastic final : public Material {
   public:
     explicit LinearElastic(ElasticConstants elastic) : Material(elastic) {}
-    static std::unique_ptr<LinearElastic> from_case(const io::CaseTable& table);
 
     std::string_view model() const override { return "linear_elastic"; }
     PlasticRegion update(const Voigt6& strain_increment, Voigt6& stress, std::span<double> state,

@@ -1,14 +1,11 @@
 #include "materials/lsdyna_material.hpp"
 
-#include "io/case_table.hpp"
-#include "io/deck_ledger.hpp"
 #include "io/keyword_fields.hpp"
 #include "materials/generalized_cap.hpp"
 
 #include <array>
 #include <charconv>
 #include <cmath>
-#include <filesystem>
 #include <optional>
 #include <sstream>
 #include <vector>
@@ -325,54 +322,6 @@ Mat025Material read_mat025(const io::KeywordDeck& deck, std::string_view mid,
         (card == 1 ? card2 : card1).fail(field, message);
     }
     return m;
-}
-
-std::unique_ptr<Material> material_from_lsdyna(const io::CaseTable& table) {
-    static constexpr const char* kGivenByDeck[] = {
-        "density",   "youngs_modulus", "poisson_ratio", "bulk_modulus",   "shear_modulus", "cap_k",
-        "cap_alpha", "cap_theta",      "cap_gamma",     "cap_beta",       "cap_D",         "cap_W",
-        "cap_X0",    "cap_R",          "cap_toff",      "tension_cutoff", "cap_ftype",     "cap_c",
-        "cap_n",     "cap_plot",       "cap_vec",       "cap_ivec",       "cap_semantics"};
-    for (const char* key : kGivenByDeck) {
-        if (table.has(key)) {
-            table.fail(key, "the deck of 'from_lsdyna' gives this material's parameters "
-                            "(MAT_025 semantics); remove the key or the deck");
-        }
-    }
-    if (table.has("model") && table.string("model") != "generalized_cap") {
-        table.fail("model", "a *MAT_GEOLOGIC_CAP_MODEL of 'from_lsdyna' is a generalized_cap; "
-                            "give model = \"generalized_cap\" or leave the key out");
-    }
-    const io::CaseTable source = table.table("from_lsdyna");
-    std::string error;
-    const auto units = io::parse_keyword_units(source.string("units"), &error);
-    if (!units) {
-        source.fail("units", error);
-    }
-    const auto mid = source.name_list("mid");
-    if (mid.size() != 1) {
-        source.fail("mid", "expected one material id or label");
-    }
-    const std::string path = source.file_path("file");
-    io::open_keyword_deck(source, path, *units);
-    Mat025Material m;
-    try {
-        m = read_mat025(io::read_keyword_deck(path), mid.front(), *units);
-    } catch (const std::invalid_argument& e) {
-        source.fail("file", e.what());
-    }
-    source.deck_ledger().take(path, m.file, m.line);
-    if (const std::string odd = implausible_values(m, *units); !odd.empty()) {
-        std::ostringstream warning;
-        warning << table.where("from_lsdyna") << ": material \"" << table.string("name")
-                << "\" (MID " << mid.front() << " of "
-                << std::filesystem::path(path).filename().string() << ") " << odd
-                << ": expected the deck's own unit system in from_lsdyna.units";
-        table.warn(warning.str());
-    }
-    const ElasticConstants elastic =
-        m.elastic.scaled(ElasticConstants::read_stiffness_scale(table));
-    return std::make_unique<GeneralizedCap>(elastic, m.parameters);
 }
 
 } // namespace grainload::materials

@@ -1,32 +1,17 @@
 #pragma once
 // A *MAT_GEOLOGIC_CAP_MODEL (MAT_025) material read from an LS-DYNA deck, converted to SI.
 
-#include "io/key_spec.hpp"
 #include "io/keyword_deck.hpp"
 #include "io/keyword_units.hpp"
 #include "materials/cap_surfaces.hpp"
 #include "materials/elastic_constants.hpp"
 #include "materials/material.hpp"
 
-#include <array>
 #include <memory>
 #include <string>
 #include <string_view>
 
-namespace grainload::io {
-class CaseTable;
-}
-
 namespace grainload::materials {
-
-/// The keys of a [[material]]'s `from_lsdyna` table.
-inline constexpr std::array<io::KeySpec, 3> kFromLsDynaKeys{{
-    {"file", "string", "", "the deck, relative to the case file; `*INCLUDE`s are followed"},
-    {"mid", "integer or string", "", "the material's MID (an integer id or a label)"},
-    {"units", "string", "",
-     "the deck's consistent unit system, `\"LENGTH-MASS-TIME\"` (`\"mm-t-s\"`, `\"m-kg-s\"`, "
-     "...)"},
-}};
 
 /// One *MAT_GEOLOGIC_CAP_MODEL (alias *MAT_025, both with an optional _TITLE) material of an
 /// LS-DYNA keyword deck, converted to SI with the deck's unit system. Card layout (LS-DYNA
@@ -70,13 +55,5 @@ inline constexpr double kMostModulus = 1e12;    ///< Pa
 /// their values there: "read in \"m-kg-s\" its density 2.099e-09 kg/m^3 is outside ...; read in
 /// \"mm-t-s\" they are 2099 kg/m^3, 30.6 GPa and 8.23 GPa".
 std::string implausible_values(const Mat025Material& material, const io::KeywordUnits& units);
-
-/// The [[material]] table's `from_lsdyna = {file = "sand.k", mid = 3, units = "mm-t-s"}`:
-/// reads the deck and builds the GeneralizedCap. `model`, if given, must be
-/// "generalized_cap"; keys the deck gives (density, the elastic pairs, cap_*) are refused. A
-/// deck error becomes a io::CaseError at `from_lsdyna` carrying the deck's file, line and card.
-/// The deck's units are recorded in the case's DeckLedger (one deck, one unit system) with the
-/// keyword it took; values outside the plausible ranges are a warning at `from_lsdyna`.
-std::unique_ptr<Material> material_from_lsdyna(const io::CaseTable& table);
 
 } // namespace grainload::materials

@@ -8,19 +8,19 @@
 #include <string>
 #include <vector>
 
-namespace grainload::io {
-class CaseTable;
-}
-
 namespace grainload::materials {
 
 /// The [[material]] tables of a case, each built once and referred to by name.
 class MaterialLibrary {
   public:
-    static MaterialLibrary from_case(const io::CaseTable& root);
-
-    /// Index of the material called table[key]; a CaseError names the key if there is none.
-    int index_of(const io::CaseTable& table, std::string_view key) const;
+    /// Add a material under `name` (unique), with the grain size it declares (none: a
+    /// continuum); materials/material_case_reader.hpp builds the library of a case.
+    void add(std::string name, std::unique_ptr<Material> material,
+             std::optional<double> grain_size) {
+        names_.push_back(std::move(name));
+        materials_.push_back(std::move(material));
+        grain_sizes_.push_back(grain_size);
+    }
     const Material& operator[](int index) const {
         return *materials_[static_cast<std::size_t>(index)];
     }

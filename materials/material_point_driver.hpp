@@ -8,11 +8,10 @@
 #include <string>
 #include <vector>
 
-namespace grainload::io {
-class CaseTable;
-}
-
 namespace grainload::materials {
+
+/// The Voigt components in their order, as a driver file and the CSV name them.
+inline constexpr std::array<const char*, 6> kVoigtComponents = {"xx", "yy", "zz", "xy", "yz", "zx"};
 
 /// One segment of a material-point path. Each Voigt component (xx, yy, zz, xy, yz, zx) is either
 /// strain controlled (its total engineering strain increment over the segment is prescribed and
@@ -48,20 +47,9 @@ struct MaterialPointRecord {
 void drive_material_point(const Material& material, const MaterialPointPath& path,
                           std::vector<MaterialPointRecord>& records);
 
-/// Read the [path] table of a driver file (format: docs/user-guide/matpoint.md).
-MaterialPointPath read_material_point_path(const io::CaseTable& path_table);
-
 /// CSV: step, strain (6), stress (6, Pa), equivalent plastic strain, plastic volumetric strain,
 /// cap position (Pa; empty unless the material has a "cap_position" state), region.
 void write_material_point_csv(const Material& material,
                               const std::vector<MaterialPointRecord>& records, std::ostream& out);
-
-/// `grainload matpoint DRIVER.toml --out FILE.csv`: read the driver (one [[material]] and a
-/// [path]), run it and write the CSV. Returns 0 on success and 1 when the path cannot be
-/// followed (the rows computed so far are still written); io::CaseError propagates.
-/// `notices`: the lines for the user on stderr, in order (the reading's warnings, then the
-/// path's failure), filled also when it throws.
-int run_material_point(const std::string& driver_file, const std::string& csv_out,
-                       std::vector<std::string>& notices);
 
 } // namespace grainload::materials

@@ -1,12 +1,6 @@
 #include "materials/material_schema.hpp"
 
-#include "materials/drucker_prager.hpp"
-#include "materials/generalized_cap.hpp"
-#include "materials/lsdyna_material.hpp"
-#include "materials/material_keys.hpp"
-#include "materials/mohr_coulomb.hpp"
-#include "materials/mu_i_material.hpp"
-#include "materials/von_mises.hpp"
+#include "materials/material_case_reader.hpp"
 
 #include <array>
 

@@ -1,6 +1,5 @@
 #include "materials/mohr_coulomb.hpp"
 
-#include "io/case_table.hpp"
 #include "materials/cone_fit.hpp"
 #include "materials/principal_stress.hpp"
 #include "materials/voigt_algebra.hpp"
@@ -29,22 +28,6 @@ MohrCoulomb::MohrCoulomb(ElasticConstants elastic, Parameters parameters)
     const ConeConstants inner =
         fit_cone(ConeFit::inner, p.friction_angle, p.cohesion, p.dilatancy_angle);
     inscribed_ = {inner.alpha, inner.k, inner.alpha_flow};
-}
-
-std::unique_ptr<MohrCoulomb> MohrCoulomb::from_case(const io::CaseTable& table) {
-    namespace dim = io::dimension;
-    const ElasticConstants elastic = ElasticConstants::from_case(table);
-    Parameters p;
-    p.friction_angle = table.quantity("friction_angle", dim::kAngle);
-    if (!(p.friction_angle > 0.0 && p.friction_angle < std::numbers::pi / 2.0)) {
-        table.fail("friction_angle", "expected an angle in (0, 90) deg");
-    }
-    p.cohesion = table.positive_quantity("cohesion", dim::kPressure, true);
-    p.dilatancy_angle = table.quantity("dilatancy_angle", dim::kAngle);
-    if (!(p.dilatancy_angle >= 0.0 && p.dilatancy_angle <= p.friction_angle)) {
-        table.fail("dilatancy_angle", "expected an angle between 0 and the friction angle");
-    }
-    return std::make_unique<MohrCoulomb>(elastic, p);
 }
 
 std::vector<std::string> MohrCoulomb::state_names() const {

@@ -2,27 +2,13 @@
 // The perfectly plastic Mohr-Coulomb material in 3D: the hexagonal cone itself, corners and apex
 // returned exactly.
 
-#include "io/key_spec.hpp"
 #include "materials/drucker_prager_return.hpp"
 #include "materials/material.hpp"
 #include "materials/mohr_coulomb_return.hpp"
 
-#include <array>
 #include <memory>
 
-namespace grainload::io {
-class CaseTable;
-}
-
 namespace grainload::materials {
-
-/// The keys of a [[material]] with model = "mohr_coulomb" besides density and the elastic pair
-/// (docs/user-guide.md, "`mohr_coulomb`").
-inline constexpr std::array<io::KeySpec, 3> kMohrCoulombKeys{{
-    {"friction_angle", "angle", "", "φ, 0 < φ < 90°"},
-    {"cohesion", "pressure", "", "c ≥ 0"},
-    {"dilatancy_angle", "angle", "", "ψ, 0 ≤ ψ ≤ φ; ψ = φ is associated"},
-}};
 
 /// Perfectly plastic Mohr-Coulomb material with non-associated flow (yield and potential of
 /// MohrCoulombSurface). Unlike the Drucker-Prager cones, which agree with the hexagon on one
@@ -46,8 +32,6 @@ class MohrCoulomb final : public Material {
     };
 
     MohrCoulomb(ElasticConstants elastic, Parameters parameters);
-    /// kMohrCoulombKeys plus the elastic keys.
-    static std::unique_ptr<MohrCoulomb> from_case(const io::CaseTable& table);
 
     std::string_view model() const override { return "mohr_coulomb"; }
     int state_size() const override { return 2; }

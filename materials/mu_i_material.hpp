@@ -1,37 +1,14 @@
 #pragma once
 // The elasto-viscoplastic mu(I) material: a Drucker-Prager return on the cone of mu(I).
 
-#include "io/key_spec.hpp"
 #include "materials/drucker_prager_return.hpp"
 #include "materials/material.hpp"
 #include "materials/mu_i_law.hpp"
 #include "materials/nonlocal_fluidity.hpp"
 
-#include <array>
 #include <memory>
 
-namespace grainload::io {
-class CaseTable;
-}
-
 namespace grainload::materials {
-
-/// The keys of a [[material]] with model = "mu_i" besides density and the elastic pair
-/// (docs/user-guide.md, "`mu_i`").
-inline constexpr std::array<io::KeySpec, 8> kMuIKeys{{
-    {"mu_s", "number", "required unless `angle_s`",
-     "static friction mu_s = sqrt(J2)/p at rest (I = 0), > 0"},
-    {"angle_s", "angle", "required unless `mu_s`", "the static friction as an angle: mu_s = tan"},
-    {"mu_2", "number", "required unless `angle_2`",
-     "limit friction mu_2 >= mu_s, reached as I grows without bound; below sqrt(3)"},
-    {"angle_2", "angle", "required unless `mu_2`", "the limit friction as an angle: mu_2 = tan"},
-    {"i0", "number", "", "I0 > 0: the inertial number at which mu is half-way from mu_s to mu_2"},
-    {"grain_size", "length", "", "the grain diameter d of the inertial number (> 0)"},
-    {"grain_density", "density", "",
-     "rho_s, the density of the grains' solid (not the bulk density, which it must exceed)"},
-    {"nonlocal_amplitude", "number", "none (local law)",
-     "A > 0 turns on the non-local fluidity: cooperativity length xi = A d / sqrt|mu - mu_s|"},
-}};
 
 /// Elasto-viscoplastic mu(I) material (Jop, Forterre & Pouliquen 2006): the Drucker-Prager
 /// return of drucker_prager_return.hpp on the cone sqrt(J2) = mu p, whose friction
@@ -61,8 +38,6 @@ class MuIMaterial final : public Material {
   public:
     /// nonlocal_amplitude 0: the local law.
     MuIMaterial(ElasticConstants elastic, MuILaw law, double nonlocal_amplitude = 0.0);
-    /// kMuIKeys plus the elastic keys.
-    static std::unique_ptr<MuIMaterial> from_case(const io::CaseTable& table);
 
     /// The cone of a friction coefficient mu: {mu / 3, 0, 0, 0}.
     static DruckerPragerCone cone(double mu);

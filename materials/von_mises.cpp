@@ -1,6 +1,5 @@
 #include "materials/von_mises.hpp"
 
-#include "io/case_table.hpp"
 #include "materials/voigt_algebra.hpp"
 
 #include <cmath>
@@ -24,24 +23,6 @@ VonMises::VonMises(ElasticConstants elastic, double yield_stress, double tangent
     }
     // Thesis 4.6.2.1: slope of stress against plastic strain in a uniaxial test.
     plastic_modulus_ = young * tangent_modulus / (young - tangent_modulus);
-}
-
-std::unique_ptr<VonMises> VonMises::from_case(const io::CaseTable& table) {
-    namespace dim = io::dimension;
-    const ElasticConstants elastic = ElasticConstants::from_case(table);
-    const double yield = table.positive_quantity("yield_stress", dim::kPressure);
-    const double tangent =
-        table.positive_quantity_or("tangent_modulus", dim::kPressure,
-                                   io::default_value(kVonMisesKeys, "tangent_modulus"), true);
-    if (tangent >= elastic.young()) {
-        table.fail("tangent_modulus", "expected a tangent modulus below Young's modulus");
-    }
-    const double beta =
-        table.number_or("hardening_beta", io::default_value(kVonMisesKeys, "hardening_beta"));
-    if (!(beta >= 0.0 && beta <= 1.0)) {
-        table.fail("hardening_beta", "expected a number in [0, 1] (1 isotropic, 0 kinematic)");
-    }
-    return std::make_unique<VonMises>(elastic, yield, tangent, beta);
 }
 
 std::vector<std::string> VonMises::state_names() const {

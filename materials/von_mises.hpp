@@ -1,21 +1,11 @@
 #pragma once
 // Von Mises elasto-plasticity with mixed linear isotropic/kinematic hardening.
 
-#include "io/key_spec.hpp"
 #include "materials/material.hpp"
 
-#include <array>
 #include <memory>
 
 namespace grainload::materials {
-
-/// The keys of a [[material]] with model = "von_mises" besides density and the elastic pair.
-inline constexpr std::array<io::KeySpec, 3> kVonMisesKeys{{
-    {"yield_stress", "pressure", "", "σ_0, the initial uniaxial yield stress"},
-    {"tangent_modulus", "pressure", "`\"0 Pa\"` (perfectly plastic)",
-     "E_T, the uniaxial elasto-plastic slope, 0 ≤ E_T < E", 0.0},
-    {"hardening_beta", "number", "1", "β: 1 isotropic, 0 kinematic, between: mixed", 1.0},
-}};
 
 /// Von Mises elasto-plasticity with mixed linear isotropic/kinematic hardening (thesis
 /// section 4.6.2; Kojic & Bathe, "Inelastic Analysis of Solids and Structures", ch. 4).
@@ -29,8 +19,6 @@ inline constexpr std::array<io::KeySpec, 3> kVonMisesKeys{{
 class VonMises final : public Material {
   public:
     VonMises(ElasticConstants elastic, double yield_stress, double tangent_modulus, double beta);
-    /// kVonMisesKeys plus the elastic keys.
-    static std::unique_ptr<VonMises> from_case(const io::CaseTable& table);
 
     std::string_view model() const override { return "von_mises"; }
     int state_size() const override { return 7; }

@@ -2,34 +2,13 @@
 // The run's phases ([[phase]]), each ending at a stated time or on a condition.
 
 #include "io/frame.hpp"
-#include "io/key_spec.hpp"
 #include "particles/settle_watch.hpp"
 
-#include <array>
 #include <limits>
-#include <optional>
 #include <string>
-#include <string_view>
 #include <vector>
 
-namespace grainload::io {
-class CaseTable;
-}
-
 namespace grainload::particles {
-
-/// The keys of each [[phase]] table (docs/user-guide/sph.md, "Phases: `[[phase]]`").
-inline constexpr std::array<io::KeySpec, 4> kPhaseKeys{{
-    {"name", "string", "",
-     "names the phase in log.txt and summary.json; `phase:NAME` in a time key is its start"},
-    {"end", "time, `settled` or `discharged`", "the run's end (last phase only)",
-     "the phase ends with the first step that reaches this time, that settles the scene, or "
-     "after which the sinks have taken `discharged_mass` since the phase began"},
-    {"kinetic_energy_fraction", "number", "required with `settled`",
-     "settled: the material's kinetic energy below this fraction of its peak since t = 0"},
-    {"discharged_mass", "mass", "required with `discharged`",
-     "the mass the sinks take during the phase (plane strain: per metre of depth, kg/m)"},
-}};
 
 /// The run's phases as the case states them ([[phase]]): in order, each starting where the one
 /// before ended, each ending at a stated time or on a condition (the scene settled, the sinks
@@ -53,14 +32,13 @@ class PhaseSequence {
     };
 
     PhaseSequence() = default;
-    /// The [[phase]] tables of the case's root (none: an empty sequence).
-    explicit PhaseSequence(const io::CaseTable& root);
+    /// The phases in the case's order, their ends as stated (particles_case_reader.hpp reads
+    /// them from the [[phase]] tables); the first starts at t = 0.
+    explicit PhaseSequence(std::vector<Phase> phases);
 
     bool empty() const { return phases_.empty(); }
     const std::vector<Phase>& phases() const { return phases_; }
     bool ends_on(End end) const;
-    /// Index of the phase "phase:NAME" names (the text of `table.key`); fails there otherwise.
-    int index_of(const io::CaseTable& table, std::string_view key, std::string_view text) const;
     /// The start of phase k; +infinity while it is not known.
     double start(int k) const { return phases_[static_cast<std::size_t>(k)].start; }
 
@@ -85,12 +63,5 @@ class PhaseSequence {
     std::vector<Phase> phases_;
     std::size_t current_ = 0;
 };
-
-/// True when the text of a time key names a phase's start ("phase:NAME").
-bool names_phase(std::string_view text);
-/// The phase that key `key` of `table` names ("phase:NAME" of `phases`; null: none defined),
-/// std::nullopt when the key is absent or holds anything else (a time, read as before).
-std::optional<int> read_phase_reference(const io::CaseTable& table, std::string_view key,
-                                        const PhaseSequence* phases);
 
 } // namespace grainload::particles

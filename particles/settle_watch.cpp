@@ -1,7 +1,6 @@
 #include "particles/settle_watch.hpp"
 
 #include "io/binary_stream.hpp"
-#include "io/case_table.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -9,17 +8,6 @@
 #include <stdexcept>
 
 namespace grainload::particles {
-
-SettleWatch::SettleWatch(const io::CaseTable& settle)
-    : fraction_(settle.number("kinetic_energy_fraction")),
-      after_(settle.quantity_or("after", io::dimension::kTime, 0.0)) {
-    if (!(fraction_ > 0.0 && fraction_ < 1.0)) {
-        settle.fail("kinetic_energy_fraction", "expected a fraction between 0 and 1, e.g. 1e-3");
-    }
-    if (!(after_ >= 0.0)) {
-        settle.fail("after", "expected a time >= 0 s");
-    }
-}
 
 bool SettleWatch::record(double time, double kinetic) {
     if (settled()) {

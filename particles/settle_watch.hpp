@@ -1,28 +1,15 @@
 #pragma once
 // The [sph.settle] watch: the step whose kinetic energy falls below a fraction of its largest.
 
-#include "io/key_spec.hpp"
 #include "particles/scene_part.hpp"
 
-#include <array>
 #include <functional>
 #include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
-namespace grainload::io {
-class CaseTable;
-}
-
 namespace grainload::particles {
-
-/// The keys of [sph.settle] (docs/user-guide/sph.md, "Settling: `[sph.settle]`").
-inline constexpr std::array<io::KeySpec, 2> kSettleKeys{{
-    {"kinetic_energy_fraction", "number", "",
-     "settled: the material's kinetic energy below this fraction of its peak so far"},
-    {"after", "time", "0 s", "the watch starts (e.g. when the sources stop)"},
-}};
 
 /// A settle phase that ends itself: from `after` on, the first step whose material kinetic
 /// energy falls below `fraction` of the largest it has had since t = 0 is the settle time,
@@ -31,7 +18,6 @@ class SettleWatch {
   public:
     SettleWatch() = default;
     SettleWatch(double fraction, double after) : fraction_(fraction), after_(after) {}
-    explicit SettleWatch(const io::CaseTable& settle);
 
     /// After a step ending at `time` with kinetic energy `kinetic`: true on the step that
     /// settles.

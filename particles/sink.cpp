@@ -1,8 +1,6 @@
 #include "particles/sink.hpp"
 
 #include "io/binary_stream.hpp"
-#include "io/case_table.hpp"
-#include "io/named_index.hpp"
 #include "io/output_streams.hpp"
 #include "io/steady_rate.hpp"
 
@@ -14,86 +12,6 @@
 #include <stdexcept>
 
 namespace grainload::particles {
-
-namespace dim = io::dimension;
-
-namespace {
-
-io::Region read_region(const io::CaseTable& table, int dimension) {
-    const std::string type = table.choice("type", {"plane", "box"});
-    if (type == "plane") {
-        const Vec3 point = table.vector("point", dim::kLength);
-        Vec3 normal = table.vector("normal", dim::kNone);
-        if (dimension == 2) {
-            normal.z() = 0.0;
-        }
-        if (!(normal.norm() > 0.0)) {
-            table.fail("normal", "expected a non-zero normal pointing out of the scene");
-        }
-        return io::Region::half_space(point, normal, dimension);
-    }
-    const Vec3 lower = table.vector("min", dim::kLength);
-    const Vec3 upper = table.vector("max", dim::kLength);
-    for (int a = 0; a < dimension; ++a) {
-        if (!(upper[a] > lower[a])) {
-            table.fail("max", "expected max > min in every direction");
-        }
-    }
-    return io::Region::box(lower, upper, dimension);
-}
-
-std::optional<Outlet> read_outlet(const io::CaseTable& table, int dimension) {
-    if (!table.has("outlet_width")) {
-        for (const char* key : {"outlet_length", "bulk_density"}) {
-            if (table.has(key)) {
-                table.fail(key, "needs outlet_width (the outlet's effective width)");
-            }
-        }
-        return std::nullopt;
-    }
-    Outlet outlet;
-    outlet.width = table.positive_quantity("outlet_width", dim::kLength);
-    if (table.has("outlet_length")) {
-        if (dimension == 2) {
-            table.fail("outlet_length", "plane strain: the outlet is a slot per metre of depth");
-        }
-        outlet.length = table.positive_quantity("outlet_length", dim::kLength);
-    }
-    outlet.bulk_density = table.positive_quantity("bulk_density", dim::kDensity);
-    return outlet;
-}
-
-/// The grain size of the bodies the sink takes (`body`, or every body): the one their
-/// materials declare; bodies without one (a structure, a continuum) do not count. Two different
-/// sizes leave Beverloo's k d undefined: the sink must name its body. An outlet no wider than
-/// k d passes nothing in Beverloo's law, which is then no reference.
-void read_grain(const io::CaseTable& table, int body, const std::vector<SinkSet::BodyGrain>& grains,
-                Outlet& outlet) {
-    for (std::size_t b = 0; b < grains.size(); ++b) {
-        const auto& grain = grains[b];
-        if ((body >= 0 && static_cast<int>(b) != body) || !grain.size) {
-            continue;
-        }
-        if (outlet.grain_size > 0.0 && *grain.size != outlet.grain_size) {
-            table.fail("outlet_width", "the bodies it takes declare different grain sizes "
-                                       "(materials '" +
-                                           outlet.grain_material + "' and '" + grain.material +
-                                           "'): expected `body`, the one whose grains flow");
-        }
-        outlet.grain_size = *grain.size;
-        outlet.grain_material = grain.material;
-    }
-    const double reduced = kBeverlooGrain * outlet.grain_size;
-    if (outlet.width <= reduced || (outlet.length > 0.0 && outlet.length <= reduced)) {
-        table.fail(outlet.length > 0.0 && outlet.length <= reduced ? "outlet_length"
-                                                                   : "outlet_width",
-                   "expected an outlet wider than k d = " + std::to_string(reduced) +
-                       " m (Beverloo's k = 1.5 times the grain_size of material '" +
-                       outlet.grain_material + "'): narrower, the law gives no flow");
-    }
-}
-
-} // namespace
 
 double Outlet::rate(double gravity, int dimension) const {
     const double root_g = std::sqrt(gravity);
@@ -117,25 +35,6 @@ std::string Outlet::form(int dimension) const {
                       : length > 0.0 ? "C' rho_b sqrt(g) (L - k d) (B - k d)^1.5, C' = 1.03"
                                      : "C rho_b sqrt(g) (D - k d)^2.5, C = 0.58";
     return std::string("Beverloo, Leniger & van de Velde 1961: ") + law + "; " + grain;
-}
-
-SinkSet::SinkSet(const io::CaseTable& scene, const BodyNames& bodies, int dimension, double gravity,
-                 double share, const std::vector<BodyGrain>& grains)
-    : dimension_(dimension), gravity_(gravity), share_(share) {
-    for (const auto& table : scene.array_of_tables("sink")) {
-        Sink sink;
-        sink.name = table.string("name");
-        io::refuse_repeated_name(table, sinks_, sink.name, "sink", &Sink::name);
-        sink.region = read_region(table, dimension);
-        if (table.has("body")) {
-            sink.body = bodies.index(table, "body");
-        }
-        sink.outlet = read_outlet(table, dimension);
-        if (sink.outlet) {
-            read_grain(table, sink.body, grains, *sink.outlet);
-        }
-        sinks_.push_back(std::move(sink));
-    }
 }
 
 Index SinkSet::collect_departures(const ParticleView& p, double time, std::vector<char>& gone) {

@@ -2,45 +2,15 @@
 // Sinks: particles leaving through regions, the books of what left, Beverloo's outlet rate.
 
 #include "io/frame.hpp"
-#include "io/key_spec.hpp"
 #include "io/region.hpp"
-#include "particles/body_names.hpp"
 #include "particles/particle_view.hpp"
 #include "particles/scene_part.hpp"
 
-#include <array>
 #include <optional>
 #include <string>
 #include <vector>
 
-namespace grainload::io {
-class CaseTable;
-}
-
 namespace grainload::particles {
-
-/// The keys of each [[sph.sink]] table (docs/user-guide/sph.md, "Sinks").
-inline constexpr std::array<io::KeySpec, 10> kSinkKeys{{
-    {"name", "string", "", "names the sink in discharge.csv and summary.json"},
-    {"type", "`plane` or `box`", "",
-     "plane: the particles beyond a plane leave; box: the particles inside a box leave"},
-    {"point", "length vector", "required for a plane", "a point of the plane"},
-    {"normal", "vector", "required for a plane",
-     "points out of the scene: particles on the side it points to leave"},
-    {"min", "length vector", "required for a box", "the box's lower corner"},
-    {"max", "length vector", "required for a box",
-     "the box's upper corner, above min on every axis"},
-    {"body", "string", "every body",
-     "only the particles of the body of this name leave through the sink"},
-    {"outlet_width", "length", "none",
-     "the effective width of the outlet the sink drains (a slot's width, a circle's diameter): "
-     "gives the steady rate Beverloo's figure as its reference and `grainload check` a "
-     "discharge law"},
-    {"outlet_length", "length", "3D: a circle",
-     "3D: the length of a rectangular slot outlet; without it the outlet is circular"},
-    {"bulk_density", "density", "required with outlet_width",
-     "the flowing material's bulk density in Beverloo's law"},
-}};
 
 /// Beverloo's discharge rate of a flat-bottomed outlet (Beverloo, Leniger & van de Velde 1961,
 /// Chem. Eng. Sci. 15; Nedderman 1992): a slot of width B and
@@ -85,14 +55,11 @@ class SinkSet final : public ScenePart {
         std::optional<double> size;
     };
 
-    /// The sink tables of `scene` ([[sph.sink]] in `[sph]`); `body` keys name `bodies`; `gravity`
-    /// is the magnitude Beverloo's rate takes, `share` the part of each outlet the model holds (1/2
-    /// per symmetry plane through it), `grains` each body's grain size (empty: none).
-    SinkSet(const io::CaseTable& scene, const BodyNames& bodies, int dimension, double gravity,
-            double share = 1.0, const std::vector<BodyGrain>& grains = {});
-    /// `dimension` 2: masses are per unit thickness (kg/m), as the particles' are.
-    SinkSet(std::vector<Sink> sinks, int dimension)
-        : sinks_(std::move(sinks)), dimension_(dimension) {}
+    /// `dimension` 2: masses are per unit thickness (kg/m), as the particles' are. `gravity` is
+    /// the magnitude Beverloo's rate takes, `share` the part of each outlet the model holds (1/2
+    /// per symmetry plane through it); particles/particles_case_reader.hpp reads them from a case.
+    SinkSet(std::vector<Sink> sinks, int dimension, double gravity = 0.0, double share = 1.0)
+        : sinks_(std::move(sinks)), dimension_(dimension), gravity_(gravity), share_(share) {}
 
     bool empty() const { return sinks_.empty(); }
     const std::vector<Sink>& sinks() const { return sinks_; }

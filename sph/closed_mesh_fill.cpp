@@ -1,6 +1,5 @@
 #include "sph/closed_mesh_fill.hpp"
 
-#include "io/case_table.hpp"
 #include "io/surface_mesh_reader.hpp"
 
 #include <Eigen/Geometry>
@@ -179,29 +178,6 @@ std::vector<Vec3> fill_closed_mesh(const io::SurfaceMesh& mesh, double spacing) 
         rows.add_triangle(v[a], v[c], v[d]);
     }
     return rows.inside_points();
-}
-
-std::vector<Vec3> fill_mesh_shape(const io::CaseTable& shape, double spacing, int dimension) {
-    if (dimension != 3) {
-        shape.fail("type", "a mesh body needs a 3D case (dimension = 3); in plane strain use "
-                           "box, cylinder or cone");
-    }
-    const io::SurfaceMesh mesh = io::read_surface_mesh(shape);
-    if (mesh.triangles.empty() && mesh.quads.empty()) {
-        shape.fail("file", "the mesh has no triangles or quadrangles to fill");
-    }
-    const EdgeUse edges = count_edge_use(mesh);
-    if (edges.boundary > 0 || edges.non_manifold > 0) {
-        shape.fail("file",
-                   "a mesh body needs a closed (watertight) surface: " +
-                       std::to_string(edges.boundary) + " boundary edges (in one face only) and " +
-                       std::to_string(edges.non_manifold) + " edges in more than two faces");
-    }
-    try {
-        return fill_closed_mesh(mesh, spacing);
-    } catch (const std::runtime_error& error) {
-        shape.fail("file", error.what());
-    }
 }
 
 } // namespace grainload::sph

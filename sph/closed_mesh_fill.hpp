@@ -5,10 +5,6 @@
 
 #include <vector>
 
-namespace grainload::io {
-class CaseTable;
-}
-
 namespace grainload::sph {
 
 /// Edges of a triangle/quadrangle mesh counted by the faces that use them: a closed
@@ -30,9 +26,5 @@ EdgeUse count_edge_use(const io::SurfaceMesh& mesh);
 /// faces sharing an edge always see the same sign. Throws std::runtime_error if a row still
 /// has an odd number of crossings (a surface that is not closed).
 std::vector<Vec3> fill_closed_mesh(const io::SurfaceMesh& mesh, double spacing);
-
-/// generate_body_points for [sph.body.shape] type = "mesh": the mesh of the table's `file`
-/// (see io::read_surface_mesh), refused unless closed and in a 3D case.
-std::vector<Vec3> fill_mesh_shape(const io::CaseTable& shape, double spacing, int dimension);
 
 } // namespace grainload::sph

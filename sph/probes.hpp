@@ -11,10 +11,6 @@
 #include <utility>
 #include <vector>
 
-namespace grainload::io {
-class CaseTable;
-}
-
 namespace grainload::sph {
 
 /// The keys of each [[sph.probe]].

@@ -1,7 +1,6 @@
 #pragma once
 // Sources: particles entering the scene through box regions at a mass rate.
 
-#include "io/key_spec.hpp"
 #include "io/region.hpp"
 #include "particles/phase_sequence.hpp"
 #include "particles/scene_part.hpp"
@@ -12,26 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace grainload::io {
-class CaseTable;
-}
-
 namespace grainload::sph {
-
-/// The keys of each [[sph.source]] table (docs/user-guide/sph.md, "Sources").
-inline constexpr std::array<io::KeySpec, 9> kSourceKeys{{
-    {"name", "string", "", "names the source in log.txt and summary.json"},
-    {"body", "string", "", "the [[sph.body]] whose particles (material, spacing) it creates"},
-    {"min", "length vector", "", "the lower corner of the box the particles are created in"},
-    {"max", "length vector", "", "the box's upper corner, above min by a spacing on every axis"},
-    {"shape", "table", "none: min and max",
-     "instead of min and max: any [sph.body.shape] (cylinder, cone, mesh, cuts)"},
-    {"mass_rate", "mass rate", "", "kg/s created (in plane strain per metre of depth, kg/(m s))"},
-    {"start", "time or `phase:NAME`", "0 s",
-     "creation starts (phase:NAME: when that phase begins)"},
-    {"end", "time or `phase:NAME`", "never", "creation ends (phase:NAME: when that phase begins)"},
-    {"velocity", "velocity vector", "0 m/s", "the velocity the new particles start with"},
-}};
 
 /// Particles entering the scene through box regions at a mass rate (the way silos are filled).
 /// Each source owns a lattice at the body's spacing inside its box; a step owes it
@@ -68,18 +48,11 @@ class SourceSet final : public particles::ScenePart {
     static constexpr double kMinimumGap = 0.99;
 
     SourceSet() = default;
-    /// The [[sph.source]] tables of `sph`. `body_material[b]` and `body_density[b]` describe
-    /// body b; every body has `spacing`. A source's region is its box (min, max) or any body
-    /// shape ([sph.source.shape]: a cylinder for a silo); its sites are taken lowest first
-    /// against `gravity`. `start` and `end` may name the start of one of `phases`.
-    SourceSet(const io::CaseTable& sph, const std::vector<std::string>& body_names,
-              const std::vector<int>& body_material, const std::vector<double>& body_density,
-              double spacing, int dimension, const Vec3& gravity,
-              const particles::PhaseSequence* phases = nullptr);
     /// Set the start and end that name phases to those phases' starts as now known.
     void apply_phase_starts(const particles::PhaseSequence& phases);
-    SourceSet(std::vector<Source> sources, double spacing)
-        : sources_(std::move(sources)), spacing_(spacing) {}
+    /// Sources of bodies at `spacing` (sph/source_case_reader.hpp reads them from a case).
+    SourceSet(std::vector<Source> sources, double spacing, int dimension = 3)
+        : sources_(std::move(sources)), spacing_(spacing), dimension_(dimension) {}
 
     bool empty() const { return sources_.empty(); }
     const std::vector<Source>& sources() const { return sources_; }

@@ -2,6 +2,8 @@
 
 #include "io/case_table.hpp"
 #include "io/named_index.hpp"
+#include "io/surface_mesh_reader.hpp"
+#include "particles/particles_case_reader.hpp"
 #include "sph/initial_stress.hpp"
 #include "sph/surface_mesh_wall.hpp"
 
@@ -190,7 +192,7 @@ void read_removal(const io::CaseTable& table, const particles::PhaseSequence* ph
     if (!table.has("remove_at")) {
         return;
     }
-    if (const auto phase = read_phase_reference(table, "remove_at", phases)) {
+    if (const auto phase = particles::read_phase_reference(table, "remove_at", phases)) {
         wall.removal_phase = *phase;
     } else if (table.string("remove_at") == "settled") {
         wall.removal_on_settle = true;
@@ -228,7 +230,7 @@ void attach_motion(const io::CaseTable& table, const particles::PhaseSequence* p
     }
     motion.relative_velocity_history = std::move(velocity_history);
     motion.relative_angular_velocity_history = std::move(angular_history);
-    if (const auto phase = read_phase_reference(table, "history_start", phases)) {
+    if (const auto phase = particles::read_phase_reference(table, "history_start", phases)) {
         motion.history_phase = *phase;
     } else {
         motion.start_histories(table.positive_quantity("history_start", dim::kTime, true));
@@ -380,6 +382,47 @@ std::vector<FrictionPair> read_friction_pairs(const io::CaseTable& sph,
         pairs.push_back(pair);
     }
     return pairs;
+}
+
+std::vector<int> read_wall_bodies(const io::CaseTable& table,
+                                  const std::vector<std::string>& body_names) {
+    std::vector<int> bodies;
+    if (!table.has("bodies")) {
+        return bodies;
+    }
+    std::string known;
+    for (const std::string& name : body_names) {
+        known += (known.empty() ? "\"" : ", \"") + name + "\"";
+    }
+    for (const std::string& name : table.name_list("bodies")) {
+        const auto found = std::find(body_names.begin(), body_names.end(), name);
+        if (found == body_names.end()) {
+            table.fail("bodies", "no [[sph.body]] called \"" + name +
+                                     "\": expected names of bodies (" + known + ")");
+        }
+        const auto id = static_cast<int>(found - body_names.begin());
+        if (std::find(bodies.begin(), bodies.end(), id) != bodies.end()) {
+            table.fail("bodies", "body \"" + name + "\" is listed twice: expected each once");
+        }
+        bodies.push_back(id);
+    }
+    return bodies;
+}
+
+MeshWallSamples read_mesh_wall_points(const io::CaseTable& wall, int dimension, double spacing,
+                                      int layers, bool flip_normals) {
+    const io::SurfaceMesh mesh = io::read_surface_mesh(wall);
+    const auto faces = mesh.triangles.size() + mesh.quads.size();
+    if (dimension == 2 && mesh.segments.empty()) {
+        wall.fail("file", "in plane strain (dimension = 2) a mesh wall is a polyline: expected a "
+                          "Gmsh .msh file with 2-node line elements (type 1); this mesh has " +
+                              std::to_string(faces) + " faces and no lines");
+    }
+    if (dimension == 3 && faces == 0) {
+        wall.fail("file", "a 3D mesh wall needs triangles or quadrangles; this mesh has " +
+                              std::to_string(mesh.segments.size()) + " lines and no faces");
+    }
+    return mesh_wall_points(mesh, spacing, layers, dimension, flip_normals);
 }
 
 } // namespace grainload::sph

@@ -9,6 +9,7 @@
 #include "sph/probes.hpp"
 #include "sph/rigid_wall.hpp"
 #include "sph/sph_options.hpp"
+#include "sph/surface_mesh_wall.hpp"
 
 #include <array>
 #include <string>
@@ -188,5 +189,17 @@ std::vector<PeriodicAxis> read_periodic_axes(const io::CaseTable& sph, const Par
                                              const std::vector<std::string>& body_names,
                                              const std::vector<SymmetryPlane>& planes,
                                              int dimension, double search_radius);
+
+/// A wall table's optional `bodies` key: one [[sph.body]] name or a list of them, as body ids
+/// (indices into `body_names`). Absent: empty (all bodies). An unknown name, an empty list or
+/// a name given twice fails at the key (file:line, exit code 2).
+std::vector<int> read_wall_bodies(const io::CaseTable& table,
+                                  const std::vector<std::string>& body_names);
+
+/// mesh_wall_points for a [[sph.wall]] of type = "mesh": the mesh of its `file` (see
+/// io::read_surface_mesh), with the wall's `flip_normals` as its reader read it. Refused when
+/// the mesh has no faces (3D) or no line segments (plane strain).
+MeshWallSamples read_mesh_wall_points(const io::CaseTable& wall, int dimension, double spacing,
+                                      int layers, bool flip_normals);
 
 } // namespace grainload::sph

@@ -2,7 +2,9 @@
 
 #include "io/case_table.hpp"
 #include "io/named_index.hpp"
-#include "sph/body_generator.hpp"
+#include "materials/material_case_reader.hpp"
+#include "particles/particles_case_reader.hpp"
+#include "sph/body_shape_reader.hpp"
 #include "sph/outlet_reach.hpp"
 #include "sph/probes.hpp"
 #include "sph/scene_limits.hpp"
@@ -10,6 +12,7 @@
 #include "sph/sph_case_reader.hpp"
 #include "sph/start_gap.hpp"
 #include "sph/wall_bodies.hpp"
+#include "sph/wall_map_reader.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -90,7 +93,7 @@ int SphModel::body_id(const std::string& name) const {
 
 void SphModel::build(const io::CaseTable& root) {
     const io::CaseTable sph = root.table("sph");
-    phases_ = particles::PhaseSequence(root);
+    phases_ = particles::read_phases(root);
     if (!phases_.empty() && !interactions_) {
         root.fail("phase", "phases act on the SPH solver's walls, sources and sinks: expected "
                            "interactions = true");
@@ -126,7 +129,7 @@ void SphModel::build(const io::CaseTable& root) {
         apply_phase_starts();
     }
     if (solver_) {
-        WallMapSet maps(sph, solver_->particles(), solver_->walls(), dimension_);
+        WallMapSet maps = read_wall_maps(sph, solver_->particles(), solver_->walls(), dimension_);
         if (!maps.empty()) {
             parts_.add(wall_map_part(std::move(maps), solver_->particles(), solver_->walls()));
         }
@@ -279,7 +282,7 @@ void SphModel::set_output(io::OutputStreams& output) {
 void SphModel::add_body(const io::CaseTable& body, int dimension) {
     std::string name = body.string("name");
     io::refuse_repeated_name(body, body_names_, name, "body");
-    const int material = materials_->index_of(body, "material");
+    const int material = materials::read_material_index(*materials_, body, "material");
     const double spacing = body.positive_quantity("spacing", dim::kLength);
     if (spacing_ > 0.0 && std::abs(spacing - spacing_) > 1e-9 * spacing_) {
         body.fail("spacing", "every body must use the same particle spacing (one smoothing "

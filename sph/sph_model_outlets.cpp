@@ -4,6 +4,7 @@
 #include "io/binary_stream.hpp"
 #include "io/case_table.hpp"
 #include "particles/mass_audit.hpp"
+#include "particles/particles_case_reader.hpp"
 #include "sph/gates.hpp"
 #include "sph/particle_removal.hpp"
 #include "sph/sph_model.hpp"
@@ -22,9 +23,9 @@ void SphModel::build_outlets(const io::CaseTable& sph) {
     for (const int material : body_material_) {
         grains.push_back({materials_->name(material), materials_->grain_size(material)});
     }
-    sinks_ =
-        std::make_shared<particles::SinkSet>(sph, particles::BodyNames{"[[sph.body]]", body_names_},
-                                             dimension_, gravity_.norm(), share, grains);
+    sinks_ = std::make_shared<particles::SinkSet>(
+        particles::read_sinks(sph, particles::BodyNames{"[[sph.body]]", body_names_}, dimension_,
+                              gravity_.norm(), share, grains));
     if (!sinks_->empty()) {
         parts_.add(sinks_);
     }
@@ -77,7 +78,7 @@ void SphModel::build_settle(const io::CaseTable& sph, bool walls_wait) {
                          "the settle watch needs the SPH solver: expected interactions = true");
         }
         auto part = std::make_shared<particles::SettlePart>(
-            particles::SettleWatch(*settle), [this] { return solver_->kinetic_energy(); });
+            particles::read_settle_watch(*settle), [this] { return solver_->kinetic_energy(); });
         settle_ = part;
         parts_.add(std::move(part));
     } else if (walls_wait) {

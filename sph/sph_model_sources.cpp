@@ -3,6 +3,7 @@
 // sph_model_outlets.cpp.
 #include "io/binary_stream.hpp"
 #include "io/case_table.hpp"
+#include "sph/source_case_reader.hpp"
 #include "sph/sph_model.hpp"
 
 #include <stdexcept>
@@ -21,8 +22,8 @@ void SphModel::build_sources(const io::CaseTable& sph) {
     for (const int material : body_material_) {
         density.push_back((*materials_)[material].density());
     }
-    sources_ = std::make_shared<SourceSet>(sph, body_names_, body_material_, density, spacing_,
-                                           dimension_, gravity_, &phases_);
+    sources_ = std::make_shared<SourceSet>(read_sources(sph, body_names_, body_material_, density,
+                                                        spacing_, dimension_, gravity_, &phases_));
     if (!sources_->empty()) {
         parts_.add(sources_);
     }

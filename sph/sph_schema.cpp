@@ -1,18 +1,16 @@
 #include "sph/sph_schema.hpp"
 
 #include "io/surface_mesh_reader.hpp"
-#include "particles/phase_sequence.hpp"
-#include "particles/settle_watch.hpp"
-#include "particles/sink.hpp"
-#include "sph/body_generator.hpp"
+#include "particles/particles_case_reader.hpp"
+#include "sph/body_shape_reader.hpp"
 #include "sph/heap_monitor.hpp"
-#include "sph/keyword_body.hpp"
+#include "sph/keyword_body_reader.hpp"
 #include "sph/probes.hpp"
-#include "sph/source.hpp"
+#include "sph/source_case_reader.hpp"
 #include "sph/sph_case_reader.hpp"
 #include "sph/sph_model.hpp"
 #include "sph/symmetry.hpp"
-#include "sph/wall_map.hpp"
+#include "sph/wall_map_reader.hpp"
 
 #include <array>
 

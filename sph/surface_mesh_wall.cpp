@@ -1,8 +1,5 @@
 #include "sph/surface_mesh_wall.hpp"
 
-#include "io/case_table.hpp"
-#include "io/surface_mesh_reader.hpp"
-
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
@@ -210,22 +207,6 @@ MeshWallSamples mesh_wall_points(const io::SurfaceMesh& mesh, double spacing, in
     }
     wall.points = merger.take();
     return wall;
-}
-
-MeshWallSamples read_mesh_wall_points(const io::CaseTable& wall, int dimension, double spacing,
-                                      int layers, bool flip_normals) {
-    const io::SurfaceMesh mesh = io::read_surface_mesh(wall);
-    const auto faces = mesh.triangles.size() + mesh.quads.size();
-    if (dimension == 2 && mesh.segments.empty()) {
-        wall.fail("file", "in plane strain (dimension = 2) a mesh wall is a polyline: expected a "
-                          "Gmsh .msh file with 2-node line elements (type 1); this mesh has " +
-                              std::to_string(faces) + " faces and no lines");
-    }
-    if (dimension == 3 && faces == 0) {
-        wall.fail("file", "a 3D mesh wall needs triangles or quadrangles; this mesh has " +
-                              std::to_string(mesh.segments.size()) + " lines and no faces");
-    }
-    return mesh_wall_points(mesh, spacing, layers, dimension, flip_normals);
 }
 
 } // namespace grainload::sph

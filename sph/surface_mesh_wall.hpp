@@ -6,10 +6,6 @@
 
 #include <vector>
 
-namespace grainload::io {
-class CaseTable;
-}
-
 namespace grainload::sph {
 
 /// Particles of a rigid wall on a surface mesh (3D: its triangles and quadrangles; plane
@@ -38,11 +34,5 @@ MeshWallSamples mesh_wall_points(const io::SurfaceMesh& mesh, double spacing, in
 /// spacing may ask for more than memory or an int holds, which callers refuse first.
 double mesh_wall_sample_bound(const io::SurfaceMesh& mesh, double spacing, int layers,
                               int dimension);
-
-/// mesh_wall_points for a [[sph.wall]] of type = "mesh": the mesh of its `file` (see
-/// io::read_surface_mesh), with the wall's `flip_normals` as its reader read it. Refused when
-/// the mesh has no faces (3D) or no line segments (plane strain).
-MeshWallSamples read_mesh_wall_points(const io::CaseTable& wall, int dimension, double spacing,
-                                      int layers, bool flip_normals);
 
 } // namespace grainload::sph

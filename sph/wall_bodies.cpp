@@ -1,7 +1,5 @@
 #include "sph/wall_bodies.hpp"
 
-#include "io/case_table.hpp"
-
 #include <algorithm>
 
 namespace grainload::sph {
@@ -33,31 +31,6 @@ WallBodyFilter wall_body_filter(const std::vector<Wall>& walls) {
         }
     }
     return filter;
-}
-
-std::vector<int> read_wall_bodies(const io::CaseTable& table,
-                                  const std::vector<std::string>& body_names) {
-    std::vector<int> bodies;
-    if (!table.has("bodies")) {
-        return bodies;
-    }
-    std::string known;
-    for (const std::string& name : body_names) {
-        known += (known.empty() ? "\"" : ", \"") + name + "\"";
-    }
-    for (const std::string& name : table.name_list("bodies")) {
-        const auto found = std::find(body_names.begin(), body_names.end(), name);
-        if (found == body_names.end()) {
-            table.fail("bodies", "no [[sph.body]] called \"" + name +
-                                     "\": expected names of bodies (" + known + ")");
-        }
-        const auto id = static_cast<int>(found - body_names.begin());
-        if (std::find(bodies.begin(), bodies.end(), id) != bodies.end()) {
-            table.fail("bodies", "body \"" + name + "\" is listed twice: expected each once");
-        }
-        bodies.push_back(id);
-    }
-    return bodies;
 }
 
 } // namespace grainload::sph

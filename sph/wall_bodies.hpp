@@ -6,10 +6,6 @@
 #include <string>
 #include <vector>
 
-namespace grainload::io {
-class CaseTable;
-}
-
 namespace grainload::sph {
 
 /// Which body-wall pairs of particles never interact (Wall::bodies): a table over the
@@ -25,11 +21,5 @@ struct WallBodyFilter {
 /// The filter of `walls`: each wall with a `bodies` list is kept apart from every other id
 /// below the largest wall id (walls never pair with each other anyway).
 WallBodyFilter wall_body_filter(const std::vector<Wall>& walls);
-
-/// A wall table's optional `bodies` key: one [[sph.body]] name or a list of them, as body ids
-/// (indices into `body_names`). Absent: empty (all bodies). An unknown name, an empty list or
-/// a name given twice fails at the key (file:line, exit code 2).
-std::vector<int> read_wall_bodies(const io::CaseTable& table,
-                                  const std::vector<std::string>& body_names);
 
 } // namespace grainload::sph

@@ -1,7 +1,7 @@
-// Reading the [[sph.wall_map]] tables (keys: kWallMapKeys in sph/wall_map.hpp).
+#include "sph/wall_map_reader.hpp"
+
 #include "io/case_table.hpp"
 #include "io/named_index.hpp"
-#include "sph/wall_map.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -122,12 +122,13 @@ void read_bins(const io::CaseTable& table, int dimension, WallMapSet::Map& map) 
 
 } // namespace
 
-WallMapSet::WallMapSet(const io::CaseTable& sph, const ParticleSet& particles,
-                       const std::vector<Wall>& walls, int dimension) {
+WallMapSet read_wall_maps(const io::CaseTable& sph, const ParticleSet& particles,
+                          const std::vector<Wall>& walls, int dimension) {
+    std::vector<WallMapSet::Map> maps;
     for (const auto& table : sph.array_of_tables("wall_map")) {
-        Map map;
+        WallMapSet::Map map;
         map.name = table.string("name");
-        io::refuse_repeated_name(table, maps_, map.name, "wall map", &Map::name);
+        io::refuse_repeated_name(table, maps, map.name, "wall map", &WallMapSet::Map::name);
         map.walls = read_walls(table, walls);
         for (const int w : map.walls) {
             // add_wall gives a wall particle the mass density x spacing^dimension.
@@ -162,9 +163,9 @@ WallMapSet::WallMapSet(const io::CaseTable& sph, const ParticleSet& particles,
             map.window_start = window[0];
             map.window_end = window[1];
         }
-        maps_.push_back(std::move(map));
+        maps.push_back(std::move(map));
     }
-    reset();
+    return WallMapSet(std::move(maps));
 }
 
 } // namespace grainload::sph

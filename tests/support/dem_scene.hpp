@@ -4,6 +4,7 @@
 #include "dem/dem_model.hpp"
 #include "io/case_table.hpp"
 #include "io/scene_settings.hpp"
+#include "materials/material_case_reader.hpp"
 #include "materials/material_library.hpp"
 
 #include <algorithm>
@@ -17,8 +18,9 @@ inline std::unique_ptr<dem::DemModel> dem_model(const std::string& text) {
     auto document = io::CaseDocument::from_string(text, "dem.toml");
     const io::SceneSettings settings = io::read_scene_settings(*document, "dem");
     const io::CaseTable root = document->root();
-    const materials::MaterialLibrary library = materials::MaterialLibrary::from_case(root);
-    auto model = dem::DemModel::from_case(root, settings, library);
+    const materials::MaterialLibrary library = materials::read_material_library(root);
+    auto model = std::make_unique<dem::DemModel>(dem::read_dem_settings(root, library, settings),
+                                                 settings, library);
     document->reject_unknown_keys();
     return model;
 }

@@ -2,6 +2,7 @@
 
 #include "io/case_table.hpp"
 #include "io/scene_settings.hpp"
+#include "materials/material_case_reader.hpp"
 #include "materials/material_library.hpp"
 #include "sph/sph_model.hpp"
 
@@ -18,7 +19,7 @@ struct SphScene {
     SphScene(const std::string& text, const std::string& file)
         : document(io::CaseDocument::from_string(text, file)),
           settings(io::read_scene_settings(*document, std::filesystem::path(file).stem())),
-          materials(materials::MaterialLibrary::from_case(document->root())),
+          materials(materials::read_material_library(document->root())),
           model(sph::SphModel::from_case(document->root(), settings, materials)) {}
     SphScene(const SphScene&) = delete;
     SphScene& operator=(const SphScene&) = delete;

@@ -4,6 +4,7 @@
 #include "coupling/dem_coupled_model.hpp"
 #include "io/case_table.hpp"
 #include "io/scene_settings.hpp"
+#include "materials/material_case_reader.hpp"
 #include "materials/material_library.hpp"
 
 #include <cmath>
@@ -53,7 +54,7 @@ std::unique_ptr<DemCoupledModel> sphere_on_plate(const std::string& centre,
     const io::CaseTable root = document->root();
     // The shell's parts keep their materials by reference, as the scene keeps its library.
     static materials::MaterialLibrary library;
-    library = materials::MaterialLibrary::from_case(root);
+    library = materials::read_material_library(root);
     auto model = read_dem_coupled_model(root, settings, library);
     document->reject_unknown_keys();
     return model;

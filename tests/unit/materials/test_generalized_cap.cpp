@@ -4,7 +4,7 @@
 
 #include "io/case_error.hpp"
 #include "io/case_table.hpp"
-#include "materials/material_factory.hpp"
+#include "materials/material_case_reader.hpp"
 #include "tests/unit/materials/cap_test_support.hpp"
 
 #include <cmath>
@@ -433,7 +433,7 @@ std::unique_ptr<Material> from_case(const std::string& cap_keys) {
         "bulk_modulus = \"30.62 GPa\"\nshear_modulus = \"8.23 GPa\"\n" +
             cap_keys,
         "case.toml");
-    auto material = make_material(document->root().array_of_tables("material").front());
+    auto material = read_material(document->root().array_of_tables("material").front());
     document->reject_unknown_keys();
     return material;
 }

@@ -8,7 +8,7 @@
 
 #include "io/case_error.hpp"
 #include "io/case_table.hpp"
-#include "materials/material_factory.hpp"
+#include "materials/material_case_reader.hpp"
 #include "tests/unit/materials/cap_test_support.hpp"
 
 #include <cmath>
@@ -317,7 +317,7 @@ TEST(GeneralizedCapMat025, FlatTopAndCutoffOfAClampedCap) {
 std::unique_ptr<Material> from_case(const std::string& keys) {
     const auto document = io::CaseDocument::from_string(
         "[[material]]\nmodel = \"generalized_cap\"\n" + keys, "case.toml");
-    auto material = make_material(document->root().array_of_tables("material").front());
+    auto material = read_material(document->root().array_of_tables("material").front());
     document->reject_unknown_keys();
     return material;
 }

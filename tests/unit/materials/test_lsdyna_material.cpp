@@ -10,8 +10,8 @@
 #include "io/keyword_deck.hpp"
 #include "materials/generalized_cap.hpp"
 #include "materials/lsdyna_material.hpp"
-#include "materials/material_factory.hpp"
-#include "materials/material_point_driver.hpp"
+#include "materials/material_case_reader.hpp"
+#include "materials/material_point_reader.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -111,7 +111,7 @@ std::unique_ptr<Material> material_of(const std::string& case_file) {
     auto document = io::CaseDocument::from_file(case_file);
     const io::CaseTable table = document->root().array_of_tables("material").front();
     table.string("name");
-    auto m = make_material(table);
+    auto m = read_material(table);
     document->reject_unknown_keys();
     return m;
 }
@@ -230,7 +230,7 @@ TEST(LsdynaMaterial, SameResponseOnTheMaterialPointDriverAsTheCapKeys) {
     for (const char* file : {"oedometer_cap_wagon.toml", "oedometer_cap_wagon_deck.toml"}) {
         auto document = io::CaseDocument::from_file(dir + file);
         const io::CaseTable root = document->root();
-        built.push_back(make_material(root.array_of_tables("material").front()));
+        built.push_back(read_material(root.array_of_tables("material").front()));
         const MaterialPointPath path = read_material_point_path(root.table("path"));
         runs.emplace_back();
         drive_material_point(*built.back(), path, runs.back());

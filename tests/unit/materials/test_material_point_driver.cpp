@@ -1,7 +1,7 @@
 #include "io/case_error.hpp"
 #include "io/case_table.hpp"
-#include "materials/material_factory.hpp"
-#include "materials/material_point_driver.hpp"
+#include "materials/material_case_reader.hpp"
+#include "materials/material_point_reader.hpp"
 #include "support/test_folder.hpp"
 
 #include <fstream>
@@ -30,7 +30,7 @@ struct DriverRun {
 DriverRun run_text(const std::string& text) {
     const auto document = io::CaseDocument::from_string(text, "driver.toml");
     const io::CaseTable root = document->root();
-    DriverRun run{make_material(root.array_of_tables("material").front()), {}};
+    DriverRun run{read_material(root.array_of_tables("material").front()), {}};
     drive_material_point(*run.material, read_material_point_path(root.table("path")), run.records);
     return run;
 }

@@ -8,7 +8,7 @@
 #include "material_test_support.hpp"
 #include "materials/cone_fit.hpp"
 #include "materials/drucker_prager.hpp"
-#include "materials/material_factory.hpp"
+#include "materials/material_case_reader.hpp"
 #include "materials/material_point_driver.hpp"
 #include "materials/mohr_coulomb.hpp"
 #include "materials/principal_stress.hpp"
@@ -245,7 +245,7 @@ std::unique_ptr<Material> build(const std::string& keys) {
         "youngs_modulus = \"50 MPa\"\npoisson_ratio = 0.3\n" +
             keys,
         "case.toml");
-    auto material = make_material(document->root().array_of_tables("material").front());
+    auto material = read_material(document->root().array_of_tables("material").front());
     document->reject_unknown_keys();
     return material;
 }

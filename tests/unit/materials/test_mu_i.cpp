@@ -8,7 +8,7 @@
 #include "io/case_table.hpp"
 #include "materials/cone_fit.hpp"
 #include "materials/drucker_prager.hpp"
-#include "materials/material_factory.hpp"
+#include "materials/material_case_reader.hpp"
 #include "materials/material_library.hpp"
 #include "materials/mu_i_material.hpp"
 #include "materials/voigt_algebra.hpp"
@@ -36,7 +36,7 @@ MuILaw glass_beads() {
 
 std::unique_ptr<Material> build(const std::string& body) {
     const auto document = io::CaseDocument::from_string("[[material]]\n" + body, "case.toml");
-    auto material = make_material(document->root().array_of_tables("material").front());
+    auto material = read_material(document->root().array_of_tables("material").front());
     document->reject_unknown_keys();
     return material;
 }
@@ -324,7 +324,7 @@ TEST(MuIMaterial, GrainSizeInItsSubTableIsTheLibrarysGrainSize) {
             "[material.mu_i]\nmu_s = 0.4\nmu_2 = 0.6\ni0 = 0.3\ngrain_size = \"2 mm\"\n"
             "grain_density = \"2500 kg/m^3\"\n",
         "case.toml");
-    const MaterialLibrary library = MaterialLibrary::from_case(document->root());
+    const MaterialLibrary library = read_material_library(document->root());
     document->reject_unknown_keys();
     ASSERT_TRUE(library.grain_size(0).has_value());
     EXPECT_DOUBLE_EQ(*library.grain_size(0), 2e-3);

@@ -5,7 +5,7 @@
 
 #include "io/case_error.hpp"
 #include "io/case_table.hpp"
-#include "materials/material_factory.hpp"
+#include "materials/material_case_reader.hpp"
 #include "materials/mu_i_material.hpp"
 #include "materials/nonlocal_fluidity.hpp"
 #include "materials/voigt_algebra.hpp"
@@ -146,7 +146,7 @@ TEST(NonlocalFluidity, TheReaderTakesThePositiveAmplitudeOnly) {
                              "poisson_ratio = 0.3\n";
     auto read = [&](const std::string& extra) {
         const auto document = io::CaseDocument::from_string(keys + extra, "case.toml");
-        return make_material(document->root().array_of_tables("material").front());
+        return read_material(document->root().array_of_tables("material").front());
     };
     const auto local = read("");
     EXPECT_EQ(local->nonlocal_fluidity(), nullptr);

@@ -2,7 +2,7 @@
 #include "io/case_table.hpp"
 #include "materials/drucker_prager.hpp"
 #include "materials/generalized_cap.hpp"
-#include "materials/material_factory.hpp"
+#include "materials/material_case_reader.hpp"
 #include "materials/von_mises.hpp"
 
 #include <cmath>
@@ -16,7 +16,7 @@ namespace {
 
 std::unique_ptr<Material> build(const std::string& body) {
     const auto document = io::CaseDocument::from_string("[[material]]\n" + body, "case.toml");
-    auto material = make_material(document->root().array_of_tables("material").front());
+    auto material = read_material(document->root().array_of_tables("material").front());
     document->reject_unknown_keys();
     return material;
 }
@@ -109,7 +109,7 @@ std::unique_ptr<Material> build_document(const std::string& text,
     for (const std::string& assignment : sets) {
         document->set(assignment);
     }
-    auto material = make_material(document->root().array_of_tables("material").front());
+    auto material = read_material(document->root().array_of_tables("material").front());
     document->reject_unknown_keys();
     return material;
 }

@@ -1,5 +1,5 @@
 #include "io/case_table.hpp"
-#include "particles/phase_sequence.hpp"
+#include "particles/particles_case_reader.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@ namespace {
 
 PhaseSequence read(const std::string& phases) {
     auto document = io::CaseDocument::from_string("[case]\ndimension = 3\n" + phases, "p.toml");
-    return PhaseSequence(document->root());
+    return read_phases(document->root());
 }
 
 const char* const kFourPhases = R"(

@@ -3,7 +3,7 @@
 
 #include "io/case_error.hpp"
 #include "io/case_table.hpp"
-#include "particles/sink.hpp"
+#include "particles/particles_case_reader.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -56,8 +56,8 @@ TEST(SinkOutlet, BeverloosReferenceTakesTheMaterialsGrainSizeAndSaysWhichForm) {
                                "outlet_width = \"0.1 m\"\nbulk_density = \"1600 kg/m^3\"\n";
     auto document = io::CaseDocument::from_string(circle, "sink.toml");
     const std::vector<SinkSet::BodyGrain> grains{{"sand", 0.005}, {"steel", std::nullopt}};
-    const SinkSet with_grain(document->root().table("sph"), {"[[sph.body]]", {"sand", "plate"}}, 3,
-                             9.81, 1.0, grains);
+    const SinkSet with_grain = read_sinks(
+        document->root().table("sph"), {"[[sph.body]]", {"sand", "plate"}}, 3, 9.81, 1.0, grains);
     const double expected = 0.58 * 1600.0 * std::sqrt(9.81) * std::pow(0.1 - 1.5 * 0.005, 2.5);
     ASSERT_TRUE(with_grain.outlet_rate(0).has_value());
     EXPECT_NEAR(*with_grain.outlet_rate(0), expected, 1e-12 * expected);
@@ -69,7 +69,8 @@ TEST(SinkOutlet, BeverloosReferenceTakesTheMaterialsGrainSizeAndSaysWhichForm) {
               std::string::npos)
         << rate.source;
 
-    const SinkSet continuum(document->root().table("sph"), {"[[sph.body]]", {"sand"}}, 3, 9.81);
+    const SinkSet continuum =
+        read_sinks(document->root().table("sph"), {"[[sph.body]]", {"sand"}}, 3, 9.81);
     EXPECT_NEAR(*continuum.outlet_rate(0), 0.58 * 1600.0 * std::sqrt(9.81) * std::pow(0.1, 2.5),
                 1e-12);
     EXPECT_NE(figure(results_of(continuum), "sink_below_steady_rate")
@@ -96,8 +97,8 @@ TEST(SinkOutlet, RefusesAnUndefinedOrTooLargeGrain) {
             "sink.toml");
         document->spatial_dimension = 2;
         try {
-            SinkSet sinks(document->root().table("sph"), {"[[sph.body]]", {"fine", "coarse"}}, 2,
-                          9.81, 1.0, grains);
+            SinkSet sinks = read_sinks(document->root().table("sph"),
+                                       {"[[sph.body]]", {"fine", "coarse"}}, 2, 9.81, 1.0, grains);
         } catch (const io::CaseError& e) {
             return std::string(e.what());
         }
@@ -122,7 +123,8 @@ std::string error_of(const std::string& text, int dimension) {
     auto document = io::CaseDocument::from_string(text, "sink.toml");
     document->spatial_dimension = dimension;
     try {
-        SinkSet sinks(document->root().table("sph"), {"[[sph.body]]", {}}, dimension, 9.81);
+        SinkSet sinks =
+            read_sinks(document->root().table("sph"), {"[[sph.body]]", {}}, dimension, 9.81);
     } catch (const io::CaseError& e) {
         return e.what();
     }

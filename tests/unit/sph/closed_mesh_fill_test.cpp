@@ -1,6 +1,6 @@
 #include "io/case_error.hpp"
 #include "io/case_table.hpp"
-#include "sph/body_generator.hpp"
+#include "sph/body_shape_reader.hpp"
 #include "sph/closed_mesh_fill.hpp"
 
 #include <Eigen/Geometry>

@@ -1,4 +1,5 @@
 #include "io/case_table.hpp"
+#include "materials/material_case_reader.hpp"
 #include "sph/rigid_wall.hpp"
 #include "sph/sph_model.hpp"
 #include "support/sph_scene.hpp"
@@ -67,7 +68,7 @@ TEST(ExternalWall, AWallAddedByTheCallerIsTheCaseFilesWall) {
 
     auto bodies_only = io::CaseDocument::from_string(kScene, "b.toml");
     const io::SceneSettings scene_b = io::read_scene_settings(*bodies_only, "b");
-    const auto materials_b = materials::MaterialLibrary::from_case(bodies_only->root());
+    const auto materials_b = materials::read_material_library(bodies_only->root());
     auto model = SphModel::read_bodies(bodies_only->root(), scene_b, materials_b);
     const Wall& reference = from_case->solver()->walls().front();
     SphModel::WallDefinition floor;

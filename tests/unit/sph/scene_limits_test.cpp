@@ -2,6 +2,7 @@
 // contact stiffness (the gravity-strain refusals are end-to-end bad cases in tests/data); bodies
 // and sources inside walls; sinks holding whole bodies at the start.
 #include "io/case_table.hpp"
+#include "particles/particles_case_reader.hpp"
 #include "sph/rigid_wall.hpp"
 #include "sph/scene_limits.hpp"
 #include "support/case_refusal.hpp"
@@ -107,7 +108,8 @@ TEST(SceneLimits, ASinkHoldingEveryBodyAtTheStartIsRefused) {
             p.add(Vec3(0.1 * k, 0.25, 0.0), Vec3::Zero(), 1.0, 1500.0, 0, 0, 0);
             p.add(Vec3(0.1 * k, 1.5, 0.0), Vec3::Zero(), 1.0, 1500.0, 1, 0, 0);
         }
-        const particles::SinkSet sinks(sph, {"[[sph.body]]", names}, 3, 9.81);
+        const particles::SinkSet sinks =
+            particles::read_sinks(sph, {"[[sph.body]]", names}, 3, 9.81);
         std::vector<SourceSet::Source> list;
         if (fed) {
             SourceSet::Source source;

@@ -1,6 +1,7 @@
 #include "io/case_error.hpp"
 #include "io/case_table.hpp"
 #include "io/surface_mesh_reader.hpp"
+#include "sph/sph_case_reader.hpp"
 #include "sph/surface_mesh_wall.hpp"
 
 #include <Eigen/Geometry>

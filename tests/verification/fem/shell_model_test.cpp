@@ -1,6 +1,7 @@
-#include "fem/shell_model.hpp"
+#include "fem/shell_model_reader.hpp"
 #include "io/case_table.hpp"
 #include "io/output_streams.hpp"
+#include "materials/material_case_reader.hpp"
 #include "support/test_folder.hpp"
 
 #include <cstdio>
@@ -29,8 +30,8 @@ LoadedCase load(const std::vector<std::string>& overrides = {}) {
     }
     const io::SceneSettings scene = io::read_scene_settings(*c.document, "scordelis_lo");
     io::CaseTable root = c.document->root();
-    c.materials = materials::MaterialLibrary::from_case(root);
-    c.model = ShellModel::from_case(root, scene, c.materials);
+    c.materials = materials::read_material_library(root);
+    c.model = read_shell_model(root, scene, c.materials);
     c.document->reject_unknown_keys();
     return c;
 }
@@ -167,8 +168,8 @@ TEST(ShellModel, EveryBenchmarkCaseMeetsItsReference) {
         io::CaseTable root = document->root();
         const double end = scene.end_time;
         const double interval = scene.output_interval;
-        const auto materials = materials::MaterialLibrary::from_case(root);
-        auto model = ShellModel::from_case(root, scene, materials);
+        const auto materials = materials::read_material_library(root);
+        auto model = read_shell_model(root, scene, materials);
         for (double t = 0.0; t < end - 1e-12; t += interval) {
             model->advance(t, std::min(interval, end - t));
             ASSERT_FALSE(model->diagnose().has_value()) << name << ": " << *model->diagnose();

@@ -1,5 +1,6 @@
-#include "fem/shell_model.hpp"
+#include "fem/shell_model_reader.hpp"
 #include "io/case_table.hpp"
+#include "materials/material_case_reader.hpp"
 
 #include <gtest/gtest.h>
 #include <string>
@@ -17,8 +18,8 @@ Loaded load(const std::string& text) {
     Loaded c;
     c.document = io::CaseDocument::from_string(text, "parts.toml");
     const io::SceneSettings scene = io::read_scene_settings(*c.document, "parts");
-    c.materials = materials::MaterialLibrary::from_case(c.document->root());
-    c.model = ShellModel::from_case(c.document->root(), scene, c.materials);
+    c.materials = materials::read_material_library(c.document->root());
+    c.model = read_shell_model(c.document->root(), scene, c.materials);
     c.document->reject_unknown_keys();
     return c;
 }

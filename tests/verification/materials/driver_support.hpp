@@ -3,8 +3,8 @@
 // Runs a material-point driver given as TOML text or as a file, for the verification tests.
 
 #include "io/case_table.hpp"
-#include "materials/material_factory.hpp"
-#include "materials/material_point_driver.hpp"
+#include "materials/material_case_reader.hpp"
+#include "materials/material_point_reader.hpp"
 
 #include <memory>
 #include <string>
@@ -19,7 +19,7 @@ struct DriverRun {
 
 inline DriverRun run_driver(io::CaseDocument& document) {
     const io::CaseTable root = document.root();
-    DriverRun run{make_material(root.array_of_tables("material").front()), {}};
+    DriverRun run{read_material(root.array_of_tables("material").front()), {}};
     drive_material_point(*run.material, read_material_point_path(root.table("path")), run.records);
     return run;
 }

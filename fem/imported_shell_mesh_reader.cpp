@@ -1,4 +1,4 @@
-#include "fem/imported_shell_mesh.hpp"
+#include "fem/imported_shell_mesh_reader.hpp"
 
 #include "fem/gmsh_reader.hpp"
 #include "fem/keyword_shell_reader.hpp"

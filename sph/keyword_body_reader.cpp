@@ -1,4 +1,4 @@
-#include "sph/keyword_body.hpp"
+#include "sph/keyword_body_reader.hpp"
 
 #include "io/case_table.hpp"
 #include "io/deck_ledger.hpp"

@@ -1,0 +1,77 @@
+#!/usr/bin/python3
+"""scripts/check_case_readers.py on small source trees made for the test: a reader that names
+the raw case table passes; a physics file that names it fails; a file on the script's list of
+those still reading inside their physics that no longer names the table fails; and grainload's
+own tree passes.
+"""
+
+import importlib.util
+import pathlib
+import subprocess
+import sys
+import tempfile
+import unittest
+
+ROOT = pathlib.Path(__file__).resolve().parents[3]
+SCRIPT = ROOT / "scripts" / "check_case_readers.py"
+
+
+def still_reading():
+    """The script's own list of files still reading their tables inside their physics."""
+    spec = importlib.util.spec_from_file_location("check_case_readers", SCRIPT)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return sorted(module.STILL_READING)
+
+
+def run(root):
+    result = subprocess.run([sys.executable, "-B", str(SCRIPT), str(root)],
+                            capture_output=True, text=True, check=False)
+    return result.returncode, result.stdout
+
+
+def tree(files):
+    """A temporary source tree holding `files` (path: text)."""
+    folder = tempfile.TemporaryDirectory()
+    for path, text in files.items():
+        target = pathlib.Path(folder.name) / path
+        target.parent.mkdir(parents=True, exist_ok=True)
+        target.write_text(text, encoding="utf-8")
+    return folder
+
+
+SOUND = {
+    "io/case_table.hpp": "class CaseTable;\n",
+    "particles/particles_case_reader.cpp": "SinkSet read_sinks(const io::CaseTable& scene);\n",
+    "particles/sink.hpp": "SinkSet(std::vector<Sink> sinks, int dimension);\n",
+    "app/scene.cpp": "const io::CaseTable root = document.root();\n",
+}
+
+
+class CheckCaseReaders(unittest.TestCase):
+    def test_readers_io_and_app_may_name_the_table(self):
+        with tree(SOUND) as root:
+            code, out = run(root)
+        self.assertEqual(code, 0, out)
+        self.assertIn("and by 0 files still reading inside their physics", out)
+
+    def test_physics_that_names_the_table_fails(self):
+        with tree({**SOUND, "particles/sink.cpp": "SinkSet::SinkSet(const io::CaseTable& t)\n"}) as root:
+            code, out = run(root)
+        self.assertEqual(code, 1)
+        self.assertIn("particles/sink.cpp names io::CaseTable", out)
+
+    def test_a_listed_file_that_stopped_reading_must_leave_the_list(self):
+        listed = still_reading()[0]
+        with tree({**SOUND, listed: "struct Settings;\n"}) as root:
+            code, out = run(root)
+        self.assertEqual(code, 1)
+        self.assertIn(f"{listed} no longer names io::CaseTable", out)
+
+    def test_grainloads_own_tree_passes(self):
+        code, out = run(ROOT)
+        self.assertEqual(code, 0, out)
+
+
+if __name__ == "__main__":
+    unittest.main()
