@@ -19,12 +19,9 @@ FLOORS = ("materials", "particles", "sph", "dem", "fem", "coupling")
 NAMES_TABLE = re.compile(r"\bCaseTable\b")
 
 STILL_READING = {
-    "sph/outlet_reach.cpp", "sph/outlet_reach.hpp",
     "sph/particle_estimate.cpp", "sph/particle_estimate.hpp",
-    "sph/scene_limits.cpp", "sph/scene_limits.hpp",
     "sph/sph_model.cpp", "sph/sph_model.hpp",
     "sph/sph_model_outlets.cpp", "sph/sph_model_phases.cpp", "sph/sph_model_sources.cpp",
-    "sph/start_gap.cpp", "sph/start_gap.hpp",
 }
 
 

@@ -1,6 +1,5 @@
 #include "sph/outlet_reach.hpp"
 
-#include "io/case_table.hpp"
 #include "sph/rigid_wall.hpp"
 
 #include <algorithm>
@@ -249,13 +248,13 @@ bool touches(const ReachMap& reach, const ParticleSet& particles, const Wall& wa
 
 } // namespace
 
-std::vector<std::string> outlet_reach_warnings(const io::CaseTable& sph,
+std::vector<std::string> outlet_reach_warnings(const ScenePlaces& places,
                                                const ParticleSet& particles,
                                                const std::vector<Wall>& walls,
                                                const particles::SinkSet& sinks,
                                                const SourceSet& sources, const Vec3& gravity,
                                                double spacing, int dimension) {
-    const auto wall_tables = sph.array_of_tables("wall");
+    const std::vector<io::KeyPlaces>& wall_tables = places.walls;
     std::vector<std::size_t> gates;
     for (std::size_t k = 0; k < wall_tables.size() && k < walls.size(); ++k) {
         if (wall_tables[k].has("remove_at") && walls[k].count > 0) {
@@ -284,13 +283,12 @@ std::vector<std::string> outlet_reach_warnings(const io::CaseTable& sph,
     };
     const std::string beyond = "from where the bodies and sources start, the walls that stay "
                                "close it off or it lies above them";
-    const auto sink_tables = sph.array_of_tables("sink");
     for (std::size_t s = 0; s < sinks.sinks().size(); ++s) {
         const particles::SinkSet::Sink& sink = sinks.sinks()[s];
         if (flood(sink.body).reaches(sink.region)) {
             continue;
         }
-        const io::CaseTable& table = sink_tables[s];
+        const io::KeyPlaces& table = places.sinks[s];
         warnings.push_back(
             table.where(sink.region.kind == io::Region::Kind::box ? "min" : "point") + ": sink \"" +
             sink.name + "\" is out of reach of every particle: " + beyond +

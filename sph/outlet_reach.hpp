@@ -4,16 +4,13 @@
 #include "io/region.hpp"
 #include "particles/sink.hpp"
 #include "sph/particle_set.hpp"
+#include "sph/scene_places.hpp"
 #include "sph/source.hpp"
 #include "sph/wall.hpp"
 
 #include <array>
 #include <string>
 #include <vector>
-
-namespace grainload::io {
-class CaseTable;
-}
 
 namespace grainload::sph {
 
@@ -64,7 +61,7 @@ class ReachMap {
 /// and a wall due to be removed (a gate that releases nothing). `walls` are the solver's, the
 /// [[sph.wall]] tables' first.
 std::vector<std::string>
-outlet_reach_warnings(const io::CaseTable& sph, const ParticleSet& particles,
+outlet_reach_warnings(const ScenePlaces& places, const ParticleSet& particles,
                       const std::vector<Wall>& walls, const particles::SinkSet& sinks,
                       const SourceSet& sources, const Vec3& gravity, double spacing, int dimension);
 

@@ -1,6 +1,6 @@
 #include "sph/scene_limits.hpp"
 
-#include "io/case_table.hpp"
+#include "io/case_error.hpp"
 #include "particles/cell_list.hpp"
 
 #include <algorithm>
@@ -58,15 +58,15 @@ GravityStrain gravity_strain(const ParticleSet& particles,
     return result;
 }
 
-void check_gravity_strain(const io::CaseTable& root, const ParticleSet& particles,
+void check_gravity_strain(const ScenePlaces& places, const ParticleSet& particles,
                           const materials::MaterialLibrary& materials,
                           const std::vector<std::string>& body_names, const Vec3& gravity,
                           double spacing, double contact_stiffness) {
     const GravityStrain g =
         gravity_strain(particles, materials, gravity, spacing, contact_stiffness);
     if (g.strain > kLargestGravityStrain) {
-        const io::CaseTable table =
-            root.array_of_tables("material")[static_cast<std::size_t>(g.material)];
+        const auto m = static_cast<std::size_t>(g.material);
+        const io::KeyPlaces& table = places.materials[m];
         const bool deck = table.has("from_lsdyna");
         const char* key = table.has("stiffness_scale")  ? "stiffness_scale"
                           : deck                        ? "from_lsdyna"
@@ -82,8 +82,7 @@ void check_gravity_strain(const io::CaseTable& root, const ParticleSet& particle
                 << g.stress / kLargestGravityStrain << " Pa";
         if (deck) {
             // Density and moduli both come from the deck, as its units convert them.
-            message << " (the deck's RO, BULK and G read in \""
-                    << table.table("from_lsdyna").string("units") << "\")";
+            message << " (the deck's RO, BULK and G read in \"" << places.deck_units[m] << "\")";
         }
         table.fail(key, message.str());
     }
@@ -95,7 +94,7 @@ void check_gravity_strain(const io::CaseTable& root, const ParticleSet& particle
                 << g.contact << " of the contact stiffness: it would sink into the walls; "
                 << "expected a contact stiffness of at least "
                 << g.contact_stress / kLargestGravityStrain << " Pa";
-        root.table("sph").table("contact").fail("stiffness", message.str());
+        places.contact.fail("stiffness", message.str());
     }
 }
 
@@ -195,13 +194,13 @@ std::optional<std::pair<int, Overlap>> first_overlap(const WallPoints& w,
 }
 
 /// The key of a shape table that places it: its box corner, its file, else its type.
-const char* placing_key(const io::CaseTable& shape) {
+const char* placing_key(const io::KeyPlaces& shape) {
     return shape.has("min") ? "min" : shape.has("file") ? "file" : "type";
 }
 
 } // namespace
 
-void check_wall_overlaps(const io::CaseTable& sph, const ParticleSet& particles,
+void check_wall_overlaps(const ScenePlaces& places, const ParticleSet& particles,
                          const std::vector<Wall>& walls, const SourceSet& sources,
                          const std::vector<std::string>& body_names, double spacing, int dimension,
                          double support_radius) {
@@ -213,7 +212,6 @@ void check_wall_overlaps(const io::CaseTable& sph, const ParticleSet& particles,
     clear.precision(3);
     clear << "touch it without force " << support_radius
           << " m (the kernel's support radius 2h) from the wall's first layer";
-    const auto body_tables = sph.array_of_tables("body");
     for (std::size_t b = 0; b < body_names.size(); ++b) {
         std::vector<Vec3> points;
         for (Index i = 0; i < particles.size(); ++i) {
@@ -230,11 +228,10 @@ void check_wall_overlaps(const io::CaseTable& sph, const ParticleSet& particles,
                     << "(the nearest " << o->second.nearest << " m from one), where the contact "
                     << "potential throws them off at the first step; expected the body clear of "
                     << "the wall: its particles " << clear.str();
-            const io::CaseTable shape = body_tables[b].table("shape");
+            const io::KeyPlaces& shape = places.body_shapes[b];
             shape.fail(placing_key(shape), message.str());
         }
     }
-    const auto source_tables = sph.array_of_tables("source");
     for (std::size_t s = 0; s < sources.sources().size(); ++s) {
         const SourceSet::Source& source = sources.sources()[s];
         if (const auto o = first_overlap(w, walls, source.sites, source.body, spacing)) {
@@ -245,11 +242,10 @@ void check_wall_overlaps(const io::CaseTable& sph, const ParticleSet& particles,
                     << "particles; the particles it makes there and beside them start inside or "
                     << "against the wall, where the contact potential throws them off; expected "
                     << "the source's region clear of the wall: particles " << clear.str();
-            const io::CaseTable& table = source_tables[s];
-            if (table.has("min")) {
-                table.fail("min", message.str());
+            if (places.sources[s].has("min")) {
+                places.sources[s].fail("min", message.str());
             }
-            const io::CaseTable shape = table.table("shape");
+            const io::KeyPlaces& shape = places.source_shapes[s];
             shape.fail(placing_key(shape), message.str());
         }
     }
@@ -300,7 +296,7 @@ std::vector<Held> held_bodies(const ParticleSet& particles, const particles::Sin
 
 } // namespace
 
-std::vector<std::string> check_sinks_hold_bodies(const io::CaseTable& sph,
+std::vector<std::string> check_sinks_hold_bodies(const ScenePlaces& places,
                                                  const ParticleSet& particles,
                                                  const particles::SinkSet& sinks,
                                                  const SourceSet& sources,
@@ -312,7 +308,7 @@ std::vector<std::string> check_sinks_hold_bodies(const io::CaseTable& sph,
     const std::vector<Held> held = held_bodies(particles, sinks, sources, body_names.size());
     const bool kept =
         std::any_of(held.begin(), held.end(), [](const Held& h) { return !h.leaves(); });
-    const auto tables = sph.array_of_tables("sink");
+    const std::vector<io::KeyPlaces>& tables = places.sinks;
     for (std::size_t b = 0; b < held.size(); ++b) {
         if (!held[b].leaves()) {
             continue;

@@ -4,15 +4,12 @@
 #include "materials/material_library.hpp"
 #include "particles/sink.hpp"
 #include "sph/particle_set.hpp"
+#include "sph/scene_places.hpp"
 #include "sph/source.hpp"
 #include "sph/wall.hpp"
 
 #include <string>
 #include <vector>
-
-namespace grainload::io {
-class CaseTable;
-}
 
 namespace grainload::sph {
 
@@ -46,7 +43,7 @@ GravityStrain gravity_strain(const ParticleSet& particles,
 /// Refuses a scene beyond kLargestGravityStrain: the error names the body, the strain and the
 /// modulus or contact stiffness it would need, at the material's `stiffness_scale` (or modulus)
 /// key or at [sph.contact] `stiffness`.
-void check_gravity_strain(const io::CaseTable& root, const ParticleSet& particles,
+void check_gravity_strain(const ScenePlaces& places, const ParticleSet& particles,
                           const materials::MaterialLibrary& materials,
                           const std::vector<std::string>& body_names, const Vec3& gravity,
                           double spacing, double contact_stiffness);
@@ -73,8 +70,8 @@ constexpr double kInsideWall = 0.9;
 /// first step (measured: a body drawn 30 mm into a box wall of 10 mm particles stopped as
 /// unstable at 0.02 s; a source box drawn across the walls at 0.08 s). The error is at the
 /// body's shape (its `min`, `file` or `type`) or the source's `min` or shape, names the wall and
-/// says how many particles are inside. `sph` is the [sph] table; `support_radius` the kernel's.
-void check_wall_overlaps(const io::CaseTable& sph, const ParticleSet& particles,
+/// says how many particles are inside. `support_radius` is the kernel's.
+void check_wall_overlaps(const ScenePlaces& places, const ParticleSet& particles,
                          const std::vector<Wall>& walls, const SourceSet& sources,
                          const std::vector<std::string>& body_names, double spacing, int dimension,
                          double support_radius);
@@ -84,7 +81,7 @@ void check_wall_overlaps(const io::CaseTable& sph, const ParticleSet& particles,
 /// When nothing is left then (every body so held), the scene is refused at the first sink's
 /// `normal` (a plane: the side it points to leaves) or `min` (a box); otherwise each held body
 /// is a warning, returned.
-std::vector<std::string> check_sinks_hold_bodies(const io::CaseTable& sph,
+std::vector<std::string> check_sinks_hold_bodies(const ScenePlaces& places,
                                                  const ParticleSet& particles,
                                                  const particles::SinkSet& sinks,
                                                  const SourceSet& sources,

@@ -425,4 +425,39 @@ MeshWallSamples read_mesh_wall_points(const io::CaseTable& wall, int dimension, 
     return mesh_wall_points(mesh, spacing, layers, dimension, flip_normals);
 }
 
+ScenePlaces read_scene_places(const io::CaseTable& root) {
+    const auto shape_places = [](const io::CaseTable& shape) {
+        return io::KeyPlaces(shape, {"min", "base", "centre", "file", "type"});
+    };
+    ScenePlaces places;
+    const io::CaseTable sph = root.table("sph");
+    for (const io::CaseTable& body : sph.array_of_tables("body")) {
+        places.body_shapes.push_back(shape_places(body.table("shape")));
+    }
+    for (const io::CaseTable& source : sph.array_of_tables("source")) {
+        places.sources.emplace_back(source, std::initializer_list<std::string_view>{"min"});
+        places.source_shapes.push_back(source.has("shape") ? shape_places(source.table("shape"))
+                                                           : io::KeyPlaces());
+    }
+    for (const io::CaseTable& sink : sph.array_of_tables("sink")) {
+        places.sinks.emplace_back(
+            sink, std::initializer_list<std::string_view>{"min", "point", "normal"});
+    }
+    for (const io::CaseTable& wall : sph.array_of_tables("wall")) {
+        places.walls.emplace_back(wall, std::initializer_list<std::string_view>{"remove_at"});
+    }
+    for (const io::CaseTable& material : root.array_of_tables("material")) {
+        places.materials.emplace_back(
+            material, std::initializer_list<std::string_view>{"stiffness_scale", "from_lsdyna",
+                                                              "youngs_modulus", "bulk_modulus"});
+        places.deck_units.push_back(material.has("from_lsdyna")
+                                        ? material.table("from_lsdyna").string("units")
+                                        : std::string());
+    }
+    if (sph.has("contact")) {
+        places.contact = io::KeyPlaces(sph.table("contact"), {"stiffness"});
+    }
+    return places;
+}
+
 } // namespace grainload::sph

@@ -8,6 +8,7 @@
 #include "sph/particle_set.hpp"
 #include "sph/probes.hpp"
 #include "sph/rigid_wall.hpp"
+#include "sph/scene_places.hpp"
 #include "sph/sph_options.hpp"
 #include "sph/surface_mesh_wall.hpp"
 
@@ -201,5 +202,8 @@ std::vector<int> read_wall_bodies(const io::CaseTable& table,
 /// the mesh has no faces (3D) or no line segments (plane strain).
 MeshWallSamples read_mesh_wall_points(const io::CaseTable& wall, int dimension, double spacing,
                                       int layers, bool flip_normals);
+
+/// Where the scene's start checks will point (sph/scene_places.hpp), from the case's root.
+ScenePlaces read_scene_places(const io::CaseTable& root);
 
 } // namespace grainload::sph

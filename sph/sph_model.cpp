@@ -93,6 +93,7 @@ int SphModel::body_id(const std::string& name) const {
 
 void SphModel::build(const io::CaseTable& root) {
     const io::CaseTable sph = root.table("sph");
+    const ScenePlaces places = read_scene_places(root);
     phases_ = particles::read_phases(root);
     if (!phases_.empty() && !interactions_) {
         root.fail("phase", "phases act on the SPH solver's walls, sources and sinks: expected "
@@ -114,7 +115,7 @@ void SphModel::build(const io::CaseTable& root) {
         if (auto probes = ProbeSet::place(read_probe_settings(sph), solver_->particles())) {
             parts_.add(std::move(probes));
         }
-        check_gravity_strain(root, particles(), *materials_, body_names_, gravity_, spacing_,
+        check_gravity_strain(places, particles(), *materials_, body_names_, gravity_, spacing_,
                              solver_->options().contact.stiffness);
         if (const std::string warning =
                 impact_warning(particles(), body_names_, solver_->options().contact.stiffness);
@@ -123,7 +124,7 @@ void SphModel::build(const io::CaseTable& root) {
         }
     }
     build_outlets(sph);
-    check_start(sph);
+    check_start(sph, places);
     check_phase_conditions(root);
     if (solver_) {
         apply_phase_starts();
@@ -150,7 +151,7 @@ void SphModel::build(const io::CaseTable& root) {
     }
 }
 
-void SphModel::check_start(const io::CaseTable& sph) const {
+void SphModel::check_start(const io::CaseTable& sph, const ScenePlaces& places) const {
     std::vector<std::string> warnings;
     for (std::size_t b = 0; b < thin_warnings_.size(); ++b) {
         const auto& sources = sources_->sources();
@@ -163,18 +164,18 @@ void SphModel::check_start(const io::CaseTable& sph) const {
     }
     if (solver_) {
         const std::vector<Wall>& walls = solver_->walls();
-        check_wall_overlaps(sph, particles(), walls, *sources_, body_names_, spacing_, dimension_,
-                            solver_->kernel().support_radius());
+        check_wall_overlaps(places, particles(), walls, *sources_, body_names_, spacing_,
+                            dimension_, solver_->kernel().support_radius());
         for (std::string& w :
-             check_start_gaps(sph, particles(), walls, *sources_, body_names_, solver_->kernel(),
+             check_start_gaps(places, particles(), walls, *sources_, body_names_, solver_->kernel(),
                               solver_->options().contact, gravity_.norm(), spacing_, dimension_)) {
             warnings.push_back(std::move(w));
         }
         for (std::string& w :
-             check_sinks_hold_bodies(sph, particles(), *sinks_, *sources_, body_names_)) {
+             check_sinks_hold_bodies(places, particles(), *sinks_, *sources_, body_names_)) {
             warnings.push_back(std::move(w));
         }
-        for (std::string& w : outlet_reach_warnings(sph, particles(), walls, *sinks_, *sources_,
+        for (std::string& w : outlet_reach_warnings(places, particles(), walls, *sinks_, *sources_,
                                                     gravity_, spacing_, dimension_)) {
             warnings.push_back(std::move(w));
         }

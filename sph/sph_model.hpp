@@ -13,6 +13,7 @@
 #include "sph/body_generator.hpp"
 #include "sph/particle_set.hpp"
 #include "sph/rigid_wall.hpp"
+#include "sph/scene_places.hpp"
 #include "sph/source.hpp"
 #include "sph/sph_solver.hpp"
 
@@ -170,7 +171,7 @@ class SphModel final : public io::Stepper, public io::Reporter {
     /// so close to a wall that its contact potential throws them off (sph/start_gap.hpp); warns
     /// of a smaller such push, of thin bodies no source fills, of sinks that hold a body, and
     /// of outlets out of reach (sph/outlet_reach.hpp).
-    void check_start(const io::CaseTable& sph) const;
+    void check_start(const io::CaseTable& sph, const ScenePlaces& places) const;
     /// Sources (sph_model_sources.cpp): read them and refuse what cannot gain particles.
     void build_sources(const io::CaseTable& sph);
     /// After a step [t, t + dt] (and its removals): the parts' new particles enter.

@@ -1,6 +1,5 @@
 #include "sph/start_gap.hpp"
 
-#include "io/case_table.hpp"
 #include "sph/contact_force.hpp"
 
 #include <algorithm>
@@ -191,7 +190,7 @@ std::string judge(const WallParticleIndex& index, const Group& group,
 
 /// The key of a shape table that places it: its box corner, its base or centre (a cylinder or
 /// cone, a disc), its file, else its type.
-const char* placing_key(const io::CaseTable& shape) {
+const char* placing_key(const io::KeyPlaces& shape) {
     for (const char* key : {"min", "base", "centre", "file"}) {
         if (shape.has(key)) {
             return key;
@@ -202,7 +201,7 @@ const char* placing_key(const io::CaseTable& shape) {
 
 } // namespace
 
-std::vector<std::string> check_start_gaps(const io::CaseTable& sph, const ParticleSet& particles,
+std::vector<std::string> check_start_gaps(const ScenePlaces& places, const ParticleSet& particles,
                                           const std::vector<Wall>& walls, const SourceSet& sources,
                                           const std::vector<std::string>& body_names,
                                           const SmoothingKernel& kernel,
@@ -213,7 +212,7 @@ std::vector<std::string> check_start_gaps(const io::CaseTable& sph, const Partic
         return warnings;
     }
     const WallParticleIndex index(particles, walls, kernel.support_radius(), dimension);
-    auto say = [&](const Group& group, const io::CaseTable& table, const char* key) {
+    auto say = [&](const Group& group, const io::KeyPlaces& table, const char* key) {
         bool refused = false;
         const std::string message =
             judge(index, group, walls, kernel, potential, gravity, spacing, dimension, refused);
@@ -224,7 +223,6 @@ std::vector<std::string> check_start_gaps(const io::CaseTable& sph, const Partic
             warnings.push_back(table.where(key) + ": " + message);
         }
     };
-    const auto body_tables = sph.array_of_tables("body");
     for (std::size_t b = 0; b < body_names.size(); ++b) {
         Group group{"body \"" + body_names[b] + "\"",
                     {},
@@ -238,10 +236,9 @@ std::vector<std::string> check_start_gaps(const io::CaseTable& sph, const Partic
                 group.mass += particles.mass[i];
             }
         }
-        const io::CaseTable shape = body_tables[b].table("shape");
+        const io::KeyPlaces& shape = places.body_shapes[b];
         say(group, shape, placing_key(shape));
     }
-    const auto source_tables = sph.array_of_tables("source");
     for (std::size_t s = 0; s < sources.sources().size(); ++s) {
         const SourceSet::Source& source = sources.sources()[s];
         const Group group{"source \"" + source.name + "\"",
@@ -250,11 +247,10 @@ std::vector<std::string> check_start_gaps(const io::CaseTable& sph, const Partic
                           "the weight of the particles that fill its sites",
                           source.particle_mass * static_cast<double>(source.sites.size()),
                           kSourcePushRefusal};
-        const io::CaseTable& table = source_tables[s];
-        if (table.has("min")) {
-            say(group, table, "min");
+        if (places.sources[s].has("min")) {
+            say(group, places.sources[s], "min");
         } else {
-            const io::CaseTable shape = table.table("shape");
+            const io::KeyPlaces& shape = places.source_shapes[s];
             say(group, shape, placing_key(shape));
         }
     }

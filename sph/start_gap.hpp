@@ -4,6 +4,7 @@
 #include "particles/cell_list.hpp"
 #include "sph/kernels.hpp"
 #include "sph/particle_set.hpp"
+#include "sph/scene_places.hpp"
 #include "sph/source.hpp"
 #include "sph/sph_options.hpp"
 #include "sph/wall.hpp"
@@ -11,10 +12,6 @@
 #include <limits>
 #include <string>
 #include <vector>
-
-namespace grainload::io {
-class CaseTable;
-}
 
 namespace grainload::sph {
 
@@ -89,7 +86,7 @@ constexpr double kSourcePushRefusal = 20.0;
 /// kStartPushWarning a warning, returned, says how far to move it. Nothing without gravity or
 /// contact stiffness (the reference is the weight). `gravity` is |g|. Symmetry-plane images of
 /// the walls are not counted.
-std::vector<std::string> check_start_gaps(const io::CaseTable& sph, const ParticleSet& particles,
+std::vector<std::string> check_start_gaps(const ScenePlaces& places, const ParticleSet& particles,
                                           const std::vector<Wall>& walls, const SourceSet& sources,
                                           const std::vector<std::string>& body_names,
                                           const SmoothingKernel& kernel,

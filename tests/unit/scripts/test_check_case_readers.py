@@ -7,10 +7,9 @@ own tree passes.
 
 import importlib.util
 import pathlib
-import subprocess
-import sys
-import tempfile
 import unittest
+
+import source_trees
 
 ROOT = pathlib.Path(__file__).resolve().parents[3]
 SCRIPT = ROOT / "scripts" / "check_case_readers.py"
@@ -25,19 +24,7 @@ def still_reading():
 
 
 def run(root):
-    result = subprocess.run([sys.executable, "-B", str(SCRIPT), str(root)],
-                            capture_output=True, text=True, check=False)
-    return result.returncode, result.stdout
-
-
-def tree(files):
-    """A temporary source tree holding `files` (path: text)."""
-    folder = tempfile.TemporaryDirectory()
-    for path, text in files.items():
-        target = pathlib.Path(folder.name) / path
-        target.parent.mkdir(parents=True, exist_ok=True)
-        target.write_text(text, encoding="utf-8")
-    return folder
+    return source_trees.run(SCRIPT, root)
 
 
 SOUND = {
@@ -50,20 +37,20 @@ SOUND = {
 
 class CheckCaseReaders(unittest.TestCase):
     def test_readers_io_and_app_may_name_the_table(self):
-        with tree(SOUND) as root:
+        with source_trees.tree(SOUND) as root:
             code, out = run(root)
         self.assertEqual(code, 0, out)
         self.assertIn("and by 0 files still reading inside their physics", out)
 
     def test_physics_that_names_the_table_fails(self):
-        with tree({**SOUND, "particles/sink.cpp": "SinkSet::SinkSet(const io::CaseTable& t)\n"}) as root:
+        with source_trees.tree({**SOUND, "particles/sink.cpp": "SinkSet::SinkSet(const io::CaseTable& t)\n"}) as root:
             code, out = run(root)
         self.assertEqual(code, 1)
         self.assertIn("particles/sink.cpp names io::CaseTable", out)
 
     def test_a_listed_file_that_stopped_reading_must_leave_the_list(self):
         listed = still_reading()[0]
-        with tree({**SOUND, listed: "struct Settings;\n"}) as root:
+        with source_trees.tree({**SOUND, listed: "struct Settings;\n"}) as root:
             code, out = run(root)
         self.assertEqual(code, 1)
         self.assertIn(f"{listed} no longer names io::CaseTable", out)

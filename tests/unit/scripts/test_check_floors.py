@@ -5,29 +5,16 @@ include each other each fail with the finding named; and grainload's own tree pa
 """
 
 import pathlib
-import subprocess
-import sys
-import tempfile
 import unittest
+
+import source_trees
 
 ROOT = pathlib.Path(__file__).resolve().parents[3]
 SCRIPT = ROOT / "scripts" / "check_floors.py"
 
 
 def run(root):
-    result = subprocess.run([sys.executable, "-B", str(SCRIPT), str(root)],
-                            capture_output=True, text=True, check=False)
-    return result.returncode, result.stdout
-
-
-def tree(files):
-    """A temporary source tree holding `files` (path: text)."""
-    folder = tempfile.TemporaryDirectory()
-    for path, text in files.items():
-        target = pathlib.Path(folder.name) / path
-        target.parent.mkdir(parents=True, exist_ok=True)
-        target.write_text(text, encoding="utf-8")
-    return folder
+    return source_trees.run(SCRIPT, root)
 
 
 SOUND = {
@@ -44,19 +31,19 @@ SOUND = {
 
 class CheckFloors(unittest.TestCase):
     def test_a_tree_that_keeps_its_floors_passes(self):
-        with tree(SOUND) as root:
+        with source_trees.tree(SOUND) as root:
             code, out = run(root)
         self.assertEqual(code, 0, out)
         self.assertIn("7 concepts, no upward include, no cycle", out)
 
     def test_an_include_of_a_higher_floor_fails(self):
-        with tree({**SOUND, "materials/material.cpp": '#include "sph/sph_solver.hpp"\n'}) as root:
+        with source_trees.tree({**SOUND, "materials/material.cpp": '#include "sph/sph_solver.hpp"\n'}) as root:
             code, out = run(root)
         self.assertEqual(code, 1)
         self.assertIn("materials/material includes sph/sph_solver: sph/ is not below materials/", out)
 
     def test_sph_and_fem_do_not_include_each_other(self):
-        with tree({**SOUND, "fem/shell_model.cpp": '#include "sph/sph_solver.hpp"\n'}) as root:
+        with source_trees.tree({**SOUND, "fem/shell_model.cpp": '#include "sph/sph_solver.hpp"\n'}) as root:
             code, out = run(root)
         self.assertEqual(code, 1)
         self.assertIn("fem/shell_model includes sph/sph_solver: sph/ is not below fem/", out)
@@ -64,7 +51,7 @@ class CheckFloors(unittest.TestCase):
     def test_two_concepts_that_include_each_other_fail(self):
         cycle = {"sph/wall.hpp": "#pragma once\n", "sph/wall.cpp": '#include "sph/rigid_wall.hpp"\n',
                  "sph/rigid_wall.hpp": '#include "sph/wall.hpp"\n'}
-        with tree({**SOUND, **cycle}) as root:
+        with source_trees.tree({**SOUND, **cycle}) as root:
             code, out = run(root)
         self.assertEqual(code, 1)
         self.assertIn("include cycle: sph/rigid_wall <-> sph/wall", out)

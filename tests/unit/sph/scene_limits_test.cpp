@@ -5,6 +5,7 @@
 #include "particles/particles_case_reader.hpp"
 #include "sph/rigid_wall.hpp"
 #include "sph/scene_limits.hpp"
+#include "sph/sph_case_reader.hpp"
 #include "support/case_refusal.hpp"
 
 #include <gtest/gtest.h>
@@ -49,7 +50,7 @@ name = "top"
 min = "0 0 mm"
 )",
                                                         "scene.toml");
-    const io::CaseTable sph = document->root().table("sph");
+    const ScenePlaces places = read_scene_places(document->root());
     auto scene = [](double lowest_row, const std::vector<Vec3>& sites) {
         ParticleSet p;
         for (int row = 0; row < 4; ++row) {
@@ -73,7 +74,7 @@ min = "0 0 mm"
     auto check = [&](double lowest_row, const std::vector<Vec3>& sites) {
         const auto [p, walls, sources] = scene(lowest_row, sites);
         return refusal(
-            [&] { check_wall_overlaps(sph, p, walls, sources, names, 10e-3, 2, 26e-3); });
+            [&] { check_wall_overlaps(places, p, walls, sources, names, 10e-3, 2, 26e-3); });
     };
     EXPECT_EQ(check(5e-3, {Vec3(0.05, 0.2, 0.0)}), "");
     const std::string body = check(-15e-3, {Vec3(0.05, 0.2, 0.0)});
@@ -102,6 +103,7 @@ TEST(SceneLimits, ASinkHoldingEveryBodyAtTheStartIsRefused) {
                                  std::to_string(plane) + " 0 m\"\nnormal = \"0 -1 0\"\n";
         const auto document = io::CaseDocument::from_string(text, "sinks.toml");
         const io::CaseTable sph = document->root().table("sph");
+        const ScenePlaces places = read_scene_places(document->root());
         const std::vector<std::string> names{"low", "high"};
         ParticleSet p;
         for (int k = 0; k < 3; ++k) {
@@ -120,7 +122,7 @@ TEST(SceneLimits, ASinkHoldingEveryBodyAtTheStartIsRefused) {
         }
         std::vector<std::string> warnings;
         const std::string error = refusal([&] {
-            warnings = check_sinks_hold_bodies(sph, p, sinks, SourceSet(list, 0.1), names);
+            warnings = check_sinks_hold_bodies(places, p, sinks, SourceSet(list, 0.1), names);
         });
         return std::make_pair(error, warnings);
     };

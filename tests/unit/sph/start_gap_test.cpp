@@ -2,6 +2,7 @@
 // store with the walls at t = 0, and the refusal and warning that compare it with the weight.
 #include "io/case_table.hpp"
 #include "sph/rigid_wall.hpp"
+#include "sph/sph_case_reader.hpp"
 #include "sph/start_gap.hpp"
 #include "support/case_refusal.hpp"
 
@@ -83,7 +84,7 @@ name = "top"
 min = "0 0 mm"
 )",
                                                         "gap.toml");
-    const io::CaseTable sph = document->root().table("sph");
+    const ScenePlaces places = read_scene_places(document->root());
     const std::vector<std::string> names{"fill"};
     const SmoothingKernel kernel(KernelType::cubic_spline, 0.013, 2);
     ContactPotential potential;
@@ -111,7 +112,7 @@ min = "0 0 mm"
             list.push_back(source);
         }
         return refusal([&] {
-            warnings = check_start_gaps(sph, p, walls, SourceSet(list, 10e-3), names, kernel,
+            warnings = check_start_gaps(places, p, walls, SourceSet(list, 10e-3), names, kernel,
                                         potential, gravity, 10e-3, 2);
         });
     };
