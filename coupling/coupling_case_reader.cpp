@@ -4,6 +4,7 @@
 #include "coupling/window_limits.hpp"
 #include "fem/shell_model_reader.hpp"
 #include "io/case_table.hpp"
+#include "io/named_index.hpp"
 #include "sph/sph_case_reader.hpp"
 
 #include <algorithm>
@@ -73,13 +74,13 @@ void read_friction(const io::CaseTable& coupling, const sph::SphModel& sph,
         }
         const std::string name = table.string("part");
         sph::SphModel::WallDefinition* wall = nullptr;
-        std::string known;
         for (auto& w : walls) {
             wall = w.name == name ? &w : wall;
-            known += (known.empty() ? "\"" : ", \"") + w.name + "\"";
         }
         if (wall == nullptr) {
-            table.fail("part", "expected the name of a [[coupling.interface]] (" + known + ")");
+            table.fail("part", "expected the name of a [[coupling.interface]] (" +
+                                   io::quoted_names(walls, &sph::SphModel::WallDefinition::name) +
+                                   ")");
         }
         if (!wall->bodies.empty() && std::find(wall->bodies.begin(), wall->bodies.end(),
                                                sph.body_id(body)) == wall->bodies.end()) {
@@ -341,14 +342,12 @@ CouplingSettings read_settings(const io::CaseTable& table, const fem::ShellModel
 int part_index(const io::CaseTable& table, const std::string& key,
                const std::vector<std::string>& parts) {
     const std::string name = table.string(key);
-    std::string known;
     for (std::size_t k = 0; k < parts.size(); ++k) {
         if (parts[k] == name) {
             return static_cast<int>(k);
         }
-        known += (known.empty() ? "\"" : ", \"") + parts[k] + "\"";
     }
-    table.fail(key, "expected the name of a [[fem.shell]] part (" + known + ")");
+    table.fail(key, "expected the name of a [[fem.shell]] part (" + io::quoted_names(parts) + ")");
 }
 
 std::vector<Index> interface_elements(const io::CaseTable& table, const fem::ShellMesh& mesh,

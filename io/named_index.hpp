@@ -11,19 +11,29 @@
 
 namespace grainload::io {
 
+/// The names of `items` (read through `name_of`, as in refuse_repeated_name) as a message lists
+/// them: "sand", "steel"; empty when there are none.
+template <typename Named, typename NameOf = std::identity>
+std::string quoted_names(const Named& items, NameOf name_of = {}) {
+    std::string list;
+    for (const auto& item : items) {
+        list += (list.empty() ? "\"" : ", \"") + std::string(std::invoke(name_of, item)) + "\"";
+    }
+    return list;
+}
+
 /// Index into `items` of the one whose `name_of` is the string `table.key` holds; an unknown
 /// name fails at that key listing the known names (`what` names their kind: "[[sph.body]]").
 template <typename Named, typename NameOf>
 int index_by_name(const CaseTable& table, const std::string& key, const Named& items,
                   NameOf name_of, const char* what) {
     const std::string name = table.string(key);
-    std::string known;
     for (std::size_t k = 0; k < items.size(); ++k) {
         if (name_of(items[k]) == name) {
             return static_cast<int>(k);
         }
-        known += (known.empty() ? "\"" : ", \"") + name_of(items[k]) + "\"";
     }
+    const std::string known = quoted_names(items, name_of);
     table.fail(key, std::string("expected the name of a ") + what + " (" +
                         (known.empty() ? std::string("none defined") : known) + ")");
 }

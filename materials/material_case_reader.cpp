@@ -401,13 +401,11 @@ MaterialLibrary read_material_library(const io::CaseTable& root) {
 int read_material_index(const MaterialLibrary& library, const io::CaseTable& table,
                         std::string_view key) {
     const std::string name = table.string(key);
-    std::string known;
-    for (int m = 0; m < library.size(); ++m) {
-        if (library.name(m) == name) {
-            return m;
-        }
-        known += (known.empty() ? "\"" : ", \"") + library.name(m) + "\"";
+    const std::vector<std::string>& names = library.names();
+    if (const auto found = std::find(names.begin(), names.end(), name); found != names.end()) {
+        return static_cast<int>(found - names.begin());
     }
+    const std::string known = io::quoted_names(names);
     table.fail(key, "no [[material]] is called \"" + name +
                         "\" (defined: " + (known.empty() ? std::string("none") : known) + ")");
 }

@@ -25,6 +25,7 @@ class MaterialLibrary {
         return *materials_[static_cast<std::size_t>(index)];
     }
     const std::string& name(int index) const { return names_[static_cast<std::size_t>(index)]; }
+    const std::vector<std::string>& names() const { return names_; }
     /// The material's grain size d (`grain_size`, the mean grain diameter), where it declares
     /// one: Beverloo's discharge law reduces an outlet by k d (particles/sink.hpp).
     std::optional<double> grain_size(int index) const {

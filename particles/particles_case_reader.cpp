@@ -219,16 +219,14 @@ std::optional<int> read_phase_reference(const io::CaseTable& table, std::string_
         return std::nullopt;
     }
     const std::string_view name = std::string_view(*text).substr(kPhasePrefix.size());
-    std::string known;
-    if (phases != nullptr) {
-        for (std::size_t k = 0; k < phases->phases().size(); ++k) {
-            const std::string& phase = phases->phases()[k].name;
-            if (phase == name) {
-                return static_cast<int>(k);
-            }
-            known += (known.empty() ? "\"" : ", \"") + phase + "\"";
+    const std::vector<PhaseSequence::Phase> none;
+    const std::vector<PhaseSequence::Phase>& list = phases != nullptr ? phases->phases() : none;
+    for (std::size_t k = 0; k < list.size(); ++k) {
+        if (list[k].name == name) {
+            return static_cast<int>(k);
         }
     }
+    const std::string known = io::quoted_names(list, &PhaseSequence::Phase::name);
     table.fail(key, "expected phase:NAME with the name of a [[phase]] (" +
                         (known.empty() ? std::string("none defined") : known) + "), got \"" +
                         *text + "\"");

@@ -390,10 +390,7 @@ std::vector<int> read_wall_bodies(const io::CaseTable& table,
     if (!table.has("bodies")) {
         return bodies;
     }
-    std::string known;
-    for (const std::string& name : body_names) {
-        known += (known.empty() ? "\"" : ", \"") + name + "\"";
-    }
+    const std::string known = io::quoted_names(body_names);
     for (const std::string& name : table.name_list("bodies")) {
         const auto found = std::find(body_names.begin(), body_names.end(), name);
         if (found == body_names.end()) {
