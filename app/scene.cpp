@@ -9,7 +9,7 @@
 #include "fem/shell_model_reader.hpp"
 #include "io/deck_ledger.hpp"
 #include "materials/material_case_reader.hpp"
-#include "sph/sph_model.hpp"
+#include "sph/sph_model_reader.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -60,7 +60,7 @@ std::unique_ptr<Scene> Scene::from_document(std::unique_ptr<io::CaseDocument> do
         const io::CaseTable root = scene->document->root();
         scene->materials = materials::read_material_library(root);
         const std::optional<double> spare_particles =
-            refuse_oversized_scene(root, scene->settings.dimension, memory);
+            refuse_oversized_scene(root, scene->settings.dimension, scene->materials, memory);
         refuse_beside_dem(root);
         if (root.has("coupling") && root.has("dem")) {
             scene->add(coupling::read_dem_coupled_model(root, scene->settings, scene->materials));
@@ -68,7 +68,7 @@ std::unique_ptr<Scene> Scene::from_document(std::unique_ptr<io::CaseDocument> do
             scene->add(coupling::read_coupled_model(root, scene->settings, scene->materials,
                                                     spare_particles));
         } else if (root.has("sph")) {
-            scene->add(sph::SphModel::from_case(root, scene->settings, scene->materials));
+            scene->add(sph::read_sph_model(root, scene->settings, scene->materials));
         }
         if (root.has("dem") && !root.has("coupling")) {
             scene->add(std::make_unique<dem::DemModel>(

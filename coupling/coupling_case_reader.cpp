@@ -6,6 +6,7 @@
 #include "io/case_table.hpp"
 #include "io/named_index.hpp"
 #include "sph/sph_case_reader.hpp"
+#include "sph/sph_model_reader.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -87,14 +88,8 @@ void read_friction(const io::CaseTable& coupling, const sph::SphModel& sph,
             table.fail("body", "interface \"" + name + "\" does not act on body \"" + body +
                                    "\" (its `bodies`): expected one of them");
         }
-        sph::SphModel::WallDefinition::Friction friction{body, table.number("mu_static"), 0.0};
-        friction.mu_kinetic = table.number_or("mu_kinetic", friction.mu_static);
-        if (!(friction.mu_static >= 0.0)) {
-            table.fail("mu_static", "expected a friction coefficient >= 0");
-        }
-        if (!(friction.mu_kinetic >= 0.0 && friction.mu_kinetic <= friction.mu_static)) {
-            table.fail("mu_kinetic", "expected 0 <= mu_kinetic <= mu_static");
-        }
+        const sph::CoulombCoefficients mu = sph::read_coulomb_coefficients(table);
+        const sph::SphModel::WallDefinition::Friction friction{body, mu.mu_static, mu.mu_kinetic};
         for (const auto& other : wall->friction) {
             if (other.body == body) {
                 table.fail("part", "this body-part pair already has friction coefficients");
@@ -104,29 +99,21 @@ void read_friction(const io::CaseTable& coupling, const sph::SphModel& sph,
     }
 }
 
-/// How to lay the wall particles of an interface (`side`, `spacing`, `layers`): a spacing
-/// between 0.2 and 1 times the bodies', enough layers to fill the kernel's `support` by
-/// default, one on the mid-surface of a part with sand on both sides.
+/// How to lay the wall particles of an interface (`side`, `spacing`, `layers`): as a
+/// [[sph.wall]] (sph::read_wall_layout), but one layer on the mid-surface of a part with sand
+/// on both sides.
 ShellWallLayout read_layout(const io::CaseTable& table, const sph::SphModel& sph, double support) {
     ShellWallLayout layout;
     const std::string side = table.choice("side", {"positive", "negative", "both"});
     layout.side = side == "positive"   ? ContactSide::positive
                   : side == "negative" ? ContactSide::negative
                                        : ContactSide::both;
-    layout.spacing = table.positive_quantity_or("spacing", dim::kLength, sph.spacing());
-    if (layout.spacing > sph.spacing() * (1.0 + 1e-9) || layout.spacing < 0.2 * sph.spacing()) {
-        table.fail("spacing", "expected a wall particle spacing between 0.2 and 1 times the "
-                              "bodies' spacing");
-    }
-    const auto layers =
-        table.integer_or("layers", static_cast<int>(std::ceil(support / layout.spacing)));
-    if (layers < 1 || layers > 20) {
-        table.fail("layers", "expected 1 to 20 layers of wall particles");
-    }
-    layout.layers = static_cast<int>(layers);
+    const sph::WallLayout wall = sph::read_wall_layout(table, sph.spacing(), support);
+    layout.spacing = wall.spacing;
+    layout.layers = wall.layers;
     if (layout.side == ContactSide::both) {
         // Sand on both faces: the one layer on the mid-surface, whatever the support.
-        if (table.has("layers") && layers != 1) {
+        if (table.has("layers") && wall.layers != 1) {
             table.fail("layers", "a part with sand on both sides has one layer of wall "
                                  "particles, on its mid-surface: expected layers = 1 or none");
         }
@@ -214,7 +201,7 @@ void build_walls(const io::CaseTable& root, sph::SphModel& sph, Interfaces& read
     for (auto& wall : read.walls) {
         sph.add_wall(std::move(wall));
     }
-    sph.build(root);
+    sph::build_sph_scene(sph, root);
     const auto& sph_walls = sph.solver()->walls();
     for (CoupledPart& part : read.parts) {
         for (std::size_t k = 0; k < sph_walls.size(); ++k) {
@@ -311,7 +298,8 @@ CouplingSettings read_settings(const io::CaseTable& table, const fem::ShellModel
     settings.max_iterations = static_cast<int>(iterations);
     settings.relaxation = table.number_or("relaxation", fallback("relaxation"));
     settings.accelerator =
-        table.choice_or("accelerator", {"aitken", "quasi_newton"}, "aitken") == "quasi_newton"
+        table.choice_or("accelerator", {"aitken", "quasi_newton"},
+                        io::default_text(kCouplingKeys, "accelerator")) == "quasi_newton"
             ? Accelerator::quasi_newton
             : Accelerator::aitken;
     if (!(settings.relaxation > 0.0 && settings.relaxation <= 1.0)) {
@@ -393,7 +381,7 @@ std::unique_ptr<CoupledModel> read_coupled_model(const io::CaseTable& root,
         coupling.fail("", "a coupling joins SPH bodies and shells: expected [sph] with "
                           "[[sph.body]] and [fem] with [[fem.shell]] tables");
     }
-    auto sph = sph::SphModel::read_bodies(root, scene, materials);
+    auto sph = sph::read_sph_bodies(root, scene, materials);
     auto fem = fem::read_shell_model(root, scene, materials);
     const CouplingSettings settings = read_settings(coupling, *fem);
     Interfaces read = read_interfaces(coupling, *sph, *fem, spare_particles);

@@ -62,8 +62,10 @@ ContactLaw read_contact_law(const io::CaseTable& dem, double gravity) {
     ContactLaw law;
     const std::string model = table.choice("law", {"linear", "hertz_mindlin"});
     law.model = model == "linear" ? ContactLaw::Model::linear : ContactLaw::Model::hertz_mindlin;
-    law.gamma_n = table.positive_quantity_or("gamma_n", dim::kFrequency, 0.0, true);
-    law.gamma_t = table.positive_quantity_or("gamma_t", dim::kFrequency, 0.0, true);
+    law.gamma_n = table.positive_quantity_or("gamma_n", dim::kFrequency,
+                                             io::default_value(kDemContactKeys, "gamma_n"), true);
+    law.gamma_t = table.positive_quantity_or("gamma_t", dim::kFrequency,
+                                             io::default_value(kDemContactKeys, "gamma_t"), true);
     law.friction = coefficient(table, "friction", 0.0);
     law.wall_friction = coefficient(table, "wall_friction", law.friction);
     law.rolling_friction = coefficient(table, "rolling_friction", 0.0);
@@ -108,12 +110,14 @@ ContactLaw read_contact_law(const io::CaseTable& dem, double gravity) {
 }
 
 void read_clump(const io::CaseTable& table, BodySettings& body) {
-    const std::int64_t spheres = table.integer_or("spheres", 1);
+    const std::int64_t spheres = table.integer_or(
+        "spheres", static_cast<std::int64_t>(io::default_value(kDemBodyKeys, "spheres")));
     if (spheres < 1 || spheres > 16) {
         table.fail("spheres", "expected an integer in [1, 16]");
     }
     body.spheres = static_cast<int>(spheres);
-    body.sphere_distance = table.number_or("sphere_distance", 1.0);
+    body.sphere_distance =
+        table.number_or("sphere_distance", io::default_value(kDemBodyKeys, "sphere_distance"));
     // The clump's mass is its spheres' sum: overlapping spheres would count their lens twice.
     if (!(body.sphere_distance >= 1.0 && body.sphere_distance <= 10.0)) {
         table.fail("sphere_distance", "expected a number in [1, 10]: the spheres of a clump "
@@ -194,8 +198,10 @@ BodySettings read_body(const io::CaseTable& table, const materials::MaterialLibr
     body.velocity = table.vector_or("velocity", dim::kVelocity, Vec3::Zero());
     body.angular_velocity =
         table.vector_or("angular_velocity", dim::kAngularVelocity, Vec3::Zero());
-    body.rotation = table.boolean_or("rotation", true);
-    const std::int64_t seed = table.integer_or("seed", 1);
+    body.rotation =
+        table.boolean_or("rotation", io::default_value(kDemBodyKeys, "rotation") != 0.0);
+    const std::int64_t seed = table.integer_or(
+        "seed", static_cast<std::int64_t>(io::default_value(kDemBodyKeys, "seed")));
     if (seed < 0) {
         table.fail("seed", "expected an integer >= 0");
     }
@@ -225,7 +231,8 @@ PlaneWall::Face read_rectangle(const io::CaseTable& table) {
 /// A wall's prescribed translation: velocity, move_start, move_end.
 void read_motion(const io::CaseTable& table, PlaneWall& wall) {
     wall.velocity = table.vector_or("velocity", dim::kVelocity, Vec3::Zero());
-    wall.move_start = table.positive_quantity_or("move_start", dim::kTime, 0.0, true);
+    wall.move_start = table.positive_quantity_or(
+        "move_start", dim::kTime, io::default_value(kDemWallKeys, "move_start"), true);
     wall.move_end = table.quantity_or("move_end", dim::kTime, wall.move_end);
     if (!(wall.move_end > wall.move_start)) {
         table.fail("move_end", "expected a time after move_start");
@@ -265,7 +272,9 @@ PlaneWall read_wall(const io::CaseTable& table, int up) {
     if (!(min.array() < max.array()).all()) {
         table.fail("max", "expected max above min on every axis");
     }
-    wall.faces = PlaneWall::box_faces(min, max, up, table.boolean_or("open_top", true));
+    wall.faces = PlaneWall::box_faces(
+        min, max, up,
+        table.boolean_or("open_top", io::default_value(kDemWallKeys, "open_top") != 0.0));
     return wall;
 }
 
@@ -291,14 +300,16 @@ SourceSettings read_source(const io::CaseTable& table, const std::vector<BodySet
             table.fail("count", "expected at least one grain");
         }
     }
-    source.start = table.positive_quantity_or("start", dim::kTime, 0.0, true);
+    source.start = table.positive_quantity_or("start", dim::kTime,
+                                              io::default_value(kDemSourceKeys, "start"), true);
     source.end =
         table.positive_quantity_or("end", dim::kTime, std::numeric_limits<double>::infinity());
     if (!(source.end > source.start)) {
         table.fail("end", "expected an end after the start");
     }
     source.velocity = table.vector_or("velocity", dim::kVelocity, Vec3::Zero());
-    const std::int64_t seed = table.integer_or("seed", 1);
+    const std::int64_t seed = table.integer_or(
+        "seed", static_cast<std::int64_t>(io::default_value(kDemSourceKeys, "seed")));
     if (seed < 0) {
         table.fail("seed", "expected an integer >= 0");
     }
@@ -364,7 +375,8 @@ DemSettings read_dem_settings(const io::CaseTable& root,
     }
     settings.impact_velocity = dem.positive_quantity_or(
         "impact_velocity", dim::kVelocity, io::default_value(kDemKeys, "impact_velocity"));
-    settings.contact_forces = dem.boolean_or("contact_forces", false);
+    settings.contact_forces =
+        dem.boolean_or("contact_forces", io::default_value(kDemKeys, "contact_forces") != 0.0);
     if (dem.has("skin")) {
         settings.skin = dem.positive_quantity("skin", dim::kLength);
     }

@@ -72,20 +72,7 @@ DemModel::DemModel(DemSettings settings, const io::SceneSettings& scene,
                             std::to_string(shortest_contact_time(settings_.impact_velocity)) +
                             " s) resolves no contact: expected a shorter time_step");
     }
-    for (std::size_t a = 0; a < body_elastic_.size(); ++a) {
-        for (const GrainElastic& b : body_elastic_) {
-            PairProperties pair;
-            combine_elastic(body_elastic_[a], b, pair);
-            pair.friction = settings_.law.friction;
-            pair.rolling_friction = settings_.law.rolling_friction;
-            body_pairs_.push_back(pair);
-        }
-        PairProperties wall;
-        combine_elastic(body_elastic_[a], std::nullopt, wall);
-        wall.friction = settings_.law.wall_friction;
-        wall.rolling_friction = settings_.law.wall_rolling_friction;
-        body_walls_.push_back(wall);
-    }
+    combine_body_pairs();
     walls_ = settings_.walls;
     start_position_ = grains_.position;
     sinks_ = settings_.sinks ? settings_.sinks : std::make_shared<particles::SinkSet>();
@@ -106,6 +93,23 @@ DemModel::DemModel(DemSettings settings, const io::SceneSettings& scene,
     }
     evaluate(0.0);
     start_energy_ = energy().total();
+}
+
+void DemModel::combine_body_pairs() {
+    for (std::size_t a = 0; a < body_elastic_.size(); ++a) {
+        for (const GrainElastic& b : body_elastic_) {
+            PairProperties pair;
+            combine_elastic(body_elastic_[a], b, pair);
+            pair.friction = settings_.law.friction;
+            pair.rolling_friction = settings_.law.rolling_friction;
+            body_pairs_.push_back(pair);
+        }
+        PairProperties wall;
+        combine_elastic(body_elastic_[a], std::nullopt, wall);
+        wall.friction = settings_.law.wall_friction;
+        wall.rolling_friction = settings_.law.wall_rolling_friction;
+        body_walls_.push_back(wall);
+    }
 }
 
 double DemModel::pair_contact_time(std::size_t a, std::optional<std::size_t> b, bool largest,

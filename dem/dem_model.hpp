@@ -82,6 +82,9 @@ class DemModel final : public io::Stepper, public io::Reporter {
     double shortest_contact_time(double speed) const;
 
   private:
+    /// The pair properties (E*, G*, friction, rolling friction) of every two bodies' grains
+    /// and of each body's grains on a wall.
+    void combine_body_pairs();
     /// The contact time of the smallest (or largest) grains of bodies a and b, or of a's on a
     /// wall (b empty).
     double pair_contact_time(std::size_t a, std::optional<std::size_t> b, bool largest,

@@ -66,6 +66,22 @@ Eigen::Quaterniond random_orientation(std::mt19937_64& generator) {
                               b * std::sin(u3));
 }
 
+/// A centre drawn uniformly where a grain of sphere radius `r`, turned by `turned`, lies wholly
+/// inside the body's box.
+Vec3 draw_centre(const BodySettings& body, const GrainShape& shape, double r,
+                 const Eigen::Quaterniond& turned, std::mt19937_64& generator) {
+    Vec3 margin = Vec3::Constant(r);
+    for (const Vec3& offset : shape.offsets) {
+        margin = margin.cwiseMax(Vec3(Vec3::Constant(r) + (turned * offset).cwiseAbs()));
+    }
+    Vec3 centre;
+    for (int a = 0; a < 3; ++a) {
+        centre[a] = body.min[a] + margin[a] +
+                    (body.max[a] - body.min[a] - 2.0 * margin[a]) * uniform(generator);
+    }
+    return centre;
+}
+
 } // namespace
 
 double uniform(std::mt19937_64& generator) {
@@ -140,15 +156,7 @@ void place_grains(const BodySettings& body, int body_id, double density, GrainSe
             // orientation comes first, and the centre where each of its spheres fits.
             const Eigen::Quaterniond turned =
                 body.spheres > 1 ? random_orientation(generator) : Eigen::Quaterniond::Identity();
-            Vec3 margin = Vec3::Constant(r);
-            for (const Vec3& offset : shape.offsets) {
-                margin = margin.cwiseMax(Vec3(Vec3::Constant(r) + (turned * offset).cwiseAbs()));
-            }
-            Vec3 centre;
-            for (int a = 0; a < 3; ++a) {
-                centre[a] = body.min[a] + margin[a] +
-                            (body.max[a] - body.min[a] - 2.0 * margin[a]) * uniform(generator);
-            }
+            const Vec3 centre = draw_centre(body, shape, r, turned, generator);
             fits = std::all_of(shape.offsets.begin(), shape.offsets.end(),
                                [&](const Vec3& o) { return grid.free(centre + turned * o, r); });
             if (fits) {

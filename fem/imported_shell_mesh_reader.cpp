@@ -23,9 +23,10 @@ ShellMesh read_gmsh_shell(const io::CaseTable& shell) {
         }
     }
     // With groups, elements outside them need the shell's thickness only if there are any.
-    const double thickness = groups.empty()
+    const double thickness = groups.empty() ? shell.positive_quantity("thickness", dim::kLength)
+                             : shell.has("thickness")
                                  ? shell.positive_quantity("thickness", dim::kLength)
-                                 : shell.positive_quantity_or("thickness", dim::kLength, 0.0);
+                                 : 0.0;
     const std::string msh =
         shell.has("geo") ? shell.resolved_path("file") : shell.file_path("file");
     if (shell.has("geo")) {

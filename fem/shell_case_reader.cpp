@@ -57,7 +57,9 @@ ShellMesh generate(const io::CaseTable& shell, const std::string& generator, dou
                         shell.positive_quantity("height", dim::kLength),
                         element_count(shell, "elements_x"), element_count(shell, "elements_y"),
                         element_count(shell, "elements_z"),
-                        shell.choice_or("top", {"open", "closed"}, "open") == "closed", thickness);
+                        shell.choice_or("top", {"open", "closed"},
+                                        io::default_text(kShellGeneratorKeys, "top")) == "closed",
+                        thickness);
     }
     return make_cone(shell.positive_quantity("radius_bottom", dim::kLength),
                      shell.positive_quantity("radius_top", dim::kLength, true),
@@ -330,7 +332,8 @@ std::map<std::string, TimeFunction> read_time_functions(const io::CaseTable& fem
         if (functions.count(name) != 0) {
             table.fail("name", "time function '" + name + "' is defined twice");
         }
-        const std::string type = table.choice_or("type", {"points", "ramp"}, "points");
+        const std::string type = table.choice_or("type", {"points", "ramp"},
+                                                 io::default_text(kTimeFunctionKeys, "type"));
         try {
             functions.emplace(
                 name, type == "ramp"

@@ -22,16 +22,16 @@ namespace grainload::fem {
 
 /// The keys of the [fem] table (docs/user-guide/fem.md).
 inline constexpr std::array<io::KeySpec, 15> kFemKeys{{
-    {"analysis", "`static` or `dynamic`", "`\"static\"`",
+    {"analysis", "`static` or `dynamic`", "static",
      "static: load steps, time only orders them; dynamic: implicit Newmark or HHT-α"},
-    {"kinematics", "`linear` or `total_lagrangian`", "`\"linear\"`",
+    {"kinematics", "`linear` or `total_lagrangian`", "linear",
      "small displacements, or large displacements and rotations with small strains"},
     {"load_time", "time", "`[case].end_time`",
      "when the load factor (a linear ramp, then held) reaches 1; it scales every load and "
      "prescribed value that names no `time_function`"},
     {"increments_per_step", "integer", "1", "load increments per time step (static)", 1.0},
     {"time_step", "time", "required when `dynamic`", "the implicit step of a dynamic analysis"},
-    {"integrator", "`newmark` or `hht`", "`\"newmark\"`",
+    {"integrator", "`newmark` or `hht`", "newmark",
      "dynamic: Newmark, or Hilber–Hughes–Taylor α (damps high frequencies, second order)"},
     {"newmark_gamma", "number >= 0.5", "0.5",
      "`newmark`: γ; 0.5 is the energy-conserving trapezoidal rule, more damps high frequencies "
@@ -39,7 +39,7 @@ inline constexpr std::array<io::KeySpec, 15> kFemKeys{{
      0.5},
     {"hht_alpha", "number in [-1/3, 0]", "-0.05",
      "`hht`: α; high-frequency spectral radius (1+α)/(1−α); 0 is the trapezoidal rule", -0.05},
-    {"mass", "`lumped` or `consistent`", "`\"lumped\"`",
+    {"mass", "`lumped` or `consistent`", "lumped",
      "dynamic: diagonal mass, or the element mass matrix (frequencies converge from above, "
      "lumped from below)"},
     {"force_tolerance", "number", "1e-6",
@@ -86,7 +86,7 @@ inline constexpr std::array<io::KeySpec, 19> kShellGeneratorKeys{{
     {"elements_x", "integer", "", "`plate`, `box`: elements along x"},
     {"elements_y", "integer", "", "`plate`, `box`: elements along y"},
     {"elements_z", "integer", "", "`box`: elements along z"},
-    {"top", "`open` or `closed`", "`\"open\"`", "`box`: whether it has its top face"},
+    {"top", "`open` or `closed`", "open", "`box`: whether it has its top face"},
     {"radius", "length", "", "`cylinder`, `sphere_zone`: the radius"},
     {"length", "length", "", "`cylinder`: the length along its axis y"},
     {"angle_start", "angle", "", "`cylinder`: the first generator line's angle φ"},
@@ -155,7 +155,7 @@ inline constexpr std::array<io::KeySpec, 2> kReactionKeys{{
 /// The keys of each [[fem.time_function]] table.
 inline constexpr std::array<io::KeySpec, 4> kTimeFunctionKeys{{
     {"name", "string", "", "referenced by `time_function` in loads and boundary conditions"},
-    {"type", "`points` or `ramp`", "`\"points\"`", "piecewise linear through `points`, or a ramp"},
+    {"type", "`points` or `ramp`", "points", "piecewise linear through `points`, or a ramp"},
     {"points", "list of [time, number] pairs", "required for `points`",
      "f(t) piecewise linear, times increasing, held at the end values outside them"},
     {"ramp_time", "time", "required for `ramp`", "f = min(t / ramp_time, 1)"},

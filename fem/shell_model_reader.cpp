@@ -58,7 +58,8 @@ NewtonSettings read_newton(const io::CaseTable& fem) {
 /// A dynamic analysis' integrator: Newmark's gamma, or HHT's alpha with gamma = 1/2 - alpha
 /// (Hilber, Hughes & Taylor 1977: second order).
 void read_integrator(const io::CaseTable& fem, ShellModelSettings& settings) {
-    if (fem.choice_or("integrator", {"newmark", "hht"}, "newmark") == "hht") {
+    if (fem.choice_or("integrator", {"newmark", "hht"}, io::default_text(kFemKeys, "integrator")) ==
+        "hht") {
         const double alpha = fem.number_or("hht_alpha", fallback("hht_alpha"));
         if (alpha < -1.0 / 3.0 || alpha > 0.0) {
             fem.fail("hht_alpha", "expected -1/3 <= alpha <= 0");
@@ -71,7 +72,8 @@ void read_integrator(const io::CaseTable& fem, ShellModelSettings& settings) {
             fem.fail("newmark_gamma", "expected gamma >= 0.5 (unconditional stability)");
         }
     }
-    settings.mass = fem.choice_or("mass", {"lumped", "consistent"}, "lumped") == "consistent"
+    settings.mass = fem.choice_or("mass", {"lumped", "consistent"},
+                                  io::default_text(kFemKeys, "mass")) == "consistent"
                         ? MassMatrix::consistent
                         : MassMatrix::lumped;
 }
@@ -80,7 +82,8 @@ void read_integrator(const io::CaseTable& fem, ShellModelSettings& settings) {
 
 ShellModelSettings read_shell_model_settings(const io::CaseTable& fem, double end_time) {
     ShellModelSettings settings;
-    settings.dynamic = fem.choice_or("analysis", {"static", "dynamic"}, "static") == "dynamic";
+    settings.dynamic = fem.choice_or("analysis", {"static", "dynamic"},
+                                     io::default_text(kFemKeys, "analysis")) == "dynamic";
     if (settings.dynamic) {
         settings.time_step = fem.positive_quantity("time_step", dim::kTime);
     }
@@ -98,8 +101,8 @@ std::unique_ptr<ShellModel> read_shell_model(const io::CaseTable& root,
                                              const io::SceneSettings& scene,
                                              const materials::MaterialLibrary& materials) {
     const io::CaseTable fem = root.table("fem");
-    const std::string kinematics =
-        fem.choice_or("kinematics", {"linear", "total_lagrangian"}, "linear");
+    const std::string kinematics = fem.choice_or("kinematics", {"linear", "total_lagrangian"},
+                                                 io::default_text(kFemKeys, "kinematics"));
     const ShellModelSettings settings = read_shell_model_settings(fem, scene.end_time);
     const std::vector<io::CaseTable> shells = fem.array_of_tables("shell");
     if (shells.empty()) {

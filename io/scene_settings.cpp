@@ -24,7 +24,8 @@ SceneSettings read_scene_settings(CaseDocument& document, const std::string& fil
     const CaseTable settings = document.root().table("case");
     SceneSettings scene;
     scene.name = settings.string_or("name", file_stem);
-    const auto spatial = settings.integer_or("dimension", 3);
+    const auto spatial = settings.integer_or(
+        "dimension", static_cast<std::int64_t>(io::default_value(kCaseKeys, "dimension")));
     if (spatial != 2 && spatial != 3) {
         settings.fail("dimension", "expected 2 (plane strain) or 3");
     }

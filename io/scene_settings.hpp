@@ -36,7 +36,7 @@ inline constexpr double kMostOutputIntervals = 1e6;
 inline constexpr std::array<KeySpec, 5> kCaseKeys{{
     {"name", "string", "file name without `.toml`",
      "names the output: `<name>.pvd`, frames `<name>_NNNNNN.vtm`"},
-    {"dimension", "2 or 3", "3", "2 is plane strain in the x–y plane (z = 0)"},
+    {"dimension", "2 or 3", "3", "2 is plane strain in the x–y plane (z = 0)", 3.0},
     {"end_time", "time", "", "simulated time at which the run stops"},
     {"output_interval", "time", "`end_time / 20`",
      "frames (and checkpoints) at every multiple of it, and at `end_time`"},

@@ -1,10 +1,9 @@
 #pragma once
+// Basic numeric types shared by every module, and the conventions they carry.
 
 #include <Eigen/Core>
 #include <cstdint>
 
-// Basic numeric types shared by every module.
-//
 // Conventions (stated once, used everywhere; see docs/theory.md "Conventions"):
 // - SI units inside the code; case files carry explicit units.
 // - Stress is tension positive. Models written compression positive in their sources (the

@@ -1,4 +1,5 @@
 #pragma once
+// Moves of the generalized cap's hardening parameter shared by its returns.
 
 #include "materials/cap_values.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// The generalized cap's return onto its elliptical cap.
 
 #include "materials/cap_moves.hpp"
 #include "materials/cap_values.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// The generalized cap's return mapping in the invariant plane.
 
 #include "materials/cap_values.hpp"
 

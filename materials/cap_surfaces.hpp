@@ -1,4 +1,5 @@
 #pragma once
+// The generalized cap's surfaces and hardening law as scalar functions.
 
 #include <algorithm>
 #include <cmath>

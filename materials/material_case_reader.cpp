@@ -315,9 +315,11 @@ std::unique_ptr<Material> read_generalized_cap(const io::CaseTable& table) {
     p.X0 = table.quantity("cap_X0", dim::kPressure);
     p.R = table.number("cap_R");
     p.tension = tension_cutoff(table);
-    p.semantics = table.choice_or("cap_semantics", {"mat025", "lifted_x0"}, "mat025") == "mat025"
-                      ? cap::Semantics::mat025
-                      : cap::Semantics::lifted_x0;
+    p.semantics =
+        table.choice_or("cap_semantics", {"mat025", "lifted_x0"},
+                        io::default_text(kGeneralizedCapKeys, "cap_semantics")) == "mat025"
+            ? cap::Semantics::mat025
+            : cap::Semantics::lifted_x0;
     const auto [key, message] = GeneralizedCap::check(p);
     if (!key.empty()) {
         table.fail(key, message);

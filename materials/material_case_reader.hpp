@@ -107,7 +107,7 @@ inline constexpr std::array<io::KeySpec, 13> kGeneralizedCapKeys{{
     {"cap_X0", "pressure", "", "X0, the initial intercept of the cap with the I1 axis"},
     {"tension_cutoff", "pressure", "0", "T ≥ 0 with I1 ≥ −T", 0.0},
     {"cap_toff", "pressure", "none", "MAT_025's TOFF ≤ 0 instead of `tension_cutoff`: T = −TOFF"},
-    {"cap_semantics", "string", "`mat025`",
+    {"cap_semantics", "`mat025` or `lifted_x0`", "mat025",
      "`mat025`: X0 is the initial cap intercept as in LS-DYNA; `lifted_x0`: grainload's first "
      "cap semantics"},
     {"cap_ftype", "integer", "1", "FTYPE; 1 (soil/concrete) only", 1.0},

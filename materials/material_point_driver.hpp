@@ -27,8 +27,8 @@ struct PathSegment {
 struct MaterialPointPath {
     Voigt6 initial_stress = Voigt6::Zero();
     std::vector<PathSegment> segments;
-    double tolerance = 1e-10; ///< stress residual relative to the current stress level
-    int max_iterations = 25;
+    double tolerance = 0.0; ///< stress residual relative to the current stress level
+    int max_iterations = 0;
 };
 
 /// One output row: the state at the end of a step (step 0 is the initial state).

@@ -78,11 +78,13 @@ MaterialPointPath read_material_point_path(const io::CaseTable& table) {
         }
         path.initial_stress = Eigen::Map<const Voigt6>(s.data());
     }
-    path.tolerance = table.number_or("tolerance", path.tolerance);
+    path.tolerance = table.number_or("tolerance", io::default_value(kPathKeys, "tolerance"));
     if (!(path.tolerance > 0.0 && path.tolerance < 1e-2)) {
         table.fail("tolerance", "expected a relative tolerance in (0, 1e-2)");
     }
-    path.max_iterations = static_cast<int>(table.integer_or("max_iterations", path.max_iterations));
+    path.max_iterations = static_cast<int>(table.integer_or(
+        "max_iterations",
+        static_cast<std::int64_t>(io::default_value(kPathKeys, "max_iterations"))));
     if (path.max_iterations < 1) {
         table.fail("max_iterations", "expected at least one iteration");
     }

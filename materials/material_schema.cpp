@@ -1,6 +1,7 @@
 #include "materials/material_schema.hpp"
 
 #include "materials/material_case_reader.hpp"
+#include "materials/material_point_reader.hpp"
 
 #include <array>
 
@@ -10,7 +11,7 @@ namespace {
 
 constexpr std::string_view kGuide = "docs/user-guide.md";
 
-const std::array<io::KeyTable, 7> kTables{{
+const std::array<io::KeyTable, 9> kTables{{
     {"material", true, "a material: its model, density and elastic constants", kMaterialKeys,
      kGuide, "## `[[material]]`"},
     {"material.von_mises", false, "von Mises plasticity with mixed linear hardening", kVonMisesKeys,
@@ -25,6 +26,10 @@ const std::array<io::KeyTable, 7> kTables{{
      kGuide, "### `mu_i`"},
     {"material.mohr_coulomb", false, "the Mohr-Coulomb hexagon in 3D, corners returned exactly",
      kMohrCoulombKeys, kGuide, "### `mohr_coulomb`"},
+    {"path", false, "a material-point driver file's path: initial stress and Newton settings",
+     kPathKeys, "docs/user-guide/matpoint.md", "### `[path]`"},
+    {"path.segment", true, "a material-point path's segment: strain- and stress-controlled parts",
+     kSegmentKeys, "docs/user-guide/matpoint.md", "### `[[path.segment]]`"},
 }};
 
 } // namespace

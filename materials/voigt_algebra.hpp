@@ -1,4 +1,5 @@
 #pragma once
+// Small tensor helpers on Voigt vectors.
 
 #include "io/types.hpp"
 

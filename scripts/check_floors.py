@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """Holds grainload's layout to its floors (docs/architecture.md): a source file includes only
 its own floor and the floors below it, and no two concepts (a header and its source file)
-include each other through any chain. Prints each finding and exits 1 when there is one.
+include each other through any chain; and every header (tests' and benchmarks' too) opens
+with its purpose, a comment on the line after `#pragma once`. Prints each finding and exits 1
+when there is one.
 
     python3 scripts/check_floors.py [ROOT]
 
@@ -80,15 +82,29 @@ def cycles(graph):
     return sorted(found)
 
 
+def headers_without_purpose(root):
+    """Headers whose second line is not a comment saying what they hold."""
+    found = []
+    for folder in list(FLOORS) + ["tests", "bench"]:
+        for path in sorted((root / folder).rglob("*.hpp")):
+            lines = path.read_text(encoding="utf-8").splitlines()
+            if len(lines) < 2 or not lines[1].startswith("// "):
+                found.append(f"{path.relative_to(root).as_posix()} does not open with its "
+                             "purpose (a comment after #pragma once)")
+    return found
+
+
 def main(argv):
     root = pathlib.Path(argv[1] if len(argv) > 1 else pathlib.Path(__file__).parents[1])
     graph = concepts(root)
     findings = upward(graph)
     findings += ["include cycle: " + " <-> ".join(c) for c in cycles(graph)]
+    findings += headers_without_purpose(root)
     for finding in findings:
         print("check_floors: " + finding)
     if not findings:
-        print(f"check_floors: {len(graph)} concepts, no upward include, no cycle")
+        print(f"check_floors: {len(graph)} concepts, no upward include, no cycle, every header "
+              "states its purpose")
     return 1 if findings else 0
 
 

@@ -43,12 +43,7 @@ EscapeWatch::EscapeWatch(const ParticleSet& particles, const Vec3& gravity, int 
     active_ = extent > 0.0;
 }
 
-std::optional<std::string>
-EscapeWatch::check(const ParticleSet& particles,
-                   const std::function<std::string(int body_id)>& body_name) const {
-    if (!active_) {
-        return std::nullopt;
-    }
+EscapeWatch::Reach EscapeWatch::reach_now(const ParticleSet& particles) const {
     // Walls where they are now widen the box by the same margin (their own extent at the start
     // is in it already) and lend their speed to v0. Checked every step, so reduced over the
     // threads (maxima are exact in any order).
@@ -62,16 +57,29 @@ EscapeWatch::check(const ParticleSet& particles,
             v0 = std::max(v0, particles.velocity[i].norm());
         }
     }
-    Vec3 lower = lower_;
-    Vec3 upper = upper_;
+    Reach reach{lower_, upper_, 0.0, v0};
     if (!walls.empty()) {
-        lower = lower.cwiseMin(walls.lower - Vec3::Constant(margin_));
-        upper = upper.cwiseMax(walls.upper + Vec3::Constant(margin_));
+        reach.lower = reach.lower.cwiseMin(walls.lower - Vec3::Constant(margin_));
+        reach.upper = reach.upper.cwiseMax(walls.upper + Vec3::Constant(margin_));
     }
-    double height = 0.0;
     for (int a = 0; a < dimension_; ++a) {
-        height = std::max(height, upper[a] - lower[a]);
+        reach.height = std::max(reach.height, reach.upper[a] - reach.lower[a]);
     }
+    return reach;
+}
+
+std::optional<std::string>
+EscapeWatch::check(const ParticleSet& particles,
+                   const std::function<std::string(int body_id)>& body_name) const {
+    if (!active_) {
+        return std::nullopt;
+    }
+    const Index n = particles.size();
+    const Reach reach = reach_now(particles);
+    const Vec3& lower = reach.lower;
+    const Vec3& upper = reach.upper;
+    const double height = reach.height;
+    const double v0 = reach.v0;
     // How far particle i lies outside the box, and how fast it leaves it (0, 0 inside).
     auto outside_of = [&](Index i, double& outward) {
         const Vec3& x = particles.position[i];

@@ -42,6 +42,17 @@ class EscapeWatch {
           const std::function<std::string(int body_id)>& body_name) const;
 
   private:
+    /// The scene box now (the start's, widened by the walls where they are) with its height,
+    /// and the fastest speed a particle may have without falling: the walls' fastest or the
+    /// start's.
+    struct Reach {
+        Vec3 lower = Vec3::Zero();
+        Vec3 upper = Vec3::Zero();
+        double height = 0.0;
+        double v0 = 0.0;
+    };
+    Reach reach_now(const ParticleSet& particles) const;
+
     bool active_ = false;
     int dimension_ = 3;
     Vec3 lower_ = Vec3::Zero();

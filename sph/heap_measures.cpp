@@ -76,6 +76,33 @@ double mass_run_out(const std::vector<Vec3>& position, const std::vector<double>
     return edges.empty() ? 0.0 : edges.back().first;
 }
 
+/// The heap's surface in one bin of its horizontal coordinate: the highest top there.
+struct SurfaceSample {
+    double coordinate = 0.0;
+    double top = -std::numeric_limits<double>::infinity();
+};
+
+/// Least-squares line top = a + b c through the samples between 20 % and 80 % of the heap's
+/// height `top`: the cone's flank, without the rounded apex and the thin toe of the heap. Its
+/// angle (rad); none with fewer than three samples on the flank.
+std::optional<double> flank_angle(const std::vector<SurfaceSample>& bins, double top) {
+    double n = 0.0, sc = 0.0, st = 0.0, scc = 0.0, sct = 0.0;
+    for (const SurfaceSample& s : bins) {
+        if (s.top >= 0.2 * top && s.top <= 0.8 * top) {
+            n += 1.0;
+            sc += s.coordinate;
+            st += s.top;
+            scc += s.coordinate * s.coordinate;
+            sct += s.coordinate * s.top;
+        }
+    }
+    const double spread = n * scc - sc * sc;
+    if (n >= 3.0 && spread > 0.0) {
+        return std::atan(-(n * sct - sc * st) / spread);
+    }
+    return std::nullopt;
+}
+
 } // namespace
 
 std::vector<char> largest_cluster(const std::vector<Vec3>& position, double link_distance) {
@@ -136,11 +163,7 @@ HeapMeasures measure_heap(const std::vector<Vec3>& position, const std::vector<d
     const auto member = largest_cluster(position, 1.5 * dp);
     // The surface profile: per bin of width dp along the horizontal coordinate, the heap
     // particle with the highest top (its centre height + dp/2), taken at its own coordinate.
-    struct Sample {
-        double coordinate = 0.0;
-        double top = -std::numeric_limits<double>::infinity();
-    };
-    std::vector<Sample> bins;
+    std::vector<SurfaceSample> bins;
     double top = -std::numeric_limits<double>::infinity();
     double reach = -std::numeric_limits<double>::infinity();
     // The axis column: particles whose centre lies within dp of the axis (3D), or in the
@@ -176,22 +199,7 @@ HeapMeasures measure_heap(const std::vector<Vec3>& position, const std::vector<d
     result.axis_height = axis_top;
     result.run_out = reach;
     result.run_out_99 = mass_run_out(position, mass, frame);
-    // Least-squares line top = a + b c through the samples between 20 % and 80 % of the final
-    // height: the cone's flank, without the rounded apex and the thin toe of the heap.
-    double n = 0.0, sc = 0.0, st = 0.0, scc = 0.0, sct = 0.0;
-    for (const Sample& s : bins) {
-        if (s.top >= 0.2 * top && s.top <= 0.8 * top) {
-            n += 1.0;
-            sc += s.coordinate;
-            st += s.top;
-            scc += s.coordinate * s.coordinate;
-            sct += s.coordinate * s.top;
-        }
-    }
-    const double spread = n * scc - sc * sc;
-    if (n >= 3.0 && spread > 0.0) {
-        result.angle = std::atan(-(n * sct - sc * st) / spread);
-    }
+    result.angle = flank_angle(bins, top);
     return result;
 }
 

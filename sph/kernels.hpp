@@ -1,4 +1,5 @@
 #pragma once
+// The SPH smoothing kernels: cubic and quintic splines, Wendland C2.
 
 #include "io/types.hpp"
 

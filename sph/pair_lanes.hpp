@@ -1,4 +1,5 @@
 #pragma once
+// The SPH pair passes' same-body terms in AVX2 lanes, bit for bit the scalar rows.
 
 #include "io/types.hpp"
 

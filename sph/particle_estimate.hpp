@@ -1,14 +1,12 @@
 #pragma once
 // The particle counts and heap bytes of an SPH scene, estimated before any particle is made.
 
+#include "io/surface_mesh.hpp"
 #include "io/types.hpp"
+#include "sph/body_shape_reader.hpp"
 
 #include <string>
 #include <vector>
-
-namespace grainload::io {
-class CaseTable;
-}
 
 namespace grainload::sph {
 
@@ -34,13 +32,11 @@ struct ParticleCount {
 };
 
 /// The particle counts of a case's SPH scene ([sph] with [[sph.body]], [[sph.source]] and
-/// [[sph.wall]]; the
-/// walls that [[coupling.interface]] lays on shells are not counted) from the shapes' volumes
-/// (bodies: volume / spacing^dimension; box shapes exactly as the lattice rounds them; mesh
-/// shapes: the enclosed volume of the surface; LS-DYNA decks: their *ELEMENT_SPH cards) and
-/// the walls' areas (area / wall spacing^(dimension-1) per layer). Nothing is allocated in
-/// proportion to the counts. Reads the same keys with the same checks as the builders, so a
-/// bad key fails with the message it would get there.
+/// [[sph.wall]]; the walls that [[coupling.interface]] lays on shells are not counted) from the
+/// shapes' volumes (count_shape) and the walls' areas (area / wall spacing^(dimension-1) per
+/// layer). Nothing is allocated in proportion to the counts. The bodies, shapes and wall
+/// layouts are read by the readers the run builds them with (estimate_particles,
+/// sph/particle_estimate_reader.hpp), so a bad key fails with the message it gets there.
 struct ParticleEstimate {
     std::vector<ParticleCount> bodies;
     /// [[sph.source]]: a site per particle of its box or shape at the bodies' spacing (a
@@ -57,7 +53,19 @@ struct ParticleEstimate {
     double bytes() const { return total() * bytes_per_particle; }
 };
 
-/// The estimate of the [sph] table of `root` (empty when there is none). `dimension` 2 or 3.
-ParticleEstimate estimate_particles(const io::CaseTable& root, int dimension);
+/// The particles a shape holds: box shapes exactly as the lattice of fill_box rounds them
+/// (max(1, round(edge / spacing)) cells per axis); cylinders and cones from the frustum's
+/// volume (3D) or axial section (2D), discs from their area; mesh shapes from the enclosed
+/// volume of the surface; LS-DYNA decks: their particles.
+ParticleCount count_shape(const ShapeSettings& shape, double spacing, int dimension);
+/// A box from `lower` to `upper` filled at `spacing`, as count_shape counts a box shape.
+ParticleCount count_box(const Vec3& lower, const Vec3& upper, double spacing, int dimension);
+/// Volume enclosed by a closed surface (divergence theorem over its triangles, quadrangles
+/// split along a diagonal).
+double enclosed_volume(const io::SurfaceMesh& mesh);
+/// Surface area of a mesh (3D) or length of its polyline (2D).
+double surface_measure(const io::SurfaceMesh& mesh, int dimension);
+/// A figure of an estimate's basis, to three digits.
+std::string estimate_text(double value);
 
 } // namespace grainload::sph

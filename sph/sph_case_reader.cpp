@@ -26,7 +26,9 @@ ArtificialViscosity read_artificial_viscosity(const io::CaseTable& table) {
     if (viscosity.alpha < 0.0 || viscosity.beta < 0.0) {
         table.fail("", "expected alpha >= 0 and beta >= 0");
     }
-    viscosity.sound_speed = table.quantity_or("sound_speed", dim::kVelocity, 0.0);
+    // Absent: each material's own wave speed, which 0 stands for in ArtificialViscosity.
+    viscosity.sound_speed =
+        table.has("sound_speed") ? table.quantity("sound_speed", dim::kVelocity) : 0.0;
     if (!(viscosity.sound_speed >= 0.0)) {
         table.fail("sound_speed", "expected a speed >= 0 (0: the materials' own)");
     }
@@ -239,27 +241,33 @@ void attach_motion(const io::CaseTable& table, const particles::PhaseSequence* p
 
 } // namespace
 
+WallLayout read_wall_layout(const io::CaseTable& wall, double body_spacing, double support_radius) {
+    // A finer wall is smoother: see docs/theory/sph.md, "Wall contact".
+    WallLayout layout;
+    layout.spacing = wall.positive_quantity_or("spacing", dim::kLength, body_spacing);
+    if (layout.spacing > body_spacing * (1.0 + 1e-9) || layout.spacing < 0.2 * body_spacing) {
+        wall.fail("spacing", "expected a wall particle spacing between 0.2 and 1 times the "
+                             "bodies' spacing");
+    }
+    const auto layers =
+        wall.integer_or("layers", static_cast<int>(std::ceil(support_radius / layout.spacing)));
+    if (layers < 1 || layers > 20) {
+        wall.fail("layers", "expected 1 to 20 layers of wall particles");
+    }
+    layout.layers = static_cast<int>(layers);
+    return layout;
+}
+
 std::vector<Wall> read_rigid_walls(const io::CaseTable& sph, ParticleSet& particles, int dimension,
                                    double spacing, double support_radius, int first_body_id,
                                    const particles::PhaseSequence* phases) {
     std::vector<Wall> walls;
     for (const auto& table : sph.array_of_tables("wall")) {
-        // A finer wall is smoother: see docs/theory/sph.md, "Wall contact".
-        const double wall_spacing = table.positive_quantity_or("spacing", dim::kLength, spacing);
-        if (wall_spacing > spacing * (1.0 + 1e-9) || wall_spacing < 0.2 * spacing) {
-            table.fail("spacing", "expected a wall particle spacing between 0.2 and 1 times the "
-                                  "bodies' spacing");
-        }
-        const int default_layers = static_cast<int>(std::ceil(support_radius / wall_spacing));
-        const auto layers = table.integer_or("layers", default_layers);
-        if (layers < 1 || layers > 20) {
-            table.fail("layers", "expected 1 to 20 layers of wall particles");
-        }
-        WallSurface surface =
-            wall_surface(table, dimension, wall_spacing, static_cast<int>(layers));
+        const WallLayout layout = read_wall_layout(table, spacing, support_radius);
+        WallSurface surface = wall_surface(table, dimension, layout.spacing, layout.layers);
         const int index = static_cast<int>(walls.size());
         Wall wall = add_wall(particles, table.string("name"), index, first_body_id + index,
-                             surface.points, wall_spacing, 1.0, dimension);
+                             surface.points, layout.spacing, 1.0, dimension);
         wall.normals = std::move(surface.normals);
         wall.samples = std::move(surface.samples);
         wall.centre = table.vector_or("centre", dim::kLength, wall.centre);
@@ -349,6 +357,20 @@ void read_initial_stress(const io::CaseTable& body, ParticleSet& particles, Inde
     set_geostatic_stress(particles, first, gravity, spacing, lateral_ratio);
 }
 
+CoulombCoefficients read_coulomb_coefficients(const io::CaseTable& table) {
+    CoulombCoefficients mu;
+    mu.mu_static = table.number("mu_static");
+    mu.mu_kinetic = table.number_or("mu_kinetic", mu.mu_static);
+    if (!(mu.mu_static >= 0.0)) {
+        table.fail("mu_static", "expected a friction coefficient >= 0");
+    }
+    if (!(mu.mu_kinetic >= 0.0 && mu.mu_kinetic <= mu.mu_static)) {
+        table.fail("mu_kinetic", "expected 0 <= mu_kinetic <= mu_static (Coulomb: kinetic "
+                                 "friction does not exceed static friction)");
+    }
+    return mu;
+}
+
 std::vector<FrictionPair> read_friction_pairs(const io::CaseTable& sph,
                                               const std::vector<std::string>& body_names,
                                               const std::vector<Wall>& walls) {
@@ -365,15 +387,9 @@ std::vector<FrictionPair> read_friction_pairs(const io::CaseTable& sph,
             table.fail("body", "wall \"" + met.name + "\" does not act on this body (its " +
                                    "`bodies`): expected one of them");
         }
-        pair.mu_static = table.number("mu_static");
-        pair.mu_kinetic = table.number_or("mu_kinetic", pair.mu_static);
-        if (!(pair.mu_static >= 0.0)) {
-            table.fail("mu_static", "expected a friction coefficient >= 0");
-        }
-        if (!(pair.mu_kinetic >= 0.0 && pair.mu_kinetic <= pair.mu_static)) {
-            table.fail("mu_kinetic", "expected 0 <= mu_kinetic <= mu_static (Coulomb: kinetic "
-                                     "friction does not exceed static friction)");
-        }
+        const CoulombCoefficients mu = read_coulomb_coefficients(table);
+        pair.mu_static = mu.mu_static;
+        pair.mu_kinetic = mu.mu_kinetic;
         for (const FrictionPair& other : pairs) {
             if (other.body_id == pair.body_id && other.wall_body_id == pair.wall_body_id) {
                 table.fail("wall", "this body-wall pair already has friction coefficients");

@@ -132,6 +132,17 @@ inline constexpr std::array<io::KeySpec, 18> kWallKeys{{
 SphOptions read_sph_options(const io::CaseTable& sph, int dimension, double spacing,
                             const Vec3& gravity);
 
+/// How a wall's particles are laid, as [[sph.wall]] and [[coupling.interface]] state it.
+struct WallLayout {
+    double spacing = 0.0; ///< m
+    int layers = 0;
+};
+
+/// A wall table's `spacing` (default the bodies' `body_spacing`, refused outside 0.2 to 1 times
+/// it: a coarser wall lets particles through, a much finer one only costs) and `layers`
+/// (default enough to fill the kernel's `support_radius`, refused outside 1 to 20).
+WallLayout read_wall_layout(const io::CaseTable& wall, double body_spacing, double support_radius);
+
 /// Append the particles of every [[sph.wall]] to `particles` and return the walls. Wall body
 /// ids follow `first_body_id`; `support_radius` sets the default number of layers. `phases`
 /// (null: none) are what remove_at and history_start = "phase:NAME" may name; the walls get
@@ -162,6 +173,17 @@ HeapSettings read_heap_settings(const io::CaseTable& heap,
 
 /// The [[sph.probe]] tables: `name` and `position` each.
 std::vector<ProbeSettings> read_probe_settings(const io::CaseTable& sph);
+
+/// Coulomb's coefficients of a body against a wall or shell part.
+struct CoulombCoefficients {
+    double mu_static = 0.0;
+    double mu_kinetic = 0.0;
+};
+
+/// A friction table's `mu_static` (>= 0) and `mu_kinetic` (default `mu_static`, refused above
+/// it: kinetic friction does not exceed static), as [[sph.friction]] and [[coupling.friction]]
+/// state them.
+CoulombCoefficients read_coulomb_coefficients(const io::CaseTable& table);
 
 /// The [[sph.friction]] pairs: `body` and `wall` by name, `mu_static` >= `mu_kinetic` >= 0.
 /// Body ids are indices into `body_names`; walls carry their own.

@@ -1,18 +1,9 @@
 #include "sph/sph_model.hpp"
 
-#include "io/case_table.hpp"
-#include "io/named_index.hpp"
-#include "materials/material_case_reader.hpp"
-#include "particles/particles_case_reader.hpp"
-#include "sph/body_shape_reader.hpp"
 #include "sph/outlet_reach.hpp"
-#include "sph/probes.hpp"
 #include "sph/scene_limits.hpp"
 #include "sph/scene_monitors.hpp"
-#include "sph/sph_case_reader.hpp"
 #include "sph/start_gap.hpp"
-#include "sph/wall_bodies.hpp"
-#include "sph/wall_map_reader.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -21,8 +12,6 @@
 #include <utility>
 
 namespace grainload::sph {
-
-namespace dim = io::dimension;
 
 namespace {
 
@@ -34,42 +23,6 @@ namespace {
 constexpr double kEnergySurplusLimit = 1.0;
 
 } // namespace
-
-std::unique_ptr<SphModel> SphModel::from_case(const io::CaseTable& root,
-                                              const io::SceneSettings& scene,
-                                              const materials::MaterialLibrary& materials) {
-    auto model = read_bodies(root, scene, materials);
-    model->build(root);
-    return model;
-}
-
-std::unique_ptr<SphModel> SphModel::read_bodies(const io::CaseTable& root,
-                                                const io::SceneSettings& scene,
-                                                const materials::MaterialLibrary& materials) {
-    std::unique_ptr<SphModel> model(new SphModel(materials));
-    const io::CaseTable sph = root.table("sph");
-    model->gravity_ = scene.gravity;
-    model->dimension_ = scene.dimension;
-    model->time_step_ = sph.positive_quantity_or("time_step", dim::kTime, 0.0);
-    model->interactions_ =
-        sph.boolean_or("interactions", io::default_value(kSphKeys, "interactions") != 0.0);
-    if (!model->interactions_ && model->time_step_ == 0.0) {
-        sph.fail("time_step", "free flight (interactions = false) has no CFL limit: expected a "
-                              "fixed time_step, e.g. \"1 ms\"");
-    }
-    const auto bodies = sph.array_of_tables("body");
-    if (bodies.empty()) {
-        sph.fail("", "expected at least one [[sph.body]]");
-    }
-    for (const auto& body : bodies) {
-        model->add_body(body, scene.dimension);
-    }
-    if (model->interactions_) {
-        model->options_ =
-            read_sph_options(sph, model->dimension_, model->spacing_, model->gravity_);
-    }
-    return model;
-}
 
 void SphModel::add_wall(WallDefinition wall) {
     if (solver_) {
@@ -91,57 +44,7 @@ int SphModel::body_id(const std::string& name) const {
     return -1;
 }
 
-void SphModel::build(const io::CaseTable& root) {
-    const io::CaseTable sph = root.table("sph");
-    const ScenePlaces places = read_scene_places(root);
-    phases_ = particles::read_phases(root);
-    if (!phases_.empty() && !interactions_) {
-        root.fail("phase", "phases act on the SPH solver's walls, sources and sinks: expected "
-                           "interactions = true");
-    }
-    for (const char* table : {"symmetry", "periodic"}) {
-        if (sph.has(table) && !interactions_) {
-            sph.fail(table, std::string("ghost images act through the particle interactions: "
-                                        "expected interactions = true with [[sph.") +
-                                table + "]]");
-        }
-    }
-    if (!added_walls_.empty() && !interactions_) {
-        sph.fail("interactions", "walls coupled to shells need the SPH solver: expected "
-                                 "interactions = true");
-    }
-    if (interactions_) {
-        build_solver(sph);
-        if (auto probes = ProbeSet::place(read_probe_settings(sph), solver_->particles())) {
-            parts_.add(std::move(probes));
-        }
-        check_gravity_strain(places, particles(), *materials_, body_names_, gravity_, spacing_,
-                             solver_->options().contact.stiffness);
-        if (const std::string warning =
-                impact_warning(particles(), body_names_, solver_->options().contact.stiffness);
-            !warning.empty()) {
-            sph.warn(warning);
-        }
-    }
-    build_outlets(sph);
-    check_start(sph, places);
-    check_phase_conditions(root);
-    if (solver_) {
-        apply_phase_starts();
-    }
-    if (solver_) {
-        WallMapSet maps = read_wall_maps(sph, solver_->particles(), solver_->walls(), dimension_);
-        if (!maps.empty()) {
-            parts_.add(wall_map_part(std::move(maps), solver_->particles(), solver_->walls()));
-        }
-    } else if (sph.has("wall_map")) {
-        sph.fail("wall_map", "wall loads come from the SPH solver: expected interactions = true");
-    }
-    if (const auto heap = sph.optional_table("heap")) {
-        parts_.add(heap_part(HeapMonitor(read_heap_settings(*heap, body_names_, gravity_),
-                                         particles(), spacing_, gravity_, dimension_),
-                             particles()));
-    }
+void SphModel::finish_build() {
     initial_position_ = particles().position;
     initial_velocity_ = particles().velocity;
     parts_.add(escape_part(EscapeWatch(particles(), gravity_, dimension_), particles(),
@@ -151,7 +54,7 @@ void SphModel::build(const io::CaseTable& root) {
     }
 }
 
-void SphModel::check_start(const io::CaseTable& sph, const ScenePlaces& places) const {
+std::vector<std::string> SphModel::start_warnings(const ScenePlaces& places) const {
     std::vector<std::string> warnings;
     for (std::size_t b = 0; b < thin_warnings_.size(); ++b) {
         const auto& sources = sources_->sources();
@@ -180,9 +83,7 @@ void SphModel::check_start(const io::CaseTable& sph, const ScenePlaces& places) 
             warnings.push_back(std::move(w));
         }
     }
-    for (const std::string& warning : warnings) {
-        sph.warn(warning);
-    }
+    return warnings;
 }
 
 std::vector<FrictionPair> SphModel::added_wall_friction(const std::vector<Wall>& walls) const {
@@ -197,15 +98,7 @@ std::vector<FrictionPair> SphModel::added_wall_friction(const std::vector<Wall>&
     return pairs;
 }
 
-void SphModel::build_solver(const io::CaseTable& sph) {
-    SphOptions options = options_;
-    SmoothingKernel kernel(options.kernel, options.smoothing_length, dimension_);
-    auto walls = read_rigid_walls(sph, particles_, dimension_, spacing_, kernel.support_radius(),
-                                  static_cast<int>(body_names_.size()), &phases_);
-    const auto wall_tables = sph.array_of_tables("wall");
-    for (std::size_t k = 0; k < wall_tables.size(); ++k) {
-        walls[k].bodies = read_wall_bodies(wall_tables[k], body_names_);
-    }
+void SphModel::append_added_walls(std::vector<Wall>& walls) {
     for (WallDefinition& added : added_walls_) {
         const int index = static_cast<int>(walls.size());
         Wall wall = sph::add_wall(particles_, added.name, index,
@@ -222,15 +115,9 @@ void SphModel::build_solver(const io::CaseTable& sph) {
         wall.driver = std::move(added.driver);
         walls.push_back(std::move(wall));
     }
-    options.friction = read_friction_pairs(sph, body_names_, walls);
-    for (const FrictionPair& pair : added_wall_friction(walls)) {
-        options.friction.push_back(pair);
-    }
-    read_ghost_boundaries(sph, walls, kernel.support_radius(), options);
-    if (!options.friction.empty() && !(options.contact.stiffness > 0.0)) {
-        sph.fail("friction", "wall friction acts through the contact force: expected an "
-                             "[sph.contact] table with a stiffness");
-    }
+}
+
+void SphModel::make_solver(const SphOptions& options, std::vector<Wall> walls) {
     SphSolver::MaterialList list;
     for (int k = 0; k < materials_->size(); ++k) {
         list.push_back(&(*materials_)[k]);
@@ -238,34 +125,6 @@ void SphModel::build_solver(const io::CaseTable& sph) {
     solver_ = std::make_unique<SphSolver>(std::move(particles_), std::move(list), options,
                                           std::move(walls));
     particles_ = ParticleSet{};
-    if (time_step_ > 0.0) {
-        const double limit = solver_->stable_time_step();
-        if (time_step_ > limit) {
-            std::ostringstream message;
-            message << "time step " << time_step_ << " s is above the CFL limit " << limit
-                    << " s (cfl_safety * h / (c + |v|), c = sqrt((K + 4G/3)/rho)); use at most "
-                    << limit << " s or leave time_step out";
-            sph.fail("time_step", message.str());
-        }
-    }
-}
-
-void SphModel::read_ghost_boundaries(const io::CaseTable& sph, std::vector<Wall>& walls,
-                                     double support_radius, SphOptions& options) const {
-    for (const char* table : {"symmetry", "periodic"}) {
-        if (sph.has(table) && options.formulation == Formulation::total_lagrangian) {
-            sph.fail(table, std::string("ghost images are found anew as particles move, which "
-                                        "the total-Lagrangian reference pairs do not do: "
-                                        "expected formulation = \"updated_lagrangian\" with "
-                                        "[[sph.") +
-                                table + "]]");
-        }
-    }
-    options.symmetry = read_symmetry_planes(sph, particles_, walls, body_names_, dimension_,
-                                            spacing_, support_radius);
-    options.periodic =
-        read_periodic_axes(sph, particles_, walls, body_names_, options.symmetry, dimension_,
-                           support_radius + options.verlet_skin_factor * options.smoothing_length);
 }
 
 const std::string& SphModel::body_name(int body_id) const {
@@ -280,26 +139,14 @@ void SphModel::set_output(io::OutputStreams& output) {
     output_ = &output;
 }
 
-void SphModel::add_body(const io::CaseTable& body, int dimension) {
-    std::string name = body.string("name");
-    io::refuse_repeated_name(body, body_names_, name, "body");
-    const int material = materials::read_material_index(*materials_, body, "material");
-    const double spacing = body.positive_quantity("spacing", dim::kLength);
-    if (spacing_ > 0.0 && std::abs(spacing - spacing_) > 1e-9 * spacing_) {
-        body.fail("spacing", "every body must use the same particle spacing (one smoothing "
-                             "length for the scene); the first body uses " +
-                                 std::to_string(spacing_) + " m");
-    }
+Index SphModel::add_body(std::string name, int material, const std::vector<Vec3>& points,
+                         const Vec3& velocity, double spacing) {
     spacing_ = spacing;
-    const Vec3 velocity = body.vector_or("velocity", dim::kVelocity, Vec3::Zero());
     const auto& law = (*materials_)[material];
-    std::vector<RoundedSize> rounded;
-    const auto points =
-        generate_body_points(body.table("shape"), spacing, dimension, law.density(), &rounded);
-    // Said once the sources are known (check_start): a seed layer a source fills is no warning.
-    thin_warnings_.push_back(thin_body_warning(points, spacing, dimension, name));
-    report_rounding(body, name, rounded, spacing);
-    const double particle_mass = law.density() * std::pow(spacing, dimension);
+    // Said once the sources are known (start_warnings): a seed layer a source fills is no
+    // warning.
+    thin_warnings_.push_back(thin_body_warning(points, spacing, dimension_, name));
+    const double particle_mass = law.density() * std::pow(spacing, dimension_);
     const int body_index = static_cast<int>(body_names_.size());
     const Index first = particles_.size();
     for (const Vec3& x : points) {
@@ -312,19 +159,15 @@ void SphModel::add_body(const io::CaseTable& body, int dimension) {
                                   static_cast<std::size_t>(law.state_size()));
         law.initialise_state(state);
     }
-    if (body.has("clamp") && !interactions_) {
-        body.fail("clamp", "clamped particles need the SPH solver: expected interactions = true");
-    }
-    read_clamps(body, particles_, first, dimension);
-    read_initial_stress(body, particles_, first, gravity_, spacing);
     body_names_.push_back(std::move(name));
     body_material_.push_back(material);
+    return first;
 }
 
-void SphModel::report_rounding(const io::CaseTable& table, const std::string& body,
-                               const std::vector<RoundedSize>& rounded, double spacing) {
+std::string SphModel::record_rounding(const std::string& body,
+                                      const std::vector<RoundedSize>& rounded, double spacing) {
     if (rounded.empty()) {
-        return;
+        return "";
     }
     // A note, not a warning: every lattice rounds what it does not tile, and the run is as
     // valid; but the body's size, and with it its mass, is the filled one.
@@ -340,7 +183,7 @@ void SphModel::report_rounding(const io::CaseTable& table, const std::string& bo
         body_sizes_.push_back({"body_" + body + "_size_" + axis, r.filled, "m", r.drawn, source});
     }
     note << " summary.json: body_" << body << "_size_*";
-    table.notify(note.str());
+    return note.str();
 }
 
 double SphModel::stable_time_step() const {

@@ -24,10 +24,6 @@
 #include <string>
 #include <vector>
 
-namespace grainload::io {
-class CaseTable;
-}
-
 namespace grainload::sph {
 
 /// The keys of each [[sph.body]] besides its [sph.body.shape], [sph.body.initial_stress] and
@@ -41,7 +37,9 @@ inline constexpr std::array<io::KeySpec, 4> kBodyKeys{{
 
 /// The SPH side of a scene: particles of every [[sph.body]] and [[sph.wall]], advanced
 /// explicitly by SphSolver (or, with interactions = false, in free flight under gravity).
-/// Built from the case's [sph] tables; the time loop lives in the app's driver.
+/// Built from the case's [sph] tables by its reader (sph/sph_model_reader.hpp), which reads the
+/// keys and hands what it read to the private build steps below; the time loop lives in the
+/// app's driver.
 class SphModel final : public io::Stepper, public io::Reporter {
   public:
     /// A wall built outside the [sph] tables (the coupling's shell walls): its particles,
@@ -66,26 +64,16 @@ class SphModel final : public io::Stepper, public io::Reporter {
         std::vector<Friction> friction;
     };
 
-    /// The whole [sph] table: bodies, walls, solver.
-    static std::unique_ptr<SphModel> from_case(const io::CaseTable& root,
-                                               const io::SceneSettings& scene,
-                                               const materials::MaterialLibrary& materials);
-    /// Bodies only, for a caller that adds walls of its own (add_wall) before build().
-    static std::unique_ptr<SphModel> read_bodies(const io::CaseTable& root,
-                                                 const io::SceneSettings& scene,
-                                                 const materials::MaterialLibrary& materials);
     /// Queue a wall built outside the case reader; it follows the [[sph.wall]] walls. Only
-    /// before build().
+    /// between read_sph_bodies and build_sph_scene (sph/sph_model_reader.hpp).
     void add_wall(WallDefinition wall);
-    /// The [[sph.wall]] walls, then the added ones; friction, probes, heap, solver.
-    void build(const io::CaseTable& root);
     /// The bodies' particle spacing and the kernel's support radius 2h (3h quintic), which the
-    /// layers of an added wall must fill. Valid after read_bodies().
+    /// layers of an added wall must fill. Valid after read_sph_bodies().
     double spacing() const { return spacing_; }
     double support_radius() const;
     /// The artificial viscosity's alpha, beta and the sound speed of its linear term (pinned, or
     /// each material's own), as summary.json's model block and `grainload check` state it;
-    /// empty without viscosity. Valid after build() with interactions.
+    /// empty without viscosity. Valid after build_sph_scene() with interactions.
     std::string viscosity_statement() const;
     /// Index of a body by name, -1 when there is none.
     int body_id(const std::string& name) const;
@@ -134,28 +122,58 @@ class SphModel final : public io::Stepper, public io::Reporter {
     void set_output(io::OutputStreams& output) override;
 
   private:
-    SphModel(const materials::MaterialLibrary& materials) : materials_(&materials) {}
+    friend class SphModelReader;
+
+    /// What the [sph] table states before its bodies.
+    struct Settings {
+        Vec3 gravity = Vec3::Zero();
+        int dimension = 3;
+        double time_step = 0.0; ///< fixed by the case; 0 means "from the CFL condition"
+        bool interactions = true;
+    };
+    SphModel(const materials::MaterialLibrary& materials, const Settings& settings)
+        : materials_(&materials), gravity_(settings.gravity), time_step_(settings.time_step),
+          interactions_(settings.interactions), dimension_(settings.dimension) {}
+
+    // The build steps, in the order SphModelReader calls them.
+
+    /// A body's particles at `points`, of its material's density and initial state; the index
+    /// of its first particle.
+    Index add_body(std::string name, int material, const std::vector<Vec3>& points,
+                   const Vec3& velocity, double spacing);
+    /// Keeps, for summary.json, the sizes of a body that the lattice filled to another size
+    /// than drawn, and returns the note that says so ("" when it filled the drawn size).
+    std::string record_rounding(const std::string& body, const std::vector<RoundedSize>& rounded,
+                                double spacing);
+    /// The added walls' particles, after the [[sph.wall]] walls in `walls`.
+    void append_added_walls(std::vector<Wall>& walls);
     std::vector<FrictionPair> added_wall_friction(const std::vector<Wall>& walls) const;
-    void add_body(const io::CaseTable& body, int dimension);
-    /// Says (a notice of the body's `table`, on stderr, so in `grainload check` too) where the
-    /// lattice filled `body` to another size than drawn, and keeps the sizes for summary.json.
-    void report_rounding(const io::CaseTable& table, const std::string& body,
-                         const std::vector<RoundedSize>& rounded, double spacing);
+    /// The solver over the bodies' and walls' particles.
+    void make_solver(const SphOptions& options, std::vector<Wall> walls);
+    /// [[sph.sink]] (a part unless empty).
+    void set_sinks(std::shared_ptr<particles::SinkSet> sinks);
+    /// [sph.settle] as a part; the gates that wait for it read it.
+    void set_settle(const particles::SettleWatch& watch);
+    /// The walls with remove_at as a part; with the sinks, says whether particles may leave.
+    void add_gates();
+    /// [[sph.source]] (a part unless empty).
+    void set_sources(std::shared_ptr<SourceSet> sources);
+    /// The particles as built (original_index(), the materials describe_model names) and, with
+    /// a sink, remove_at or a source, the mass audit.
+    void open_books();
+    /// Once walls, sources and sinks are built: refuses bodies and sources inside walls and a
+    /// scene whose sinks take everything at once (sph/scene_limits.hpp), and those that start
+    /// so close to a wall that its contact potential throws them off (sph/start_gap.hpp);
+    /// returns the warnings of a smaller such push, of thin bodies no source fills, of sinks
+    /// that hold a body, and of outlets out of reach (sph/outlet_reach.hpp).
+    std::vector<std::string> start_warnings(const ScenePlaces& places) const;
+    /// The initial positions and velocities, the escape watch, free flight's accelerations.
+    void finish_build();
+
     void compute_accelerations();
-    void build_solver(const io::CaseTable& sph);
-    /// The ghosts' boundaries of `options`: [[sph.symmetry]] planes and [[sph.periodic]] axes,
-    /// checked against the scene built so far (walls are marked with the planes they are
-    /// mirrored across); refused with the total-Lagrangian formulation.
-    void read_ghost_boundaries(const io::CaseTable& sph, std::vector<Wall>& walls,
-                               double support_radius, SphOptions& options) const;
     const std::string& body_name(int body_id) const;
     void append_wall_blocks(io::Frame& frame) const;
     void write_output_rows(double time) const;
-    /// Sinks and remove_at (sph_model_outlets.cpp): read them, refuse what cannot lose
-    /// particles, and open the mass audit.
-    void build_outlets(const io::CaseTable& sph);
-    /// [sph.settle] as a part; without one, `walls_wait` (a wall removed on "settled") fails.
-    void build_settle(const io::CaseTable& sph, bool walls_wait);
     /// After a step ending at `time`: the particles in a sink and the walls due to go leave.
     void remove_departed(double time);
     /// Take the flagged particles out of the solver and of every per-particle array here.
@@ -166,14 +184,6 @@ class SphModel final : public io::Stepper, public io::Reporter {
     /// Replays the checkpoint's removals on the freshly built scene: before the particle arrays.
     void read_removals(std::istream& in);
     void read_outlet_state(std::istream& in);
-    /// Once walls, sources and sinks are built: refuses bodies and sources inside walls and a
-    /// scene whose sinks take everything at once (sph/scene_limits.hpp), and those that start
-    /// so close to a wall that its contact potential throws them off (sph/start_gap.hpp); warns
-    /// of a smaller such push, of thin bodies no source fills, of sinks that hold a body, and
-    /// of outlets out of reach (sph/outlet_reach.hpp).
-    void check_start(const io::CaseTable& sph, const ScenePlaces& places) const;
-    /// Sources (sph_model_sources.cpp): read them and refuse what cannot gain particles.
-    void build_sources(const io::CaseTable& sph);
     /// After a step [t, t + dt] (and its removals): the parts' new particles enter.
     void create_arrivals(double t, double dt);
     /// Append the arrivals' particles to the solver and to every per-particle array here, and
@@ -185,15 +195,18 @@ class SphModel final : public io::Stepper, public io::Reporter {
     /// After a step ending at `time`: the phases' settle watches see the material's kinetic
     /// energy.
     void record_kinetic_energy(double time);
-    /// Refuses [[phase]] conditions the scene cannot meet: `settled` without the SPH solver,
-    /// `discharged` without a sink (failing at that phase's `end`).
-    void check_phase_conditions(const io::CaseTable& root) const;
     /// Walls' removal times and histories and sources' windows that name a phase get its start.
     void apply_phase_starts();
     /// The first phase ending on `settled`, when no [sph.settle] reports settle_time.
     /// elastic_strain_energy, plastic_work, viscous_heat, contact_damping_heat and
     /// viscous_share of summary.json.
     void append_dissipation(std::vector<io::ResultFigure>& results) const;
+    /// kinetic, internal, contact energy, the works of gravity, moving walls and wall friction,
+    /// the energy removed and created, and the balance's error.
+    void append_energy_books(std::vector<io::ResultFigure>& results) const;
+    /// Free flight: the particles' centre height against the exact parabola, and the largest
+    /// distance of any particle from its own.
+    void append_free_flight(double t, std::vector<io::ResultFigure>& results) const;
     void append_phase_results(std::vector<io::ResultFigure>& results) const;
     /// The creation log, so a restart can rebuild the created particles before the removals.
     void write_created(std::ostream& out) const;
@@ -208,7 +221,7 @@ class SphModel final : public io::Stepper, public io::Reporter {
     double time_step_ = 0.0; ///< fixed by the case; 0 means "from the CFL condition"
     bool interactions_ = true;
     double spacing_ = 0.0;
-    /// [sph]'s solver settings, read once by read_bodies() (they need the bodies' spacing).
+    /// [sph]'s solver settings, read once with the bodies (they need the bodies' spacing).
     SphOptions options_;
     int dimension_ = 3;
     std::vector<WallDefinition> added_walls_;
@@ -234,7 +247,7 @@ class SphModel final : public io::Stepper, public io::Reporter {
     Index built_count_ = 0;
     /// The material of each body, for sources.
     std::vector<int> body_material_;
-    /// Per body, the thin-body warning of its shape ("" when none), said by check_start.
+    /// Per body, the thin-body warning of its shape ("" when none), said by start_warnings.
     std::vector<std::string> thin_warnings_;
     /// Per body and axis where its lattice changed its drawn size: the filled size against the
     /// drawn one, for summary.json (body_NAME_size_AXIS).

@@ -2,9 +2,7 @@
 // time ([[sph.wall]] remove_at), with their checkpoint state. The rest of SphModel is in
 // sph_model.cpp.
 #include "io/binary_stream.hpp"
-#include "io/case_table.hpp"
 #include "particles/mass_audit.hpp"
-#include "particles/particles_case_reader.hpp"
 #include "sph/gates.hpp"
 #include "sph/particle_removal.hpp"
 #include "sph/sph_model.hpp"
@@ -16,29 +14,29 @@
 
 namespace grainload::sph {
 
-void SphModel::build_outlets(const io::CaseTable& sph) {
-    // A symmetry plane through an outlet leaves the model half of it (each [[sph.symmetry]]).
-    const double share = std::pow(0.5, static_cast<double>(sph.array_of_tables("symmetry").size()));
-    std::vector<particles::SinkSet::BodyGrain> grains;
-    for (const int material : body_material_) {
-        grains.push_back({materials_->name(material), materials_->grain_size(material)});
-    }
-    sinks_ = std::make_shared<particles::SinkSet>(
-        particles::read_sinks(sph, particles::BodyNames{"[[sph.body]]", body_names_}, dimension_,
-                              gravity_.norm(), share, grains));
+void SphModel::set_sinks(std::shared_ptr<particles::SinkSet> sinks) {
+    sinks_ = std::move(sinks);
     if (!sinks_->empty()) {
         parts_.add(sinks_);
     }
-    const std::vector<Wall> none;
-    const std::vector<Wall>& walls = solver_ ? solver_->walls() : none;
-    build_settle(sph, std::any_of(walls.begin(), walls.end(),
-                                  [](const Wall& wall) { return wall.removal_on_settle; }));
-    const bool walls_go = GateSet::any(walls);
+}
+
+void SphModel::set_settle(const particles::SettleWatch& watch) {
+    auto part = std::make_shared<particles::SettlePart>(
+        watch, [this] { return solver_->kinetic_energy(); });
+    settle_ = part;
+    parts_.add(std::move(part));
+}
+
+void SphModel::add_gates() {
+    const bool walls_go = solver_ && GateSet::any(solver_->walls());
     if (walls_go) {
         parts_.add(std::make_shared<GateSet>(solver_->walls(), settle_));
     }
     removals_ = !sinks_->empty() || walls_go;
-    build_sources(sph);
+}
+
+void SphModel::open_books() {
     audit_ = removals_ || !sources_->empty();
     built_count_ = particles().size();
     const ParticleSet& p = particles();
@@ -51,39 +49,12 @@ void SphModel::build_outlets(const io::CaseTable& sph) {
     built_materials_.assign(used.begin(), used.end());
     origin_.resize(static_cast<std::size_t>(particles().size()));
     std::iota(origin_.begin(), origin_.end(), Index{0});
-    if (!audit_) {
-        return;
-    }
-    const char* key = !sources_->empty() ? "source" : sinks_->empty() ? "wall" : "sink";
-    if (!solver_) {
-        sph.fail(key, "particles leave or enter the scene only in the SPH solver: expected "
-                      "interactions = true");
-    }
-    if (solver_->options().formulation == Formulation::total_lagrangian) {
-        sph.fail(key, "the total-Lagrangian formulation keeps its reference neighbours for "
-                      "ever, so no particle can leave or enter: expected formulation = "
-                      "\"updated_lagrangian\" with sinks, sources or remove_at");
-    }
-    parts_.add(std::make_shared<particles::MassAudit>(
-        scene_mass(), dimension_,
-        particles::MassAudit::Books{[this] { return scene_mass(); },
-                                    [this] { return sinks_->discharged(); },
-                                    [this] { return sources_->created(); }}));
-}
-
-void SphModel::build_settle(const io::CaseTable& sph, bool walls_wait) {
-    if (const auto settle = sph.optional_table("settle")) {
-        if (!solver_) {
-            settle->fail("kinetic_energy_fraction",
-                         "the settle watch needs the SPH solver: expected interactions = true");
-        }
-        auto part = std::make_shared<particles::SettlePart>(
-            particles::read_settle_watch(*settle), [this] { return solver_->kinetic_energy(); });
-        settle_ = part;
-        parts_.add(std::move(part));
-    } else if (walls_wait) {
-        sph.fail("wall", "a wall with remove_at = \"settled\" needs an [sph.settle] table "
-                         "saying when the scene has settled");
+    if (audit_) {
+        parts_.add(std::make_shared<particles::MassAudit>(
+            scene_mass(), dimension_,
+            particles::MassAudit::Books{[this] { return scene_mass(); },
+                                        [this] { return sinks_->discharged(); },
+                                        [this] { return sources_->created(); }}));
     }
 }
 

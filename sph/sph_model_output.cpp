@@ -119,60 +119,36 @@ void SphModel::append_dissipation(std::vector<io::ResultFigure>& results) const 
                        "damping + wall friction)"});
 }
 
-void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) const {
-    results.insert(results.end(), body_sizes_.begin(), body_sizes_.end());
-    parts_.append_results(results);
-    if (!settle_) {
-        append_phase_results(results);
+void SphModel::append_energy_books(std::vector<io::ResultFigure>& results) const {
+    results.push_back({"kinetic_energy", solver_->kinetic_energy(), "J", std::nullopt, ""});
+    results.push_back({"internal_energy", solver_->internal_energy(), "J", std::nullopt, ""});
+    const EnergyLedger& ledger = solver_->energy_ledger();
+    results.push_back({"gravity_work", ledger.gravity_work(), "J", std::nullopt, ""});
+    results.push_back({"moving_wall_work", ledger.wall_work(), "J", std::nullopt, ""});
+    if (audit_) {
+        results.push_back({"removed_energy", ledger.removed_held(), "J", std::nullopt, ""});
+        results.push_back(
+            {"removed_contact_energy", ledger.removed_contact(), "J", std::nullopt, ""});
     }
-    if (solver_) {
-        results.push_back({"kinetic_energy", solver_->kinetic_energy(), "J", std::nullopt, ""});
-        results.push_back({"internal_energy", solver_->internal_energy(), "J", std::nullopt, ""});
-        const EnergyLedger& ledger = solver_->energy_ledger();
-        results.push_back({"gravity_work", ledger.gravity_work(), "J", std::nullopt, ""});
-        results.push_back({"moving_wall_work", ledger.wall_work(), "J", std::nullopt, ""});
-        if (audit_) {
-            results.push_back({"removed_energy", ledger.removed_held(), "J", std::nullopt, ""});
-            results.push_back(
-                {"removed_contact_energy", ledger.removed_contact(), "J", std::nullopt, ""});
-        }
-        if (!sources_->empty()) {
-            results.push_back({"created_energy", ledger.created_held(), "J", std::nullopt, ""});
-            results.push_back(
-                {"created_contact_energy", ledger.created_contact(), "J", std::nullopt, ""});
-        }
-        const double contact = solver_->contact_energy();
-        results.push_back({"contact_energy", contact, "J", std::nullopt, ""});
-        // JSON writes a non-finite figure as null: the statement says which entry made it so.
-        const double held = solver_->held_energy();
-        const auto unbalanced = ledger.non_finite(held, contact);
-        results.push_back({"energy_balance_error", ledger.balance_error(held, contact), "",
-                           std::nullopt, unbalanced ? "not finite: " + *unbalanced : ""});
-        if (!solver_->options().friction.empty()) {
-            results.push_back({"wall_friction_work", solver_->wall_contact().friction_work(), "J",
-                               std::nullopt, ""});
-        }
-        append_dissipation(results);
-        if (const FluidityUpdate* fluidity = solver_->fluidity()) {
-            // The field's iterations per step (sph/fluidity_field.hpp): how hard it was to
-            // solve, and whether the cap stopped a solve short of the tolerance.
-            results.push_back(
-                {"fluidity_iterations_mean", fluidity->mean_iterations(), "", std::nullopt, ""});
-            results.push_back({"fluidity_iterations_max",
-                               static_cast<double>(fluidity->most_iterations()), "", std::nullopt,
-                               ""});
-            results.push_back(
-                {"fluidity_residual_max", fluidity->worst_residual(), "", std::nullopt, ""});
-        }
-        for (const Wall& wall : solver_->walls()) {
-            for (int a = 0; a < 3; ++a) {
-                const std::string axis(1, static_cast<char>('x' + a));
-                results.push_back(
-                    {"wall_" + wall.name + "_force_" + axis, wall.force[a], "N", std::nullopt, ""});
-            }
-        }
-        return;
+    if (!sources_->empty()) {
+        results.push_back({"created_energy", ledger.created_held(), "J", std::nullopt, ""});
+        results.push_back(
+            {"created_contact_energy", ledger.created_contact(), "J", std::nullopt, ""});
     }
+    const double contact = solver_->contact_energy();
+    results.push_back({"contact_energy", contact, "J", std::nullopt, ""});
+    // JSON writes a non-finite figure as null: the statement says which entry made it so.
+    const double held = solver_->held_energy();
+    const auto unbalanced = ledger.non_finite(held, contact);
+    results.push_back({"energy_balance_error", ledger.balance_error(held, contact), "",
+                       std::nullopt, unbalanced ? "not finite: " + *unbalanced : ""});
+    if (!solver_->options().friction.empty()) {
+        results.push_back(
+            {"wall_friction_work", solver_->wall_contact().friction_work(), "J", std::nullopt, ""});
+    }
+}
+
+void SphModel::append_free_flight(double t, std::vector<io::ResultFigure>& results) const {
     // Without interactions every particle is a point mass in uniform gravity: its exact path is
     // x0 + v0 t + g t^2 / 2, the reference for the whole pipeline (case free_fall).
     double max_error = 0.0;
@@ -187,6 +163,37 @@ void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) 
     }
     results.push_back({"centre_height", mean_z, "m", mean_z_exact, "z0 + v0 t + g t^2/2"});
     results.push_back({"max_position_error", max_error, "m", std::nullopt, ""});
+}
+
+void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) const {
+    results.insert(results.end(), body_sizes_.begin(), body_sizes_.end());
+    parts_.append_results(results);
+    if (!settle_) {
+        append_phase_results(results);
+    }
+    if (!solver_) {
+        append_free_flight(t, results);
+        return;
+    }
+    append_energy_books(results);
+    append_dissipation(results);
+    if (const FluidityUpdate* fluidity = solver_->fluidity()) {
+        // The field's iterations per step (sph/fluidity_field.hpp): how hard it was to solve,
+        // and whether the cap stopped a solve short of the tolerance.
+        results.push_back(
+            {"fluidity_iterations_mean", fluidity->mean_iterations(), "", std::nullopt, ""});
+        results.push_back({"fluidity_iterations_max",
+                           static_cast<double>(fluidity->most_iterations()), "", std::nullopt, ""});
+        results.push_back(
+            {"fluidity_residual_max", fluidity->worst_residual(), "", std::nullopt, ""});
+    }
+    for (const Wall& wall : solver_->walls()) {
+        for (int a = 0; a < 3; ++a) {
+            const std::string axis(1, static_cast<char>('x' + a));
+            results.push_back(
+                {"wall_" + wall.name + "_force_" + axis, wall.force[a], "N", std::nullopt, ""});
+        }
+    }
 }
 
 } // namespace grainload::sph

@@ -1,28 +1,12 @@
 // SphModel's phases ([[phase]]): the settle watches that see the material's kinetic energy, the
 // phases' ends after each step, and their starts handed to the walls and sources that name
 // them. The rest of SphModel is in sph_model.cpp.
-#include "io/case_table.hpp"
 #include "sph/sph_model.hpp"
 
 #include <limits>
 #include <sstream>
 
 namespace grainload::sph {
-
-void SphModel::check_phase_conditions(const io::CaseTable& root) const {
-    const auto tables = root.array_of_tables("phase");
-    for (std::size_t k = 0; k < phases_.phases().size(); ++k) {
-        const particles::PhaseSequence::End end = phases_.phases()[k].end;
-        if (end == particles::PhaseSequence::End::settled && !solver_) {
-            tables[k].fail("end", "the settle condition measures the SPH solver's kinetic "
-                                  "energy: expected interactions = true");
-        }
-        if (end == particles::PhaseSequence::End::discharged && sinks_->empty()) {
-            tables[k].fail("end", "the discharged condition counts the mass the sinks take: "
-                                  "expected an [[sph.sink]]");
-        }
-    }
-}
 
 void SphModel::record_kinetic_energy(double time) {
     if (phases_.ends_on(particles::PhaseSequence::End::settled)) {

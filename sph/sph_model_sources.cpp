@@ -2,8 +2,6 @@
 // the creation log a checkpoint replays. The rest of SphModel is in sph_model.cpp and
 // sph_model_outlets.cpp.
 #include "io/binary_stream.hpp"
-#include "io/case_table.hpp"
-#include "sph/source_case_reader.hpp"
 #include "sph/sph_model.hpp"
 
 #include <stdexcept>
@@ -17,13 +15,8 @@ constexpr std::size_t kLogEntry = 9;
 
 } // namespace
 
-void SphModel::build_sources(const io::CaseTable& sph) {
-    std::vector<double> density;
-    for (const int material : body_material_) {
-        density.push_back((*materials_)[material].density());
-    }
-    sources_ = std::make_shared<SourceSet>(read_sources(sph, body_names_, body_material_, density,
-                                                        spacing_, dimension_, gravity_, &phases_));
+void SphModel::set_sources(std::shared_ptr<SourceSet> sources) {
+    sources_ = std::move(sources);
     if (!sources_->empty()) {
         parts_.add(sources_);
     }

@@ -1,7 +1,7 @@
 #include "app/resources/memory_guard.hpp"
 
 #include "app/resources/calibration.hpp"
-#include "sph/particle_estimate.hpp"
+#include "sph/particle_estimate_reader.hpp"
 
 #include <algorithm>
 #include <array>
@@ -112,8 +112,9 @@ std::optional<double> available_memory() {
 }
 
 std::optional<double> refuse_oversized_scene(const io::CaseTable& root, int dimension,
+                                             const materials::MaterialLibrary& materials,
                                              std::optional<double> available) {
-    const sph::ParticleEstimate estimate = sph::estimate_particles(root, dimension);
+    const sph::ParticleEstimate estimate = sph::estimate_particles(root, dimension, materials);
     const ShellCount shells = estimate_shells(root);
     if (!available) {
         return std::nullopt;

@@ -2,6 +2,7 @@
 // The refusal of a scene too large for the machine's memory, before any particle is made.
 
 #include "io/case_table.hpp"
+#include "materials/material_library.hpp"
 
 #include <optional>
 
@@ -19,6 +20,7 @@ std::optional<double> available_memory();
 /// (the budget of the wall particles a [coupling] lays on its shells, which the shell mesh
 /// must exist to count: coupling::read_coupled_model), std::nullopt when `available` is.
 std::optional<double> refuse_oversized_scene(const io::CaseTable& root, int dimension,
+                                             const materials::MaterialLibrary& materials,
                                              std::optional<double> available);
 
 } // namespace grainload::app

@@ -1,4 +1,5 @@
 #pragma once
+// The throughput calibration's figures and the file `grainload check` reads them from.
 
 #include "support/output_calibration.hpp"
 #include "support/shell_calibration.hpp"

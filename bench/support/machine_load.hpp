@@ -1,4 +1,5 @@
 #pragma once
+// How busy the machine is beside a calibration, and waiting for it to be quiet.
 
 #include "app/resources/thread_count.hpp"
 

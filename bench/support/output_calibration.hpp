@@ -1,4 +1,5 @@
 #pragma once
+// What frames, steps and DEM contacts cost, measured as `grainload run` pays them.
 
 #include <string>
 

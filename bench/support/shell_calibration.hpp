@@ -1,4 +1,5 @@
 #pragma once
+// What a shell's factorisations and solves cost on this machine.
 
 namespace grainload::bench {
 

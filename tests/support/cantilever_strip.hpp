@@ -1,4 +1,5 @@
 #pragma once
+// The shell tests' cantilever strip, clamped at one end and loaded at the other.
 
 #include "fem/shell_analysis.hpp"
 

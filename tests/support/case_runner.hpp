@@ -1,4 +1,5 @@
 #pragma once
+// Shipped cases run through the CLI, and the figures of their summary.json.
 
 #include "support/cli_runner.hpp"
 #include "support/test_folder.hpp"

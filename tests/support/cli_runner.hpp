@@ -1,4 +1,5 @@
 #pragma once
+// The grainload executable run as a user runs it, and its output.
 
 #include <cstdlib>
 #include <fstream>

@@ -1,4 +1,5 @@
 #pragma once
+// Figures read from a coupled run's coupling.csv.
 
 #include "support/case_runner.hpp"
 #include "support/csv_rows.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+// The rows of a numeric CSV file a run wrote.
 
 #include <cmath>
 #include <fstream>

@@ -1,4 +1,5 @@
 #pragma once
+// A run's frames read back: blocks, points and counts.
 
 #include <cstdio>
 #include <filesystem>

@@ -1,4 +1,5 @@
 #pragma once
+// The user guide's key tables read back, to hold them to the declarations.
 
 #include "io/key_spec.hpp"
 

@@ -1,4 +1,5 @@
 #pragma once
+// A heap's height, run-out and kinetic energy measured from a frame.
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,5 @@
 #pragma once
+// Runs killed with SIGKILL and restarted, compared with the run left alone.
 
 // Runs of the CLI killed with SIGKILL and restarted, and the comparison of everything a run
 // writes with what the uninterrupted run wrote.

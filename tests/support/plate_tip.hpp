@@ -1,4 +1,5 @@
 #pragma once
+// The oscillating plate's tip and root read from its frames.
 
 #include "support/frame_reader.hpp"
 

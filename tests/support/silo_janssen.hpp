@@ -1,4 +1,5 @@
 #pragma once
+// A slot silo's wall loads and fill measured against Janssen's profile.
 
 #include "support/csv_rows.hpp"
 

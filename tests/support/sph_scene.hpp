@@ -1,10 +1,11 @@
 #pragma once
+// An SPH model built from a case text as the CLI builds it.
 
 #include "io/case_table.hpp"
 #include "io/scene_settings.hpp"
 #include "materials/material_case_reader.hpp"
 #include "materials/material_library.hpp"
-#include "sph/sph_model.hpp"
+#include "sph/sph_model_reader.hpp"
 
 #include <filesystem>
 #include <memory>
@@ -20,7 +21,7 @@ struct SphScene {
         : document(io::CaseDocument::from_string(text, file)),
           settings(io::read_scene_settings(*document, std::filesystem::path(file).stem())),
           materials(materials::read_material_library(document->root())),
-          model(sph::SphModel::from_case(document->root(), settings, materials)) {}
+          model(sph::read_sph_model(document->root(), settings, materials)) {}
     SphScene(const SphScene&) = delete;
     SphScene& operator=(const SphScene&) = delete;
 

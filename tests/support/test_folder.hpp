@@ -1,4 +1,5 @@
 #pragma once
+// Each test process's own output folder, and the removal of ended ones.
 
 #include <algorithm>
 #include <cctype>

@@ -1,4 +1,5 @@
 #pragma once
+// A body on the tilting plate read from the run's frames.
 
 #include "support/frame_reader.hpp"
 

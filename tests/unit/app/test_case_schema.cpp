@@ -3,6 +3,7 @@
 #include "app/case_schema.hpp"
 #include "app/scene.hpp"
 #include "io/case_error.hpp"
+#include "io/units.hpp"
 #include "support/cli_runner.hpp"
 #include "support/guide_table.hpp"
 #include "support/test_folder.hpp"
@@ -12,6 +13,7 @@
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -45,6 +47,32 @@ TEST(CaseSchema, EveryKeyIsDeclaredOnceInItsTable) {
             EXPECT_FALSE(key.doc.empty()) << full;
         }
     }
+}
+
+// Readers take a default from its declaration as a number (io::default_value): a default the
+// guide writes as one number ("3", "0.1", "true", "20 deg", "0 1/s") is that number in SI, so
+// the guide and the reader cannot state two defaults. Exact: the same conversion makes both.
+TEST(CaseSchema, ADefaultWrittenAsANumberIsTheNumberReadersTake) {
+    int checked = 0;
+    for (const io::KeyTable& table : case_schema()) {
+        for (const io::KeySpec& key : table.keys) {
+            std::string text(key.default_text);
+            std::erase_if(text, [](char c) { return c == '`' || c == '"'; });
+            std::optional<double> number;
+            if (text == "true" || text == "false") {
+                number = text == "true" ? 1.0 : 0.0;
+            } else if (std::string error; const auto q = io::parse_quantity(text, &error)) {
+                number = q->value;
+            }
+            if (number) {
+                ++checked;
+                EXPECT_DOUBLE_EQ(key.value, *number)
+                    << table.name << "." << key.name << " = " << key.default_text;
+            }
+        }
+    }
+    // The schema's numeric defaults were found, not skipped: 89 of them when this was written.
+    EXPECT_GE(checked, 80);
 }
 
 // A key's path names its table without indices; root keys lie in no table.

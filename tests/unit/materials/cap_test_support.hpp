@@ -1,4 +1,5 @@
 #pragma once
+// What the generalized-cap tests share: the thesis sand and independent restatements.
 
 // Helpers of the generalized-cap tests: the thesis parameter set (section 7.2), an independent
 // restatement of the model's closed-form pieces, and a mixed stress/strain controlled step.

@@ -1,4 +1,5 @@
 #pragma once
+// What the material tests share: tangents by differences, Voigt helpers, strain paths.
 
 // Helpers shared by the material unit and verification tests: finite-difference tangents,
 // Voigt <-> tensor conversions and rotations, and strain-driven paths.

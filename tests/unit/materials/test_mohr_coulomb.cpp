@@ -9,7 +9,7 @@
 #include "materials/cone_fit.hpp"
 #include "materials/drucker_prager.hpp"
 #include "materials/material_case_reader.hpp"
-#include "materials/material_point_driver.hpp"
+#include "materials/material_point_reader.hpp"
 #include "materials/mohr_coulomb.hpp"
 #include "materials/principal_stress.hpp"
 
@@ -37,10 +37,18 @@ double extension_limit(double p, double phi, double c) {
     return (-p * (1.0 - std::sin(phi)) + 2.0 * c * std::cos(phi)) / (1.0 + std::sin(phi));
 }
 
+// A path with the Newton settings a driver file takes when it states none.
+MaterialPointPath driver_file_path() {
+    MaterialPointPath path;
+    path.tolerance = io::default_value(kPathKeys, "tolerance");
+    path.max_iterations = static_cast<int>(io::default_value(kPathKeys, "max_iterations"));
+    return path;
+}
+
 // The final axial stress zz of a path that holds xx = yy = -p and strains zz by `axial` in 400
 // steps.
 double triaxial_limit(const Material& m, double p, double axial) {
-    MaterialPointPath path;
+    MaterialPointPath path = driver_file_path();
     path.initial_stress << -p, -p, -p, 0.0, 0.0, 0.0;
     PathSegment segment;
     segment.steps = 400;
@@ -90,7 +98,7 @@ TEST(MohrCoulomb, PlaneStrainLimitIsTheMohrCoulombOneAndTheAssociatedPlaneStrain
     const DruckerPrager cone(kSand, {k.alpha, k.k, k.alpha_flow});
     const double p = 50e3;
     const auto limit = [&](const Material& m) {
-        MaterialPointPath path;
+        MaterialPointPath path = driver_file_path();
         path.initial_stress << -p, -p, -p, 0.0, 0.0, 0.0;
         PathSegment segment;
         segment.steps = 400;

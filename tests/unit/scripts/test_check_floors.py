@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """scripts/check_floors.py on small source trees made for the test: a tree that keeps its
 floors passes; an include of a higher floor, one between sph/ and fem/, and two concepts that
-include each other each fail with the finding named; and grainload's own tree passes.
+include each other each fail with the finding named, as does a header that does not open with
+its purpose; and grainload's own tree passes.
 """
 
 import pathlib
@@ -17,14 +18,19 @@ def run(root):
     return source_trees.run(SCRIPT, root)
 
 
+def header(includes=""):
+    """A header that opens with its purpose, then `includes`."""
+    return "#pragma once\n// What it holds.\n" + includes
+
+
 SOUND = {
-    "io/units.hpp": "#pragma once\n",
-    "materials/material.hpp": '#include "io/units.hpp"\n',
-    "particles/cell_list.hpp": '#include "io/units.hpp"\n',
-    "sph/sph_solver.hpp": '#include "particles/cell_list.hpp"\n#include "materials/material.hpp"\n',
+    "io/units.hpp": header(),
+    "materials/material.hpp": header('#include "io/units.hpp"\n'),
+    "particles/cell_list.hpp": header('#include "io/units.hpp"\n'),
+    "sph/sph_solver.hpp": header('#include "particles/cell_list.hpp"\n#include "materials/material.hpp"\n'),
     "sph/sph_solver.cpp": '#include "sph/sph_solver.hpp"\n#include <vector>\n',
-    "fem/shell_model.hpp": '#include "materials/material.hpp"\n',
-    "coupling/coupled_model.hpp": '#include "sph/sph_solver.hpp"\n#include "fem/shell_model.hpp"\n',
+    "fem/shell_model.hpp": header('#include "materials/material.hpp"\n'),
+    "coupling/coupled_model.hpp": header('#include "sph/sph_solver.hpp"\n#include "fem/shell_model.hpp"\n'),
     "app/trade/trade_grid.cpp": '#include "coupling/coupled_model.hpp"\n',
 }
 
@@ -49,12 +55,20 @@ class CheckFloors(unittest.TestCase):
         self.assertIn("fem/shell_model includes sph/sph_solver: sph/ is not below fem/", out)
 
     def test_two_concepts_that_include_each_other_fail(self):
-        cycle = {"sph/wall.hpp": "#pragma once\n", "sph/wall.cpp": '#include "sph/rigid_wall.hpp"\n',
-                 "sph/rigid_wall.hpp": '#include "sph/wall.hpp"\n'}
+        cycle = {"sph/wall.hpp": header(), "sph/wall.cpp": '#include "sph/rigid_wall.hpp"\n',
+                 "sph/rigid_wall.hpp": header('#include "sph/wall.hpp"\n')}
         with source_trees.tree({**SOUND, **cycle}) as root:
             code, out = run(root)
         self.assertEqual(code, 1)
         self.assertIn("include cycle: sph/rigid_wall <-> sph/wall", out)
+
+    def test_a_header_that_does_not_open_with_its_purpose_fails(self):
+        for text in ('#pragma once\n#include "io/units.hpp"\n', "#pragma once\n\n// Later.\n"):
+            with self.subTest(text=text):
+                with source_trees.tree({**SOUND, "tests/support/csv_rows.hpp": text}) as root:
+                    code, out = run(root)
+                self.assertEqual(code, 1)
+                self.assertIn("tests/support/csv_rows.hpp does not open with its purpose", out)
 
     def test_grainloads_own_tree_keeps_its_floors(self):
         code, out = run(ROOT)

@@ -1,7 +1,7 @@
 #include "io/case_table.hpp"
 #include "materials/material_case_reader.hpp"
 #include "sph/rigid_wall.hpp"
-#include "sph/sph_model.hpp"
+#include "sph/sph_model_reader.hpp"
 #include "support/sph_scene.hpp"
 
 #include <gtest/gtest.h>
@@ -69,7 +69,7 @@ TEST(ExternalWall, AWallAddedByTheCallerIsTheCaseFilesWall) {
     auto bodies_only = io::CaseDocument::from_string(kScene, "b.toml");
     const io::SceneSettings scene_b = io::read_scene_settings(*bodies_only, "b");
     const auto materials_b = materials::read_material_library(bodies_only->root());
-    auto model = SphModel::read_bodies(bodies_only->root(), scene_b, materials_b);
+    auto model = read_sph_bodies(bodies_only->root(), scene_b, materials_b);
     const Wall& reference = from_case->solver()->walls().front();
     SphModel::WallDefinition floor;
     floor.name = "floor";
@@ -94,7 +94,7 @@ TEST(ExternalWall, AWallAddedByTheCallerIsTheCaseFilesWall) {
     floor.friction.push_back({"sand", 0.5, 0.4});
     floor.velocities.assign(floor.points.size(), Vec3(0.1, 0.0, 0.0));
     model->add_wall(std::move(floor));
-    model->build(bodies_only->root());
+    build_sph_scene(*model, bodies_only->root());
     run(*model);
     const auto& r = model->particles();
     ASSERT_EQ(r.size(), p.size());

@@ -1,8 +1,11 @@
 // The particle estimate (sph/particle_estimate.hpp) against the particles the builders make.
 
 #include "io/case_table.hpp"
-#include "sph/particle_estimate.hpp"
+#include "materials/material_case_reader.hpp"
+#include "sph/particle_estimate_reader.hpp"
 #include "sph/sph_model.hpp"
+#include "sph/sph_model_reader.hpp"
+#include "support/case_refusal.hpp"
 #include "support/sph_scene.hpp"
 
 #include <cmath>
@@ -124,7 +127,8 @@ Built built_counts(const SphModel& model) {
 TEST(ParticleEstimate, CountsMatchTheBuiltBodiesAndWalls) {
     const testing::SphScene scene(kScene, std::string(GRAINLOAD_SOURCE_DIR) +
                                               "/tests/data/meshes/estimate.toml");
-    const ParticleEstimate estimate = estimate_particles(scene.document->root(), 3);
+    const ParticleEstimate estimate =
+        estimate_particles(scene.document->root(), 3, scene.materials);
     const Built built = built_counts(*scene.model);
     ASSERT_EQ(estimate.bodies.size(), built.bodies.size());
     ASSERT_EQ(estimate.walls.size(), built.walls.size());
@@ -168,7 +172,8 @@ TEST(ParticleEstimate, AHugeSceneIsCountedWithoutBuildingIt) {
         document->set("sph.body[" + std::to_string(b) + "].spacing=\"1e-9 m\"");
     }
     document->set("sph.wall[1].spacing=\"1e-9 m\"");
-    const ParticleEstimate estimate = estimate_particles(document->root(), 3);
+    const ParticleEstimate estimate =
+        estimate_particles(document->root(), 3, materials::read_material_library(document->root()));
     // The box alone: 0.5 x 0.5 x 0.52 m / (1e-9 m)^3 = 1.3e26.
     EXPECT_NEAR(estimate.bodies[0].particles / 1.3e26, 1.0, 1e-9);
     EXPECT_GT(estimate.bytes(), 1e28);
@@ -212,12 +217,33 @@ max = "1000 1000 1000 m"
 mass_rate = "1 kg/s"
 )";
     auto document = io::CaseDocument::from_string(scene, "sources.toml");
-    const ParticleEstimate estimate = estimate_particles(document->root(), 3);
+    const ParticleEstimate estimate =
+        estimate_particles(document->root(), 3, materials::read_material_library(document->root()));
     ASSERT_EQ(estimate.sources.size(), 2u);
     EXPECT_EQ(estimate.sources[0].particles, 32.0);
     EXPECT_EQ(estimate.sources[1].particles, 8e12);
     EXPECT_EQ(estimate.largest()->table, "sph.source[1]");
     EXPECT_EQ(estimate.total(), 1000.0 + 32.0 + 8e12);
+}
+
+// The estimate reads walls and shapes through the run's own readers: a wall coarser than the
+// bodies (which would let particles through), too many wall layers and a cone with a negative
+// top radius are refused by the estimate with the message, file, line and key the run gives.
+TEST(ParticleEstimate, RefusesWhatTheRunRefusesWithItsMessage) {
+    const std::string file = std::string(GRAINLOAD_SOURCE_DIR) + "/tests/data/meshes/estimate.toml";
+    for (const char* change : {"sph.wall[1].spacing=\"0.1 m\"", "sph.wall[2].layers=21",
+                               "sph.body[2].shape.top_radius=\"-0.1 m\""}) {
+        auto document = io::CaseDocument::from_string(kScene, file);
+        document->set(change);
+        const io::SceneSettings settings = io::read_scene_settings(*document, "estimate");
+        const auto materials = materials::read_material_library(document->root());
+        const std::string by_estimate =
+            testing::refusal([&] { estimate_particles(document->root(), 3, materials); });
+        const std::string by_run =
+            testing::refusal([&] { read_sph_model(document->root(), settings, materials); });
+        EXPECT_FALSE(by_run.empty()) << change;
+        EXPECT_EQ(by_estimate, by_run) << change;
+    }
 }
 
 } // namespace

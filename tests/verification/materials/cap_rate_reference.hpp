@@ -1,4 +1,5 @@
 #pragma once
+// An independent rate-equation reference for the generalized cap in uniaxial strain.
 
 // An independent reference for the generalized cap model along uniaxial strain: the rate
 // equations of the model (associated flow, consistency, the MAT_025 hardening law) integrated

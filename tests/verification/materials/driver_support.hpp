@@ -1,4 +1,5 @@
 #pragma once
+// Material-point drivers run from text or a file for the verification tests.
 
 // Runs a material-point driver given as TOML text or as a file, for the verification tests.
 

@@ -1,4 +1,5 @@
 #pragma once
+// Small plane-strain scenes shared by the SPH verification tests.
 
 // Small plane-strain scenes shared by the SPH verification tests.
 
