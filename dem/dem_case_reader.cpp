@@ -124,7 +124,7 @@ void read_clump(const io::CaseTable& table, BodySettings& body) {
                                       "touch or stand apart (overlapping ones would count "
                                       "their common volume twice)");
     }
-    body.axis = table.vector_or("axis", dim::kNone, Vec3::UnitX());
+    body.axis = table.vector_or("axis", dim::kNone, io::default_vector(kDemBodyKeys, "axis"));
     if (!(body.axis.norm() > 0.0)) {
         table.fail("axis", "expected a non-zero vector");
     }
@@ -195,9 +195,10 @@ BodySettings read_body(const io::CaseTable& table, const materials::MaterialLibr
     }
     read_clump(table, body);
     read_placement(table, body);
-    body.velocity = table.vector_or("velocity", dim::kVelocity, Vec3::Zero());
-    body.angular_velocity =
-        table.vector_or("angular_velocity", dim::kAngularVelocity, Vec3::Zero());
+    body.velocity =
+        table.vector_or("velocity", dim::kVelocity, io::default_vector(kDemBodyKeys, "velocity"));
+    body.angular_velocity = table.vector_or("angular_velocity", dim::kAngularVelocity,
+                                            io::default_vector(kDemBodyKeys, "angular_velocity"));
     body.rotation =
         table.boolean_or("rotation", io::default_value(kDemBodyKeys, "rotation") != 0.0);
     const std::int64_t seed = table.integer_or(
@@ -230,7 +231,8 @@ PlaneWall::Face read_rectangle(const io::CaseTable& table) {
 
 /// A wall's prescribed translation: velocity, move_start, move_end.
 void read_motion(const io::CaseTable& table, PlaneWall& wall) {
-    wall.velocity = table.vector_or("velocity", dim::kVelocity, Vec3::Zero());
+    wall.velocity =
+        table.vector_or("velocity", dim::kVelocity, io::default_vector(kDemWallKeys, "velocity"));
     wall.move_start = table.positive_quantity_or(
         "move_start", dim::kTime, io::default_value(kDemWallKeys, "move_start"), true);
     wall.move_end = table.quantity_or("move_end", dim::kTime, wall.move_end);
@@ -307,7 +309,8 @@ SourceSettings read_source(const io::CaseTable& table, const std::vector<BodySet
     if (!(source.end > source.start)) {
         table.fail("end", "expected an end after the start");
     }
-    source.velocity = table.vector_or("velocity", dim::kVelocity, Vec3::Zero());
+    source.velocity =
+        table.vector_or("velocity", dim::kVelocity, io::default_vector(kDemSourceKeys, "velocity"));
     const std::int64_t seed = table.integer_or(
         "seed", static_cast<std::int64_t>(io::default_value(kDemSourceKeys, "seed")));
     if (seed < 0) {

@@ -224,7 +224,8 @@ void read_shell_boundaries(const io::CaseTable& shell, const HistoryNames& histo
             // Rigid rotation of the nodes about an axis (a lifted or tipped edge).
             analysis.prescribe_rigid_rotation(
                 nodes, bc.vector("axis", dim::kNone),
-                bc.vector_or("axis_point", dim::kLength, Vec3::Zero()),
+                bc.vector_or("axis_point", dim::kLength,
+                             io::default_vector(kBoundaryKeys, "axis_point")),
                 bc.quantity("angle", dim::kAngle));
             continue;
         }

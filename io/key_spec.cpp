@@ -1,5 +1,8 @@
 #include "io/key_spec.hpp"
 
+#include "io/units.hpp"
+
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -34,6 +37,21 @@ double default_value(std::span<const KeySpec> specs, std::string_view name) {
 
 std::string default_text(std::span<const KeySpec> specs, std::string_view name) {
     return std::string(declared_spec(specs, name).default_text);
+}
+
+Vec3 default_vector(std::span<const KeySpec> specs, std::string_view name) {
+    std::string text(declared_spec(specs, name).default_text);
+    std::erase_if(text, [](char c) { return c == '`' || c == '"'; });
+    std::string error;
+    const auto values = parse_quantity_list(text, &error);
+    if (values && values->size() == 3) {
+        return {(*values)[0].value, (*values)[1].value, (*values)[2].value};
+    }
+    if (values && values->size() == 1 && values->front().value == 0.0) {
+        return Vec3::Zero();
+    }
+    throw std::logic_error("the default of '" + std::string(name) + "', \"" + text +
+                           "\", is not a vector");
 }
 
 std::vector<const KeyTable*> key_table_parts(std::span<const KeyTable> tables,

@@ -1,6 +1,8 @@
 #pragma once
 // Case-file keys as the modules that read them declare them: name, type, default, meaning.
 
+#include "io/types.hpp"
+
 #include <span>
 #include <string>
 #include <string_view>
@@ -45,6 +47,10 @@ double default_value(std::span<const KeySpec> specs, std::string_view name);
 /// The default of `name` as the user writes it (KeySpec::default_text), for a key whose value
 /// is a word ("m", "regular"); throws std::logic_error for an undeclared key.
 std::string default_text(std::span<const KeySpec> specs, std::string_view name);
+/// The default of a vector key, in SI, parsed from its default text: three components with one
+/// unit ("1 0 0", "0 0 0 m"), or "0" with a unit for the zero vector ("0 m/s"); throws
+/// std::logic_error for an undeclared key or a default that is no such vector.
+Vec3 default_vector(std::span<const KeySpec> specs, std::string_view name);
 
 /// The parts of `tables` named `name`: a table whose keys the user guide documents under more
 /// than one heading ([[sph.wall]]: its geometry, its outlet keys) is declared in as many parts.

@@ -114,7 +114,8 @@ SurfaceMesh read_surface_mesh(const CaseTable& table) {
     if (!(factor > 0.0)) {
         table.fail("scale", "expected a positive scale factor");
     }
-    const Vec3 offset = table.vector_or("offset", dimension::kLength, Vec3::Zero());
+    const Vec3 offset =
+        table.vector_or("offset", dimension::kLength, default_vector(kSurfaceMeshKeys, "offset"));
     for (Vec3& v : mesh.vertices) {
         v = factor * v + offset;
     }

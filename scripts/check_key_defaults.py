@@ -2,8 +2,8 @@
 """Holds each case key to one default (docs/architecture.md, "The case schema"): the default a
 reader falls back to when a key is absent comes from the key's declaration (io::default_value,
 io::default_text), not from a literal written again at the call. Prints each call of a
-CaseTable `*_or` accessor in a reader whose default is a number, true/false or a non-empty
-string literal, and exits 1 when there is one. A default computed from the scene (the bodies'
+CaseTable `*_or` accessor in a reader whose default is a number, true/false, a non-empty
+string literal or a constant vector, and exits 1 when there is one. A default computed from the scene (the bodies'
 spacing, the end time over 20) is what the declaration states in words and passes.
 
     python3 scripts/check_key_defaults.py [ROOT]
@@ -16,12 +16,14 @@ import sys
 import tree_check
 
 FLOORS = ("io", "materials", "particles", "sph", "dem", "fem", "coupling", "app")
-CALL = re.compile(r"\.(number|integer|boolean|choice|string|quantity|positive_quantity)_or\(")
+CALL = re.compile(
+    r"\.(number|integer|boolean|choice|string|quantity|positive_quantity|vector)_or\(")
 # The argument that holds the default, by accessor: number_or(key, default), choice_or(key,
 # choices, default), quantity_or(key, dimension, default, ...).
 DEFAULT_ARGUMENT = {"number": 1, "integer": 1, "boolean": 1, "string": 1, "choice": 2,
-                    "quantity": 2, "positive_quantity": 2}
-LITERAL = re.compile(r'^(-?[0-9][0-9.]*(e-?[0-9]+)?|true|false|"[^"]+")$')
+                    "quantity": 2, "positive_quantity": 2, "vector": 2}
+LITERAL = re.compile(r'^(-?[0-9][0-9.]*(e-?[0-9]+)?|true|false|"[^"]+"|'
+                     r'Vec3::(Zero|UnitX|UnitY|UnitZ)\(\)|Vec3\([-0-9.e, ]+\))$')
 
 
 def arguments(text, start):

@@ -196,7 +196,8 @@ BodySettings read_body_settings(const io::CaseTable& body,
     settings.name = body.string("name");
     settings.material = materials::read_material_index(materials, body, "material");
     settings.spacing = body.positive_quantity("spacing", dim::kLength);
-    settings.velocity = body.vector_or("velocity", dim::kVelocity, Vec3::Zero());
+    settings.velocity =
+        body.vector_or("velocity", dim::kVelocity, io::default_vector(kBodyKeys, "velocity"));
     settings.shape = read_shape(body.table("shape"), settings.spacing, dimension,
                                 materials[settings.material].density());
     return settings;

@@ -92,7 +92,16 @@ ShapeSettings read_shape(const io::CaseTable& shape, double spacing, int dimensi
 std::vector<Vec3> fill_shape(const ShapeSettings& shape, double spacing, int dimension,
                              std::vector<RoundedSize>* rounded = nullptr);
 
-/// One [[sph.body]] as read: the keys of kBodyKeys (sph/sph_model.hpp) and its shape.
+/// The keys of each [[sph.body]] besides its [sph.body.shape], [sph.body.initial_stress] and
+/// [[sph.body.clamp]] tables. All bodies share one spacing.
+inline constexpr std::array<io::KeySpec, 4> kBodyKeys{{
+    {"name", "string", "", "names the body's block in the frames and its figures"},
+    {"material", "string", "", "a [[material]] name"},
+    {"spacing", "length", "", "the lattice spacing; particle mass = density x spacing^dimension"},
+    {"velocity", "velocity vector", "0 m/s", "the initial velocity"},
+}};
+
+/// One [[sph.body]] as read: the keys of kBodyKeys and its shape.
 struct BodySettings {
     std::string name;
     int material = 0; ///< index in the material library

@@ -97,7 +97,8 @@ SourceSet read_sources(const io::CaseTable& sph, const std::vector<std::string>&
         }
         source.mass_rate = table.positive_quantity("mass_rate", mass_rate_dimension(dimension));
         read_window(table, phases, source);
-        source.velocity = table.vector_or("velocity", dim::kVelocity, Vec3::Zero());
+        source.velocity = table.vector_or("velocity", dim::kVelocity,
+                                          io::default_vector(kSourceKeys, "velocity"));
         if (dimension == 2) {
             source.velocity.z() = 0.0;
         }

@@ -217,13 +217,14 @@ void attach_motion(const io::CaseTable& table, const particles::PhaseSequence* p
     }
     // A shifted history holds its first value until its start.
     const double now = shifted ? -std::numeric_limits<double>::infinity() : 0.0;
-    const Vec3 velocity = velocity_history.empty()
-                              ? table.vector_or("velocity", dim::kVelocity, Vec3::Zero())
-                              : history_value(velocity_history, now);
+    const Vec3 velocity =
+        velocity_history.empty()
+            ? table.vector_or("velocity", dim::kVelocity, io::default_vector(kWallKeys, "velocity"))
+            : history_value(velocity_history, now);
     const Vec3 angular_velocity =
-        angular_history.empty()
-            ? table.vector_or("angular_velocity", dim::kAngularVelocity, Vec3::Zero())
-            : history_value(angular_history, now);
+        angular_history.empty() ? table.vector_or("angular_velocity", dim::kAngularVelocity,
+                                                  io::default_vector(kWallKeys, "angular_velocity"))
+                                : history_value(angular_history, now);
     RigidMotion& motion = attach_rigid_motion(particles, wall, velocity, angular_velocity);
     if (!shifted) {
         motion.velocity_history = std::move(velocity_history);

@@ -1,7 +1,6 @@
 #pragma once
 // The SPH side of a scene: its bodies and walls advanced by SphSolver, as one Stepper.
 
-#include "io/key_spec.hpp"
 #include "io/reporter.hpp"
 #include "io/scene_settings.hpp"
 #include "io/stepper.hpp"
@@ -17,7 +16,6 @@
 #include "sph/source.hpp"
 #include "sph/sph_solver.hpp"
 
-#include <array>
 #include <fstream>
 #include <memory>
 #include <span>
@@ -25,15 +23,6 @@
 #include <vector>
 
 namespace grainload::sph {
-
-/// The keys of each [[sph.body]] besides its [sph.body.shape], [sph.body.initial_stress] and
-/// [[sph.body.clamp]] tables. All bodies share one spacing.
-inline constexpr std::array<io::KeySpec, 4> kBodyKeys{{
-    {"name", "string", "", "names the body's block in the frames and its figures"},
-    {"material", "string", "", "a [[material]] name"},
-    {"spacing", "length", "", "the lattice spacing; particle mass = density x spacing^dimension"},
-    {"velocity", "velocity vector", "0 m/s", "the initial velocity"},
-}};
 
 /// The SPH side of a scene: particles of every [[sph.body]] and [[sph.wall]], advanced
 /// explicitly by SphSolver (or, with interactions = false, in free flight under gravity).

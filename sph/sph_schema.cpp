@@ -8,7 +8,6 @@
 #include "sph/probes.hpp"
 #include "sph/source_case_reader.hpp"
 #include "sph/sph_case_reader.hpp"
-#include "sph/sph_model.hpp"
 #include "sph/symmetry.hpp"
 #include "sph/wall_map_reader.hpp"
 

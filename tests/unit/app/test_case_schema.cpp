@@ -49,15 +49,26 @@ TEST(CaseSchema, EveryKeyIsDeclaredOnceInItsTable) {
     }
 }
 
-// Readers take a default from its declaration as a number (io::default_value): a default the
-// guide writes as one number ("3", "0.1", "true", "20 deg", "0 1/s") is that number in SI, so
-// the guide and the reader cannot state two defaults. Exact: the same conversion makes both.
-TEST(CaseSchema, ADefaultWrittenAsANumberIsTheNumberReadersTake) {
+/// Calls `check(table, key, text)` for every declared key, `text` its default as the user writes
+/// it (the guide's backquotes and quotes removed); returns how many calls returned true.
+template <class Check> int count_defaults(Check check) {
     int checked = 0;
     for (const io::KeyTable& table : case_schema()) {
         for (const io::KeySpec& key : table.keys) {
             std::string text(key.default_text);
             std::erase_if(text, [](char c) { return c == '`' || c == '"'; });
+            checked += check(table, key, text) ? 1 : 0;
+        }
+    }
+    return checked;
+}
+
+// Readers take a default from its declaration as a number (io::default_value): a default the
+// guide writes as one number ("3", "0.1", "true", "20 deg", "0 1/s") is that number in SI, so
+// the guide and the reader cannot state two defaults. Exact: the same conversion makes both.
+TEST(CaseSchema, ADefaultWrittenAsANumberIsTheNumberReadersTake) {
+    const int checked = count_defaults(
+        [](const io::KeyTable& table, const io::KeySpec& key, const std::string& text) {
             std::optional<double> number;
             if (text == "true" || text == "false") {
                 number = text == "true" ? 1.0 : 0.0;
@@ -65,14 +76,29 @@ TEST(CaseSchema, ADefaultWrittenAsANumberIsTheNumberReadersTake) {
                 number = q->value;
             }
             if (number) {
-                ++checked;
                 EXPECT_DOUBLE_EQ(key.value, *number)
                     << table.name << "." << key.name << " = " << key.default_text;
             }
-        }
-    }
+            return number.has_value();
+        });
     // The schema's numeric defaults were found, not skipped: 89 of them when this was written.
     EXPECT_GE(checked, 80);
+}
+
+// A vector key's default written as components ("1 0 0", "0 m/s") is one io::default_vector
+// reads, as its reader does; words ("the wall particles' centroid") are computed by the reader.
+TEST(CaseSchema, AVectorDefaultWrittenAsComponentsIsOneReadersTake) {
+    const int checked = count_defaults(
+        [](const io::KeyTable& table, const io::KeySpec& key, const std::string& text) {
+            std::string error;
+            if (!key.type.ends_with("vector") || !io::parse_quantity_list(text, &error)) {
+                return false;
+            }
+            EXPECT_NO_THROW(io::default_vector(std::span(&key, 1), key.name))
+                << table.name << "." << key.name << " = " << key.default_text;
+            return true;
+        });
+    EXPECT_GE(checked, 8); // the vector defaults were found, not skipped
 }
 
 // A key's path names its table without indices; root keys lie in no table.

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """scripts/check_key_defaults.py on small source trees made for the test: defaults taken from
-the declaration, computed from the scene or absent pass; a number, a boolean or a word written
-again at the call fails, also when the call spans lines; an LS-DYNA card's field (no key name)
+the declaration, computed from the scene or absent pass; a number, a boolean, a word or a
+constant vector written again at the call fails, also when the call spans lines; an LS-DYNA card's field (no key name)
 is not a case key; and grainload's own tree passes.
 """
 
@@ -39,6 +39,7 @@ class CheckKeyDefaults(unittest.TestCase):
         for call, shown in (('table.integer_or("seed", 1)', "1"),
                             ('table.boolean_or("rotation", true)', "true"),
                             ('dem.positive_quantity_or("start", dim::kTime, 0.0, true)', "0.0"),
+                            ('table.vector_or("axis", dim::kNone, Vec3::UnitX())', "Vec3::UnitX()"),
                             ('fem.choice_or("mass",\n    {"lumped", "consistent"}, "lumped")',
                              '"lumped"')):
             with self.subTest(call=call):
