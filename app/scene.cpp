@@ -78,10 +78,9 @@ std::unique_ptr<Scene> Scene::from_document(std::unique_ptr<io::CaseDocument> do
         if (root.has("fem") && !root.has("coupling")) {
             scene->add(fem::read_shell_model(root, scene->settings, scene->materials));
         }
-        if (root.has("phase") && !root.has("sph")) {
-            root.fail("phase",
-                      "phases act on the SPH scene's walls, sources and sinks: expected an "
-                      "[sph] table");
+        if (root.has("phase") && !root.has("sph") && !root.has("dem")) {
+            root.fail("phase", "phases act on a particle scene's walls, sources and sinks: "
+                               "expected an [sph] or a [dem] table");
         }
         if (scene->steppers.empty()) {
             root.fail("", "expected at least one physics module: an [sph] table with [[sph.body]], "

@@ -241,10 +241,13 @@ void read_motion(const io::CaseTable& table, PlaneWall& wall) {
     }
 }
 
-PlaneWall read_wall(const io::CaseTable& table, int up) {
+PlaneWall read_wall(const io::CaseTable& table, int up, const particles::PhaseSequence& phases) {
     PlaneWall wall;
     wall.name = table.string("name");
-    if (table.has("remove_at")) {
+    if (const auto phase = particles::read_phase_reference(table, "remove_at", &phases)) {
+        // Its time is the phase's start, which DemModel hands over once it is known.
+        wall.removal_phase = *phase;
+    } else if (table.has("remove_at")) {
         wall.remove_at = table.positive_quantity("remove_at", dim::kTime, true);
     }
     read_motion(table, wall);
@@ -280,20 +283,53 @@ PlaneWall read_wall(const io::CaseTable& table, int up) {
     return wall;
 }
 
-SourceSettings read_source(const io::CaseTable& table, const std::vector<BodySettings>& bodies) {
+/// start and end: times, or "phase:NAME" (the phase's start, which DemModel hands over once it
+/// is known). An end before the start is refused where the case fixes both: two times, or two
+/// phases (which begin in the order of the table).
+void read_window(const io::CaseTable& table, const particles::PhaseSequence& phases,
+                 SourceSettings& source) {
+    // A phase whose start the case does not fix counts from 0 s (start) or to the run's end
+    // (end) in the estimates; the run takes the start when the phase begins.
+    if (const auto phase = particles::read_phase_reference(table, "start", &phases)) {
+        source.start_phase = *phase;
+        source.start = std::isfinite(phases.start(*phase)) ? phases.start(*phase) : 0.0;
+    } else {
+        source.start = table.positive_quantity_or("start", dim::kTime,
+                                                  io::default_value(kDemSourceKeys, "start"), true);
+    }
+    if (const auto phase = particles::read_phase_reference(table, "end", &phases)) {
+        source.end_phase = *phase;
+        source.end = phases.start(*phase);
+    } else {
+        source.end =
+            table.positive_quantity_or("end", dim::kTime, std::numeric_limits<double>::infinity());
+    }
+    const bool times = source.start_phase < 0 && source.end_phase < 0;
+    const bool both_phases = source.start_phase >= 0 && source.end_phase >= 0;
+    if ((times && !(source.end > source.start)) ||
+        (both_phases && !(source.end_phase > source.start_phase))) {
+        table.fail("end", "expected an end after the start");
+    }
+}
+
+SourceSettings read_source(const io::CaseTable& table, const std::vector<BodySettings>& bodies,
+                           const particles::PhaseSequence& phases) {
     SourceSettings source;
     source.name = table.string("name");
     source.body = io::index_by_name(
         table, "body", bodies, [](const BodySettings& b) { return b.name; }, "[[dem.body]]");
     const BodySettings& body = bodies[static_cast<std::size_t>(source.body)];
-    if (body.spheres != 1) {
-        table.fail("body", "a source rains spherical grains: expected a body of spheres = 1");
-    }
     source.min = table.vector("min", dim::kLength);
     source.max = table.vector("max", dim::kLength);
-    if (!((source.max - source.min).array() >= 2.0 * body.radius_max).all()) {
-        table.fail("max", "the box must hold a grain of the body's largest radius: expected max "
-                          "- min >= 2 radius_max on every axis");
+    // A clump is drawn turned any way: the box must hold its length along every axis.
+    const double length = 2.0 * body.radius_max * (1.0 + (body.spheres - 1) * body.sphere_distance);
+    if (!((source.max - source.min).array() >= length).all()) {
+        table.fail("max", body.spheres == 1
+                              ? "the box must hold a grain of the body's largest radius: expected "
+                                "max - min >= 2 radius_max on every axis"
+                              : "the box must hold a clump of the body's largest radius turned "
+                                "any way: expected max - min >= its length 2 radius_max (1 + "
+                                "(spheres - 1) sphere_distance) on every axis");
     }
     source.rate = table.positive_quantity("rate", dim::kFrequency);
     if (table.has("count")) {
@@ -302,13 +338,7 @@ SourceSettings read_source(const io::CaseTable& table, const std::vector<BodySet
             table.fail("count", "expected at least one grain");
         }
     }
-    source.start = table.positive_quantity_or("start", dim::kTime,
-                                              io::default_value(kDemSourceKeys, "start"), true);
-    source.end =
-        table.positive_quantity_or("end", dim::kTime, std::numeric_limits<double>::infinity());
-    if (!(source.end > source.start)) {
-        table.fail("end", "expected an end after the start");
-    }
+    read_window(table, phases, source);
     source.velocity =
         table.vector_or("velocity", dim::kVelocity, io::default_vector(kDemSourceKeys, "velocity"));
     const std::int64_t seed = table.integer_or(
@@ -323,7 +353,7 @@ SourceSettings read_source(const io::CaseTable& table, const std::vector<BodySet
 /// The sources of [[dem.source]]; a body with no grains at the start needs one.
 void read_sources(const io::CaseTable& dem, DemSettings& settings) {
     for (const io::CaseTable& table : dem.array_of_tables("source")) {
-        SourceSettings source = read_source(table, settings.bodies);
+        SourceSettings source = read_source(table, settings.bodies, settings.phases);
         io::refuse_repeated_name(table, settings.sources, source.name, "source",
                                  &SourceSettings::name);
         settings.sources.push_back(std::move(source));
@@ -336,6 +366,18 @@ void read_sources(const io::CaseTable& dem, DemSettings& settings) {
             throw io::CaseError(settings.bodies[b].where +
                                 ": a body without grains at the start: expected a centre, or "
                                 "min, max and count, or a [[dem.source]] that fills it");
+        }
+    }
+}
+
+/// A phase that ends on the mass the sinks took needs a sink.
+void check_phase_ends(const io::CaseTable& root, const DemSettings& settings) {
+    const auto tables = root.array_of_tables("phase");
+    const auto& phases = settings.phases.phases();
+    for (std::size_t k = 0; k < phases.size(); ++k) {
+        if (phases[k].end == particles::PhaseSequence::End::discharged && settings.sinks->empty()) {
+            tables[k].fail("end", "the discharged condition counts the mass the sinks take: "
+                                  "expected a [[dem.sink]]");
         }
     }
 }
@@ -367,6 +409,7 @@ DemSettings read_dem_settings(const io::CaseTable& root,
     }
     const io::CaseTable dem = root.table("dem");
     DemSettings settings;
+    settings.phases = particles::read_phases(root);
     if (dem.has("time_step")) {
         settings.time_step = dem.positive_quantity("time_step", dim::kTime);
         settings.time_step_where = dem.where("time_step");
@@ -399,12 +442,13 @@ DemSettings read_dem_settings(const io::CaseTable& root,
         dem.fail("body", "expected at least one [[dem.body]]");
     }
     for (const io::CaseTable& table : dem.array_of_tables("wall")) {
-        PlaneWall wall = read_wall(table, up);
+        PlaneWall wall = read_wall(table, up, settings.phases);
         io::refuse_repeated_name(table, settings.walls, wall.name, "wall", &PlaneWall::name);
         settings.walls.push_back(std::move(wall));
     }
     read_sources(dem, settings);
     settings.sinks = read_sinks(dem, settings, materials, scene);
+    check_phase_ends(root, settings);
     return settings;
 }
 

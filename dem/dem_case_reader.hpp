@@ -5,6 +5,7 @@
 #include "dem/plane_wall.hpp"
 #include "io/key_spec.hpp"
 #include "io/types.hpp"
+#include "particles/phase_sequence.hpp"
 #include "particles/sink.hpp"
 
 #include <array>
@@ -109,7 +110,8 @@ inline constexpr std::array<io::KeySpec, 14> kDemWallKeys{{
     {"min", "length vector", "required for a box", "the box's inner lower corner"},
     {"max", "length vector", "required for a box", "the box's inner upper corner"},
     {"open_top", "boolean", "true", "a box without its top face", 1.0},
-    {"remove_at", "time", "never", "the wall leaves the scene at this time (a gate that opens)"},
+    {"remove_at", "time or `phase:NAME`", "never",
+     "the wall leaves the scene at this time or when that phase begins (a gate that opens)"},
     {"velocity", "velocity vector", "0 m/s",
      "the wall translates at this velocity from move_start to move_end"},
     {"move_start", "time", "0 s", "when the wall starts to move"},
@@ -119,13 +121,13 @@ inline constexpr std::array<io::KeySpec, 14> kDemWallKeys{{
 /// The keys of each [[dem.source]].
 inline constexpr std::array<io::KeySpec, 10> kDemSourceKeys{{
     {"name", "string", "", "names the source in summary.json and the log"},
-    {"body", "string", "", "the [[dem.body]] whose grains it rains in (spheres = 1)"},
+    {"body", "string", "", "the [[dem.body]] whose grains, spheres or clumps, it rains in"},
     {"min", "length vector", "", "the lower corner of the box grains appear in"},
     {"max", "length vector", "", "the upper corner"},
     {"rate", "frequency", "", "grains per second"},
     {"count", "integer >= 1", "none: until end", "grains in all"},
-    {"start", "time", "0 s", "when it begins"},
-    {"end", "time", "never", "when it stops"},
+    {"start", "time or `phase:NAME`", "0 s", "when it begins (phase:NAME: when that phase begins)"},
+    {"end", "time or `phase:NAME`", "never", "when it stops (phase:NAME: when that phase begins)"},
     {"velocity", "velocity vector", "0 m/s", "each grain's velocity as it appears"},
     {"seed", "integer >= 0", "1", "the draws' seed: equal seeds, equal arrivals", 1.0},
 }};
@@ -163,6 +165,9 @@ struct SourceSettings {
     std::optional<Index> count;
     double start = 0.0;
     double end = std::numeric_limits<double>::infinity();
+    /// The [[phase]] whose start is `start` (`end`), -1: a time.
+    int start_phase = -1;
+    int end_phase = -1;
     Vec3 velocity = Vec3::Zero();
     std::uint64_t seed = 1;
 };
@@ -180,6 +185,8 @@ struct DemSettings {
     std::vector<SourceSettings> sources;
     /// [[dem.sink]]: the regions grains leave the scene through.
     std::shared_ptr<particles::SinkSet> sinks;
+    /// [[phase]]: the run's phases, read before the walls and sources that may name them.
+    particles::PhaseSequence phases;
     /// Where the case gives time_step: a step too long for the contacts is refused there.
     std::string time_step_where;
     /// Where the case gives the contact's damping ([dem.contact] gamma_n, else its law): an
@@ -187,9 +194,9 @@ struct DemSettings {
     std::string damping_where;
 };
 
-/// Reads [dem], [dem.contact], [[dem.body]], [[dem.wall]] and [[dem.sink]] of the case; the
-/// scene's up axis opens a box's top, its gravity gives the sinks' Beverloo rates. Bad input
-/// throws io::CaseError naming the key.
+/// Reads [dem], [dem.contact], [[dem.body]], [[dem.wall]], [[dem.source]], [[dem.sink]] and
+/// the [[phase]] tables of the case; the scene's up axis opens a box's top, its gravity gives
+/// the sinks' Beverloo rates. Bad input throws io::CaseError naming the key.
 DemSettings read_dem_settings(const io::CaseTable& root,
                               const materials::MaterialLibrary& materials,
                               const io::SceneSettings& scene);

@@ -16,6 +16,11 @@ namespace grainload::dem {
 
 namespace {
 
+// A wall removed at a phase's start leaves with the step that ended the phase before it: that
+// step's end is the start, or a stated end reached within the phases' own tolerance of the
+// time's round-off (particles/phase_sequence.cpp).
+constexpr double kPhaseStartTolerance = 1e-12;
+
 /// The Verlet skin: the declared one, else 0.4 of the largest radius (a rebuild every few
 /// dozen steps of a settling packing).
 double skin_of(const DemSettings& settings, double largest) {
@@ -91,6 +96,7 @@ DemModel::DemModel(DemSettings settings, const io::SceneSettings& scene,
                                         [this] { return sinks_->discharged(); },
                                         [this] { return sources_->created_mass(); }}));
     }
+    add_phases();
     evaluate(0.0);
     start_energy_ = energy().total();
 }
@@ -300,27 +306,45 @@ void DemModel::advance(double t, double dt) {
                 spin_of(g.orientation[i], g.inertia[i], momentum_[i] + half * g.torque[i]);
         }
     }
+    parts_.after_step(t, dt);
     exchange(t, dt);
+}
+
+void DemModel::add_phases() {
+    if (settings_.phases.empty()) {
+        return;
+    }
+    particles::PhasePart::Hooks hooks{[this] { return kinetic_energy(); },
+                                      [this] { return sinks_->discharged(); },
+                                      [this](const particles::PhaseSequence& phases) {
+                                          for (PlaneWall& wall : walls_) {
+                                              if (wall.removal_phase >= 0) {
+                                                  wall.remove_at = phases.start(wall.removal_phase);
+                                              }
+                                          }
+                                          sources_->apply_phase_starts(phases);
+                                      }};
+    phases_ = std::make_shared<particles::PhasePart>(settings_.phases, std::move(hooks), true);
+    parts_.add(phases_);
+    phases_->apply_starts();
 }
 
 void DemModel::exchange(double t, double dt) {
     const double time = t + dt;
-    for (PlaneWall& wall : walls_) {
-        if (!wall.removed && time >= wall.remove_at) {
-            wall.removed = true;
-            wall.force = Vec3::Zero();
-            wall.normal_force = 0.0;
-            std::ostringstream text;
-            text << "wall " << wall.name << " removed at t = " << time << " s";
-            events_.push_back(text.str());
-        }
+    // As in the SPH scene: a phase that ends on a time or on settling does so before the
+    // removals, so a gate due at its successor's start opens with this step; one that ends on
+    // the mass the sinks took can only after them, and its gates follow at once.
+    if (phases_) {
+        phases_->advance(time);
+    }
+    remove_walls(time);
+    remove_departed(time);
+    if (phases_ && phases_->advance(time)) {
+        remove_walls(time);
+        remove_departed(time);
     }
     if (parts_.empty()) {
         return;
-    }
-    std::vector<char> gone(static_cast<std::size_t>(grains_.size()), 0);
-    if (parts_.collect_departures(grains_.view(), time, gone) > 0) {
-        remove_grains(gone);
     }
     const std::vector<particles::Arrival> arrivals = parts_.collect_arrivals(grains_.view(), t, dt);
     if (!arrivals.empty()) {
@@ -329,14 +353,39 @@ void DemModel::exchange(double t, double dt) {
     parts_.end_step(time);
 }
 
+void DemModel::remove_walls(double time) {
+    for (PlaneWall& wall : walls_) {
+        const double due = wall.removal_phase >= 0 ? wall.remove_at * (1.0 - kPhaseStartTolerance)
+                                                   : wall.remove_at;
+        if (!wall.removed && time >= due) {
+            wall.removed = true;
+            wall.force = Vec3::Zero();
+            wall.normal_force = 0.0;
+            std::ostringstream text;
+            text << "wall " << wall.name << " removed at t = " << time << " s";
+            events_.push_back(text.str());
+        }
+    }
+}
+
+void DemModel::remove_departed(double time) {
+    if (parts_.empty()) {
+        return;
+    }
+    std::vector<char> gone(static_cast<std::size_t>(grains_.size()), 0);
+    if (parts_.collect_departures(grains_.view(), time, gone) > 0) {
+        remove_grains(gone);
+    }
+}
+
 void DemModel::add_arrivals(const std::vector<particles::Arrival>& arrivals) {
     for (const particles::Arrival& arrival : arrivals) {
         const auto body = static_cast<std::size_t>(arrival.body);
         const GrainShape shape =
             grain_shape(settings_.bodies[body], arrival.radius, body_density_[body]);
-        const Index g = add_grain(settings_.bodies[body], arrival.body, shape, arrival.position,
-                                  Eigen::Quaterniond::Identity(), arrival.velocity, Vec3::Zero(),
-                                  grains_, spheres_);
+        const Index g =
+            add_grain(settings_.bodies[body], arrival.body, shape, arrival.position,
+                      arrival.orientation, arrival.velocity, Vec3::Zero(), grains_, spheres_);
         // Placed clear of every sphere and wall: gravity alone acts on it until the next step's
         // evaluation.
         grains_.force[static_cast<std::size_t>(g)] = shape.mass * gravity_;
@@ -372,6 +421,17 @@ std::vector<std::string> DemModel::take_events() {
         events.push_back(std::move(line));
     }
     return events;
+}
+
+double DemModel::kinetic_energy() const {
+    const DemEnergy e = energy();
+    return e.translational + e.rotational;
+}
+
+void DemModel::append_phases(std::vector<io::PhaseRecord>& records) const {
+    if (phases_) {
+        phases_->sequence().append_records(records);
+    }
 }
 
 DemEnergy DemModel::energy() const {

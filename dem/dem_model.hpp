@@ -10,6 +10,7 @@
 #include "io/scene_settings.hpp"
 #include "io/stepper.hpp"
 #include "particles/neighbour_list.hpp"
+#include "particles/phase_part.hpp"
 #include "particles/scene_part_list.hpp"
 
 #include <memory>
@@ -68,6 +69,8 @@ class DemModel final : public io::Stepper, public io::Reporter {
     void append_results(double t, std::vector<io::ResultFigure>& results) const override;
     void describe_model(std::vector<io::ModelChoice>& choices) const override;
     std::vector<std::string> take_events() override;
+    /// The [[phase]] tables' phases: when each began and ended, and why.
+    void append_phases(std::vector<io::PhaseRecord>& records) const override;
     void set_output(io::OutputStreams& output) override { output_ = &output; }
 
     const GrainSet& grains() const { return grains_; }
@@ -93,9 +96,19 @@ class DemModel final : public io::Stepper, public io::Reporter {
     bool over_damped() const;
     /// The forces at the grains' positions and the walls' places at `time`.
     void evaluate(double time);
-    /// After the step [t, t + dt]: walls whose remove_at it reached leave, grains that reached
-    /// a sink leave, and the sources' grains enter.
+    /// After the step [t, t + dt]: the phases whose end it reached end, walls whose remove_at
+    /// it reached leave, grains that reached a sink leave (a phase that ends on the mass they
+    /// took ends then, and its walls follow at once), and the sources' grains enter.
     void exchange(double t, double dt);
+    /// The walls due at `time` leave the scene; one removed at a phase's start leaves with the
+    /// step that ends the phase before it.
+    void remove_walls(double time);
+    /// The grains in a sink at `time` leave.
+    void remove_departed(double time);
+    /// The [[phase]] tables' sequence as a part of parts_ (none: no phases).
+    void add_phases();
+    /// The grains' translational and rotational kinetic energy [J].
+    double kinetic_energy() const;
     void add_arrivals(const std::vector<particles::Arrival>& arrivals);
     void remove_grains(const std::vector<char>& gone);
     void write_wall_rows(double time) const;
@@ -119,10 +132,12 @@ class DemModel final : public io::Stepper, public io::Reporter {
     particles::NeighbourList neighbours_;
     ContactBooks books_;
     ContactScratch scratch_;
-    /// The scene's parts: the sinks, the sources and, with either, the mass audit.
+    /// The scene's parts: the sinks, the sources, with either the mass audit, and the phases.
     mutable particles::ScenePartList parts_;
     std::shared_ptr<particles::SinkSet> sinks_;
     std::shared_ptr<GrainSources> sources_;
+    /// [[phase]], the last of parts_ when the case has phases (null: none).
+    std::shared_ptr<particles::PhasePart> phases_;
     std::vector<std::string> events_;
     double step_ = 0.0; ///< the step the last evaluation's springs advanced by
     io::OutputStreams* output_ = nullptr;

@@ -182,10 +182,16 @@ void DemModel::describe_model(std::vector<io::ModelChoice>& choices) const {
     }
     for (const PlaneWall& wall : walls_) {
         const std::string triangles = std::to_string(wall.faces.size()) + " triangles";
-        choices.push_back({"dem wall " + wall.name,
-                           wall.follows() ? "mesh of " + triangles + " that follows a shell"
+        std::string what = wall.follows() ? "mesh of " + triangles + " that follows a shell"
                            : wall.mesh()  ? "rigid mesh of " + triangles
-                                          : std::string("rigid plane faces")});
+                                          : std::string("rigid plane faces");
+        if (wall.removal_phase >= 0) {
+            what +=
+                ", removed when phase \"" +
+                phases_->sequence().phases()[static_cast<std::size_t>(wall.removal_phase)].name +
+                "\" begins";
+        }
+        choices.push_back({"dem wall " + wall.name, what});
     }
 }
 

@@ -55,25 +55,11 @@ class PlacementGrid {
     std::unordered_map<std::uint64_t, std::vector<Index>> cells_;
 };
 
-/// A uniformly random orientation (Shoemake 1992, "Uniform random rotations").
-Eigen::Quaterniond random_orientation(std::mt19937_64& generator) {
-    const double u1 = uniform(generator);
-    const double u2 = 2.0 * std::numbers::pi * uniform(generator);
-    const double u3 = 2.0 * std::numbers::pi * uniform(generator);
-    const double a = std::sqrt(1.0 - u1);
-    const double b = std::sqrt(u1);
-    return Eigen::Quaterniond(b * std::cos(u3), a * std::sin(u2), a * std::cos(u2),
-                              b * std::sin(u3));
-}
-
-/// A centre drawn uniformly where a grain of sphere radius `r`, turned by `turned`, lies wholly
-/// inside the body's box.
-Vec3 draw_centre(const BodySettings& body, const GrainShape& shape, double r,
+/// A centre drawn uniformly where a grain of `shape`, turned by `turned`, lies wholly inside the
+/// body's box.
+Vec3 draw_centre(const BodySettings& body, const GrainShape& shape,
                  const Eigen::Quaterniond& turned, std::mt19937_64& generator) {
-    Vec3 margin = Vec3::Constant(r);
-    for (const Vec3& offset : shape.offsets) {
-        margin = margin.cwiseMax(Vec3(Vec3::Constant(r) + (turned * offset).cwiseAbs()));
-    }
+    const Vec3 margin = grain_reach(shape, turned);
     Vec3 centre;
     for (int a = 0; a < 3; ++a) {
         centre[a] = body.min[a] + margin[a] +
@@ -86,6 +72,24 @@ Vec3 draw_centre(const BodySettings& body, const GrainShape& shape, double r,
 
 double uniform(std::mt19937_64& generator) {
     return static_cast<double>(generator() >> 11) * 0x1.0p-53;
+}
+
+Eigen::Quaterniond random_orientation(std::mt19937_64& generator) {
+    const double u1 = uniform(generator);
+    const double u2 = 2.0 * std::numbers::pi * uniform(generator);
+    const double u3 = 2.0 * std::numbers::pi * uniform(generator);
+    const double a = std::sqrt(1.0 - u1);
+    const double b = std::sqrt(u1);
+    return Eigen::Quaterniond(b * std::cos(u3), a * std::sin(u2), a * std::cos(u2),
+                              b * std::sin(u3));
+}
+
+Vec3 grain_reach(const GrainShape& shape, const Eigen::Quaterniond& turned) {
+    Vec3 reach = Vec3::Constant(shape.radius);
+    for (const Vec3& offset : shape.offsets) {
+        reach = reach.cwiseMax(Vec3(Vec3::Constant(shape.radius) + (turned * offset).cwiseAbs()));
+    }
+    return reach;
 }
 
 double draw_radius(const BodySettings& body, std::mt19937_64& generator) {
@@ -156,7 +160,7 @@ void place_grains(const BodySettings& body, int body_id, double density, GrainSe
             // orientation comes first, and the centre where each of its spheres fits.
             const Eigen::Quaterniond turned =
                 body.spheres > 1 ? random_orientation(generator) : Eigen::Quaterniond::Identity();
-            const Vec3 centre = draw_centre(body, shape, r, turned, generator);
+            const Vec3 centre = draw_centre(body, shape, turned, generator);
             fits = std::all_of(shape.offsets.begin(), shape.offsets.end(),
                                [&](const Vec3& o) { return grid.free(centre + turned * o, r); });
             if (fits) {

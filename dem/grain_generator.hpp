@@ -30,6 +30,10 @@ GrainShape grain_shape(const BodySettings& body, double radius, double density);
 
 /// Uniform in [0, 1) from 53 bits of the generator, the same on every standard library.
 double uniform(std::mt19937_64& generator);
+/// A uniformly random orientation (Shoemake 1992, "Uniform random rotations").
+Eigen::Quaterniond random_orientation(std::mt19937_64& generator);
+/// How far a grain of `shape`, turned by `turned`, reaches from its centre along each axis.
+Vec3 grain_reach(const GrainShape& shape, const Eigen::Quaterniond& turned);
 /// A grain's radius, uniform in [radius_min, radius_max] (Lazarevic et al. 2002, eq. 1).
 double draw_radius(const BodySettings& body, std::mt19937_64& generator);
 

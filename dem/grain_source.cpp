@@ -63,8 +63,11 @@ bool GrainSources::free(const Vec3& centre, double radius,
     }
     for (const particles::Arrival& other : placed) {
         const double reach = radius + other.radius;
-        if ((other.position - centre).squaredNorm() < reach * reach) {
-            return false;
+        for (const Vec3& offset : shape_of(other).offsets) {
+            if ((other.position + other.orientation * offset - centre).squaredNorm() <
+                reach * reach) {
+                return false;
+            }
         }
     }
     return std::none_of(walls_.begin(), walls_.end(), [&](const PlaneWall& wall) {
@@ -72,24 +75,40 @@ bool GrainSources::free(const Vec3& centre, double radius,
     });
 }
 
+GrainShape GrainSources::shape_of(const particles::Arrival& arrival) const {
+    const auto body = static_cast<std::size_t>(arrival.body);
+    return grain_shape(bodies_[body], arrival.radius, body_density_[body]);
+}
+
 std::optional<particles::Arrival>
 GrainSources::draw(Source& source, const std::vector<particles::Arrival>& placed) {
     const SourceSettings& s = source.settings;
     const BodySettings& body = bodies_[static_cast<std::size_t>(s.body)];
     const double r = draw_radius(body, source.generator);
+    const GrainShape shape = grain_shape(body, r, body_density_[static_cast<std::size_t>(s.body)]);
     for (int attempt = 0; attempt < kDraws; ++attempt) {
+        // As a body's own grains are placed: a sphere keeps the identity, its draws are the
+        // centre's alone; a clump's orientation comes first, then a centre where all of it lies
+        // in the box, and each of its spheres must be free.
+        const Eigen::Quaterniond turned = body.spheres > 1 ? random_orientation(source.generator)
+                                                           : Eigen::Quaterniond::Identity();
+        const Vec3 reach = grain_reach(shape, turned);
         Vec3 centre;
         for (int a = 0; a < 3; ++a) {
-            centre[a] = s.min[a] + r + (s.max[a] - s.min[a] - 2.0 * r) * uniform(source.generator);
+            centre[a] = s.min[a] + reach[a] +
+                        (s.max[a] - s.min[a] - 2.0 * reach[a]) * uniform(source.generator);
         }
-        if (free(centre, r, placed)) {
+        if (std::all_of(shape.offsets.begin(), shape.offsets.end(), [&](const Vec3& offset) {
+                return free(centre + turned * offset, r, placed);
+            })) {
             particles::Arrival arrival;
             arrival.position = centre;
             arrival.velocity = s.velocity;
-            arrival.mass = sphere_mass(r, body_density_[static_cast<std::size_t>(s.body)]);
+            arrival.mass = shape.mass;
             arrival.body = s.body;
             arrival.material = body.material;
             arrival.radius = r;
+            arrival.orientation = turned;
             return arrival;
         }
     }
@@ -124,6 +143,17 @@ void GrainSources::collect_arrivals(const particles::ParticleView& /*particles*/
             source.due -= 1.0;
             ++source.created;
             source.created_mass += arrival->mass;
+        }
+    }
+}
+
+void GrainSources::apply_phase_starts(const particles::PhaseSequence& phases) {
+    for (Source& source : sources_) {
+        if (source.settings.start_phase >= 0) {
+            source.settings.start = phases.start(source.settings.start_phase);
+        }
+        if (source.settings.end_phase >= 0) {
+            source.settings.end = phases.start(source.settings.end_phase);
         }
     }
 }

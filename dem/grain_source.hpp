@@ -2,8 +2,10 @@
 // Grains rained into a DEM scene through a box: a scene part, as the SPH sources are.
 
 #include "dem/dem_case_reader.hpp"
+#include "dem/grain_generator.hpp"
 #include "dem/plane_wall.hpp"
 #include "dem/sphere_set.hpp"
+#include "particles/phase_sequence.hpp"
 #include "particles/scene_part.hpp"
 
 #include <optional>
@@ -16,7 +18,8 @@ namespace grainload::dem {
 /// second from its start to its end (and `count` in all), as the DEM study filled its silo by
 /// letting balls fall in from above (Lazarevic, Dvornik & Fresl 2002). The grains due in a step
 /// (the rate's running sum) are drawn as the body's initial grains are: a radius uniform in
-/// [radius_min, radius_max], a centre uniform where the sphere lies inside the box; a draw that
+/// [radius_min, radius_max], a centre uniform where the sphere lies inside the box (a clump's
+/// orientation uniform first, and the centre where all of it lies inside); a draw that
 /// overlaps a sphere of the scene, one placed this step, or a wall's face is drawn again (the
 /// radius kept), up to 100 times; then the box counts as full for this step and the grain stays
 /// due. A source that has waited for room says so once in the log. The draws follow a 64-bit
@@ -31,6 +34,8 @@ class GrainSources : public particles::ScenePart {
     bool empty() const { return sources_.empty(); }
     /// The mass the sources have made enter [kg], for the mass audit.
     double created_mass() const;
+    /// Sources whose start or end names a phase take its start (+infinity while unknown).
+    void apply_phase_starts(const particles::PhaseSequence& phases);
 
     void collect_arrivals(const particles::ParticleView& particles, double t, double dt,
                           std::vector<particles::Arrival>& arrivals) override;
@@ -53,8 +58,12 @@ class GrainSources : public particles::ScenePart {
                                            const std::vector<particles::Arrival>& placed);
     /// The spheres of the scene a grain in the box of `source` could touch, into near_.
     void find_near(const SourceSettings& source);
+    /// Whether a sphere at `centre` of `radius` touches no sphere near the box, no sphere of a
+    /// grain placed this step and no wall.
     bool free(const Vec3& centre, double radius,
               const std::vector<particles::Arrival>& placed) const;
+    /// The spheres of a grain placed this step.
+    GrainShape shape_of(const particles::Arrival& arrival) const;
 
     std::vector<Source> sources_;
     const std::vector<BodySettings>& bodies_;

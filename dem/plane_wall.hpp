@@ -47,6 +47,8 @@ struct PlaneWall {
     double normal_force = 0.0;
     /// The wall leaves the scene at the end of the step that reaches this time (a gate).
     double remove_at = std::numeric_limits<double>::infinity();
+    /// The [[phase]] whose start is remove_at (-1: a time the case states).
+    int removal_phase = -1;
     bool removed = false;
     /// A prescribed translation: at `velocity` from `move_start` to `move_end`, at rest
     /// before and after. The faces stay where the case put them; a sphere meets them at its

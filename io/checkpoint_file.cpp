@@ -24,6 +24,8 @@ constexpr std::uint64_t kSecondFormatMagic = 0x323054504b434c47; // "GLCKPT02"
 constexpr std::uint64_t kThirdFormatMagic = 0x333054504b434c47; // "GLCKPT03"
 /// The format before the SPH energy books split the dissipation by mechanism.
 constexpr std::uint64_t kFourthFormatMagic = 0x343054504b434c47; // "GLCKPT04"
+/// The format before the run's phases kept their state as a scene part of their own.
+constexpr std::uint64_t kFifthFormatMagic = 0x353054504b434c47; // "GLCKPT05"
 constexpr std::streamoff kMagicBytes = 8;
 constexpr std::streamoff kTrailerBytes = 16; // payload length, hash
 
@@ -76,6 +78,9 @@ void check_framing(std::istream& in, std::uint64_t size) {
             : magic == kFourthFormatMagic
                 ? "written in the fourth checkpoint format, whose energy books did not split "
                   "the dissipation by mechanism; rerun the case from the start"
+            : magic == kFifthFormatMagic
+                ? "written in the fifth checkpoint format, whose phases' state was not a scene "
+                  "part of its own; rerun the case from the start"
                 : "not a grainload checkpoint (wrong magic number)");
     }
     const std::uint64_t payload = size - static_cast<std::uint64_t>(kMagicBytes + kTrailerBytes);

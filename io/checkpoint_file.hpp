@@ -9,12 +9,12 @@
 
 namespace grainload::io {
 
-/// A checkpoint file: the 8-byte magic "GLCKPT05", the payload the modules write, and a
+/// A checkpoint file: the 8-byte magic "GLCKPT06", the payload the modules write, and a
 /// trailer of the payload's length and its 64-bit FNV-1a hash (Fowler, Noll & Vo; the
 /// 64-bit offset basis 0xcbf29ce484222325 and prime 0x100000001b3). The hash makes a
 /// truncated or corrupted file fail before a single value of it is used: a flipped bit in a
 /// position would otherwise restart the run from a wrong state without any sign.
-inline constexpr std::uint64_t kCheckpointMagic = 0x353054504b434c47; // "GLCKPT05" on disk
+inline constexpr std::uint64_t kCheckpointMagic = 0x363054504b434c47; // "GLCKPT06" on disk
 
 /// FNV-1a over `bytes`, continuing from `hash`.
 std::uint64_t fnv1a(std::string_view bytes, std::uint64_t hash = 0xcbf29ce484222325ULL);

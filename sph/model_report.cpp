@@ -65,7 +65,7 @@ void SphModel::describe_model(std::vector<io::ModelChoice>& choices) const {
         std::string what = rigid ? "rigid" : "driven by another solver";
         if (wall.removal_phase >= 0) {
             what += ", removed when phase \"" +
-                    phases_.phases()[static_cast<std::size_t>(wall.removal_phase)].name +
+                    phases().phases()[static_cast<std::size_t>(wall.removal_phase)].name +
                     "\" begins";
         } else if (std::isfinite(wall.removal_time)) {
             char time[32];

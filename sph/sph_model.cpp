@@ -49,6 +49,9 @@ void SphModel::finish_build() {
     initial_velocity_ = particles().velocity;
     parts_.add(escape_part(EscapeWatch(particles(), gravity_, dimension_), particles(),
                            [this](int body) { return body_name(body); }));
+    if (!phases_->sequence().empty()) {
+        parts_.add(phases_);
+    }
     if (!interactions_) {
         compute_accelerations();
     }
@@ -206,7 +209,6 @@ void SphModel::advance(double t, double dt) {
         solver_->set_time(t);
         solver_->step(dt);
         parts_.after_step(t, dt);
-        record_kinetic_energy(t + dt);
         if (!per_window_) {
             exchange_particles(t, dt);
         }
@@ -266,12 +268,9 @@ std::optional<std::string> SphModel::diagnose() const {
 }
 
 std::vector<std::string> SphModel::take_events() {
-    // The parts' events of the steps since the last call (a settle), then the phases' ends,
+    // The parts' events of the steps since the last call (a settle), the phases' ends last,
     // which follow them within a step.
-    std::vector<std::string> events = parts_.take_events();
-    events.insert(events.end(), events_.begin(), events_.end());
-    events_.clear();
-    return events;
+    return parts_.take_events();
 }
 
 } // namespace grainload::sph

@@ -5,7 +5,7 @@
 #include "io/scene_settings.hpp"
 #include "io/stepper.hpp"
 #include "materials/material_library.hpp"
-#include "particles/phase_sequence.hpp"
+#include "particles/phase_part.hpp"
 #include "particles/scene_part_list.hpp"
 #include "particles/settle_watch.hpp"
 #include "particles/sink.hpp"
@@ -87,7 +87,7 @@ class SphModel final : public io::Stepper, public io::Reporter {
     std::vector<std::string> take_events() override;
     /// The [[phase]] table's phases: when each began and ended, and why (sph_model_phases.cpp).
     void append_phases(std::vector<io::PhaseRecord>& records) const override;
-    const particles::PhaseSequence& phases() const { return phases_; }
+    const particles::PhaseSequence& phases() const { return phases_->sequence(); }
     void write_checkpoint(std::ostream& out) const override;
     void read_checkpoint(std::istream& in) override;
 
@@ -169,24 +169,19 @@ class SphModel final : public io::Stepper, public io::Reporter {
     void apply_removal(std::span<const char> gone);
     /// Mass of the material particles now.
     double scene_mass() const;
-    void write_outlet_state(std::ostream& out) const;
     /// Replays the checkpoint's removals on the freshly built scene: before the particle arrays.
     void read_removals(std::istream& in);
-    void read_outlet_state(std::istream& in);
     /// After a step [t, t + dt] (and its removals): the parts' new particles enter.
     void create_arrivals(double t, double dt);
     /// Append the arrivals' particles to the solver and to every per-particle array here, and
     /// to the creation log; `book_energy` as SphSolver::add_particles.
     void apply_creation(std::span<const particles::Arrival> arrivals, bool book_energy);
-    /// Phases (sph_model_phases.cpp): after a step ending at `time`, end the phases whose end
-    /// has come and hand their starts to the walls and sources; true when one ended.
-    bool advance_phases(double time);
-    /// After a step ending at `time`: the phases' settle watches see the material's kinetic
-    /// energy.
-    void record_kinetic_energy(double time);
+    /// Phases (sph_model_phases.cpp): the [[phase]] tables' sequence as a part whose hooks
+    /// read the solver's kinetic energy and the sinks' discharged mass and hand the starts to
+    /// the walls and sources; `report_settle` when no [sph.settle] reports settle_time.
+    void set_phases(particles::PhaseSequence phases, bool report_settle);
     /// Walls' removal times and histories and sources' windows that name a phase get its start.
-    void apply_phase_starts();
-    /// The first phase ending on `settled`, when no [sph.settle] reports settle_time.
+    void apply_phase_starts(const particles::PhaseSequence& phases);
     /// elastic_strain_energy, plastic_work, viscous_heat, contact_damping_heat and
     /// viscous_share of summary.json.
     void append_dissipation(std::vector<io::ResultFigure>& results) const;
@@ -196,7 +191,6 @@ class SphModel final : public io::Stepper, public io::Reporter {
     /// Free flight: the particles' centre height against the exact parabola, and the largest
     /// distance of any particle from its own.
     void append_free_flight(double t, std::vector<io::ResultFigure>& results) const;
-    void append_phase_results(std::vector<io::ResultFigure>& results) const;
     /// The creation log, so a restart can rebuild the created particles before the removals.
     void write_created(std::ostream& out) const;
     void read_created(std::istream& in);
@@ -243,9 +237,10 @@ class SphModel final : public io::Stepper, public io::Reporter {
     std::vector<io::ResultFigure> body_sizes_;
     /// [sph.settle] (null: none), shared with parts_: the gates that wait for it read it.
     std::shared_ptr<const particles::SettlePart> settle_;
-    /// [[phase]]: the run's phases, read before the walls and sources that may name them.
-    particles::PhaseSequence phases_;
-    std::vector<std::string> events_;
+    /// [[phase]]: the run's phases, read before the walls and sources that may name them, and
+    /// a part of parts_ once built when there are any (empty: none).
+    std::shared_ptr<particles::PhasePart> phases_ = std::make_shared<particles::PhasePart>(
+        particles::PhaseSequence{}, particles::PhasePart::Hooks{}, false);
     bool per_window_ = false; ///< exchange_particles_per_window() was called
     bool audit_ = false;      ///< a sink, remove_at or a source: the mass audit and energy books
     /// The materials of the particles as the case built them, for describe_model (particles,

@@ -39,7 +39,6 @@ void SphModel::write_checkpoint(std::ostream& out) const {
         io::write_array(out, std::vector<Vec3>(reference.begin(), reference.end()));
         io::write_array(out, solver_->energy_ledger().state());
     }
-    write_outlet_state(out);
     parts_.write_checkpoint(out);
 }
 
@@ -96,9 +95,6 @@ void read_solver_books(std::istream& in, SphSolver& solver, std::size_t n) {
 } // namespace
 
 void SphModel::read_checkpoint(std::istream& in) {
-    // The driver takes the events after every step, so the state saved had none: the events
-    // of a coupling pass that goes back to it did not happen.
-    events_.clear();
     read_created(in);
     read_removals(in);
     auto& p = solver_ ? solver_->particles() : particles_;
@@ -118,7 +114,6 @@ void SphModel::read_checkpoint(std::istream& in) {
         read_wall_states(in, solver_->walls());
         read_solver_books(in, *solver_, n);
     }
-    read_outlet_state(in);
     parts_.read_checkpoint(in);
 }
 

@@ -71,9 +71,9 @@ void SphModel::exchange_particles(double t, double dt) {
     // A phase that ends on a time or on the settle watch does so before the removals, so a
     // wall due at its successor's start leaves with this step (as remove_at = "settled"); one
     // that ends on the mass the sinks took can only after them, and its walls follow at once.
-    advance_phases(t + dt);
+    phases_->advance(t + dt);
     remove_departed(t + dt);
-    if (advance_phases(t + dt)) {
+    if (phases_->advance(t + dt)) {
         remove_departed(t + dt);
     }
     create_arrivals(t, dt);
@@ -106,12 +106,6 @@ void SphModel::apply_removal(std::span<const char> gone) {
     parts_.after_removal(new_index);
 }
 
-void SphModel::write_outlet_state(std::ostream& out) const {
-    if (!phases_.empty()) {
-        io::write_array(out, phases_.state());
-    }
-}
-
 void SphModel::read_removals(std::istream& in) {
     std::vector<Index> kept;
     io::read_array(in, kept);
@@ -135,15 +129,6 @@ void SphModel::read_removals(std::istream& in) {
         previous = k;
     }
     apply_removal(gone);
-}
-
-void SphModel::read_outlet_state(std::istream& in) {
-    if (!phases_.empty()) {
-        std::vector<double> state;
-        io::read_array(in, state);
-        phases_.set_state(state);
-        apply_phase_starts();
-    }
 }
 
 } // namespace grainload::sph

@@ -168,9 +168,6 @@ void SphModel::append_free_flight(double t, std::vector<io::ResultFigure>& resul
 void SphModel::append_results(double t, std::vector<io::ResultFigure>& results) const {
     results.insert(results.end(), body_sizes_.begin(), body_sizes_.end());
     parts_.append_results(results);
-    if (!settle_) {
-        append_phase_results(results);
-    }
     if (!solver_) {
         append_free_flight(t, results);
         return;

@@ -1,61 +1,36 @@
-// SphModel's phases ([[phase]]): the settle watches that see the material's kinetic energy, the
-// phases' ends after each step, and their starts handed to the walls and sources that name
+// SphModel's phases ([[phase]]): the part that holds them, reading the solver's kinetic energy
+// and the sinks' discharged mass, and their starts handed to the walls and sources that name
 // them. The rest of SphModel is in sph_model.cpp.
 #include "sph/sph_model.hpp"
 
-#include <limits>
-#include <sstream>
-
 namespace grainload::sph {
 
-void SphModel::record_kinetic_energy(double time) {
-    if (phases_.ends_on(particles::PhaseSequence::End::settled)) {
-        phases_.record_kinetic(time, solver_->kinetic_energy());
-    }
+void SphModel::set_phases(particles::PhaseSequence phases, bool report_settle) {
+    particles::PhasePart::Hooks hooks{
+        [this] { return solver_->kinetic_energy(); }, [this] { return sinks_->discharged(); },
+        [this](const particles::PhaseSequence& sequence) { apply_phase_starts(sequence); }};
+    phases_ =
+        std::make_shared<particles::PhasePart>(std::move(phases), std::move(hooks), report_settle);
 }
 
-bool SphModel::advance_phases(double time) {
-    if (phases_.empty()) {
-        return false;
-    }
-    std::vector<std::string> ended = phases_.update(time, sinks_->discharged());
-    if (ended.empty()) {
-        return false;
-    }
-    events_.insert(events_.end(), ended.begin(), ended.end());
-    apply_phase_starts();
-    return true;
-}
-
-void SphModel::apply_phase_starts() {
-    if (phases_.empty()) {
+void SphModel::apply_phase_starts(const particles::PhaseSequence& phases) {
+    if (phases.empty() || !solver_) {
         return;
     }
     for (Wall& wall : solver_->walls()) {
         if (wall.removal_phase >= 0) {
-            wall.removal_time = phases_.start(wall.removal_phase);
+            wall.removal_time = phases.start(wall.removal_phase);
         }
         auto* motion = dynamic_cast<RigidMotion*>(wall.driver.get());
         if (motion != nullptr && motion->history_phase >= 0) {
-            motion->start_histories(phases_.start(motion->history_phase));
+            motion->start_histories(phases.start(motion->history_phase));
         }
     }
-    sources_->apply_phase_starts(phases_);
+    sources_->apply_phase_starts(phases);
 }
 
 void SphModel::append_phases(std::vector<io::PhaseRecord>& records) const {
-    phases_.append_records(records);
-}
-
-void SphModel::append_phase_results(std::vector<io::ResultFigure>& results) const {
-    for (const particles::PhaseSequence::Phase& phase : phases_.phases()) {
-        if (phase.end != particles::PhaseSequence::End::settled) {
-            continue;
-        }
-        // The figures of [sph.settle], which a case moved to the phase table keeps.
-        particles::append_settle_results(phase.watch, results);
-        return;
-    }
+    phases_->sequence().append_records(records);
 }
 
 } // namespace grainload::sph

@@ -102,7 +102,7 @@ void SphModelReader::refuse_without_solver(const SphModel& model, const io::Case
         return;
     }
     const io::CaseTable sph = root.table("sph");
-    if (!model.phases_.empty()) {
+    if (!model.phases().empty()) {
         root.fail("phase", "phases act on the SPH solver's walls, sources and sinks: expected "
                            "interactions = true");
     }
@@ -122,7 +122,7 @@ void SphModelReader::refuse_without_solver(const SphModel& model, const io::Case
 void SphModelReader::build(SphModel& model, const io::CaseTable& root) {
     const io::CaseTable sph = root.table("sph");
     const ScenePlaces places = read_scene_places(root);
-    model.phases_ = particles::read_phases(root);
+    model.set_phases(particles::read_phases(root), !sph.has("settle"));
     refuse_without_solver(model, root);
     if (model.interactions_) {
         build_solver(model, sph);
@@ -143,9 +143,7 @@ void SphModelReader::build(SphModel& model, const io::CaseTable& root) {
         sph.warn(warning);
     }
     check_phase_conditions(model, root);
-    if (model.solver_) {
-        model.apply_phase_starts();
-    }
+    model.phases_->apply_starts();
     build_monitors(model, sph);
     model.finish_build();
 }
@@ -155,7 +153,7 @@ void SphModelReader::build_solver(SphModel& model, const io::CaseTable& sph) {
     const SmoothingKernel kernel(options.kernel, options.smoothing_length, model.dimension_);
     const auto bodies = static_cast<int>(model.body_names_.size());
     auto walls = read_rigid_walls(sph, model.particles_, model.dimension_, model.spacing_,
-                                  kernel.support_radius(), bodies, &model.phases_);
+                                  kernel.support_radius(), bodies, &model.phases());
     const auto wall_tables = sph.array_of_tables("wall");
     for (std::size_t k = 0; k < wall_tables.size(); ++k) {
         walls[k].bodies = read_wall_bodies(wall_tables[k], model.body_names_);
@@ -257,12 +255,12 @@ void SphModelReader::build_sources(SphModel& model, const io::CaseTable& sph) {
     }
     model.set_sources(std::make_shared<SourceSet>(
         read_sources(sph, model.body_names_, model.body_material_, density, model.spacing_,
-                     model.dimension_, model.gravity_, &model.phases_)));
+                     model.dimension_, model.gravity_, &model.phases())));
 }
 
 void SphModelReader::check_phase_conditions(const SphModel& model, const io::CaseTable& root) {
     const auto tables = root.array_of_tables("phase");
-    const auto& phases = model.phases_.phases();
+    const auto& phases = model.phases().phases();
     for (std::size_t k = 0; k < phases.size(); ++k) {
         if (phases[k].end == particles::PhaseSequence::End::settled && !model.solver_) {
             tables[k].fail("end", "the settle condition measures the SPH solver's kinetic "

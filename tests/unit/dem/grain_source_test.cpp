@@ -1,6 +1,7 @@
-// The DEM sources: grains appear at their rate, clear of each other and of the walls, until
-// their count; a full box makes them wait, and says so.
+// The DEM sources: grains, spheres or clumps, appear at their rate, clear of each other and of
+// the walls, until their count; a full box makes them wait, and says so.
 
+#include "io/case_error.hpp"
 #include "support/dem_scene.hpp"
 
 #include <gtest/gtest.h>
@@ -14,14 +15,18 @@ using grainload::testing::step_until;
 
 /// Beads of radius 4-5 mm rained at `rate` into a 0.04 m box inside a closed box wall, without
 /// gravity, so that they stay where they appear (velocity 0).
-std::unique_ptr<dem::DemModel> raining(const std::string& rate, int count) {
+/// `clump`: keys that make the beads clumps ("spheres = 3\n").
+std::unique_ptr<dem::DemModel> raining(const std::string& rate, int count,
+                                       const std::string& clump = "",
+                                       const std::string& box = "0.04 0.04 0.04 m") {
     return dem_model("[case]\nend_time = \"1 s\"\ngravity = \"0 0 0 m/s^2\"\n" + glass() +
                      "[dem]\n[dem.contact]\nlaw = \"hertz_mindlin\"\ngamma_n = \"100 1/s\"\n"
                      "[[dem.body]]\nname = \"beads\"\nmaterial = \"glass\"\nradius_min = \"4 "
-                     "mm\"\nradius_max = \"5 mm\"\n"
+                     "mm\"\nradius_max = \"5 mm\"\n" +
+                     clump +
                      "[[dem.source]]\nname = \"feed\"\nbody = \"beads\"\nmin = \"0 0 0 m\"\n"
-                     "max = \"0.04 0.04 0.04 m\"\nrate = \"" +
-                     rate + "\"\ncount = " + std::to_string(count) +
+                     "max = \"" +
+                     box + "\"\nrate = \"" + rate + "\"\ncount = " + std::to_string(count) +
                      "\nstart = \"0.01 s\"\n"
                      "[[dem.wall]]\nname = \"box\"\ntype = \"box\"\nmin = \"0 0 0 m\"\n"
                      "max = \"0.04 0.04 0.04 m\"\nopen_top = false\n");
@@ -68,6 +73,29 @@ TEST(GrainSources, AFullBoxMakesTheGrainsWait) {
     const auto events = model->take_events();
     ASSERT_EQ(events.size(), 1u);
     EXPECT_NE(events[0].find("source feed: its box is full"), std::string::npos) << events[0];
+}
+
+// Clumps of three touching spheres rained in at once, more than the box holds: each grain
+// whole (three spheres, the mass of three spheres of its radius), turned at random (no two of
+// the first grains alike), and every sphere clear of every other, of another clump's and of
+// the box's faces. A box shorter than the longest clump turned any way, 2 x 5 mm x 3 = 30 mm,
+// is refused.
+TEST(GrainSources, ClumpsAppearWholeTurnedAtRandomAndClear) {
+    auto model = raining("1e6 1/s", 40, "spheres = 3\n");
+    step_until(*model, 0.0, 0.02, [](double) {});
+    const dem::GrainSet& grains = model->grains();
+    ASSERT_GT(grains.size(), 3);
+    EXPECT_LT(grains.size(), 40);
+    EXPECT_EQ(model->spheres().size(), 3 * grains.size());
+    EXPECT_GE(smallest_gap(model->spheres()), -1e-9) << "grains may only have settled into contact";
+    for (Index g = 0; g < grains.size(); ++g) {
+        const double r = model->spheres().radius[static_cast<std::size_t>(3 * g)];
+        EXPECT_NEAR(grains.mass[g], 3.0 * dem::sphere_mass(r, 2500.0), 1e-15);
+    }
+    EXPECT_GT(grains.orientation[0].angularDistance(grains.orientation[1]), 1e-6);
+    EXPECT_GT(grains.orientation[1].angularDistance(grains.orientation[2]), 1e-6);
+    EXPECT_THROW(raining("100 1/s", 5, "spheres = 3\n", "0.04 0.04 0.029 m"), io::CaseError);
+    EXPECT_NO_THROW(raining("100 1/s", 5, "spheres = 3\n", "0.04 0.04 0.03 m"));
 }
 
 // What `grainload check` counts: the grains the source makes by the end time (its count, or its

@@ -12,9 +12,10 @@ namespace {
 // is read as the present one: each format changed what the payload holds.
 TEST(CheckpointFormat, EachEarlierFormatIsRefusedNamingIt) {
     const std::string current = frame_checkpoint("payload");
-    EXPECT_EQ(current.substr(0, 8), "GLCKPT05");
+    EXPECT_EQ(current.substr(0, 8), "GLCKPT06");
     for (const auto& [magic, words] :
-         {std::pair<std::string, std::string>{"GLCKPT04", "fourth checkpoint format"},
+         {std::pair<std::string, std::string>{"GLCKPT05", "fifth checkpoint format"},
+          {"GLCKPT04", "fourth checkpoint format"},
           {"GLCKPT03", "third checkpoint format"},
           {"GLCKPT02", "second checkpoint format"}}) {
         std::string old = current;

@@ -1,8 +1,12 @@
+// The run's phases: the sequence's ends and state, and the scene part a particle method holds.
+
 #include "io/case_table.hpp"
 #include "particles/particles_case_reader.hpp"
+#include "particles/phase_part.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
+#include <sstream>
 
 namespace grainload::particles {
 namespace {
@@ -92,6 +96,76 @@ TEST(PhaseSequence, StatedEndPassedByAConditionEndsAtOnceAndStateRestores) {
     EXPECT_EQ(copy.state(), phases.state());
     EXPECT_EQ(copy.start(2), 2.0);
     EXPECT_THROW(copy.set_state({0.0}), std::runtime_error);
+}
+
+/// What a method gives the part and what the part hands back: a scene whose kinetic energy and
+/// discharged mass the test sets, and the starts the part handed over last.
+struct Scene {
+    double kinetic = 0.0;
+    double discharged = 0.0;
+    std::vector<double> starts;
+    int handed = 0;
+
+    PhasePart::Hooks hooks() {
+        return {[this] { return kinetic; }, [this] { return discharged; },
+                [this](const PhaseSequence& phases) {
+                    starts = {phases.start(1), phases.start(2), phases.start(3)};
+                    ++handed;
+                }};
+    }
+};
+
+// The part records the kinetic energy after each step (a tenth of the 10 J peak: 0.5 J at
+// 1.75 s settles), ends the phases only when the method advances it, hands the starts over at
+// each end, logs each end once, and reports the settle figures; a second part restored from its
+// checkpoint holds the same state, hands the starts over at once, and has no events to log.
+TEST(PhasePart, ReadsTheMethodThroughItsHooksAndRestoresItsState) {
+    Scene scene;
+    PhasePart part(read(kFourPhases), scene.hooks(), true);
+    part.apply_starts();
+    EXPECT_EQ(scene.starts[0], 1.5);
+    EXPECT_TRUE(std::isinf(scene.starts[1]));
+    scene.kinetic = 10.0;
+    part.after_step(0.75, 0.25);
+    EXPECT_TRUE(part.advance(1.5));
+    scene.kinetic = 0.5;
+    part.after_step(1.5, 0.25);
+    EXPECT_TRUE(std::isinf(scene.starts[1])) << "ended before advance";
+    EXPECT_TRUE(part.advance(1.75));
+    EXPECT_EQ(scene.starts[1], 1.75);
+    scene.discharged = 1.0;
+    EXPECT_FALSE(part.advance(2.0));
+    std::ostringstream saved;
+    part.write_checkpoint(saved);
+    scene.discharged = 3.0;
+    EXPECT_TRUE(part.advance(2.25));
+    EXPECT_EQ(scene.starts[2], 2.25);
+    std::vector<std::string> events;
+    part.take_events(events);
+    ASSERT_EQ(events.size(), 3u);
+    EXPECT_NE(events[1].find("phase \"settle\" ended at t = 1.75 s"), std::string::npos)
+        << events[1];
+    part.take_events(events);
+    EXPECT_EQ(events.size(), 3u);
+    std::vector<io::ResultFigure> results;
+    part.append_results(results);
+    ASSERT_FALSE(results.empty());
+    EXPECT_EQ(results[0].name, "settle_time");
+    EXPECT_EQ(results[0].value, 1.75);
+
+    Scene restored_scene;
+    PhasePart restored(read(kFourPhases), restored_scene.hooks(), false);
+    std::istringstream in(saved.str());
+    restored.read_checkpoint(in);
+    EXPECT_EQ(restored_scene.handed, 1);
+    EXPECT_EQ(restored_scene.starts[1], 1.75);
+    EXPECT_TRUE(std::isinf(restored_scene.starts[2]));
+    std::vector<std::string> none;
+    restored.take_events(none);
+    EXPECT_TRUE(none.empty());
+    std::vector<io::ResultFigure> no_results;
+    restored.append_results(no_results);
+    EXPECT_TRUE(no_results.empty()) << "a standalone settle watch reports instead";
 }
 
 } // namespace
