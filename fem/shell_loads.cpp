@@ -158,21 +158,68 @@ void ShellAnalysis::add_follower_pressure(double pressure) {
     follower_pressures_.push_back({pressure, active_history_, active_part_});
 }
 
+namespace {
+
+/// The bilinear shape functions h_k of a quadrilateral at (r, s), their derivatives along r and
+/// s, and the covariant base vectors g_r, g_s of its current nodes x there.
+struct QuadPoint {
+    double h[4], hr[4], hs[4];
+    Vec3 gr = Vec3::Zero(), gs = Vec3::Zero();
+};
+
+QuadPoint quad_point(const std::array<Vec3, 4>& x, double r, double s) {
+    constexpr double nr[4] = {-1.0, 1.0, 1.0, -1.0};
+    constexpr double ns[4] = {-1.0, -1.0, 1.0, 1.0};
+    QuadPoint q;
+    for (std::size_t k = 0; k < 4; ++k) {
+        q.h[k] = 0.25 * (1.0 + r * nr[k]) * (1.0 + s * ns[k]);
+        q.hr[k] = 0.25 * nr[k] * (1.0 + s * ns[k]);
+        q.hs[k] = 0.25 * ns[k] * (1.0 + r * nr[k]);
+        q.gr += q.hr[k] * x[k];
+        q.gs += q.hs[k] * x[k];
+    }
+    return q;
+}
+
+Mat3 skew(const Vec3& v) {
+    Mat3 m;
+    m << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+    return m;
+}
+
+/// The load stiffness of a follower pressure p at one Gauss point q of an element with `nodes`,
+///   -d f_i / d x_k = -p h_i (h_k,s [g_r]x - h_k,r [g_s]x),
+/// scattered to the free equations (`equation` per DOF, -1: constrained) of the nodes'
+/// translations.
+void add_follower_stiffness(const QuadPoint& q, double p, const std::array<Index, 4>& nodes,
+                            const std::vector<Index>& equation,
+                            std::vector<Eigen::Triplet<double>>& triplets) {
+    const Mat3 sr = skew(q.gr), ss = skew(q.gs);
+    for (std::size_t i = 0; i < 4; ++i) {
+        for (std::size_t k = 0; k < 4; ++k) {
+            const Mat3 block = -p * q.h[i] * (q.hs[k] * sr - q.hr[k] * ss);
+            for (int a = 0; a < 3; ++a) {
+                const Index row = equation[at(kDofs * nodes[i] + a)];
+                for (int b = 0; b < 3 && row >= 0; ++b) {
+                    const Index col = equation[at(kDofs * nodes[k] + b)];
+                    if (col >= 0) {
+                        triplets.emplace_back(row, col, block(a, b));
+                    }
+                }
+            }
+        }
+    }
+}
+
+} // namespace
+
 void ShellAnalysis::add_follower_loads(Eigen::VectorXd& internal,
                                        std::vector<Eigen::Triplet<double>>* triplets) const {
     // f_i = p sum_gp h_i (g_r x g_s) on the current mid-surface (2 x 2 Gauss points): the
     // pressure follows the deformed normal and area. Assembled into the internal forces with
-    // a minus sign, so that the residual keeps F - Fu; the load stiffness
-    //   -d f_i / d x_k = -p sum_gp h_i (h_k,s [g_r]x - h_k,r [g_s]x)
+    // a minus sign, so that the residual keeps F - Fu; the load stiffness (add_follower_stiffness)
     // is not symmetric (Bathe FEP section 6.3.3; Hibbitt 1979). The rotations do not enter.
-    constexpr double nr[4] = {-1.0, 1.0, 1.0, -1.0};
-    constexpr double ns[4] = {-1.0, -1.0, 1.0, 1.0};
     const double g = 1.0 / std::sqrt(3.0);
-    const auto skew = [](const Vec3& v) {
-        Mat3 m;
-        m << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
-        return m;
-    };
     for (const FollowerPressure& follower : follower_pressures_) {
         const double p =
             histories_[at(follower.history)].scale(assembly_load_factor_) * follower.pressure;
@@ -189,36 +236,13 @@ void ShellAnalysis::add_follower_loads(Eigen::VectorXd& internal,
             }
             for (const double s : {-g, g}) {
                 for (const double r : {-g, g}) {
-                    double h[4], hr[4], hs[4];
-                    Vec3 gr = Vec3::Zero(), gs = Vec3::Zero();
-                    for (std::size_t k = 0; k < 4; ++k) {
-                        h[k] = 0.25 * (1.0 + r * nr[k]) * (1.0 + s * ns[k]);
-                        hr[k] = 0.25 * nr[k] * (1.0 + s * ns[k]);
-                        hs[k] = 0.25 * ns[k] * (1.0 + r * nr[k]);
-                        gr += hr[k] * x[k];
-                        gs += hs[k] * x[k];
-                    }
-                    const Vec3 normal = gr.cross(gs);
+                    const QuadPoint q = quad_point(x, r, s);
+                    const Vec3 normal = q.gr.cross(q.gs);
                     for (std::size_t i = 0; i < 4; ++i) {
-                        internal.segment<3>(kDofs * e.nodes[i]) -= p * h[i] * normal;
+                        internal.segment<3>(kDofs * e.nodes[i]) -= p * q.h[i] * normal;
                     }
-                    if (triplets == nullptr) {
-                        continue;
-                    }
-                    const Mat3 sr = skew(gr), ss = skew(gs);
-                    for (std::size_t i = 0; i < 4; ++i) {
-                        for (std::size_t k = 0; k < 4; ++k) {
-                            const Mat3 block = -p * h[i] * (hs[k] * sr - hr[k] * ss);
-                            for (int a = 0; a < 3; ++a) {
-                                const Index row = equation_[at(kDofs * e.nodes[i] + a)];
-                                for (int b = 0; b < 3 && row >= 0; ++b) {
-                                    const Index col = equation_[at(kDofs * e.nodes[k] + b)];
-                                    if (col >= 0) {
-                                        triplets->emplace_back(row, col, block(a, b));
-                                    }
-                                }
-                            }
-                        }
+                    if (triplets != nullptr) {
+                        add_follower_stiffness(q, p, e.nodes, equation_, *triplets);
                     }
                 }
             }
