@@ -109,107 +109,6 @@ ContactLaw read_contact_law(const io::CaseTable& dem, double gravity) {
     return law;
 }
 
-void read_clump(const io::CaseTable& table, BodySettings& body) {
-    const std::int64_t spheres = table.integer_or(
-        "spheres", static_cast<std::int64_t>(io::default_value(kDemBodyKeys, "spheres")));
-    if (spheres < 1 || spheres > 16) {
-        table.fail("spheres", "expected an integer in [1, 16]");
-    }
-    body.spheres = static_cast<int>(spheres);
-    body.sphere_distance =
-        table.number_or("sphere_distance", io::default_value(kDemBodyKeys, "sphere_distance"));
-    // The clump's mass is its spheres' sum: overlapping spheres would count their lens twice.
-    if (!(body.sphere_distance >= 1.0 && body.sphere_distance <= 10.0)) {
-        table.fail("sphere_distance", "expected a number in [1, 10]: the spheres of a clump "
-                                      "touch or stand apart (overlapping ones would count "
-                                      "their common volume twice)");
-    }
-    body.axis = table.vector_or("axis", dim::kNone, io::default_vector(kDemBodyKeys, "axis"));
-    if (!(body.axis.norm() > 0.0)) {
-        table.fail("axis", "expected a non-zero vector");
-    }
-}
-
-void read_placement(const io::CaseTable& table, BodySettings& body) {
-    if (table.has("centre")) {
-        for (const char* key : {"min", "max", "count"}) {
-            if (table.has(key)) {
-                table.fail(key, "a body with a centre is one grain there: expected no " +
-                                    std::string(key));
-            }
-        }
-        if (body.radius_min != body.radius_max) {
-            table.fail("centre", "a body with a centre is one grain: expected its radius, not "
-                                 "radius_min and radius_max");
-        }
-        body.centre = table.vector("centre", dim::kLength);
-        body.where = table.where("centre");
-        return;
-    }
-    if (!table.has("min") && !table.has("max") && !table.has("count")) {
-        // No grains at the start: a [[dem.source]] must rain them in (checked once the
-        // sources are read).
-        body.count = 0;
-        body.where = table.where("name");
-        return;
-    }
-    body.min = table.vector("min", dim::kLength);
-    body.max = table.vector("max", dim::kLength);
-    body.count = table.integer("count");
-    body.where = table.where("count");
-    if (body.count < 1) {
-        table.fail("count", "expected at least one grain");
-    }
-    // A grain of the largest radius, turned any way: its farthest sphere's surface lies
-    // r (1 + (k - 1) sphere_distance) from its centre.
-    const double extent = body.radius_max * (1.0 + (body.spheres - 1) * body.sphere_distance);
-    for (int a = 0; a < 3; ++a) {
-        if (!(body.max[a] - body.min[a] >= 2.0 * extent)) {
-            table.fail("max", "the box must hold a grain of the largest radius turned any way: "
-                              "expected max - min >= 2 radius_max (1 + (spheres - 1) "
-                              "sphere_distance) on every axis");
-        }
-    }
-}
-
-BodySettings read_body(const io::CaseTable& table, const materials::MaterialLibrary& materials) {
-    BodySettings body;
-    body.name = table.string("name");
-    body.material = materials::read_material_index(materials, table, "material");
-    if (materials[body.material].model() != "linear_elastic") {
-        table.fail("material", "a grain's material is the solid grain's: expected a "
-                               "linear_elastic [[material]], got " +
-                                   std::string(materials[body.material].model()));
-    }
-    if (table.has("radius")) {
-        if (table.has("radius_min") || table.has("radius_max")) {
-            table.fail("radius", "expected either radius or radius_min and radius_max");
-        }
-        body.radius_min = body.radius_max = table.positive_quantity("radius", dim::kLength);
-    } else {
-        body.radius_min = table.positive_quantity("radius_min", dim::kLength);
-        body.radius_max = table.positive_quantity("radius_max", dim::kLength);
-        if (body.radius_max < body.radius_min) {
-            table.fail("radius_max", "expected radius_max >= radius_min");
-        }
-    }
-    read_clump(table, body);
-    read_placement(table, body);
-    body.velocity =
-        table.vector_or("velocity", dim::kVelocity, io::default_vector(kDemBodyKeys, "velocity"));
-    body.angular_velocity = table.vector_or("angular_velocity", dim::kAngularVelocity,
-                                            io::default_vector(kDemBodyKeys, "angular_velocity"));
-    body.rotation =
-        table.boolean_or("rotation", io::default_value(kDemBodyKeys, "rotation") != 0.0);
-    const std::int64_t seed = table.integer_or(
-        "seed", static_cast<std::int64_t>(io::default_value(kDemBodyKeys, "seed")));
-    if (seed < 0) {
-        table.fail("seed", "expected an integer >= 0");
-    }
-    body.seed = static_cast<std::uint64_t>(seed);
-    return body;
-}
-
 PlaneWall::Face read_rectangle(const io::CaseTable& table) {
     PlaneWall::Face face;
     face.shape = PlaneWall::Shape::rectangle;
@@ -322,14 +221,15 @@ SourceSettings read_source(const io::CaseTable& table, const std::vector<BodySet
     source.min = table.vector("min", dim::kLength);
     source.max = table.vector("max", dim::kLength);
     // A clump is drawn turned any way: the box must hold its length along every axis.
-    const double length = 2.0 * body.radius_max * (1.0 + (body.spheres - 1) * body.sphere_distance);
+    const double length = 2.0 * body.radius_max * body.reach();
     if (!((source.max - source.min).array() >= length).all()) {
         table.fail("max", body.spheres == 1
                               ? "the box must hold a grain of the body's largest radius: expected "
                                 "max - min >= 2 radius_max on every axis"
                               : "the box must hold a clump of the body's largest radius turned "
-                                "any way: expected max - min >= its length 2 radius_max (1 + "
-                                "(spheres - 1) sphere_distance) on every axis");
+                                "any way: expected max - min >= 2 radius_max (1 + its farthest "
+                                "sphere centre's distance from its centre, in radii) on every "
+                                "axis");
     }
     source.rate = table.positive_quantity("rate", dim::kFrequency);
     if (table.has("count")) {
@@ -430,7 +330,7 @@ DemSettings read_dem_settings(const io::CaseTable& root,
     const io::CaseTable contact = dem.table("contact");
     settings.damping_where = contact.where(contact.has("gamma_n") ? "gamma_n" : "law");
     for (const io::CaseTable& table : dem.array_of_tables("body")) {
-        BodySettings body = read_body(table, materials);
+        BodySettings body = read_dem_body(table, materials);
         io::refuse_repeated_name(table, settings.bodies, body.name, "body", &BodySettings::name);
         if (settings.contact_forces && body.name == "contacts") {
             table.fail("name", "with contact_forces the frames' contacts block is called "

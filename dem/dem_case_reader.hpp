@@ -2,6 +2,7 @@
 // The [dem] tables of a case: their keys, declared once, read into typed settings.
 
 #include "dem/contact_law.hpp"
+#include "dem/dem_body_reader.hpp"
 #include "dem/plane_wall.hpp"
 #include "io/key_spec.hpp"
 #include "io/types.hpp"
@@ -68,34 +69,6 @@ inline constexpr std::array<io::KeySpec, 13> kDemContactKeys{{
      "the same between a grain and a wall, of the grain's weight"},
 }};
 
-/// The keys of each [[dem.body]].
-inline constexpr std::array<io::KeySpec, 16> kDemBodyKeys{{
-    {"name", "string", "", "names the body in frames and summary.json"},
-    {"material", "string", "",
-     "a `linear_elastic` [[material]]: the solid grain's density, E and nu"},
-    {"radius", "length", "required unless radius_min and radius_max", "every grain's radius"},
-    {"radius_min", "length", "required unless radius",
-     "radii drawn uniformly in [radius_min, radius_max]"},
-    {"radius_max", "length", "required unless radius", "with radius_min"},
-    {"count", "integer >= 1", "required with min and max", "grains placed at random in the box"},
-    {"min", "length vector", "required unless centre or a source",
-     "the lower corner of the box they fill"},
-    {"max", "length vector", "required unless centre or a source", "the upper corner"},
-    {"centre", "length vector", "none", "instead of a box: one grain with its centre here"},
-    {"spheres", "integer in [1, 16]", "1",
-     "spheres per grain: 2 or more make a rigid clump of equal spheres on one axis", 1.0},
-    {"sphere_distance", "number >= 1", "1",
-     "a clump's centre-to-centre distance of neighbouring spheres over their diameter (1: "
-     "touching)",
-     1.0},
-    {"axis", "vector", "1 0 0", "a clump placed at a centre: the direction of its axis"},
-    {"velocity", "velocity vector", "0 m/s", "every grain's initial velocity"},
-    {"angular_velocity", "angular velocity vector", "0 rad/s",
-     "every grain's initial angular velocity"},
-    {"rotation", "boolean", "true", "false: the grains do not turn (no rotational freedom)", 1.0},
-    {"seed", "integer >= 0", "1", "the random placement's seed: equal seeds, equal packings", 1.0},
-}};
-
 /// The keys of each [[dem.wall]].
 inline constexpr std::array<io::KeySpec, 14> kDemWallKeys{{
     {"name", "string", "", "names the wall in wall_forces.csv and summary.json"},
@@ -131,28 +104,6 @@ inline constexpr std::array<io::KeySpec, 10> kDemSourceKeys{{
     {"velocity", "velocity vector", "0 m/s", "each grain's velocity as it appears"},
     {"seed", "integer >= 0", "1", "the draws' seed: equal seeds, equal arrivals", 1.0},
 }};
-
-/// One [[dem.body]] as read.
-struct BodySettings {
-    std::string name;
-    int material = -1;
-    double radius_min = 0.0;
-    double radius_max = 0.0;
-    Index count = 1;
-    Vec3 min = Vec3::Zero();
-    Vec3 max = Vec3::Zero();
-    std::optional<Vec3> centre;
-    int spheres = 1;
-    double sphere_distance = 1.0;
-    Vec3 axis = Vec3::UnitX();
-    Vec3 velocity = Vec3::Zero();
-    Vec3 angular_velocity = Vec3::Zero();
-    bool rotation = true;
-    std::uint64_t seed = 1;
-    /// Where the case gives the count (or the centre): a packing that cannot hold the count is
-    /// refused there.
-    std::string where;
-};
 
 /// One [[dem.source]] as read: grains of `body` appear at `rate` per second in the box
 /// [min, max] from `start` to `end`, `count` in all.

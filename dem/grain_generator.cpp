@@ -2,6 +2,7 @@
 
 #include "io/case_error.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -68,6 +69,39 @@ Vec3 draw_centre(const BodySettings& body, const GrainShape& shape,
     return centre;
 }
 
+/// A clump of equal spheres at `centres` (in radii): its inertia tensor about the centre of
+/// mass, sum of (2/5) m_s r^2 1 + m_s (|d|^2 1 - d d^T) over the spheres at d from it (the
+/// parallel axis theorem; touching spheres share no volume), diagonalised: the principal
+/// moments are the grain's, and its own frame is the principal one (right-handed), in which
+/// the sphere offsets are stated.
+GrainShape clump_shape(const std::vector<Vec3>& centres, double radius, double density) {
+    GrainShape shape;
+    shape.radius = radius;
+    const double one = sphere_mass(radius, density);
+    const auto k = static_cast<double>(centres.size());
+    shape.mass = k * one;
+    Vec3 centroid = Vec3::Zero();
+    for (const Vec3& c : centres) {
+        centroid += c;
+    }
+    centroid /= k;
+    Mat3 tensor = k * 0.4 * one * radius * radius * Mat3::Identity();
+    for (const Vec3& c : centres) {
+        const Vec3 d = radius * (c - centroid);
+        tensor += one * (d.squaredNorm() * Mat3::Identity() - d * d.transpose());
+    }
+    const Eigen::SelfAdjointEigenSolver<Mat3> principal(tensor);
+    Mat3 axes = principal.eigenvectors();
+    if (axes.determinant() < 0.0) {
+        axes.col(2) = -axes.col(2);
+    }
+    shape.inertia = principal.eigenvalues();
+    for (const Vec3& c : centres) {
+        shape.offsets.push_back(axes.transpose() * (radius * (c - centroid)));
+    }
+    return shape;
+}
+
 } // namespace
 
 double uniform(std::mt19937_64& generator) {
@@ -111,6 +145,9 @@ Index add_grain(const BodySettings& body, int body_id, const GrainShape& shape, 
 }
 
 GrainShape grain_shape(const BodySettings& body, double radius, double density) {
+    if (!body.sphere_centres.empty()) {
+        return clump_shape(body.sphere_centres, radius, density);
+    }
     GrainShape shape;
     shape.radius = radius;
     const double one = sphere_mass(radius, density);

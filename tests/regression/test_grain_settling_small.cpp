@@ -34,6 +34,22 @@ TEST(GrainSettlingSmall, AtRestTheWallsCarryTheGrainsWeight) {
     expect_matches_gold(run.out, kCase);
 }
 
+// The same box filled with 100 clumps of any shape (an L of three touching spheres, its
+// inertia from its tensor), placed turned at random: at rest the walls carry their weight, as
+// for the beads (measured 1.0e-4 above it, kinetic energy 1.7e-10 J; bound 2e-3).
+TEST(GrainSettlingSmall, ClumpsOfAnyShapeComeToRestOnTheWalls) {
+    const CaseRun run =
+        run_case_file(kCase, "grain_settling_l_clumps",
+                      "--set 'dem.body[0].sphere_centres=[0, 0, 0, 2, 0, 0, 0, 2, 0]' --set "
+                      "'dem.body[0].count=100' --threads 1");
+    ASSERT_EQ(run.cli.exit_code, 0) << run.cli.output;
+    const std::string summary = read_file(run.out + "/summary.json");
+    EXPECT_EQ(result_value(summary, "grains"), 100.0);
+    const FigureReference load = figure_reference(summary, "walls_load_along_gravity");
+    EXPECT_LT(load.relative_error, 2e-3) << load.value << " N against " << load.reference;
+    EXPECT_LT(result_value(summary, "kinetic_energy"), 1e-6);
+}
+
 // SIGKILL at random moments after the first checkpoint and a restart: frames, wall_forces.csv,
 // log and summary equal the uninterrupted run's (grains, their springs and the neighbour list
 // restored bit for bit).
