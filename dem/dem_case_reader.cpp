@@ -203,10 +203,8 @@ void read_window(const io::CaseTable& table, const particles::PhaseSequence& pha
         source.end =
             table.positive_quantity_or("end", dim::kTime, std::numeric_limits<double>::infinity());
     }
-    const bool times = source.start_phase < 0 && source.end_phase < 0;
-    const bool both_phases = source.start_phase >= 0 && source.end_phase >= 0;
-    if ((times && !(source.end > source.start)) ||
-        (both_phases && !(source.end_phase > source.start_phase))) {
+    if (!particles::window_in_order(source.start, source.end, source.start_phase,
+                                    source.end_phase)) {
         table.fail("end", "expected an end after the start");
     }
 }

@@ -53,21 +53,17 @@ void GrainSources::find_near(const SourceSettings& source) {
     }
 }
 
-bool GrainSources::free(const Vec3& centre, double radius,
-                        const std::vector<particles::Arrival>& placed) const {
+bool GrainSources::free(const Vec3& centre, double radius) const {
     for (const Index i : near_) {
         const double reach = radius + spheres_.radius[i];
         if ((spheres_.position[i] - centre).squaredNorm() < reach * reach) {
             return false;
         }
     }
-    for (const particles::Arrival& other : placed) {
-        const double reach = radius + other.radius;
-        for (const Vec3& offset : shape_of(other).offsets) {
-            if ((other.position + other.orientation * offset - centre).squaredNorm() <
-                reach * reach) {
-                return false;
-            }
+    for (const auto& [other, other_radius] : placed_) {
+        const double reach = radius + other_radius;
+        if ((other - centre).squaredNorm() < reach * reach) {
+            return false;
         }
     }
     return std::none_of(walls_.begin(), walls_.end(), [&](const PlaneWall& wall) {
@@ -75,13 +71,15 @@ bool GrainSources::free(const Vec3& centre, double radius,
     });
 }
 
-GrainShape GrainSources::shape_of(const particles::Arrival& arrival) const {
+void GrainSources::add_placed(const particles::Arrival& arrival) {
     const auto body = static_cast<std::size_t>(arrival.body);
-    return grain_shape(bodies_[body], arrival.radius, body_density_[body]);
+    for (const Vec3& offset :
+         grain_shape(bodies_[body], arrival.radius, body_density_[body]).offsets) {
+        placed_.emplace_back(arrival.position + arrival.orientation * offset, arrival.radius);
+    }
 }
 
-std::optional<particles::Arrival>
-GrainSources::draw(Source& source, const std::vector<particles::Arrival>& placed) {
+std::optional<particles::Arrival> GrainSources::draw(Source& source) {
     const SourceSettings& s = source.settings;
     const BodySettings& body = bodies_[static_cast<std::size_t>(s.body)];
     const double r = draw_radius(body, source.generator);
@@ -98,9 +96,8 @@ GrainSources::draw(Source& source, const std::vector<particles::Arrival>& placed
             centre[a] = s.min[a] + reach[a] +
                         (s.max[a] - s.min[a] - 2.0 * reach[a]) * uniform(source.generator);
         }
-        if (std::all_of(shape.offsets.begin(), shape.offsets.end(), [&](const Vec3& offset) {
-                return free(centre + turned * offset, r, placed);
-            })) {
+        if (std::all_of(shape.offsets.begin(), shape.offsets.end(),
+                        [&](const Vec3& offset) { return free(centre + turned * offset, r); })) {
             particles::Arrival arrival;
             arrival.position = centre;
             arrival.velocity = s.velocity;
@@ -117,6 +114,10 @@ GrainSources::draw(Source& source, const std::vector<particles::Arrival>& placed
 
 void GrainSources::collect_arrivals(const particles::ParticleView& /*particles*/, double t,
                                     double dt, std::vector<particles::Arrival>& arrivals) {
+    placed_.clear();
+    for (const particles::Arrival& arrival : arrivals) {
+        add_placed(arrival);
+    }
     for (Source& source : sources_) {
         const SourceSettings& s = source.settings;
         // The share of the step inside [start, end].
@@ -128,7 +129,7 @@ void GrainSources::collect_arrivals(const particles::ParticleView& /*particles*/
             find_near(s);
         }
         while (source.due >= 1.0 && (!s.count || source.created < *s.count)) {
-            const auto arrival = draw(source, arrivals);
+            const auto arrival = draw(source);
             if (!arrival) {
                 if (!source.waited) {
                     std::ostringstream text;
@@ -140,6 +141,7 @@ void GrainSources::collect_arrivals(const particles::ParticleView& /*particles*/
                 break;
             }
             arrivals.push_back(*arrival);
+            add_placed(*arrival);
             source.due -= 1.0;
             ++source.created;
             source.created_mass += arrival->mass;

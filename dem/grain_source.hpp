@@ -2,7 +2,6 @@
 // Grains rained into a DEM scene through a box: a scene part, as the SPH sources are.
 
 #include "dem/dem_case_reader.hpp"
-#include "dem/grain_generator.hpp"
 #include "dem/plane_wall.hpp"
 #include "dem/sphere_set.hpp"
 #include "particles/phase_sequence.hpp"
@@ -10,6 +9,7 @@
 
 #include <optional>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace grainload::dem {
@@ -54,16 +54,14 @@ class GrainSources : public particles::ScenePart {
         bool waited = false;
     };
     /// One grain of source s at a free place, or none after the draws ran out.
-    std::optional<particles::Arrival> draw(Source& source,
-                                           const std::vector<particles::Arrival>& placed);
+    std::optional<particles::Arrival> draw(Source& source);
     /// The spheres of the scene a grain in the box of `source` could touch, into near_.
     void find_near(const SourceSettings& source);
     /// Whether a sphere at `centre` of `radius` touches no sphere near the box, no sphere of a
-    /// grain placed this step and no wall.
-    bool free(const Vec3& centre, double radius,
-              const std::vector<particles::Arrival>& placed) const;
-    /// The spheres of a grain placed this step.
-    GrainShape shape_of(const particles::Arrival& arrival) const;
+    /// grain placed this step (placed_) and no wall.
+    bool free(const Vec3& centre, double radius) const;
+    /// The spheres of `arrival` (turned by its orientation) join placed_.
+    void add_placed(const particles::Arrival& arrival);
 
     std::vector<Source> sources_;
     const std::vector<BodySettings>& bodies_;
@@ -72,6 +70,9 @@ class GrainSources : public particles::ScenePart {
     const std::vector<PlaneWall>& walls_;
     std::vector<std::string> events_;
     std::vector<Index> near_;
+    /// The centres and radii of the spheres of the grains placed in this step, each computed
+    /// once as its grain is placed.
+    std::vector<std::pair<Vec3, double>> placed_;
 };
 
 } // namespace grainload::dem

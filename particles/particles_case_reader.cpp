@@ -232,4 +232,11 @@ std::optional<int> read_phase_reference(const io::CaseTable& table, std::string_
                         *text + "\"");
 }
 
+bool window_in_order(double start, double end, int start_phase, int end_phase) {
+    if (start_phase < 0 && end_phase < 0) {
+        return end > start;
+    }
+    return start_phase < 0 || end_phase < 0 || end_phase > start_phase;
+}
+
 } // namespace grainload::particles

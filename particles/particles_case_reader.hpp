@@ -88,4 +88,9 @@ PhaseSequence read_phases(const io::CaseTable& root);
 std::optional<int> read_phase_reference(const io::CaseTable& table, std::string_view key,
                                         const PhaseSequence* phases);
 
+/// Whether a window's end (a source's) follows its start where the case fixes both: two times,
+/// or two phases (which begin in the order of the table); a time against a phase (index -1:
+/// none) is known only in the run.
+bool window_in_order(double start, double end, int start_phase, int end_phase);
+
 } // namespace grainload::particles

@@ -1,6 +1,7 @@
 // The DEM sources: grains, spheres or clumps, appear at their rate, clear of each other and of
 // the walls, until their count; a full box makes them wait, and says so.
 
+#include "dem/grain_generator.hpp"
 #include "io/case_error.hpp"
 #include "support/dem_scene.hpp"
 
