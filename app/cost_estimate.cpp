@@ -203,11 +203,14 @@ double add_sph_counts(const sph::SphModel& sph, const Discharge& discharge, doub
 void add_dem(const dem::DemModel& dem, double steps, double end, const Calibration& calibration,
              CostEstimate& e) {
     e.dem_grains += dem.most_grains(end);
-    const double grain_steps = dem.grain_steps(steps, end);
-    e.dem_grain_steps += grain_steps;
-    // As the SPH step: the per-grain work shared by the threads, the fixed part whole.
+    const double sphere_steps = dem.sphere_steps(steps, end);
+    e.dem_sphere_steps += sphere_steps;
+    // As the SPH step: the per-sphere work shared by the threads, the fixed part whole. The
+    // calibration's grains are single spheres: its cost per grain-step is one sphere's, of one
+    // force evaluation (the predictor-corrector's passes counted at their most).
     e.dem_seconds +=
-        grain_steps * calibration.dem_seconds_per_grain_step / speedup_of(e.threads, calibration) +
+        dem.evaluations_per_step() * (sphere_steps * calibration.dem_seconds_per_grain_step /
+                                      speedup_of(e.threads, calibration)) +
         steps * calibration.dem_seconds_per_step;
 }
 
@@ -429,8 +432,8 @@ std::string describe_cost(const CostEstimate& e) {
              static_cast<long long>(e.sph_particles), static_cast<long long>(e.wall_particles),
              static_cast<long long>(e.shell_nodes), static_cast<long long>(e.shell_dofs));
     if (e.dem_grains > 0) {
-        add_line(out, "      DEM: %lld grains, %.3g grain-steps, %s\n",
-                 static_cast<long long>(e.dem_grains), e.dem_grain_steps,
+        add_line(out, "      DEM: %lld grains, %.3g sphere-steps, %s\n",
+                 static_cast<long long>(e.dem_grains), e.dem_sphere_steps,
                  duration(e.dem_seconds).c_str());
     }
     describe_sources_and_sinks(out, e);

@@ -22,10 +22,10 @@ struct CostEstimate {
     Index sph_particles = 0;  ///< bodies and walls
     Index wall_particles = 0; ///< of which walls
     Index shell_nodes = 0;
-    /// DEM grains, their grain-steps and the steps' time (the calibration's fixed cost per step
-    /// and cost per grain-step).
+    /// DEM grains, their spheres' steps (a clump of n spheres counts n) and the steps' time (the
+    /// calibration's fixed cost per step and cost per grain-step of its single spheres).
     Index dem_grains = 0;
-    double dem_grain_steps = 0.0;
+    double dem_sphere_steps = 0.0;
     double dem_seconds = 0.0;
     Index shell_dofs = 0;   ///< free DOFs
     double time_step = 0.0; ///< the time loop's step at t = 0 (CFL, window or fixed)

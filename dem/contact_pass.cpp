@@ -290,6 +290,12 @@ int gather_walls(Pass& p, const std::vector<PlaneWall>& walls, Index i, WallShar
             if (wall.follows() && state.force != Vec3::Zero()) {
                 p.x.vertex_shares[at].push_back(vertex_share(wall, w, touch, point, -state.force));
             }
+            if (w < p.x.mapped_walls.size() && p.x.mapped_walls[w] != 0 &&
+                state.force != Vec3::Zero()) {
+                p.x.mapped_loads[at].push_back(
+                    {static_cast<std::uint32_t>(w),
+                     {s.position[i] - arm * state.normal, state.normal, -state.force}});
+            }
             p.x.energy[at] += state.elastic_energy;
             if (p.x.record && (state.overlap > 0.0 || state.force != Vec3::Zero())) {
                 p.x.records[at].push_back({s.position[i], s.position[i] - arm * state.normal,
@@ -365,6 +371,7 @@ bool size_scratch(GrainSet& g, SphereSet& s, std::vector<PlaneWall>& walls,
     const bool following =
         std::any_of(walls.begin(), walls.end(), [](const PlaneWall& w) { return w.follows(); });
     scratch.vertex_shares.resize(following ? count : 0);
+    scratch.mapped_loads.resize(scratch.mapped_walls.empty() ? 0 : count);
     index_mesh_walls(g, s, walls, scene.law);
     scratch.on_walls.assign(static_cast<std::size_t>(g.size()) * walls.size(), WallShare{});
     s.first_of_grains(g.size(), scratch.first);
@@ -388,6 +395,9 @@ void clear_sphere_sums(Pass& p) {
         }
         if (p.x.record) {
             p.x.records[i].clear();
+        }
+        if (!p.x.mapped_loads.empty()) {
+            p.x.mapped_loads[i].clear();
         }
     }
 }

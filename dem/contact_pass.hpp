@@ -6,6 +6,7 @@
 #include "dem/plane_wall.hpp"
 #include "dem/sphere_set.hpp"
 #include "particles/neighbour_list.hpp"
+#include "particles/wall_map.hpp"
 
 #include <span>
 #include <vector>
@@ -72,6 +73,13 @@ struct VertexShare {
     Vec3 moment = Vec3::Zero();
 };
 
+/// A contact's load on a wall a map reads ([[dem.wall_map]]): the wall and the load at the
+/// contact point (the force on the wall, the normal from the wall into the material).
+struct MappedLoad {
+    std::uint32_t wall = 0;
+    particles::WallLoad load;
+};
+
 /// The pass's per-sphere buffers, kept from one evaluation to the next so that a step
 /// allocates nothing once the scene's size has settled.
 struct ContactScratch {
@@ -87,7 +95,10 @@ struct ContactScratch {
     std::vector<std::vector<Spring>> kept; ///< the springs the step leaves, becoming the set's
     std::vector<WallShare> on_walls;       ///< each grain's load on each wall
     std::vector<std::vector<VertexShare>> vertex_shares; ///< each sphere's, with following walls
-    std::vector<Index> first;                            ///< SphereSet::first_of_grains
+    /// Which walls a map reads (by wall; empty: none), and each sphere's loads on them.
+    std::vector<char> mapped_walls;
+    std::vector<std::vector<MappedLoad>> mapped_loads;
+    std::vector<Index> first; ///< SphereSet::first_of_grains
     /// Per neighbour entry: whether the pair acts (set in the row of its lower id) and its
     /// result there; for each entry, the position of the same pair in the partner's row.
     std::vector<char> active;

@@ -8,6 +8,7 @@
 #include "materials/material_case_reader.hpp"
 #include "materials/material_library.hpp"
 #include "particles/particles_case_reader.hpp"
+#include "particles/wall_map_reader.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -280,6 +281,27 @@ void check_phase_ends(const io::CaseTable& root, const DemSettings& settings) {
     }
 }
 
+/// [dem] integrator and the predictor-corrector's passes and tolerance.
+void read_integrator(const io::CaseTable& dem, DemSettings& settings) {
+    settings.integrator =
+        dem.choice_or("integrator", {"velocity_verlet", "predictor_corrector"},
+                      io::default_text(kDemKeys, "integrator")) == "predictor_corrector"
+            ? Integrator::predictor_corrector
+            : Integrator::velocity_verlet;
+    const std::int64_t passes =
+        dem.integer_or("corrector_passes",
+                       static_cast<std::int64_t>(io::default_value(kDemKeys, "corrector_passes")));
+    if (passes < 1 || passes > 100) {
+        dem.fail("corrector_passes", "expected an integer in [1, 100]");
+    }
+    settings.corrector_passes = static_cast<int>(passes);
+    settings.corrector_tolerance =
+        dem.number_or("corrector_tolerance", io::default_value(kDemKeys, "corrector_tolerance"));
+    if (!(settings.corrector_tolerance > 0.0)) {
+        dem.fail("corrector_tolerance", "expected a number > 0");
+    }
+}
+
 } // namespace
 
 /// The sinks of [[dem.sink]], each body's grain size the mean diameter of its radii.
@@ -317,6 +339,7 @@ DemSettings read_dem_settings(const io::CaseTable& root,
     if (!(settings.steps_per_contact >= 10.0 && settings.steps_per_contact <= 1e4)) {
         dem.fail("steps_per_contact", "expected a number in [10, 10000]");
     }
+    read_integrator(dem, settings);
     settings.impact_velocity = dem.positive_quantity_or(
         "impact_velocity", dim::kVelocity, io::default_value(kDemKeys, "impact_velocity"));
     settings.contact_forces =
@@ -345,6 +368,11 @@ DemSettings read_dem_settings(const io::CaseTable& root,
         settings.walls.push_back(std::move(wall));
     }
     read_sources(dem, settings);
+    std::vector<std::string> wall_names;
+    for (const PlaneWall& wall : settings.walls) {
+        wall_names.push_back(wall.name);
+    }
+    settings.wall_maps = particles::read_wall_maps(dem, wall_names, 3);
     settings.sinks = read_sinks(dem, settings, materials, scene);
     check_phase_ends(root, settings);
     return settings;

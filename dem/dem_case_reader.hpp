@@ -8,6 +8,7 @@
 #include "io/types.hpp"
 #include "particles/phase_sequence.hpp"
 #include "particles/sink.hpp"
+#include "particles/wall_map.hpp"
 
 #include <array>
 #include <cstdint>
@@ -28,7 +29,7 @@ class MaterialLibrary;
 namespace grainload::dem {
 
 /// The keys of [dem] (docs/user-guide/dem.md).
-inline constexpr std::array<io::KeySpec, 5> kDemKeys{{
+inline constexpr std::array<io::KeySpec, 8> kDemKeys{{
     {"time_step", "time", "the contact time / steps_per_contact",
      "a fixed step instead of the one from the contact time"},
     {"steps_per_contact", "number in [10, 10000]", "100",
@@ -41,6 +42,15 @@ inline constexpr std::array<io::KeySpec, 5> kDemKeys{{
      "the neighbour list's Verlet skin, rebuilt when a grain has moved half of it"},
     {"contact_forces", "boolean", "false",
      "frames carry a `contacts` block: a line per contact with its force (force chains)"},
+    {"integrator", "`velocity_verlet` or `predictor_corrector`", "velocity_verlet",
+     "predictor_corrector: Lazarevic, Dvornik & Fresl's constant-acceleration predictor and "
+     "linear-acceleration corrector"},
+    {"corrector_passes", "integer in [1, 100]", "1",
+     "predictor_corrector: the most corrector passes a step makes (1: the explicit form)", 1.0},
+    {"corrector_tolerance", "number > 0", "0.1",
+     "predictor_corrector: a step stops correcting when no grain's acceleration changed by more "
+     "than this fraction of g in its last pass",
+     0.1},
 }};
 
 /// The keys of [dem.contact].
@@ -123,9 +133,15 @@ struct SourceSettings {
     std::uint64_t seed = 1;
 };
 
+/// How DemModel integrates the grains' motion ([dem] integrator).
+enum class Integrator { velocity_verlet, predictor_corrector };
+
 /// The [dem] tables as read: what DemModel is built from.
 struct DemSettings {
     std::optional<double> time_step;
+    Integrator integrator = Integrator::velocity_verlet;
+    int corrector_passes = 0;
+    double corrector_tolerance = 0.0; ///< a fraction of |g|
     double steps_per_contact = 0.0;
     double impact_velocity = 0.0;
     std::optional<double> skin;
@@ -134,6 +150,8 @@ struct DemSettings {
     std::vector<BodySettings> bodies;
     std::vector<PlaneWall> walls;
     std::vector<SourceSettings> sources;
+    /// [[dem.wall_map]]: maps of the walls' pressure and friction (walls by index of `walls`).
+    std::vector<particles::WallMapSet::Map> wall_maps;
     /// [[dem.sink]]: the regions grains leave the scene through.
     std::shared_ptr<particles::SinkSet> sinks;
     /// [[phase]]: the run's phases, read before the walls and sources that may name them.

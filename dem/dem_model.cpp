@@ -1,6 +1,7 @@
 #include "dem/dem_model.hpp"
 
 #include "dem/grain_generator.hpp"
+#include "dem/grain_motion.hpp"
 #include "io/case_error.hpp"
 #include "materials/material_library.hpp"
 #include "particles/compact.hpp"
@@ -96,6 +97,7 @@ DemModel::DemModel(DemSettings settings, const io::SceneSettings& scene,
                                         [this] { return sinks_->discharged(); },
                                         [this] { return sources_->created_mass(); }}));
     }
+    add_wall_maps();
     add_phases();
     evaluate(0.0);
     start_energy_ = energy().total();
@@ -188,12 +190,13 @@ Index DemModel::most_grains(double end_time) const {
     return static_cast<Index>(grains);
 }
 
-double DemModel::grain_steps(double steps, double end_time) const {
-    double sum = static_cast<double>(grains_.size()) * steps;
+double DemModel::sphere_steps(double steps, double end_time) const {
+    double sum = static_cast<double>(spheres_.size()) * steps;
     for (const SourceSettings& source : settings_.sources) {
         const double made = made_by(source, end_time);
         const double mean_arrival = source.start + 0.5 * made / source.rate;
-        sum += made * steps * std::max(end_time - mean_arrival, 0.0) / end_time;
+        const double spheres = settings_.bodies[static_cast<std::size_t>(source.body)].spheres;
+        sum += spheres * made * steps * std::max(end_time - mean_arrival, 0.0) / end_time;
     }
     return sum;
 }
@@ -224,46 +227,17 @@ void DemModel::evaluate(double time) {
                           {settings_.law, body_pairs_, body_walls_, gravity_}, step_, scratch_);
 }
 
-namespace {
-
-/// omega = I_world^-1 L for a grain of principal moments `moments` turned by `turned`.
-Vec3 spin_of(const Eigen::Quaterniond& turned, const Vec3& moments, const Vec3& momentum) {
-    const Vec3 own = turned.conjugate() * momentum;
-    return turned * Vec3(own.cwiseQuotient(moments));
-}
-
-/// `turned` rotated by the angle |turn| about turn / |turn|: the quaternion (cos(a/2),
-/// sin(a/2) turn/|turn|). A step's turn is small (omega dt ~ 1e-3 rad): below 1e-3 rad the
-/// series cos(a/2) = 1 - a^2/8 + a^4/384 and sin(a/2)/a = 1/2 - a^2/48 + a^4/3840 are exact to
-/// the last bit (the next terms are below 1e-19), and cost no sine.
-Eigen::Quaterniond rotated(const Eigen::Quaterniond& turned, const Vec3& turn) {
-    const double squared = turn.squaredNorm();
-    if (!(squared > 0.0)) {
-        return turned;
-    }
-    double cosine = 0.0;
-    double sine_over_angle = 0.0;
-    if (squared < 1e-6) {
-        cosine = 1.0 - squared / 8.0 + squared * squared / 384.0;
-        sine_over_angle = 0.5 - squared / 48.0 + squared * squared / 3840.0;
-    } else {
-        const double angle = std::sqrt(squared);
-        cosine = std::cos(0.5 * angle);
-        sine_over_angle = std::sin(0.5 * angle) / angle;
-    }
-    const Vec3 axis = sine_over_angle * turn;
-    return (Eigen::Quaterniond(cosine, axis.x(), axis.y(), axis.z()) * turned).normalized();
-}
-
-/// L = I_world omega.
-Vec3 momentum_of(const Eigen::Quaterniond& turned, const Vec3& moments, const Vec3& spin) {
-    const Vec3 own = turned.conjugate() * spin;
-    return turned * Vec3(own.cwiseProduct(moments));
-}
-
-} // namespace
-
 void DemModel::advance(double t, double dt) {
+    if (settings_.integrator == Integrator::predictor_corrector) {
+        predictor_corrector_step(t, dt);
+    } else {
+        verlet_step(t, dt);
+    }
+    parts_.after_step(t, dt);
+    exchange(t, dt);
+}
+
+void DemModel::verlet_step(double t, double dt) {
     GrainSet& g = grains_;
     const Index n = g.size();
     const double half = 0.5 * dt;
@@ -306,8 +280,31 @@ void DemModel::advance(double t, double dt) {
                 spin_of(g.orientation[i], g.inertia[i], momentum_[i] + half * g.torque[i]);
         }
     }
-    parts_.after_step(t, dt);
-    exchange(t, dt);
+}
+
+void DemModel::add_wall_maps() {
+    if (settings_.wall_maps.empty()) {
+        return;
+    }
+    scratch_.mapped_walls.assign(walls_.size(), 0);
+    for (const particles::WallMapSet::Map& map : settings_.wall_maps) {
+        for (const int w : map.walls) {
+            scratch_.mapped_walls[static_cast<std::size_t>(w)] = 1;
+        }
+    }
+    // Each contact's force on the wall at its point, sphere by sphere in order: the last
+    // evaluation's, the forces the step ended with.
+    auto loads = [this](int wall, std::vector<particles::WallLoad>& out) {
+        for (const std::vector<MappedLoad>& sphere : scratch_.mapped_loads) {
+            for (const MappedLoad& mapped : sphere) {
+                if (mapped.wall == static_cast<std::uint32_t>(wall)) {
+                    out.push_back(mapped.load);
+                }
+            }
+        }
+    };
+    parts_.add(particles::wall_map_part("dem.wall_map", particles::WallMapSet(settings_.wall_maps),
+                                        std::move(loads)));
 }
 
 void DemModel::add_phases() {

@@ -33,6 +33,14 @@ struct DemEnergy {
     double total() const { return translational + rotational + elastic + gravity; }
 };
 
+/// How a move over a step weights the accelerations at its two ends: x(t + dt) = x + dt v +
+/// dt^2 (position[0] a(t) + position[1] a(t + dt)), v(t + dt) = v + dt (velocity[0] a(t) +
+/// velocity[1] a(t + dt)); a grain's angular momentum moves with its torque as v with m a.
+struct MotionWeights {
+    double position[2];
+    double velocity[2];
+};
+
 /// A DEM scene: the grains of the [[dem.body]] tables (spheres, or clumps of spheres), the
 /// contact law of [dem.contact], the walls of [[dem.wall]]. Integrates translation and
 /// rotation by velocity Verlet (Verlet 1967; Allen & Tildesley 1987): half a kick with the
@@ -41,7 +49,8 @@ struct DemEnergy {
 /// inertia is isotropic, so its angular velocity follows the torque with no gyroscopic term; a
 /// clump's angular momentum L takes the kicks and omega = R I^-1 R^T L follows from its
 /// principal moments as it is turned (Euler's equations in full). The orientation turns by
-/// omega dt as a quaternion. After
+/// omega dt as a quaternion. With [dem] integrator = "predictor_corrector" the step is the
+/// predictor-corrector of Lazarevic, Dvornik & Fresl (dem/predictor_corrector.cpp). After
 /// each step the walls due leave and the grains in a sink are removed (the scene parts of
 /// particles/: sinks and the mass audit).
 class DemModel final : public io::Stepper, public io::Reporter {
@@ -58,9 +67,17 @@ class DemModel final : public io::Stepper, public io::Reporter {
     /// The grains a run to `end_time` holds at most: those at the start and all its sources
     /// make by then (sinks not counted).
     Index most_grains(double end_time) const;
-    /// Grains times steps over a run of `steps` steps to `end_time`: a source's grains counted
-    /// from their mean arrival.
-    double grain_steps(double steps, double end_time) const;
+    /// Spheres times steps over a run of `steps` steps to `end_time` (a clump of n spheres
+    /// counts n: the neighbour search and the contact pass go sphere by sphere): a source's
+    /// grains counted from their mean arrival.
+    double sphere_steps(double steps, double end_time) const;
+    /// Force evaluations a step makes at most: 1 (velocity Verlet), 1 + corrector_passes (the
+    /// predictor-corrector).
+    int evaluations_per_step() const {
+        return settings_.integrator == Integrator::predictor_corrector
+                   ? 1 + settings_.corrector_passes
+                   : 1;
+    }
     std::optional<std::string> diagnose() const override;
     void write_checkpoint(std::ostream& out) const override;
     void read_checkpoint(std::istream& in) override;
@@ -96,6 +113,15 @@ class DemModel final : public io::Stepper, public io::Reporter {
     bool over_damped() const;
     /// The forces at the grains' positions and the walls' places at `time`.
     void evaluate(double time);
+    /// A step [t, t + dt] by velocity Verlet (the class's comment).
+    void verlet_step(double t, double dt);
+    /// A step [t, t + dt] by the predictor-corrector of Lazarevic, Dvornik & Fresl (dem/
+    /// predictor_corrector.cpp).
+    void predictor_corrector_step(double t, double dt);
+    /// The grains moved from the step's start `start_` over `dt` with the accelerations
+    /// a(t) (of start_) and a(t + dt) (of the grains' forces and torques now) weighted as
+    /// `weights` gives them.
+    void move_from_start(double dt, const MotionWeights& weights);
     /// After the step [t, t + dt]: the phases whose end it reached end, walls whose remove_at
     /// it reached leave, grains that reached a sink leave (a phase that ends on the mass they
     /// took ends then, and its walls follow at once), and the sources' grains enter.
@@ -107,6 +133,9 @@ class DemModel final : public io::Stepper, public io::Reporter {
     void remove_departed(double time);
     /// The [[phase]] tables' sequence as a part of parts_ (none: no phases).
     void add_phases();
+    /// The [[dem.wall_map]] tables as a part of parts_, reading the contacts' loads on the
+    /// mapped walls (none: no maps).
+    void add_wall_maps();
     /// The grains' translational and rotational kinetic energy [J].
     double kinetic_energy() const;
     void add_arrivals(const std::vector<particles::Arrival>& arrivals);
@@ -126,6 +155,20 @@ class DemModel final : public io::Stepper, public io::Reporter {
     SphereSet spheres_;
     /// The clumps' angular momentum between a step's two half kicks.
     std::vector<Vec3> momentum_;
+    /// The predictor-corrector's step start: each grain's state, force and torque at t, the
+    /// spheres' springs (every pass's evaluation advances them from these), and the
+    /// acceleration at t + dt the last move assumed.
+    struct StepStart {
+        std::vector<Vec3> position;
+        std::vector<Vec3> velocity;
+        std::vector<Vec3> momentum; ///< angular, in the scene's frame
+        std::vector<Eigen::Quaterniond> orientation;
+        std::vector<Vec3> force;
+        std::vector<Vec3> torque;
+        std::vector<std::vector<Spring>> springs;
+        std::vector<Vec3> assumed;
+    };
+    StepStart start_;
     std::vector<Vec3> start_position_; ///< by grain id, for the potential of gravity
     double start_energy_ = 0.0;        ///< DemEnergy::total() at the start
     std::vector<PlaneWall> walls_;

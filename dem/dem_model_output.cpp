@@ -2,6 +2,7 @@
 #include "io/output_streams.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <sstream>
 
 // DemModel's output: the frames' grain blocks, wall_forces.csv and the summary's figures.
@@ -172,6 +173,17 @@ void DemModel::append_results(double /*t*/, std::vector<io::ResultFigure>& resul
 void DemModel::describe_model(std::vector<io::ModelChoice>& choices) const {
     const bool linear = settings_.law.model == ContactLaw::Model::linear;
     choices.push_back({"dem contact", linear ? "linear spring-dashpot" : "hertz_mindlin"});
+    if (settings_.integrator == Integrator::predictor_corrector) {
+        char text[160];
+        std::snprintf(text, sizeof text,
+                      "predictor-corrector (Lazarevic, Dvornik & Fresl 2002), up to %d corrector "
+                      "pass%s a step, tolerance %g g",
+                      settings_.corrector_passes, settings_.corrector_passes == 1 ? "" : "es",
+                      settings_.corrector_tolerance);
+        choices.push_back({"dem integrator", text});
+    } else {
+        choices.push_back({"dem integrator", "velocity Verlet"});
+    }
     if (settings_.law.rolling_friction > 0.0 || settings_.law.wall_rolling_friction > 0.0) {
         choices.push_back(
             {"dem rolling resistance", "elastic-plastic spring-dashpot (Ai et al. 2011, model C)"});

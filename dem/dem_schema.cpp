@@ -3,6 +3,7 @@
 #include "dem/dem_case_reader.hpp"
 #include "io/surface_mesh_reader.hpp"
 #include "particles/particles_case_reader.hpp"
+#include "particles/wall_map_reader.hpp"
 
 #include <array>
 
@@ -12,7 +13,7 @@ namespace {
 
 constexpr std::string_view kGuide = "docs/user-guide/dem.md";
 
-const std::array<io::KeyTable, 7> kTables{{
+const std::array<io::KeyTable, 8> kTables{{
     {"dem", false, "the discrete element method: its step and neighbour search", kDemKeys, kGuide,
      "### `[dem]`"},
     {"dem.contact", false, "the contact law between grains and with walls", kDemContactKeys, kGuide,
@@ -27,6 +28,8 @@ const std::array<io::KeyTable, 7> kTables{{
      "### `[[dem.sink]]`"},
     {"dem.source", true, "a box grains of a body rain in through", kDemSourceKeys, kGuide,
      "### `[[dem.source]]`"},
+    {"dem.wall_map", true, "the wall pressure and friction in bins over a wall's surface",
+     particles::kWallMapKeys, kGuide, "### `[[dem.wall_map]]`"},
 }};
 
 } // namespace

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Pictures of a wall-load map ([[sph.wall_map]], docs/user-guide/sph.md).
+"""Pictures of a wall-load map ([[sph.wall_map]] or [[dem.wall_map]], docs/user-guide/sph.md).
 
   plot_wall_map.py OUT NAME                     window: mean and maximum pressure, mean
                                                 traction, and the ring (or row) means
@@ -83,7 +83,7 @@ def case_radius(out, name):
         text = open(case_file).read()
     except (OSError, ValueError, KeyError):
         return None
-    for block in text.split("[[sph.wall_map]]")[1:]:
+    for block in re.split(r"\[\[(?:sph|dem)\.wall_map\]\]", text)[1:]:
         block = block.split("\n[")[0]
         if re.search(r'^\s*name\s*=\s*"' + re.escape(name) + '"', block, re.MULTILINE):
             found = re.search(r'^\s*radius\s*=\s*"([-+0-9.eE]+)\s*(m|cm|mm)"', block, re.MULTILINE)

@@ -9,31 +9,6 @@ namespace grainload::sph {
 
 namespace {
 
-class WallMapPart final : public particles::ScenePart {
-  public:
-    WallMapPart(WallMapSet maps, const ParticleSet& particles, const std::vector<Wall>& walls)
-        : maps_(std::move(maps)), particles_(&particles), walls_(&walls) {}
-    std::string_view name() const override { return "sph.wall_map"; }
-    void after_step(double t, double dt) override { maps_.accumulate(*particles_, *walls_, t, dt); }
-    void at_output(double time, io::OutputStreams& output) override {
-        maps_.record(time, output.directory());
-    }
-    void append_results(std::vector<io::ResultFigure>& results) const override {
-        maps_.append_results(results);
-    }
-    void write_checkpoint(std::ostream& out) const override { io::write_array(out, maps_.state()); }
-    void read_checkpoint(std::istream& in) override {
-        std::vector<double> state;
-        io::read_array(in, state);
-        maps_.set_state(state);
-    }
-
-  private:
-    WallMapSet maps_;
-    const ParticleSet* particles_;
-    const std::vector<Wall>* walls_;
-};
-
 class HeapPart final : public particles::ScenePart {
   public:
     HeapPart(HeapMonitor heap, const ParticleSet& particles)
@@ -73,9 +48,22 @@ class EscapePart final : public particles::ScenePart {
 
 } // namespace
 
-std::unique_ptr<particles::ScenePart> wall_map_part(WallMapSet maps, const ParticleSet& particles,
-                                                    const std::vector<Wall>& walls) {
-    return std::make_unique<WallMapPart>(std::move(maps), particles, walls);
+std::unique_ptr<particles::ScenePart>
+wall_map_part(particles::WallMapSet maps, const ParticleSet& set, const std::vector<Wall>& walls) {
+    // The force of the bodies on each wall particle: its mass times its acceleration after the
+    // step's force pass (accumulate_wall_load), at the particle, along the wall's normal there.
+    auto loads = [&set, &walls](int w, std::vector<particles::WallLoad>& out) {
+        const Wall& wall = walls[static_cast<std::size_t>(w)];
+        out.resize(static_cast<std::size_t>(wall.count));
+#pragma omp parallel for schedule(static)
+        for (Index q = 0; q < wall.count; ++q) {
+            const Index k = wall.first + q;
+            out[static_cast<std::size_t>(q)] = {set.position[k],
+                                                wall.normals[static_cast<std::size_t>(q)],
+                                                set.mass[k] * set.acceleration[k]};
+        }
+    };
+    return particles::wall_map_part("sph.wall_map", std::move(maps), std::move(loads));
 }
 
 std::unique_ptr<particles::ScenePart> heap_part(HeapMonitor heap, const ParticleSet& particles) {

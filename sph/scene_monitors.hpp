@@ -2,10 +2,10 @@
 // The SPH scene's monitors as scene parts: wall-load maps, the heap, the escape watch.
 
 #include "particles/scene_part.hpp"
+#include "particles/wall_map.hpp"
 #include "sph/escape_watch.hpp"
 #include "sph/heap_monitor.hpp"
 #include "sph/wall.hpp"
-#include "sph/wall_map.hpp"
 
 #include <functional>
 #include <memory>
@@ -14,11 +14,12 @@
 
 namespace grainload::sph {
 
-/// [[sph.wall_map]]: the maps sum the walls' loads after every step and write their interval
-/// and window tables at the output instants (sph/wall_map.hpp). `particles` and `walls` are
-/// the solver's, observed from then on.
-std::unique_ptr<particles::ScenePart> wall_map_part(WallMapSet maps, const ParticleSet& particles,
-                                                    const std::vector<Wall>& walls);
+/// [[sph.wall_map]]: the maps sum the walls' loads after every step, each wall particle's force
+/// standing for a patch of its spacing, and write their interval and window tables at the
+/// output instants (particles/wall_map.hpp). `set` and `walls` are the solver's, observed
+/// from then on.
+std::unique_ptr<particles::ScenePart>
+wall_map_part(particles::WallMapSet maps, const ParticleSet& set, const std::vector<Wall>& walls);
 
 /// [sph.heap]: the measured body's kinetic energy at the end of every step, its heap's figures
 /// in summary.json (sph/heap_monitor.hpp).

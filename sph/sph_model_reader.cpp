@@ -275,8 +275,8 @@ void SphModelReader::check_phase_conditions(const SphModel& model, const io::Cas
 
 void SphModelReader::build_monitors(SphModel& model, const io::CaseTable& sph) {
     if (model.solver_) {
-        WallMapSet maps = read_wall_maps(sph, model.solver_->particles(), model.solver_->walls(),
-                                         model.dimension_);
+        particles::WallMapSet maps = read_wall_maps(sph, model.solver_->particles(),
+                                                    model.solver_->walls(), model.dimension_);
         if (!maps.empty()) {
             model.parts_.add(
                 wall_map_part(std::move(maps), model.solver_->particles(), model.solver_->walls()));

@@ -2,6 +2,7 @@
 
 #include "io/surface_mesh_reader.hpp"
 #include "particles/particles_case_reader.hpp"
+#include "particles/wall_map_reader.hpp"
 #include "sph/body_shape_reader.hpp"
 #include "sph/heap_monitor.hpp"
 #include "sph/keyword_body_reader.hpp"
@@ -72,7 +73,7 @@ const std::array<io::KeyTable, 27> kTables{{
     {"sph.periodic", true, "a periodic direction: the scene repeats along an axis", kPeriodicKeys,
      kGuide, "## Periodic directions: `[[sph.periodic]]`"},
     {"sph.wall_map", true, "the wall pressure and friction in bins over a wall's surface",
-     kWallMapKeys, kGuide, "## `[[sph.wall_map]]`"},
+     particles::kWallMapKeys, kGuide, "## `[[sph.wall_map]]`"},
     {"phase", true, "a named stage of the run (fill, settle, discharge) that starts on an event",
      particles::kPhaseKeys, kGuide, "## Phases: `[[phase]]`"},
 }};

@@ -1,12 +1,10 @@
 #pragma once
-// The [[sph.wall_map]] tables of a case, read into the scene's wall-load maps.
+// The [[sph.wall_map]] tables of a case, read into the SPH scene's wall-load maps.
 
-#include "io/key_spec.hpp"
+#include "particles/wall_map.hpp"
 #include "sph/particle_set.hpp"
 #include "sph/wall.hpp"
-#include "sph/wall_map.hpp"
 
-#include <array>
 #include <vector>
 
 namespace grainload::io {
@@ -15,36 +13,11 @@ class CaseTable;
 
 namespace grainload::sph {
 
-/// The keys of each [[sph.wall_map]] table (docs/user-guide/sph.md, "Wall-load maps").
-inline constexpr std::array<io::KeySpec, 14> kWallMapKeys{{
-    {"name", "string", "", "names the map's files, wall_maps/NAME_*.csv, and its summary figures"},
-    {"walls", "string or list of strings", "",
-     "the walls whose loads are mapped: [[sph.wall]] names or coupled shell interfaces"},
-    {"type", "`cylinder` or `plane`", "",
-     "cylinder: the unrolled wall, axial position by angle; plane: a grid on a parallelogram"},
-    {"origin", "length vector", "",
-     "cylinder: the point of the axis where the axial coordinate is 0; plane: a corner"},
-    {"axis", "vector", "required for a cylinder", "the axis; the axial coordinate grows along it"},
-    {"reference", "vector", "a normal to the axis",
-     "cylinder: the direction of angle 0; the angle turns right-handed about the axis"},
-    {"radius", "length", "required for a cylinder", "the wall's radius, for the cells' areas"},
-    {"length", "length", "required for a cylinder", "the mapped length along the axis"},
-    {"angles", "two angles", "0 360 deg", "cylinder: the mapped arc (a quarter model: 0 90 deg)"},
-    {"edge_u", "length vector", "required for a plane", "the grid's first edge from origin"},
-    {"edge_v", "length vector", "required for a plane in 3D",
-     "the grid's second edge; in plane strain the grid is edge_u by 1 m of depth"},
-    {"bins", "two integers", "",
-     "cells along the axis and around it (cylinder) or along edge_u and edge_v (plane; in "
-     "plane strain [n, 1])"},
-    {"reach", "length", "no limit",
-     "only wall particles this near the mapped surface count (one face of a box wall)"},
-    {"window", "two times", "the whole run",
-     "the interval whose mean and maximum maps go into wall_maps/NAME_window.csv"},
-}};
-
-/// The [[sph.wall_map]] tables of `sph`; wall names resolve against `walls`, whose particles
-/// (in `particles`) give their spacing.
-WallMapSet read_wall_maps(const io::CaseTable& sph, const ParticleSet& particles,
-                          const std::vector<Wall>& walls, int dimension);
+/// The [[sph.wall_map]] tables of `sph` (particles/wall_map_reader.hpp, its keys
+/// particles::kWallMapKeys); wall names resolve against `walls`, each of which must have
+/// surface normals, and whose particles (in `set`) give the patch each particle's load
+/// stands for: one spacing wide.
+particles::WallMapSet read_wall_maps(const io::CaseTable& sph, const ParticleSet& set,
+                                     const std::vector<Wall>& walls, int dimension);
 
 } // namespace grainload::sph

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <string>
+#include <string_view>
 
 namespace grainload::app {
 
@@ -53,6 +55,11 @@ void read_costs(const io::JsonValue& file, Calibration& c) {
     get("seconds_per_frame_point", c.seconds_per_frame_point);
 }
 
+/// Appends `text` to the reading's note.
+void add_note(Calibration& c, const std::string& text) {
+    c.note += (c.note.empty() ? "" : "; ") + text;
+}
+
 /// The speed-up and how quiet the machine was; a speed-up below 1 is set aside.
 void read_speedup(const io::JsonValue& file, Calibration& c) {
     c.threads_measured = static_cast<int>(file.number_at("threads_measured").value_or(1.0));
@@ -69,9 +76,60 @@ void read_speedup(const io::JsonValue& file, Calibration& c) {
                       "its speed-up of %d threads, %.2f, is below 1 and contradicts itself: "
                       "discarded, every thread count estimated at one thread's speed",
                       c.threads_measured, c.speedup);
-        c.note = text;
+        add_note(c, text);
         c.threads_measured = 1;
         c.speedup = 1.0;
+    }
+}
+
+/// The costs the bench measures by running the grainload executable, in pairs: a pair named
+/// under "not_measured", or, in a file of the bench without that list, both zero (the bench
+/// wrote zeros when its runs failed; no step, frame or grain costs nothing), keeps its built-in
+/// figures, and the note says so. A file written by hand is taken at its word.
+void keep_unmeasured(const io::JsonValue& file, Calibration& c) {
+    struct Pair {
+        const char* what;
+        const char* keys[2];
+        double Calibration::*fields[2];
+    };
+    static const Pair pairs[] = {
+        {"a step's fixed cost",
+         {"seconds_per_step_2d", "seconds_per_step_3d"},
+         {&Calibration::seconds_per_step_2d, &Calibration::seconds_per_step_3d}},
+        {"the DEM's costs",
+         {"dem_seconds_per_step", "dem_seconds_per_grain_step"},
+         {&Calibration::dem_seconds_per_step, &Calibration::dem_seconds_per_grain_step}},
+        {"an output instant's cost",
+         {"seconds_per_frame", "seconds_per_frame_point"},
+         {&Calibration::seconds_per_frame, &Calibration::seconds_per_frame_point}}};
+    const io::JsonValue* listed = file.find("not_measured");
+    const bool earlier_bench = listed == nullptr && file.string_at("source") == kCalibrationSource;
+    const auto is_listed = [&](std::string_view key) {
+        if (listed == nullptr || listed->type != io::JsonValue::Type::array) {
+            return false;
+        }
+        for (const io::JsonValue& name : listed->array) {
+            if (name.type == io::JsonValue::Type::string && name.string == key) {
+                return true;
+            }
+        }
+        return false;
+    };
+    const Calibration built_in;
+    std::string what;
+    for (const Pair& pair : pairs) {
+        const bool zero = c.*pair.fields[0] == 0.0 && c.*pair.fields[1] == 0.0;
+        if ((earlier_bench && zero) || is_listed(pair.keys[0]) || is_listed(pair.keys[1])) {
+            c.*pair.fields[0] = built_in.*pair.fields[0];
+            c.*pair.fields[1] = built_in.*pair.fields[1];
+            what += (what.empty() ? "" : ", ") + std::string(pair.what);
+        }
+    }
+    if (!what.empty()) {
+        add_note(c, "incomplete: " + what +
+                        " not measured (the bench could not run the grainload executable), the "
+                        "built-in figures used; measure again with bench/sph_throughput "
+                        "--calibrate on a quiet machine");
     }
 }
 
@@ -87,6 +145,7 @@ Calibration load_calibration() {
         const io::JsonValue file = io::read_json_file(path);
         read_costs(file, c);
         read_speedup(file, c);
+        keep_unmeasured(file, c);
         c.source = path + " (" + file.string_at("date").value_or("undated") + ")";
     } catch (const io::JsonError& e) {
         c = Calibration{};

@@ -2,6 +2,7 @@
 // The machine's throughput figures for the cost estimate: a calibration file or built-ins.
 
 #include <string>
+#include <string_view>
 
 namespace grainload::app {
 
@@ -114,11 +115,16 @@ struct Calibration {
 /// (12.5 % on two), so its speed-up is low by at most that share.
 inline constexpr double kQuietLoad = 0.25;
 
+/// The "source" of the files bench/sph_throughput --calibrate writes.
+inline constexpr std::string_view kCalibrationSource = "bench/sph_throughput --calibrate";
+
 /// Reads the calibration: $GRAINLOAD_CALIBRATION if set, else calibration.json in the build
 /// directory of this executable (its directory's parent: build/app/grainload ->
 /// build/calibration.json); the built-in constants when neither exists. A file that exists but
 /// cannot be read is reported in `source` and the constants are used; a speed-up below 1 is
-/// discarded (Calibration::speedup).
+/// discarded (Calibration::speedup); the costs measured by running the grainload executable
+/// (a step's fixed cost, the DEM's, an output instant's) that the file lists as not measured,
+/// or whose pair is zero, keep the built-in constants, and `note` says the file is incomplete.
 Calibration load_calibration();
 
 /// The calibration as check prints it and summary.json records it: its source, how quiet the

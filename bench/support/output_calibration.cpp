@@ -20,11 +20,12 @@ namespace fs = std::filesystem;
 struct FrameRun {
     double cpu_seconds = 0.0;
     double points = 0.0;
+    bool ran = false; ///< the run exited 0 and wrote its summary
 };
 
 /// `grainload run` of `text` with `frames` - 1 output intervals over `end` at steps of `step`
-/// (default: 500 steps; `method`.time_step); its summary's CPU time and points; zeros when it
-/// failed.
+/// (default: 500 steps; `method`.time_step); its summary's CPU time and points; not `ran`
+/// (and said so, with the command) when it failed.
 FrameRun run_frames(const fs::path& grainload, const std::string& text, double end, int frames,
                     double step = 0.0, const char* method = "sph") {
     const fs::path dir =
@@ -42,23 +43,31 @@ FrameRun run_frames(const fs::path& grainload, const std::string& text, double e
                                 (dir / "out").string() + "' --threads 1" + settings +
                                 " > /dev/null 2>&1";
     FrameRun run;
-    if (std::system(command.c_str()) == 0) {
+    const int status = std::system(command.c_str());
+    if (status == 0) {
         const io::JsonValue summary = io::read_json_file((dir / "out" / "summary.json").string());
         run.cpu_seconds = summary.number_at("cpu_time_s").value_or(0.0);
         run.points = summary.number_at("particles").value_or(0.0);
+        run.ran = summary.number_at("cpu_time_s").has_value();
+    } else {
+        std::printf("calibration: `%s` failed (status %d)\n", command.c_str(), status);
     }
     fs::remove_all(dir);
     return run;
 }
 
 /// The least CPU time of three runs of `text` (other processes only add to it), alternated
-/// with `other`'s three so that a slow spell of the machine meets both.
+/// with `other`'s three so that a slow spell of the machine meets both. A run that failed
+/// stops the rounds and leaves its side not `ran`: its zero CPU time is no least time.
 std::pair<FrameRun, FrameRun> least_of_three(const std::function<FrameRun()>& run,
                                              const std::function<FrameRun()>& other) {
     std::pair<FrameRun, FrameRun> least;
     for (int round = 0; round < 3; ++round) {
         const FrameRun a = run();
         const FrameRun b = other();
+        if (!a.ran || !b.ran) {
+            return {a, b};
+        }
         if (round == 0 || a.cpu_seconds < least.first.cpu_seconds) {
             least.first = a;
         }
@@ -73,7 +82,8 @@ std::pair<FrameRun, FrameRun> least_of_three(const std::function<FrameRun()>& ru
 FrameRun frame_of(const fs::path& grainload, const std::string& text, double end) {
     const auto [many, few] = least_of_three([&] { return run_frames(grainload, text, end, 51); },
                                             [&] { return run_frames(grainload, text, end, 2); });
-    return {std::max(0.0, (many.cpu_seconds - few.cpu_seconds) / 49.0), many.points};
+    return {std::max(0.0, (many.cpu_seconds - few.cpu_seconds) / 49.0), many.points,
+            many.ran && few.ran};
 }
 
 /// The grainload executable of this build (build/bench/X -> build/app/grainload); empty when
@@ -96,7 +106,8 @@ FrameRun step_of(const fs::path& grainload, const std::string& text, double step
     const auto [few, many] =
         least_of_three([&] { return run_frames(grainload, text, from * step, 2, step, method); },
                        [&] { return run_frames(grainload, text, to * step, 2, step, method); });
-    return {std::max(0.0, (many.cpu_seconds - few.cpu_seconds) / (to - from)), many.points};
+    return {std::max(0.0, (many.cpu_seconds - few.cpu_seconds) / (to - from)), many.points,
+            many.ran && few.ran};
 }
 
 } // namespace
@@ -107,8 +118,11 @@ StepCosts step_costs(const std::string& tiny_2d, const std::string& tiny_3d, dou
     if (grainload.empty()) {
         return c;
     }
-    c.per_step_2d = step_of(grainload, tiny_2d, time_step).cpu_seconds;
-    c.per_step_3d = step_of(grainload, tiny_3d, time_step).cpu_seconds;
+    const FrameRun two = step_of(grainload, tiny_2d, time_step);
+    const FrameRun three = step_of(grainload, tiny_3d, time_step);
+    c.per_step_2d = two.cpu_seconds;
+    c.per_step_3d = three.cpu_seconds;
+    c.measured = two.ran && three.ran;
     std::printf("steps: %.3e s per 2D step, %.3e per 3D step beyond their particles' work\n",
                 c.per_step_2d, c.per_step_3d);
     return c;
@@ -144,8 +158,10 @@ DemCosts dem_costs() {
     if (grainload.empty()) {
         return c;
     }
-    c.per_step = step_of(grainload, tiny, time_step, "dem").cpu_seconds;
+    const FrameRun lone = step_of(grainload, tiny, time_step, "dem");
+    c.per_step = lone.cpu_seconds;
     const FrameRun step = step_of(grainload, packed, time_step, "dem", 12000.0, 15000.0);
+    c.measured = lone.ran && step.ran;
     if (step.points > 0.0) {
         c.per_grain_step = std::max(0.0, (step.cpu_seconds - c.per_step) / step.points);
     }
@@ -162,6 +178,7 @@ FrameCosts frame_costs(const std::string& small, const std::string& large, doubl
     }
     const FrameRun a = frame_of(grainload, small, end);
     const FrameRun b = frame_of(grainload, large, end);
+    c.measured = a.ran && b.ran;
     if (b.points > a.points) {
         c.per_point = std::max(0.0, (b.cpu_seconds - a.cpu_seconds) / (b.points - a.points));
     }

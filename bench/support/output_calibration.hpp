@@ -10,6 +10,7 @@ namespace grainload::bench {
 struct FrameCosts {
     double per_frame = 0.0;
     double per_point = 0.0;
+    bool measured = false; ///< every run it took exited 0 (else the figures are not written)
 };
 
 /// Measured as `grainload run` pays them: the grainload executable of this build (beside the
@@ -18,8 +19,8 @@ struct FrameCosts {
 /// (summary.json cpu_time_s) over 49 instants is a frame of that case (the VTK frame of every
 /// block, the checkpoint, the logs, and what the allocator gives back meanwhile). Two cases of
 /// different sizes (`small`, `large`: case texts whose time step 1/500 of `end` s is stable)
-/// separate the fixed part from the part per point; printed with them. Zeros when the
-/// executable cannot be run.
+/// separate the fixed part from the part per point; printed with them. Not `measured` when
+/// the executable is missing or one of its runs failed (a build relinking it meanwhile).
 FrameCosts frame_costs(const std::string& small, const std::string& large, double end);
 
 /// A model step's fixed cost, whatever its particles: the parallel loops' entries and exits, the
@@ -28,12 +29,13 @@ FrameCosts frame_costs(const std::string& small, const std::string& large, doubl
 struct StepCosts {
     double per_step_2d = 0.0;
     double per_step_3d = 0.0;
+    bool measured = false;
 };
 
 /// Measured as `grainload run` pays them: each case text (a handful of particles, whose own
 /// work is negligible; its step `time_step` stable) run on one thread with 2 output instants
-/// for 2000 and for 10 000 steps; the difference of their CPU times over 8000 steps. Zeros when
-/// the executable cannot be run.
+/// for 2000 and for 10 000 steps; the difference of their CPU times over 8000 steps. Not `measured`
+/// when the executable cannot be run.
 StepCosts step_costs(const std::string& tiny_2d, const std::string& tiny_3d, double time_step);
 
 /// A DEM step's cost: a fixed part, whatever its grains (its passes' loops, the books), and a
@@ -43,6 +45,7 @@ StepCosts step_costs(const std::string& tiny_2d, const std::string& tiny_3d, dou
 struct DemCosts {
     double per_step = 0.0;
     double per_grain_step = 0.0;
+    bool measured = false;
 };
 
 /// Measured as `grainload run` pays them, on one thread with 2 output instants, at a fixed step
@@ -52,7 +55,7 @@ struct DemCosts {
 /// friction, damped), for 12 000 and 15 000 steps, when they have piled on the floor (from
 /// 60 ms: 2.5-2.8 contacts a bead, the regime of a silo or a hopper):
 /// the difference over the grains and 3000 steps, less the fixed part, the part per grain.
-/// Zeros when the executable cannot be run.
+/// Not `measured` when the executable cannot be run.
 DemCosts dem_costs();
 
 } // namespace grainload::bench

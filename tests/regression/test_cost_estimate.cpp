@@ -241,7 +241,7 @@ TEST(CostEstimate, ADynamicShellIsFactorisedAgainAtEveryChangeOfItsStep) {
     EXPECT_LT(ratio, 1.4);
 }
 
-// A DEM run costs its grain-steps at the calibration's cost per grain-step (shared by the
+// A DEM run costs its sphere-steps at the calibration's cost per grain-step (shared by the
 // threads) and each step its fixed cost: with a calibration of 1e-6 s per grain-step, 2e-5 s
 // per step, free frames and one thread, the one-grain rolling sphere's estimate is its steps x
 // 2.1e-5 s (to the 12 digits summary.json prints; the steps counted exactly: a fixed step

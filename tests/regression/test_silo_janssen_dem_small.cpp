@@ -1,14 +1,17 @@
 // The circular silo in DEM, run from the command line: grains rained into a cylinder of mesh
 // bands, settled, then the floor sinks half a millimetre. The floor and the bands carry the
 // weight; each band's friction stays within Coulomb's bound of its normal load; the bands below
-// the surface carry Janssen's (1895) profile. Killed and restarted while the floor moves, the run
-// writes what the uninterrupted run writes.
+// the surface carry Janssen's (1895) profile; the wall map bins the same contacts by height and
+// angle. Killed and restarted while the floor moves, the run writes what the uninterrupted run
+// writes, the wall map's files included.
 
 #include "support/case_runner.hpp"
+#include "support/csv_rows.hpp"
 #include "support/frame_reader.hpp"
 #include "support/gold_summary.hpp"
 #include "support/interrupted_run.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <gtest/gtest.h>
@@ -76,6 +79,49 @@ double fitted_lambda(double share, double height) {
     return 0.5 * (low + high);
 }
 
+// The wall map bins the contacts the bands sum, each where it acts: per row of the map (a
+// band's height) its cells' mean pressure times their area is the band's normal force, and the
+// map's resultants are the bands' normal force and friction. The map holds the mean over the
+// last 0.1 s and the bands their loads at its end; at rest they differ by what still moves:
+// measured 0.25 % at most a loaded row, 7e-5 and 5e-4 the resultants. Bounds: a row 1 % of its
+// band or 1e-3 of the wall's normal force (the top rows hold a few contacts, 0.01 N), the
+// resultants 5e-3.
+constexpr double kRowTolerance = 0.01;
+constexpr double kRowFloor = 1e-3;
+constexpr double kResultantTolerance = 5e-3;
+
+void expect_the_map_bins_the_bands(const std::string& out, const std::string& summary) {
+    const auto rows = numeric_csv_rows(out + "/wall_maps/wall_window.csv");
+    ASSERT_EQ(rows.size(), 60u);
+    const double cell = kRadius * (2.0 * std::numbers::pi / 12.0) * kBand;
+    std::vector<double> bands;
+    double normal = 0.0;
+    double friction = 0.0;
+    for (int b = 0; b < 5; ++b) {
+        const std::string band = "wall_band" + std::to_string(b);
+        bands.push_back(result_value(summary, band + "_normal_force"));
+        normal += bands.back();
+        friction -= result_value(summary, band + "_force_z");
+    }
+    for (int b = 0; b < 5; ++b) {
+        double row = 0.0;
+        for (int sector = 0; sector < 12; ++sector) {
+            const auto& values = rows[static_cast<std::size_t>(12 * b + sector)];
+            EXPECT_NEAR(values[2], kBand * (b + 0.5), 1e-12); // the row's height
+            row += values[4] * cell;                          // mean pressure x area
+        }
+        const double band = bands[static_cast<std::size_t>(b)];
+        std::printf("row %d: %.4f N against the band's %.4f N\n", b, row, band);
+        EXPECT_NEAR(row, band, std::max(kRowTolerance * band, kRowFloor * normal)) << "row " << b;
+    }
+    const double map_normal = result_value(summary, "wall_map_wall_normal_force");
+    const double map_friction = -result_value(summary, "wall_map_wall_shear_axial_force");
+    std::printf("map: normal %.4f N, friction %.4f N; bands %.4f N, %.4f N\n", map_normal,
+                map_friction, normal, friction);
+    EXPECT_NEAR(map_normal, normal, kResultantTolerance * normal);
+    EXPECT_NEAR(map_friction, friction, kResultantTolerance * friction);
+}
+
 // Static equilibrium: the floor and the five bands carry the grains' weight (measured 2.2e-5;
 // what moves at 1.3 s changes the load by its momentum's rate; bound 1e-3). Coulomb: a band's
 // vertical load is the sum of its contacts' friction, each at most mu_w times its normal force,
@@ -102,6 +148,7 @@ TEST(SiloJanssenDemSmall, TheSettledFloorLeavesTheWallJanssensProfile) {
     }
     const double floor = -result_value(summary, "wall_floor_force_z");
     EXPECT_NEAR(floor + walls, weight, 1e-3 * weight);
+    expect_the_map_bins_the_bands(run.out, summary);
     const double rho = bulk_density(frame_path(run.out, "silo_janssen_dem_small", 26));
     const double height = weight / (rho * kGravity * std::numbers::pi * kRadius * kRadius);
     const double lambda = fitted_lambda(walls / weight, height);

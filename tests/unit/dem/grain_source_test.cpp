@@ -102,14 +102,16 @@ TEST(GrainSources, ClumpsAppearWholeTurnedAtRandomAndClear) {
 // What `grainload check` counts: the grains the source makes by the end time (its count, or its
 // rate over its window when that is fewer), each from the mean arrival time of its source's
 // grains: 5 grains from 0.01 s at 100 per second arrive on average at 0.035 s, so over 1000
-// steps to 1 s they make 5 x 1000 x 0.965 grain-steps; to 0.035 s only 2 are made, on average
-// at 0.02 s.
-TEST(GrainSources, TheEstimateCountsTheGrainsTheyWillMake) {
+// steps to 1 s they make 5 x 1000 x 0.965 sphere-steps; to 0.035 s only 2 are made, on average
+// at 0.02 s. A clump of three spheres counts three times a sphere.
+TEST(GrainSources, TheEstimateCountsTheSpheresTheyWillMake) {
     auto model = raining("100 1/s", 5);
     EXPECT_EQ(model->most_grains(1.0), 5);
-    EXPECT_DOUBLE_EQ(model->grain_steps(1000.0, 1.0), 5 * 1000 * 0.965);
+    EXPECT_DOUBLE_EQ(model->sphere_steps(1000.0, 1.0), 5 * 1000 * 0.965);
     EXPECT_EQ(model->most_grains(0.035), 2);
-    EXPECT_DOUBLE_EQ(model->grain_steps(1000.0, 0.035), 2 * 1000 * (0.015 / 0.035));
+    EXPECT_DOUBLE_EQ(model->sphere_steps(1000.0, 0.035), 2 * 1000 * (0.015 / 0.035));
+    auto clumps = raining("100 1/s", 5, "spheres = 3\n", "0.04 0.04 0.03 m");
+    EXPECT_DOUBLE_EQ(clumps->sphere_steps(1000.0, 1.0), 3 * 5 * 1000 * 0.965);
 }
 
 } // namespace

@@ -1,4 +1,4 @@
-#include "sph/wall_map.hpp"
+#include "particles/wall_map.hpp"
 #include "support/csv_rows.hpp"
 #include "support/test_folder.hpp"
 
@@ -7,42 +7,42 @@
 #include <gtest/gtest.h>
 #include <numbers>
 
-namespace grainload::sph {
+namespace grainload::particles {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 // Every figure below is a sum of a few dozen products divided by an area: round-off.
 constexpr double kRoundOff = 1e-12;
 
-// Two rings of 36 wall particles on a cylinder of radius 0.5 m about z, at z = 0.25 and
-// 0.75 m, at angles (k + 1/2) 10 deg (none on a bin's edge), each pushed outward by `radial`
+// Two rings of 36 wall loads on a cylinder of radius 0.5 m about z, at z = 0.25 and 0.75 m,
+// at angles (k + 1/2) 10 deg (none on a bin's edge), each pushing the wall outward by `radial`
 // and along the axis by `axial` (the force of the sand on the wall), normals inward.
 struct Rings {
-    ParticleSet particles;
-    std::vector<Wall> walls;
+    std::vector<WallLoad> loads;
+    /// The loads as a method gives them, all on wall 0.
+    WallLoads given() const {
+        return [this](int wall, std::vector<WallLoad>& out) {
+            EXPECT_EQ(wall, 0);
+            out = loads;
+        };
+    }
 };
 
 Rings two_rings() {
     Rings r;
-    std::vector<Vec3> points;
     for (const double z : {0.25, 0.75}) {
         for (int k = 0; k < 36; ++k) {
             const double angle = (k + 0.5) * kPi / 18.0;
-            points.emplace_back(0.5 * std::cos(angle), 0.5 * std::sin(angle), z);
+            const Vec3 x(0.5 * std::cos(angle), 0.5 * std::sin(angle), z);
+            r.loads.push_back({x, -Vec3(x.x(), x.y(), 0.0).normalized(), Vec3::Zero()});
         }
-    }
-    r.walls.push_back(add_wall(r.particles, "silo", 0, 1, points, 0.05, 1.0, 3));
-    for (const Vec3& x : points) {
-        r.walls[0].normals.push_back(-Vec3(x.x(), x.y(), 0.0).normalized());
     }
     return r;
 }
 
 void push(Rings& r, double radial, double axial) {
-    for (Index k = 0; k < r.particles.size(); ++k) {
-        const Vec3& x = r.particles.position[k];
-        const Vec3 f = radial * Vec3(x.x(), x.y(), 0.0).normalized() + Vec3(0, 0, axial);
-        r.particles.acceleration[k] = f / r.particles.mass[k];
+    for (WallLoad& load : r.loads) {
+        load.force = radial * Vec3(load.at.x(), load.at.y(), 0.0).normalized() + Vec3(0, 0, axial);
     }
 }
 
@@ -71,7 +71,7 @@ std::string fresh_directory(const std::string& name) {
     return dir;
 }
 
-// Each cell holds 9 particles of one ring: its loads are 9 f / A with A = R (pi / 2) (L / 2),
+// Each cell holds 9 loads of one ring: its loads are 9 f / A with A = R (pi / 2) (L / 2),
 // the mean over an interval of steps of different lengths under one force is that force's.
 TEST(WallMap, UnrolledCylinderGivesEachCellItsForceOverItsArea) {
     Rings r = two_rings();
@@ -79,8 +79,8 @@ TEST(WallMap, UnrolledCylinderGivesEachCellItsForceOverItsArea) {
     WallMapSet maps({cylinder_map(0.0, 1.0)});
     const std::string dir = fresh_directory("cylinder");
     maps.record(0.0, dir);
-    maps.accumulate(r.particles, r.walls, 0.0, 0.01);
-    maps.accumulate(r.particles, r.walls, 0.01, 0.03);
+    maps.accumulate(0.0, 0.01, r.given());
+    maps.accumulate(0.01, 0.03, r.given());
     maps.record(0.04, dir);
     const double area = 0.5 * (kPi / 2.0) * 0.5;
     const auto rows = testing::numeric_csv_rows(dir + "/wall_maps/silo_000001.csv");
@@ -108,10 +108,10 @@ TEST(WallMap, WindowMeanAndMaximumFollowTheLoadHistory) {
     const std::string dir = fresh_directory("window");
     maps.record(0.0, dir);
     push(r, 1.0, 0.0);
-    maps.accumulate(r.particles, r.walls, 0.0, 0.1);
+    maps.accumulate(0.0, 0.1, r.given());
     maps.record(0.1, dir);
     push(r, 3.0, 0.0);
-    maps.accumulate(r.particles, r.walls, 0.1, 0.1);
+    maps.accumulate(0.1, 0.1, r.given());
     maps.record(0.2, dir);
     const double area = 0.5 * (kPi / 2.0) * 0.5;
     const auto rows = testing::numeric_csv_rows(dir + "/wall_maps/silo_window.csv");
@@ -138,21 +138,20 @@ TEST(WallMap, WindowMeanAndMaximumFollowTheLoadHistory) {
     EXPECT_EQ(restored.state(), maps.state());
 }
 
-/// Plane strain: a floor wall through `points` (spacing 0.1 m, material above: normal +y), each
-/// particle pushed by `force` (N/m) for 0.5 s, mapped in two cells of 0.5 m over x in [0, 1] m
-/// within `reach` of the line. Returns the rows of the interval's map.
+/// Plane strain: loads at `points` on a floor (spacing 0.1 m, material above: normal +y), each
+/// `force` (N/m) for 0.5 s, standing for patches `half` either side, mapped in two cells of
+/// 0.5 m over x in [0, 1] m within `reach` of the line. Returns the rows of the interval's map.
 std::vector<std::vector<double>> map_floor(const std::vector<Vec3>& points, const Vec3& force,
-                                           double reach, const std::string& name) {
-    ParticleSet particles;
-    std::vector<Wall> walls{add_wall(particles, "floor", 0, 1, points, 0.1, 1.0, 2)};
-    walls[0].normals.assign(points.size(), Vec3::UnitY());
-    for (Index k = 0; k < particles.size(); ++k) {
-        particles.acceleration[k] = force / particles.mass[k];
+                                           double reach, const std::string& name,
+                                           double half = 0.05) {
+    Rings floor;
+    for (const Vec3& x : points) {
+        floor.loads.push_back({x, Vec3::UnitY(), force});
     }
     WallMapSet::Map map;
     map.name = "floor";
     map.walls = {0};
-    map.half_spacing = {0.05};
+    map.half_spacing = {half};
     map.cylinder = false;
     map.edge_u = Vec3(1.0, 0.0, 0.0);
     map.bins_1 = 2;
@@ -161,7 +160,7 @@ std::vector<std::vector<double>> map_floor(const std::vector<Vec3>& points, cons
     WallMapSet maps({map});
     const std::string dir = fresh_directory(name);
     maps.record(0.0, dir);
-    maps.accumulate(particles, walls, 0.0, 0.5);
+    maps.accumulate(0.0, 0.5, floor.given());
     maps.record(0.5, dir);
     return testing::numeric_csv_rows(dir + "/wall_maps/floor_000001.csv");
 }
@@ -200,5 +199,17 @@ TEST(WallMap, ParticlesOnBordersAreSharedAndEdgesKeepTheirLoad) {
     EXPECT_NEAR(rows[1][4], 5.5 * 2.0 / 0.5, kRoundOff * 100);
 }
 
+// Point loads (a DEM contact's, patch width 0) go whole to the cell that holds them: 0.2 and
+// 0.4 m to the first cell, 0.5 m (the border) and 1.0 m (the grid's far edge) to the second,
+// one at 1.2 m and one 0.2 m off the line (beyond reach) nowhere; 3 N/m each.
+TEST(WallMap, PointLoadsGoWholeToTheCellThatHoldsThem) {
+    const std::vector<Vec3> points = {Vec3(0.2, 0, 0), Vec3(0.4, 0, 0), Vec3(0.5, 0, 0),
+                                      Vec3(1.0, 0, 0), Vec3(1.2, 0, 0), Vec3(0.3, -0.2, 0)};
+    const auto rows = map_floor(points, Vec3(0.0, -3.0, 0.0), 0.1, "points", 0.0);
+    ASSERT_EQ(rows.size(), 2u);
+    EXPECT_NEAR(rows[0][4], 2 * 3.0 / 0.5, kRoundOff * 100);
+    EXPECT_NEAR(rows[1][4], 2 * 3.0 / 0.5, kRoundOff * 100);
+}
+
 } // namespace
-} // namespace grainload::sph
+} // namespace grainload::particles

@@ -1,6 +1,6 @@
-// WallMapSet's files and summary figures (see sph/wall_map.hpp).
+// WallMapSet's files and summary figures (see particles/wall_map.hpp).
 #include "io/atomic_file.hpp"
-#include "sph/wall_map.hpp"
+#include "particles/wall_map.hpp"
 
 #include <Eigen/Geometry>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include <limits>
 #include <ostream>
 
-namespace grainload::sph {
+namespace grainload::particles {
 
 namespace {
 
@@ -126,4 +126,4 @@ void WallMapSet::append_results(std::vector<io::ResultFigure>& results) const {
     }
 }
 
-} // namespace grainload::sph
+} // namespace grainload::particles

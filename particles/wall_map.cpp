@@ -1,6 +1,10 @@
-// WallMapSet: binning the walls' loads and keeping their interval and window sums. Reading the
-// [[sph.wall_map]] tables is in wall_map_reader.cpp; the files it writes in wall_map_output.cpp.
-#include "sph/wall_map.hpp"
+// WallMapSet: binning the walls' loads and keeping their interval and window sums, and the scene
+// part that drives it. Reading the tables is in wall_map_reader.cpp; the files it writes in
+// wall_map_output.cpp.
+#include "particles/wall_map.hpp"
+
+#include "io/binary_stream.hpp"
+#include "io/output_streams.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -8,8 +12,9 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 
-namespace grainload::sph {
+namespace grainload::particles {
 
 double WallMapSet::Map::cell_area() const {
     if (cylinder) {
@@ -86,6 +91,16 @@ namespace {
 /// cell, 0 when it misses the grid.
 int overlaps(double lo, double hi, int n, bool periodic, std::array<int, 2>& cells,
              std::array<double, 2>& weights) {
+    if (lo == hi) {
+        // A point: the cell holding it; one on the grid's far edge is the last cell's.
+        if (!periodic && !(lo >= 0.0 && lo <= 1.0)) {
+            return 0;
+        }
+        const int c = static_cast<int>(std::floor(lo * n));
+        cells[0] = periodic ? ((c % n) + n) % n : std::min(c, n - 1);
+        weights[0] = 1.0;
+        return 1;
+    }
     if (!periodic) {
         lo = std::max(lo, 0.0);
         hi = std::min(hi, 1.0);
@@ -129,12 +144,10 @@ int WallMapSet::Map::shares(const Vec3& x, double half,
     std::array<double, 2> weights_1{};
     std::array<double, 2> weights_2{};
     const int n1 = overlaps((*at)[0] - h1, (*at)[0] + h1, bins_1, false, cells_1, weights_1);
-    int n2 = 0;
-    if (h2 > 0.0) {
+    int n2 = 1; // plane strain: one cell across the depth
+    weights_2[0] = 1.0;
+    if (extent[1] > 0.0) {
         n2 = overlaps((*at)[1] - h2, (*at)[1] + h2, bins_2, periodic(), cells_2, weights_2);
-    } else if (extent[1] == 0.0) {
-        n2 = 1; // plane strain: one cell across the depth
-        weights_2[0] = 1.0;
     }
     int count = 0;
     for (int i = 0; i < n1; ++i) {
@@ -184,28 +197,26 @@ void WallMapSet::reset() {
     }
 }
 
-void WallMapSet::accumulate(const ParticleSet& particles, const std::vector<Wall>& walls, double t,
-                            double dt) {
+void WallMapSet::accumulate(double t, double dt, const WallLoads& loads) {
     for (Map& map : maps_) {
         // The part of the step inside the window enters the window's sum.
         const double overlap =
             std::max(0.0, std::min(t + dt, map.window_end) - std::max(t, map.window_start));
         for (std::size_t m = 0; m < map.walls.size(); ++m) {
-            const Wall& wall = walls[static_cast<std::size_t>(map.walls[m])];
+            loads_.clear();
+            loads(map.walls[m], loads_);
             const double half = map.half_spacing[m];
-            // Every step: each wall particle's cells and load (an angle and its patch's
-            // overlaps) on all threads, then added in the particles' order, so the sums are
-            // the serial loop's.
-            shares_.resize(static_cast<std::size_t>(wall.count));
+            // Every step: each load's cells and split (an angle and its patch's overlaps) on all
+            // threads, then added in the loads' order, so the sums are the serial loop's.
+            const auto count = static_cast<Index>(loads_.size());
+            shares_.resize(loads_.size());
 #pragma omp parallel for schedule(static)
-            for (Index q = 0; q < wall.count; ++q) {
-                const Index k = wall.first + q;
+            for (Index q = 0; q < count; ++q) {
+                const WallLoad& load = loads_[static_cast<std::size_t>(q)];
                 ParticleShares& mine = shares_[static_cast<std::size_t>(q)];
-                const Vec3& x = particles.position[k];
-                mine.count = map.shares(x, half, mine.cells);
+                mine.count = map.shares(load.at, half, mine.cells);
                 if (mine.count > 0) {
-                    mine.load = map.split(x, wall.normals[static_cast<std::size_t>(q)],
-                                          particles.mass[k] * particles.acceleration[k]);
+                    mine.load = map.split(load.at, load.normal, load.force);
                 }
             }
             for (const ParticleShares& mine : shares_) {
@@ -307,4 +318,37 @@ void WallMapSet::set_state(const std::vector<double>& state) {
     }
 }
 
-} // namespace grainload::sph
+namespace {
+
+class WallMapPart final : public ScenePart {
+  public:
+    WallMapPart(std::string name, WallMapSet maps, WallLoads loads)
+        : name_(std::move(name)), maps_(std::move(maps)), loads_(std::move(loads)) {}
+    std::string_view name() const override { return name_; }
+    void after_step(double t, double dt) override { maps_.accumulate(t, dt, loads_); }
+    void at_output(double time, io::OutputStreams& output) override {
+        maps_.record(time, output.directory());
+    }
+    void append_results(std::vector<io::ResultFigure>& results) const override {
+        maps_.append_results(results);
+    }
+    void write_checkpoint(std::ostream& out) const override { io::write_array(out, maps_.state()); }
+    void read_checkpoint(std::istream& in) override {
+        std::vector<double> state;
+        io::read_array(in, state);
+        maps_.set_state(state);
+    }
+
+  private:
+    std::string name_;
+    WallMapSet maps_;
+    WallLoads loads_;
+};
+
+} // namespace
+
+std::unique_ptr<ScenePart> wall_map_part(std::string name, WallMapSet maps, WallLoads loads) {
+    return std::make_unique<WallMapPart>(std::move(name), std::move(maps), std::move(loads));
+}
+
+} // namespace grainload::particles

@@ -1,16 +1,31 @@
 #pragma once
-// Wall-load maps: the normal pressure and friction traction of chosen walls, binned on a grid.
+// Wall-load maps: the normal pressure and friction traction of chosen walls, binned on a grid
+// (SPH's and the DEM's).
 
 #include "io/frame.hpp"
-#include "sph/particle_set.hpp"
-#include "sph/wall.hpp"
+#include "io/types.hpp"
+#include "particles/scene_part.hpp"
 
 #include <array>
+#include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-namespace grainload::sph {
+namespace grainload::particles {
+
+/// A load on a mapped wall in a step: where it acts, the wall's normal there (into the
+/// material) and the force the material puts on the wall there.
+struct WallLoad {
+    Vec3 at = Vec3::Zero();
+    Vec3 normal = Vec3::Zero();
+    Vec3 force = Vec3::Zero();
+};
+
+/// The loads on the method's wall `wall` (an index of its walls) in the step just made, in an
+/// order that does not depend on the thread count.
+using WallLoads = std::function<void(int wall, std::vector<WallLoad>& loads)>;
 
 /// Wall loads the way engineers read them: the normal pressure and the wall-friction
 /// traction of chosen walls, binned on a grid, as the mean over each output interval and as the
@@ -20,7 +35,9 @@ namespace grainload::sph {
 ///   pressure p = -f . n / A,   traction t = (f - (f . n) n) / A,
 /// A the cell's area; t is given along the axis and around it (cylinder) or along the grid's
 /// edges (plane). The impulses f dt of every step are summed per cell, so a map is the mean
-/// over its interval, not a snapshot of one step's noise.
+/// over its interval, not a snapshot of one step's noise. The method gives the loads: SPH the
+/// force on each wall particle, standing for a patch of its spacing; the DEM each contact's
+/// force on a wall, at its point.
 class WallMapSet {
   public:
     /// Loads of one cell: pressure and two traction components, in Pa (N/m in plane strain
@@ -29,7 +46,7 @@ class WallMapSet {
 
     struct Map {
         std::string name;
-        std::vector<int> walls; ///< indices into the solver's walls
+        std::vector<int> walls; ///< indices into the method's walls
         bool cylinder = true;
         Vec3 origin = Vec3::Zero();
         Vec3 axis = Vec3::UnitZ();      ///< cylinder: unit axis
@@ -43,8 +60,9 @@ class WallMapSet {
         int bins_1 = 1;             ///< along the axis, or along edge_u
         int bins_2 = 1;             ///< around the axis, or along edge_v
         double reach = 0.0;         ///< infinity: no limit
-        /// Half the particle spacing of each of `walls`: a particle's load is spread over the
-        /// patch of one spacing around it (see shares()).
+        /// Half the width of the patch each load on one of `walls` stands for: SPH's particle
+        /// load is spread over the patch of one spacing around it (see shares()); 0 for a
+        /// point (a DEM contact), whose load goes to the cell that holds it.
         std::vector<double> half_spacing;
         double window_start = 0.0;
         double window_end = 0.0;
@@ -60,9 +78,9 @@ class WallMapSet {
         /// Grid coordinates of x, each 0 to 1 across the grid (outside: beyond it), or nullopt
         /// beyond reach of the surface.
         std::optional<std::array<double, 2>> coordinates(const Vec3& x) const;
-        /// The cells a wall particle at x shares its load with, and the shares (they sum to 1):
-        /// its patch, `half` (half its wall's spacing) either side, against the cells; 0
-        /// outside the grid or beyond reach.
+        /// The cells a load at x shares with, and the shares (they sum to 1): its patch, `half`
+        /// either side, against the cells (a point: the cell holding it); 0 outside the grid or
+        /// beyond reach.
         int shares(const Vec3& x, double half, std::array<std::pair<int, double>, 4>& out) const;
         /// The grid's size along its two directions (m; 0: plane strain's depth).
         std::array<double, 2> extents() const;
@@ -75,15 +93,14 @@ class WallMapSet {
     };
 
     WallMapSet() = default;
-    /// The maps as sph/wall_map_reader.hpp reads them from a case.
+    /// The maps as particles/wall_map_reader.hpp reads them from a case.
     explicit WallMapSet(std::vector<Map> maps) : maps_(std::move(maps)) { reset(); }
 
     bool empty() const { return maps_.empty(); }
     const std::vector<Map>& maps() const { return maps_; }
 
-    /// Add the impulses of the step [t, t + dt]: the particles hold the forces of its force pass.
-    void accumulate(const ParticleSet& particles, const std::vector<Wall>& walls, double t,
-                    double dt);
+    /// Add the impulses of the step [t, t + dt], its loads as `loads` gives them.
+    void accumulate(double t, double dt, const WallLoads& loads);
     /// At an output instant: DIR/wall_maps/NAME_NNNNNN.csv (the mean over the interval since
     /// the last instant; zeros at the first) and NAME_window.csv, written atomically.
     void record(double time, const std::string& directory);
@@ -103,7 +120,7 @@ class WallMapSet {
     /// Mean over the window so far: its impulse over the elapsed part of the window.
     Load window_mean(const Map& map, int cell) const;
 
-    /// One wall particle's cells, shares and load in a step (scratch of accumulate()).
+    /// One load's cells, shares and split in a step (scratch of accumulate()).
     struct ParticleShares {
         int count = 0;
         std::array<std::pair<int, double>, 4> cells;
@@ -112,9 +129,15 @@ class WallMapSet {
 
     std::vector<Map> maps_;
     std::vector<ParticleShares> shares_;
+    std::vector<WallLoad> loads_;
     double last_time_ = 0.0;    ///< the last instant recorded
     double instants_ = 0.0;     ///< files written per map so far (a count; double for state())
     bool recorded_any_ = false; ///< an instant has been recorded
 };
 
-} // namespace grainload::sph
+/// The maps as a scene part named `name` (its checkpoint section: "sph.wall_map", "dem.wall_map"):
+/// they sum the loads `loads` gives after every step and write their interval and window tables
+/// at the output instants.
+std::unique_ptr<ScenePart> wall_map_part(std::string name, WallMapSet maps, WallLoads loads);
+
+} // namespace grainload::particles
