@@ -15,8 +15,9 @@ namespace dim = io::dimension;
 
 namespace {
 
-/// sphere_centres: three numbers per sphere, 2 to 16 spheres, no two centres closer than two
-/// radii (touching at most: overlapping spheres would count their common volume twice).
+/// sphere_centres: three numbers per sphere, 2 to 16 spheres; sphere_radii, one per centre; no
+/// two spheres overlapping (touching at most: overlapping spheres would count their common
+/// volume twice).
 void read_sphere_centres(const io::CaseTable& table, BodySettings& body) {
     for (const char* key : {"spheres", "sphere_distance"}) {
         if (table.has(key)) {
@@ -33,19 +34,34 @@ void read_sphere_centres(const io::CaseTable& table, BodySettings& body) {
     for (std::size_t k = 0; k < values.size(); k += 3) {
         body.sphere_centres.emplace_back(values[k], values[k + 1], values[k + 2]);
     }
-    // Two radii apart is touching; a centre typed to a few digits may land a hair inside.
-    constexpr double kTouching = 2.0 * (1.0 - 1e-9);
-    for (std::size_t a = 0; a < body.sphere_centres.size(); ++a) {
-        for (std::size_t b = a + 1; b < body.sphere_centres.size(); ++b) {
-            if (!((body.sphere_centres[a] - body.sphere_centres[b]).norm() >= kTouching)) {
-                table.fail("sphere_centres",
-                           "spheres " + std::to_string(a + 1) + " and " + std::to_string(b + 1) +
-                               " overlap: expected centres at least 2 radii apart (overlapping "
-                               "spheres would count their common volume twice)");
+    body.spheres = static_cast<int>(body.sphere_centres.size());
+    if (table.has("sphere_radii")) {
+        body.sphere_radii = table.quantity_list("sphere_radii", dim::kNone);
+        if (body.sphere_radii.size() != body.sphere_centres.size()) {
+            table.fail("sphere_radii", "expected one radius per sphere centre (" +
+                                           std::to_string(body.spheres) + "), got " +
+                                           std::to_string(body.sphere_radii.size()));
+        }
+        for (const double r : body.sphere_radii) {
+            if (!(r >= 0.1 && r <= 10.0)) {
+                table.fail("sphere_radii", "expected radii in [0.1, 10] of the grain's radius");
             }
         }
     }
-    body.spheres = static_cast<int>(body.sphere_centres.size());
+    // Touching spheres are their radii's sum apart; a centre typed to a few digits may land a
+    // hair inside.
+    constexpr double kTouching = 1.0 - 1e-9;
+    for (std::size_t a = 0; a < body.sphere_centres.size(); ++a) {
+        for (std::size_t b = a + 1; b < body.sphere_centres.size(); ++b) {
+            const double touch = body.sphere_radius(a) + body.sphere_radius(b);
+            if (!((body.sphere_centres[a] - body.sphere_centres[b]).norm() >= kTouching * touch)) {
+                table.fail("sphere_centres",
+                           "spheres " + std::to_string(a + 1) + " and " + std::to_string(b + 1) +
+                               " overlap: expected centres at least their radii's sum apart "
+                               "(overlapping spheres would count their common volume twice)");
+            }
+        }
+    }
 }
 
 /// spheres and sphere_distance: a clump of equal spheres on one axis.
@@ -69,6 +85,9 @@ void read_axial_clump(const io::CaseTable& table, BodySettings& body) {
 void read_clump(const io::CaseTable& table, BodySettings& body) {
     if (table.has("sphere_centres")) {
         read_sphere_centres(table, body);
+    } else if (table.has("sphere_radii")) {
+        table.fail("sphere_radii", "sphere_radii sizes the spheres of sphere_centres: expected "
+                                   "sphere_centres beside it");
     } else {
         read_axial_clump(table, body);
     }
@@ -117,8 +136,8 @@ void read_placement(const io::CaseTable& table, BodySettings& body) {
                                     "way: expected max - min >= 2 radius_max (1 + (spheres - 1) "
                                     "sphere_distance) on every axis"
                                   : "the box must hold a grain of the largest radius turned any "
-                                    "way: expected max - min >= 2 radius_max (1 + the farthest "
-                                    "sphere centre's distance from the clump's centre, in radii) "
+                                    "way: expected max - min >= 2 radius_max (the farthest "
+                                    "sphere's reach from the clump's centre of mass, in radii) "
                                     "on every axis");
         }
     }
@@ -130,16 +149,36 @@ double BodySettings::reach() const {
     if (sphere_centres.empty()) {
         return 1.0 + (spheres - 1) * sphere_distance;
     }
+    // The centre of mass: the centres weighted by their spheres' volumes.
     Vec3 centroid = Vec3::Zero();
-    for (const Vec3& c : sphere_centres) {
-        centroid += c;
+    for (std::size_t k = 0; k < sphere_centres.size(); ++k) {
+        centroid += std::pow(sphere_radius(k), 3) * sphere_centres[k];
     }
-    centroid /= static_cast<double>(sphere_centres.size());
+    centroid /= volume_ratio();
     double farthest = 0.0;
-    for (const Vec3& c : sphere_centres) {
-        farthest = std::max(farthest, (c - centroid).norm());
+    for (std::size_t k = 0; k < sphere_centres.size(); ++k) {
+        farthest = std::max(farthest, (sphere_centres[k] - centroid).norm() + sphere_radius(k));
     }
-    return 1.0 + farthest;
+    return farthest;
+}
+
+double BodySettings::largest_sphere() const {
+    return sphere_radii.empty() ? 1.0 : *std::max_element(sphere_radii.begin(), sphere_radii.end());
+}
+
+double BodySettings::smallest_sphere() const {
+    return sphere_radii.empty() ? 1.0 : *std::min_element(sphere_radii.begin(), sphere_radii.end());
+}
+
+double BodySettings::volume_ratio() const {
+    if (sphere_radii.empty()) {
+        return static_cast<double>(spheres);
+    }
+    double sum = 0.0;
+    for (const double r : sphere_radii) {
+        sum += r * r * r;
+    }
+    return sum;
 }
 
 BodySettings read_dem_body(const io::CaseTable& table,

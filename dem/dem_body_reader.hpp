@@ -20,7 +20,7 @@ class MaterialLibrary;
 namespace grainload::dem {
 
 /// The keys of each [[dem.body]].
-inline constexpr std::array<io::KeySpec, 17> kDemBodyKeys{{
+inline constexpr std::array<io::KeySpec, 18> kDemBodyKeys{{
     {"name", "string", "", "names the body in frames and summary.json"},
     {"material", "string", "",
      "a `linear_elastic` [[material]]: the solid grain's density, E and nu"},
@@ -41,7 +41,10 @@ inline constexpr std::array<io::KeySpec, 17> kDemBodyKeys{{
      1.0},
     {"sphere_centres", "list of numbers", "none: `spheres` on one axis",
      "a clump of any shape: x y z of each sphere's centre in sphere radii, three numbers per "
-     "sphere (2 to 16 spheres, no two centres closer than 2)"},
+     "sphere (2 to 16 spheres, no two overlapping)"},
+    {"sphere_radii", "list of numbers", "1 for every sphere",
+     "with sphere_centres: each sphere's radius in the grain's radius, one per centre, in "
+     "[0.1, 10]"},
     {"axis", "vector", "1 0 0",
      "a clump placed at a centre: the direction of its axis (of least inertia)"},
     {"velocity", "velocity vector", "0 m/s", "every grain's initial velocity"},
@@ -66,6 +69,8 @@ struct BodySettings {
     /// A clump of any shape: its spheres' centres in sphere radii (empty: `spheres` on one
     /// axis, `sphere_distance` apart).
     std::vector<Vec3> sphere_centres;
+    /// Each sphere's radius over the grain's drawn radius (empty: every sphere of it).
+    std::vector<double> sphere_radii;
     Vec3 axis = Vec3::UnitX();
     Vec3 velocity = Vec3::Zero();
     Vec3 angular_velocity = Vec3::Zero();
@@ -74,9 +79,20 @@ struct BodySettings {
     /// Where the case gives the count (or the centre): a packing that cannot hold the count is
     /// refused there.
     std::string where;
-    /// How far a grain reaches from its centre of mass, in sphere radii: 1 plus its farthest
-    /// sphere centre's distance, (spheres - 1) sphere_distance on one axis.
+    /// How far a grain reaches from its centre of mass, in the grain's radius: its farthest
+    /// sphere's centre distance plus that sphere's radius, 1 + (spheres - 1) sphere_distance on
+    /// one axis.
     double reach() const;
+    /// The radius of its sphere k over the grain's radius (1 unless sphere_radii).
+    double sphere_radius(std::size_t k) const {
+        return sphere_radii.empty() ? 1.0 : sphere_radii[k];
+    }
+    /// Its largest and its smallest sphere's radius over the grain's radius.
+    double largest_sphere() const;
+    double smallest_sphere() const;
+    /// The grain's volume over a sphere's of the grain's radius: the sum of its spheres' cubed
+    /// radii (its sphere count for equal spheres).
+    double volume_ratio() const;
 };
 
 /// Reads one [[dem.body]] table: radii, clump (spheres on an axis or sphere_centres), placement,

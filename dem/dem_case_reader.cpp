@@ -226,8 +226,8 @@ SourceSettings read_source(const io::CaseTable& table, const std::vector<BodySet
                               ? "the box must hold a grain of the body's largest radius: expected "
                                 "max - min >= 2 radius_max on every axis"
                               : "the box must hold a clump of the body's largest radius turned "
-                                "any way: expected max - min >= 2 radius_max (1 + its farthest "
-                                "sphere centre's distance from its centre, in radii) on every "
+                                "any way: expected max - min >= 2 radius_max (its farthest "
+                                "sphere's reach from its centre of mass, in radii) on every "
                                 "axis");
     }
     source.rate = table.positive_quantity("rate", dim::kFrequency);

@@ -31,19 +31,19 @@ double skin_of(const DemSettings& settings, double largest) {
 double largest_radius(const DemSettings& settings) {
     double largest = 0.0;
     for (const BodySettings& body : settings.bodies) {
-        largest = std::max(largest, body.radius_max);
+        largest = std::max(largest, body.radius_max * body.largest_sphere());
     }
     return largest;
 }
 
-/// The pairs' neighbour range: two of the largest radii, and the reach of cohesion between the
-/// heaviest grains (its pull grows with the lighter grain's mass).
+/// The pairs' neighbour range: two of the largest spheres' radii, and the reach of cohesion
+/// between the heaviest grains (its pull grows with the lighter grain's mass).
 double pair_range(const DemSettings& settings, const materials::MaterialLibrary& materials) {
     double heaviest = 0.0;
     for (const BodySettings& body : settings.bodies) {
-        heaviest = std::max(heaviest,
-                            body.spheres * sphere_mass(body.radius_max,
-                                                       materials[body.material].elastic().density));
+        heaviest = std::max(
+            heaviest, body.volume_ratio() *
+                          sphere_mass(body.radius_max, materials[body.material].elastic().density));
     }
     return 2.0 * largest_radius(settings) +
            cohesion_reach(settings.law, settings.law.cohesion_pull, heaviest);
@@ -122,8 +122,11 @@ void DemModel::combine_body_pairs() {
 
 double DemModel::pair_contact_time(std::size_t a, std::optional<std::size_t> b, bool largest,
                                    double speed) const {
+    // The smallest (largest) sphere of the body's smallest (largest) grains.
     const auto radius = [&](std::size_t body) {
-        return largest ? settings_.bodies[body].radius_max : settings_.bodies[body].radius_min;
+        const BodySettings& grains = settings_.bodies[body];
+        return largest ? grains.radius_max * grains.largest_sphere()
+                       : grains.radius_min * grains.smallest_sphere();
     };
     const auto mass = [&](std::size_t body) {
         return sphere_mass(radius(body), body_density_[body]);

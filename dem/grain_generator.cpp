@@ -69,26 +69,44 @@ Vec3 draw_centre(const BodySettings& body, const GrainShape& shape,
     return centre;
 }
 
-/// A clump of equal spheres at `centres` (in radii): its inertia tensor about the centre of
-/// mass, sum of (2/5) m_s r^2 1 + m_s (|d|^2 1 - d d^T) over the spheres at d from it (the
-/// parallel axis theorem; touching spheres share no volume), diagonalised: the principal
-/// moments are the grain's, and its own frame is the principal one (right-handed), in which
-/// the sphere offsets are stated.
-GrainShape clump_shape(const std::vector<Vec3>& centres, double radius, double density) {
+/// A clump of spheres at `body.sphere_centres` (in the grain's radius r), of radii
+/// `body.sphere_radii` (the same units; all r when none): its mass the spheres' sum, its centre
+/// of mass their mass-weighted centre, its inertia tensor about that centre the sum of
+/// (2/5) m_k r_k^2 1 + m_k (|d_k|^2 1 - d_k d_k^T) over the spheres at d_k from it (the parallel
+/// axis theorem; touching spheres share no volume), diagonalised: the principal moments are the
+/// grain's, and its own frame is the principal one (right-handed), in which the sphere offsets
+/// are stated.
+GrainShape clump_shape(const BodySettings& body, double radius, double density) {
+    const std::vector<Vec3>& centres = body.sphere_centres;
     GrainShape shape;
     shape.radius = radius;
     const double one = sphere_mass(radius, density);
     const auto k = static_cast<double>(centres.size());
-    shape.mass = k * one;
-    Vec3 centroid = Vec3::Zero();
-    for (const Vec3& c : centres) {
-        centroid += c;
+    // Each sphere's mass over one of radius r: its radius cubed (1 for equal spheres, whose
+    // sums below are those of k equal terms).
+    std::vector<double> weight;
+    for (std::size_t s = 0; s < centres.size(); ++s) {
+        const double r = body.sphere_radius(s);
+        weight.push_back(r * r * r);
+        shape.radii.push_back(r * radius);
     }
-    centroid /= k;
+    const double total = body.volume_ratio();
+    shape.mass = total * one;
+    Vec3 centroid = Vec3::Zero();
+    for (std::size_t s = 0; s < centres.size(); ++s) {
+        centroid += weight[s] * centres[s];
+    }
+    centroid /= total;
     Mat3 tensor = k * 0.4 * one * radius * radius * Mat3::Identity();
-    for (const Vec3& c : centres) {
-        const Vec3 d = radius * (c - centroid);
-        tensor += one * (d.squaredNorm() * Mat3::Identity() - d * d.transpose());
+    if (!body.sphere_radii.empty()) {
+        tensor.setZero();
+        for (std::size_t s = 0; s < centres.size(); ++s) {
+            tensor += 0.4 * weight[s] * one * shape.radii[s] * shape.radii[s] * Mat3::Identity();
+        }
+    }
+    for (std::size_t s = 0; s < centres.size(); ++s) {
+        const Vec3 d = radius * (centres[s] - centroid);
+        tensor += weight[s] * one * (d.squaredNorm() * Mat3::Identity() - d * d.transpose());
     }
     const Eigen::SelfAdjointEigenSolver<Mat3> principal(tensor);
     Mat3 axes = principal.eigenvectors();
@@ -119,9 +137,10 @@ Eigen::Quaterniond random_orientation(std::mt19937_64& generator) {
 }
 
 Vec3 grain_reach(const GrainShape& shape, const Eigen::Quaterniond& turned) {
-    Vec3 reach = Vec3::Constant(shape.radius);
-    for (const Vec3& offset : shape.offsets) {
-        reach = reach.cwiseMax(Vec3(Vec3::Constant(shape.radius) + (turned * offset).cwiseAbs()));
+    Vec3 reach = Vec3::Zero();
+    for (std::size_t s = 0; s < shape.offsets.size(); ++s) {
+        reach = reach.cwiseMax(
+            Vec3(Vec3::Constant(shape.radii[s]) + (turned * shape.offsets[s]).cwiseAbs()));
     }
     return reach;
 }
@@ -138,18 +157,19 @@ Index add_grain(const BodySettings& body, int body_id, const GrainShape& shape, 
     grains.velocity[static_cast<std::size_t>(g)] = velocity;
     grains.angular_velocity[static_cast<std::size_t>(g)] =
         body.rotation ? angular_velocity : Vec3::Zero();
-    for (const Vec3& offset : shape.offsets) {
-        spheres.add(g, shape.radius, offset);
+    for (std::size_t s = 0; s < shape.offsets.size(); ++s) {
+        spheres.add(g, shape.radii[s], shape.offsets[s]);
     }
     return g;
 }
 
 GrainShape grain_shape(const BodySettings& body, double radius, double density) {
     if (!body.sphere_centres.empty()) {
-        return clump_shape(body.sphere_centres, radius, density);
+        return clump_shape(body, radius, density);
     }
     GrainShape shape;
     shape.radius = radius;
+    shape.radii.assign(static_cast<std::size_t>(body.spheres), radius);
     const double one = sphere_mass(radius, density);
     const double own = 0.4 * one * radius * radius;
     const double spacing = body.sphere_distance * 2.0 * radius;
@@ -175,7 +195,7 @@ void place_grains(const BodySettings& body, int body_id, double density, GrainSe
         spheres.place(grains);
         return;
     }
-    double largest = body.radius_max;
+    double largest = body.radius_max * body.largest_sphere();
     for (const double r : spheres.radius) {
         largest = std::max(largest, r);
     }
@@ -198,8 +218,10 @@ void place_grains(const BodySettings& body, int body_id, double density, GrainSe
             const Eigen::Quaterniond turned =
                 body.spheres > 1 ? random_orientation(generator) : Eigen::Quaterniond::Identity();
             const Vec3 centre = draw_centre(body, shape, turned, generator);
-            fits = std::all_of(shape.offsets.begin(), shape.offsets.end(),
-                               [&](const Vec3& o) { return grid.free(centre + turned * o, r); });
+            fits = true;
+            for (std::size_t s = 0; s < shape.offsets.size() && fits; ++s) {
+                fits = grid.free(centre + turned * shape.offsets[s], shape.radii[s]);
+            }
             if (fits) {
                 add_grain(body, body_id, shape, centre, turned, body.velocity,
                           body.angular_velocity, grains, spheres);

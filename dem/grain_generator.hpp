@@ -20,13 +20,15 @@ inline double sphere_mass(double radius, double density) {
 /// grain's own x axis, centre to centre sphere_distance x 2r (1: touching, as the paper's
 /// two-sphere particles; Markauskas), the centre of mass at their middle. Mass k m_s; principal
 /// moments k (2/5) m_s r^2 about the axis and sum((2/5) m_s r^2 + m_s x_j^2) across it. A clump
-/// of any shape (sphere_centres) in its principal frame, its moments the inertia tensor's
-/// eigenvalues in ascending order (grain_generator.cpp, clump_shape).
+/// of any shape (sphere_centres, of equal or unequal spheres: sphere_radii) in its principal
+/// frame, its moments the inertia tensor's eigenvalues in ascending order (grain_generator.cpp,
+/// clump_shape). `radius` is the grain's drawn radius r, `radii` each sphere's.
 struct GrainShape {
     double radius = 0.0;
     double mass = 0.0;
     Vec3 inertia = Vec3::Zero();
     std::vector<Vec3> offsets;
+    std::vector<double> radii;
 };
 GrainShape grain_shape(const BodySettings& body, double radius, double density);
 

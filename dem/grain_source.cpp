@@ -73,9 +73,10 @@ bool GrainSources::free(const Vec3& centre, double radius) const {
 
 void GrainSources::add_placed(const particles::Arrival& arrival) {
     const auto body = static_cast<std::size_t>(arrival.body);
-    for (const Vec3& offset :
-         grain_shape(bodies_[body], arrival.radius, body_density_[body]).offsets) {
-        placed_.emplace_back(arrival.position + arrival.orientation * offset, arrival.radius);
+    const GrainShape shape = grain_shape(bodies_[body], arrival.radius, body_density_[body]);
+    for (std::size_t s = 0; s < shape.offsets.size(); ++s) {
+        placed_.emplace_back(arrival.position + arrival.orientation * shape.offsets[s],
+                             shape.radii[s]);
     }
 }
 
@@ -96,8 +97,11 @@ std::optional<particles::Arrival> GrainSources::draw(Source& source) {
             centre[a] = s.min[a] + reach[a] +
                         (s.max[a] - s.min[a] - 2.0 * reach[a]) * uniform(source.generator);
         }
-        if (std::all_of(shape.offsets.begin(), shape.offsets.end(),
-                        [&](const Vec3& offset) { return free(centre + turned * offset, r); })) {
+        bool fits = true;
+        for (std::size_t k = 0; k < shape.offsets.size() && fits; ++k) {
+            fits = free(centre + turned * shape.offsets[k], shape.radii[k]);
+        }
+        if (fits) {
             particles::Arrival arrival;
             arrival.position = centre;
             arrival.velocity = s.velocity;

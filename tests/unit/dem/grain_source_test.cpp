@@ -99,6 +99,25 @@ TEST(GrainSources, ClumpsAppearWholeTurnedAtRandomAndClear) {
     EXPECT_NO_THROW(raining("100 1/s", 5, "spheres = 3\n", "0.04 0.04 0.03 m"));
 }
 
+// Dumbbells of a sphere of the drawn radius r and one of r/2 rained in at once: each grain
+// whole (its second sphere half the first's radius, its mass (1 + 1/8) spheres of radius r) and
+// every sphere clear of every other by its own radius.
+TEST(GrainSources, ClumpsOfUnequalSpheresAppearWholeAndClear) {
+    auto model =
+        raining("1e6 1/s", 40, "sphere_centres = [0, 0, 0, 1.5, 0, 0]\nsphere_radii = [1, 0.5]\n");
+    step_until(*model, 0.0, 0.02, [](double) {});
+    const dem::GrainSet& grains = model->grains();
+    const dem::SphereSet& spheres = model->spheres();
+    ASSERT_GT(grains.size(), 3);
+    EXPECT_EQ(spheres.size(), 2 * grains.size());
+    EXPECT_GE(smallest_gap(spheres), -1e-9) << "grains may only have settled into contact";
+    for (Index g = 0; g < grains.size(); ++g) {
+        const double r = spheres.radius[static_cast<std::size_t>(2 * g)];
+        EXPECT_EQ(spheres.radius[static_cast<std::size_t>(2 * g + 1)], 0.5 * r);
+        EXPECT_NEAR(grains.mass[g], 1.125 * dem::sphere_mass(r, 2500.0), 1e-15);
+    }
+}
+
 // What `grainload check` counts: the grains the source makes by the end time (its count, or its
 // rate over its window when that is fewer), each from the mean arrival time of its source's
 // grains: 5 grains from 0.01 s at 100 per second arrive on average at 0.035 s, so over 1000
