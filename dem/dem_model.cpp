@@ -17,14 +17,6 @@ namespace grainload::dem {
 
 namespace {
 
-// A wall due at remove_at leaves after the step whose end reaches it. The end of a step that the
-// driver cut to an output instant can fall an ulp short of that instant, and remove_at = an
-// output instant means that instant (as the SPH gates and the driver's own end take it); a
-// wall removed at a phase's start leaves with the step that ended the phase before it, whose
-// end is the start or a stated end reached within the phases' own tolerance
-// (particles/phase_sequence.cpp).
-constexpr double kRemovalTimeTolerance = 1e-12;
-
 /// The Verlet skin: the declared one, else 0.4 of the largest radius (a rebuild every few
 /// dozen steps of a settling packing).
 double skin_of(const DemSettings& settings, double largest) {
@@ -358,8 +350,9 @@ void DemModel::exchange(double t, double dt) {
 
 void DemModel::remove_walls(double time) {
     for (PlaneWall& wall : walls_) {
-        const double due = wall.remove_at * (1.0 - kRemovalTimeTolerance);
-        if (!wall.removed && time >= due) {
+        // A wall due at remove_at (a time, or a phase's start, which the step that ended the
+        // phase before it reaches) leaves after the step whose end reaches it.
+        if (!wall.removed && particles::reaches(time, wall.remove_at)) {
             wall.removed = true;
             wall.force = Vec3::Zero();
             wall.normal_force = 0.0;

@@ -11,10 +11,6 @@ namespace grainload::particles {
 namespace {
 
 constexpr double kNever = std::numeric_limits<double>::infinity();
-// A phase due at a stated time ends with the step whose end reaches it; a step cut to an output
-// instant can end an ulp short of it, and an end at an output instant means that instant (the
-// tolerance of the driver's end time and of remove_at).
-constexpr double kEndTimeTolerance = 1e-12;
 // The checkpoint's entries per phase: start, finish, discharged at start, watch peak and time.
 constexpr std::size_t kStateEntries = 5;
 
@@ -96,7 +92,7 @@ std::vector<std::string> PhaseSequence::update(double time, double discharged) {
     while (current_ < phases_.size()) {
         Phase& phase = phases_[current_];
         double finish = kNever;
-        if (phase.end == End::time && time >= phase.end_time * (1.0 - kEndTimeTolerance)) {
+        if (phase.end == End::time && reaches(time, phase.end_time)) {
             finish = std::max(phase.end_time, phase.start);
         } else if (phase.end == End::settled && phase.watch.settled()) {
             finish = phase.watch.settle_time();

@@ -10,6 +10,14 @@
 
 namespace grainload::particles {
 
+/// Whether a step ending at `time` reaches the stated time `due` (a phase's end, a wall's
+/// remove_at): a step cut to an output instant can end an ulp short of it, and a time at an
+/// output instant means that instant, so within 1e-12 of it counts (the tolerance of the
+/// driver's own end time).
+inline bool reaches(double time, double due) {
+    return time >= due * (1.0 - 1e-12);
+}
+
 /// The run's phases as the case states them ([[phase]]): in order, each starting where the one
 /// before ended, each ending at a stated time or on a condition (the scene settled, the sinks
 /// took a mass). A phase's start is known as soon as every phase before it has ended or ends
