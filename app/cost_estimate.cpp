@@ -452,11 +452,11 @@ std::string describe_cost(const CostEstimate& e) {
             e.shell_back_substitutions);
     }
     add_line(out,
-             "      estimated wall time %s on %d threads (SPH %s, shell %s, %.0f frames %s), "
+             "      estimated wall time %s on %d thread%s (SPH %s, shell %s, %.0f frames %s), "
              "memory %.0f MiB\n",
-             duration(e.wall_time_s).c_str(), e.threads, duration(e.sph_seconds).c_str(),
-             duration(e.shell_seconds).c_str(), e.frames, duration(e.output_seconds).c_str(),
-             e.memory_bytes / (1024.0 * 1024.0));
+             duration(e.wall_time_s).c_str(), e.threads, e.threads == 1 ? "" : "s",
+             duration(e.sph_seconds).c_str(), duration(e.shell_seconds).c_str(), e.frames,
+             duration(e.output_seconds).c_str(), e.memory_bytes / (1024.0 * 1024.0));
     if (e.coupling_window > 0.0) {
         describe_coupling(out, e);
     }

@@ -228,7 +228,8 @@ struct CaseRun {
 void announce(CaseRun& run) {
     run.progress.message("grainload " + std::string(kVersion) + " (" + kGitHash + "): case " +
                          run.scene.settings.name + ", " + std::to_string(run.scene.point_count()) +
-                         " points, " + std::to_string(omp_get_max_threads()) + " threads" +
+                         " points, " + std::to_string(omp_get_max_threads()) +
+                         (omp_get_max_threads() == 1 ? " thread" : " threads") +
                          (run.line.auto_threads ? " (auto: the cores free at start)" : "") +
                          ", output " + run.out);
     if (run.line.restart) {

@@ -107,6 +107,8 @@ void contact_force(const ContactLaw& law, const PairProperties& pair, double tim
         state.elastic_energy = 0.4 * elastic_normal * delta;
     }
     const double normal_force = elastic_normal - damping_n * normal_speed;
+    state.elastic_n = elastic_normal;
+    state.stiffness_n = stiffness_n;
 
     // The spring lives in the tangent plane: turn it with the contact, then add this step's
     // slip.

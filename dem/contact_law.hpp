@@ -101,6 +101,10 @@ struct ContactState {
     Vec3 torque = Vec3::Zero();
     /// The elastic energy the contact holds (normal and tangential springs), for the books.
     double elastic_energy = 0.0;
+    /// The normal spring's force (the dashpot's left out) and its tangent stiffness
+    /// dF_n/d(overlap) at the contact's overlap [N, N/m]: what a servo wall's contacts sum.
+    double elastic_n = 0.0;
+    double stiffness_n = 0.0;
 };
 
 /// Evaluate the contact: state.force, state.torque, the springs and state.elastic_energy from

@@ -287,6 +287,8 @@ int gather_walls(Pass& p, const std::vector<PlaneWall>& walls, Index i, WallShar
             g.torque[owner] += s.arm[at].cross(state.force);
             on_walls[w].force -= state.force;
             on_walls[w].normal += state.force.dot(state.normal);
+            on_walls[w].elastic += state.elastic_n;
+            on_walls[w].stiffness += state.stiffness_n;
             if (wall.follows() && state.force != Vec3::Zero()) {
                 p.x.vertex_shares[at].push_back(vertex_share(wall, w, touch, point, -state.force));
             }
@@ -437,10 +439,14 @@ void book_walls(const ContactScratch& scratch, Index grains, std::vector<PlaneWa
     for (std::size_t w = 0; w < wall_count; ++w) {
         walls[w].force = Vec3::Zero();
         walls[w].normal_force = 0.0;
+        walls[w].elastic_normal_force = 0.0;
+        walls[w].normal_stiffness = 0.0;
         for (Index k = 0; k < grains; ++k) {
             const WallShare& share = scratch.on_walls[static_cast<std::size_t>(k) * wall_count + w];
             walls[w].force += share.force;
             walls[w].normal_force += share.normal;
+            walls[w].elastic_normal_force += share.elastic;
+            walls[w].normal_stiffness += share.stiffness;
         }
     }
     if (following) {

@@ -60,6 +60,8 @@ struct PairResult {
 struct WallShare {
     Vec3 force = Vec3::Zero();
     double normal = 0.0;
+    double elastic = 0.0;   ///< its contacts' normal springs' forces
+    double stiffness = 0.0; ///< and their tangent stiffnesses
 };
 
 /// A contact's load on a following wall (PlaneWall::VertexMotion): its face, the contact

@@ -367,6 +367,7 @@ DemSettings read_dem_settings(const io::CaseTable& root,
         io::refuse_repeated_name(table, settings.walls, wall.name, "wall", &PlaneWall::name);
         settings.walls.push_back(std::move(wall));
     }
+    settings.triaxial = read_triaxial(dem, up, settings.walls);
     read_sources(dem, settings);
     std::vector<std::string> wall_names;
     for (const PlaneWall& wall : settings.walls) {

@@ -4,6 +4,7 @@
 #include "dem/contact_law.hpp"
 #include "dem/dem_body_reader.hpp"
 #include "dem/plane_wall.hpp"
+#include "dem/triaxial_reader.hpp"
 #include "io/key_spec.hpp"
 #include "io/types.hpp"
 #include "particles/phase_sequence.hpp"
@@ -149,6 +150,8 @@ struct DemSettings {
     ContactLaw law;
     std::vector<BodySettings> bodies;
     std::vector<PlaneWall> walls;
+    /// [dem.triaxial]: a triaxial cell, its six walls the last of `walls`.
+    std::optional<TriaxialSettings> triaxial;
     std::vector<SourceSettings> sources;
     /// [[dem.wall_map]]: maps of the walls' pressure and friction (walls by index of `walls`).
     std::vector<particles::WallMapSet::Map> wall_maps;
@@ -163,7 +166,8 @@ struct DemSettings {
     std::string damping_where;
 };
 
-/// Reads [dem], [dem.contact], [[dem.body]], [[dem.wall]], [[dem.source]], [[dem.sink]] and
+/// Reads [dem], [dem.contact], [[dem.body]], [[dem.wall]], [dem.triaxial], [[dem.source]],
+/// [[dem.sink]] and
 /// the [[phase]] tables of the case; the scene's up axis opens a box's top, its gravity gives
 /// the sinks' Beverloo rates. Bad input throws io::CaseError naming the key.
 DemSettings read_dem_settings(const io::CaseTable& root,

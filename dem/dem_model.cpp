@@ -2,6 +2,7 @@
 
 #include "dem/grain_generator.hpp"
 #include "dem/grain_motion.hpp"
+#include "dem/triaxial_cell.hpp"
 #include "io/case_error.hpp"
 #include "materials/material_library.hpp"
 #include "particles/compact.hpp"
@@ -93,6 +94,7 @@ DemModel::DemModel(DemSettings settings, const io::SceneSettings& scene,
                                         [this] { return sources_->created_mass(); }}));
     }
     add_wall_maps();
+    add_triaxial();
     add_phases();
     evaluate(0.0);
     start_energy_ = energy().total();
@@ -112,6 +114,13 @@ void DemModel::combine_body_pairs() {
         wall.friction = settings_.law.wall_friction;
         wall.rolling_friction = settings_.law.wall_rolling_friction;
         body_walls_.push_back(wall);
+    }
+    if (settings_.triaxial && settings_.triaxial->consolidation_friction) {
+        consolidation_pairs_ = body_pairs_;
+        for (PairProperties& pair : consolidation_pairs_) {
+            pair.friction = *settings_.triaxial->consolidation_friction;
+        }
+        consolidating_ = settings_.triaxial->consolidates(0.0);
     }
 }
 
@@ -220,12 +229,14 @@ void DemModel::evaluate(double time) {
         }
     }
     neighbours_.update(spheres_.position, {});
-    books_ =
-        evaluate_contacts(grains_, spheres_, neighbours_, walls_,
-                          {settings_.law, body_pairs_, body_walls_, gravity_}, step_, scratch_);
+    books_ = evaluate_contacts(
+        grains_, spheres_, neighbours_, walls_,
+        {settings_.law, consolidating_ ? consolidation_pairs_ : body_pairs_, body_walls_, gravity_},
+        step_, scratch_);
 }
 
 void DemModel::advance(double t, double dt) {
+    consolidating_ = settings_.triaxial && settings_.triaxial->consolidates(t);
     if (settings_.integrator == Integrator::predictor_corrector) {
         predictor_corrector_step(t, dt);
     } else {
@@ -303,6 +314,12 @@ void DemModel::add_wall_maps() {
     };
     parts_.add(particles::wall_map_part("dem.wall_map", particles::WallMapSet(settings_.wall_maps),
                                         std::move(loads)));
+}
+
+void DemModel::add_triaxial() {
+    if (settings_.triaxial) {
+        parts_.add(std::make_shared<TriaxialCell>(*settings_.triaxial, walls_, spheres_));
+    }
 }
 
 void DemModel::add_phases() {

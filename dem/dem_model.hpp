@@ -136,6 +136,8 @@ class DemModel final : public io::Stepper, public io::Reporter {
     /// The [[dem.wall_map]] tables as a part of parts_, reading the contacts' loads on the
     /// mapped walls (none: no maps).
     void add_wall_maps();
+    /// [dem.triaxial]'s cell as a part of parts_ (none: no cell).
+    void add_triaxial();
     /// The grains' translational and rotational kinetic energy [J].
     double kinetic_energy() const;
     void add_arrivals(const std::vector<particles::Arrival>& arrivals);
@@ -150,6 +152,9 @@ class DemModel final : public io::Stepper, public io::Reporter {
     std::vector<GrainElastic> body_elastic_;
     std::vector<PairProperties> body_pairs_; ///< E*, G*, friction of two bodies' grains
     std::vector<PairProperties> body_walls_; ///< and of a body's grains on a wall
+    /// body_pairs_ with [dem.triaxial] consolidation_friction, while the cell consolidates.
+    std::vector<PairProperties> consolidation_pairs_;
+    bool consolidating_ = false; ///< the step under way uses consolidation_pairs_
     std::vector<double> body_density_;
     GrainSet grains_;
     SphereSet spheres_;

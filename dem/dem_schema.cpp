@@ -13,7 +13,7 @@ namespace {
 
 constexpr std::string_view kGuide = "docs/user-guide/dem.md";
 
-const std::array<io::KeyTable, 8> kTables{{
+const std::array<io::KeyTable, 9> kTables{{
     {"dem", false, "the discrete element method: its step and neighbour search", kDemKeys, kGuide,
      "### `[dem]`"},
     {"dem.contact", false, "the contact law between grains and with walls", kDemContactKeys, kGuide,
@@ -24,6 +24,8 @@ const std::array<io::KeyTable, 8> kTables{{
      kGuide, "### `[[dem.wall]]`"},
     {"dem.wall", true, "a mesh wall's surface", io::kSurfaceMeshKeys, kGuide,
      "### Mesh walls: `[[dem.wall]]` type = \"mesh\""},
+    {"dem.triaxial", false, "a triaxial cell: servo side walls at a confining stress, a platen",
+     kDemTriaxialKeys, kGuide, "### `[dem.triaxial]`"},
     {"dem.sink", true, "a region grains leave the scene through", particles::kSinkKeys, kGuide,
      "### `[[dem.sink]]`"},
     {"dem.source", true, "a box grains of a body rain in through", kDemSourceKeys, kGuide,

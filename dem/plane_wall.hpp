@@ -45,6 +45,11 @@ struct PlaneWall {
     /// The sum of its contacts' normal forces [N]: on a curved wall, whose contacts' forces
     /// cancel in `force`, its pressure times its area.
     double normal_force = 0.0;
+    /// The sums of its contacts' normal springs' forces (normal_force less the dashpots') and
+    /// of their tangent stiffnesses [N, N/m]: what a servo moving the wall along its normal
+    /// meets.
+    double elastic_normal_force = 0.0;
+    double normal_stiffness = 0.0;
     /// The wall leaves the scene at the end of the step that reaches this time (a gate).
     double remove_at = std::numeric_limits<double>::infinity();
     /// The [[phase]] whose start is remove_at (-1: a time the case states).
@@ -59,6 +64,12 @@ struct PlaneWall {
     double move_end = std::numeric_limits<double>::infinity();
     Vec3 displacement = Vec3::Zero();
     Vec3 current_velocity = Vec3::Zero();
+    /// A wall a controller drives (a servo of the triaxial cell) instead of `velocity`'s
+    /// schedule: from `anchor` (its displacement at `anchor_time`) at `velocity`, which the
+    /// controller sets after each step.
+    bool controlled = false;
+    Vec3 anchor = Vec3::Zero();
+    double anchor_time = 0.0;
 
     /// A mesh wall whose vertices move (the mid-surface of a coupled shell, set by the
     /// coupling): their positions at the ends of the interval [start_time, end_time], the faces
@@ -103,9 +114,14 @@ struct PlaneWall {
     Vec3 face_velocity(std::int32_t face, const Vec3& point) const;
     /// The barycentric weights of `point` (in the plane of triangle `face`) on its corners.
     Vec3 barycentric(std::int32_t face, const Vec3& point) const;
-    bool moves() const { return velocity != Vec3::Zero(); }
+    bool moves() const { return controlled || velocity != Vec3::Zero(); }
     /// Places the wall where its motion has taken it at `time`.
     void move_to(double time) {
+        if (controlled) {
+            displacement = anchor + velocity * (time - anchor_time);
+            current_velocity = velocity;
+            return;
+        }
         displacement = velocity * std::clamp(time - move_start, 0.0, move_end - move_start);
         current_velocity = time > move_start && time < move_end ? velocity : Vec3::Zero();
     }

@@ -393,10 +393,10 @@ std::vector<std::optional<RunRecord>> run_grid(const TradeOptions& o, const std:
         }
     }
     const std::vector<ProcessSpec> commands = prepare_runs(o, case_path, grid, pending, threads);
-    std::printf("trade: %zu runs, %zu finished earlier, %zu to run (%d at a time, %d threads "
+    std::printf("trade: %zu runs, %zu finished earlier, %zu to run (%d at a time, %d thread%s "
                 "each); most accurate: %s\n",
                 grid.size(), grid.size() - pending.size(), pending.size(), o.jobs, threads,
-                grid[best].id.c_str());
+                threads == 1 ? "" : "s", grid[best].id.c_str());
     std::fflush(stdout);
     std::size_t done = 0;
     run_processes(commands, o.jobs, [&](std::size_t c, const ProcessResult& result) {

@@ -53,6 +53,9 @@ inline pid_t start_cli(const std::vector<std::string>& arguments, const std::str
             argv.push_back(a.data());
         }
         argv.push_back(nullptr);
+        if (pin_blas_kernels()) {
+            setenv("OPENBLAS_CORETYPE", kPinnedBlasKernels, 1);
+        }
         execv(GRAINLOAD_EXECUTABLE, argv.data());
         _exit(127);
     }
