@@ -59,7 +59,7 @@ double TriaxialCell::stress(std::size_t k) const {
     return wall(k).normal_force / area(k);
 }
 
-double TriaxialCell::servo_speed(std::size_t k, double target, double dt) const {
+double TriaxialCell::servo_speed(std::size_t k, double dt) const {
     const PlaneWall& w = wall(k);
     const double limit = settings_.servo_speed_limit;
     if (!(w.normal_stiffness > 0.0)) {
@@ -67,7 +67,7 @@ double TriaxialCell::servo_speed(std::size_t k, double target, double dt) const 
     }
     // The springs' force: the dashpots answer the wall's own speed, and a servo that chased
     // them would chatter at its speed limit.
-    const double error = target * area(k) - w.elastic_normal_force;
+    const double error = settings_.confining_stress * area(k) - w.elastic_normal_force;
     return std::clamp(settings_.servo_gain * error / (w.normal_stiffness * dt), -limit, limit);
 }
 
@@ -115,7 +115,7 @@ void TriaxialCell::after_step(double t, double dt) {
         if (!w.controlled) {
             continue;
         }
-        double speed = servo_speed(k, settings_.confining_stress, dt);
+        double speed = servo_speed(k, dt);
         if (k == kPlaten && sheared_) {
             speed = particles::reaches(time, settings_.shear_end)
                         ? 0.0

@@ -61,7 +61,6 @@ class TriaxialCell final : public particles::ScenePart {
         /// asin((sigma_1 - sigma_3) / (sigma_1 + sigma_3)) [rad]
         double friction_angle() const;
     };
-    const Reading& reading() const { return reading_; }
 
   private:
     /// The cell's extent along `axis` at the walls' places now.
@@ -70,8 +69,9 @@ class TriaxialCell final : public particles::ScenePart {
     double area(std::size_t k) const;
     /// The grains' normal stress on face k now [Pa].
     double stress(std::size_t k) const;
-    /// The speed along its normal at which face k's servo moves it over the next step `dt`.
-    double servo_speed(std::size_t k, double target, double dt) const;
+    /// The speed along its normal at which face k's servo moves it over the next step `dt`
+    /// towards the confining stress.
+    double servo_speed(std::size_t k, double dt) const;
     /// The reading of the sums over the interval, or of the step now when it has none.
     Reading read_now() const;
     PlaneWall& wall(std::size_t k) { return walls_[settings_.first_wall + k]; }
